@@ -1,0 +1,239 @@
+(* povml's command line: POV-Ray-style switches translated to long options, one error printer, the
+   statistics. Everything it computes comes from the library. *)
+
+open Povml
+open Cmdliner
+
+(* ---------------------------------------------------------------------------------------------- *)
+(* POV-Ray switches (+W640, -D, +A0.3 …) become long options before cmdliner sees them. *)
+
+let translate_switch arg =
+  let n = String.length arg in
+  if n < 2 || (arg.[0] <> '+' && arg.[0] <> '-') || arg.[1] = '-' then `Keep arg
+  else
+    let on = arg.[0] = '+' in
+    let body = String.sub arg 1 (n - 1) in
+    let up = String.uppercase_ascii body in
+    let starts p = String.length up >= String.length p && String.sub up 0 (String.length p) = p in
+    let rest p = String.sub body (String.length p) (String.length body - String.length p) in
+    let valued long p = if rest p = "" then `Bad else `Use (Printf.sprintf "--%s=%s" long (rest p)) in
+    if starts "AM" then valued "sampling-method" "AM"
+    else if starts "AG" then valued "aa-gamma" "AG"
+    else if starts "WT" then valued "threads" "WT"
+    else if starts "SR" then valued "start-row" "SR"
+    else if starts "ER" then valued "end-row" "ER"
+    else if starts "SC" then valued "start-column" "SC"
+    else if starts "EC" then valued "end-column" "EC"
+    else if starts "BS" then valued "block-size" "BS"
+    else if up = "FN" || up = "FN8" then `Use "--format=png"
+    else if up = "FP" then `Use "--format=ppm"
+    else if starts "F" then `Bad
+    else if up = "D" || (starts "D" && n = 3) then `Use (if on then "--display" else "--no-display")
+    else if up = "V" then `Use (if on then "--verbose" else "--no-verbose")
+    else if up = "A" then `Use (if on then "--antialias" else "--no-antialias")
+    else if starts "A" then if on then valued "antialias" "A" else `Bad
+    else if up = "J" then `Use (if on then "--jitter" else "--no-jitter")
+    else if starts "J" then if on then valued "jitter" "J" else `Bad
+    else if starts "I" then valued "input" "I"
+    else if starts "O" then valued "output" "O"
+    else if starts "W" then valued "width" "W"
+    else if starts "H" && up <> "H" then valued "height" "H"
+    else if starts "R" then valued "aa-depth" "R"
+    else if starts "L" then valued "library-path" "L"
+    else if arg = "-h" then `Keep arg
+    else `Bad
+
+(* ---------------------------------------------------------------------------------------------- *)
+(* Printing *)
+
+let source file =
+  match open_in_bin file with
+  | exception Sys_error _ -> None
+  | ic ->
+      Fun.protect ~finally:(fun () -> close_in_noerr ic) (fun () ->
+          try Some (really_input_string ic (in_channel_length ic)) with Sys_error _ | End_of_file -> None)
+
+let print_error e = prerr_string (Error.render ~source ~kind:"error" e)
+let print_warning e = prerr_string (Error.render ~source ~kind:"warning" e)
+
+let hms s =
+  let t = int_of_float s in
+  Printf.sprintf "%2d hours %2d minutes %2d seconds (%.3f seconds)" (t / 3600) (t / 60 mod 60) (t mod 60) s
+
+let print_stats (r : Pipeline.result) (o : Render.options) =
+  let s = r.stats in
+  let line = String.make 76 '-' in
+  let pct a b = if b = 0 then 0. else 100. *. float_of_int a /. float_of_int b in
+  let pixels = (o.area.right - o.area.left + 1) * (o.area.bottom - o.area.top + 1) in
+  let rays = s.camera_rays + s.reflected_rays + s.refracted_rays in
+  Printf.eprintf "%s\nRender Statistics\nImage Resolution %d x %d\n%s\n" line o.width o.height line;
+  Printf.eprintf "Pixels:      %11d   Samples:     %11d   Smpls/Pxl: %.2f\n" pixels s.samples
+    (if pixels = 0 then 0. else float_of_int s.samples /. float_of_int pixels);
+  Printf.eprintf "Rays:        %11d   Max Level: %d/%d\n%s\n" rays s.max_level r.scene.max_trace_level line;
+  Printf.eprintf "Ray->Shape Intersection          Tests       Succeeded  Percentage\n%s\n" line;
+  if s.plane_tests > 0 then Printf.eprintf "Plane                      %11d     %11d  %10.2f\n" s.plane_tests s.plane_hits (pct s.plane_hits s.plane_tests);
+  if s.sphere_tests > 0 then Printf.eprintf "Sphere                     %11d     %11d  %10.2f\n" s.sphere_tests s.sphere_hits (pct s.sphere_hits s.sphere_tests);
+  Printf.eprintf "%s\n" line;
+  Printf.eprintf "Camera Rays:               %11d\n" s.camera_rays;
+  Printf.eprintf "Shadow Ray Tests:          %11d\n" s.shadow_rays;
+  Printf.eprintf "Reflected Rays:            %11d\n" s.reflected_rays;
+  Printf.eprintf "Refracted Rays:            %11d\n" s.refracted_rays;
+  Printf.eprintf "%s\n" line;
+  Printf.eprintf "Parse Time:  %s\nRender Time: %s\n              using %d process(es)\n" (hms r.parse_seconds) (hms r.render_seconds) o.workers
+
+(* ---------------------------------------------------------------------------------------------- *)
+(* The render command *)
+
+type fmt = Png_fmt | Ppm_fmt
+
+let default_output input fmt =
+  let base = Filename.remove_extension input in
+  base ^ match fmt with Png_fmt -> ".png" | Ppm_fmt -> ".ppm"
+
+(* §10.3: a value in [0,1) is a fraction of the size, otherwise a 1-based index. *)
+let area_bound size v ~is_end =
+  match v with
+  | None -> if is_end then size - 1 else 0
+  | Some v ->
+      if v < 1. || (is_end && v = 1.) then
+        if is_end then int_of_float (float_of_int size *. v) - 1 else int_of_float (float_of_int size *. v)
+      else if is_end then int_of_float (v -. 1.)
+      else int_of_float v - 1
+
+let usage_error msg = `Error (false, msg)
+
+let run input positional output width height antialias no_aa method_ depth jitter no_jitter aa_gamma
+    _libs threads sr er sc ec block_size format _display _verbose =
+  let input = match (input, positional) with Some i, _ -> Some i | None, Some p -> Some p | None, None -> None in
+  match input with
+  | None -> usage_error "no scene file given: use +I<file> or give the file name"
+  | Some input ->
+      if width < 1 || height < 1 then usage_error "width and height must be at least 1"
+      else if method_ <> 1 then usage_error (Printf.sprintf "sampling method %d is not supported yet (only +AM1)" method_)
+      else
+        let fmt = match format with `Png -> Png_fmt | `Ppm -> Ppm_fmt in
+        let output =
+          match output with
+          | None -> default_output input fmt
+          | Some o when Sys.file_exists o && Sys.is_directory o ->
+              Filename.concat o (Filename.basename (default_output input fmt))
+          | Some o -> o
+        in
+        let area =
+          {
+            Render.left = max 0 (area_bound width sc ~is_end:false);
+            right = min (width - 1) (area_bound width ec ~is_end:true);
+            top = max 0 (area_bound height sr ~is_end:false);
+            bottom = min (height - 1) (area_bound height er ~is_end:true);
+          }
+        in
+        if area.left > area.right || area.top > area.bottom then usage_error "the partial render area is empty"
+        else
+          let antialias = if no_aa then None else antialias in
+          let opts =
+            {
+              Render.width;
+              height;
+              antialias = Option.map (fun t -> Float.min 1. (Float.max 0. t)) antialias;
+              aa_depth = max 1 (min 9 depth);
+              jitter = (if no_jitter then 0. else Float.min 1. (Float.max 0. jitter));
+              aa_gamma;
+              area;
+              block_size = max 4 (min (max width height) block_size);
+              workers = max 1 threads;
+            }
+          in
+          match Pipeline.run opts input with
+          | exception Error.Scene_error e -> print_error e; `Ok 1
+          | r -> (
+              List.iter print_warning r.warnings;
+              let f = match fmt with Png_fmt -> Output.Png | Ppm_fmt -> Output.Ppm in
+              match Output.write f output r.image with
+              | Error msg ->
+                  Printf.eprintf "%s: error: cannot write the image: %s\n" output msg;
+                  `Ok 1
+              | Ok () ->
+                  print_stats r opts;
+                  Printf.eprintf "Wrote %s (%dx%d)\n" output width height;
+                  `Ok 0)
+
+let cmd =
+  let doc = "render POV-Ray 3.7 scenes, pixel for pixel as POV-Ray does" in
+  let sw = "POV-RAY SWITCHES" in
+  let man =
+    [
+      `S Manpage.s_description;
+      `P "$(tname) reads a POV-Ray scene description ($(b,.pov)) and renders it with a recursive \
+          Whitted ray tracer that follows POV-Ray 3.7.0.10's rules, so that on the features it supports \
+          the PNG it writes equals POV-Ray's.";
+      `P "POV-Ray's own switches are accepted as they are and mean the same: $(b,+I)file, $(b,+O)file, \
+          $(b,+W)n, $(b,+H)n, $(b,+A)[threshold], $(b,-A), $(b,+AM1), $(b,+R)n, $(b,+J)[amount], $(b,-J), \
+          $(b,+L)dir, $(b,+WT)n, $(b,+SR)/$(b,+ER)/$(b,+SC)/$(b,+EC) (partial render: full-size file, \
+          unrendered pixels black), $(b,+FN) (PNG), $(b,+FP) (PPM), $(b,+D)/$(b,-D), $(b,+V)/$(b,-V). \
+          Each is shown below with its long form.";
+      `S sw;
+      `S Manpage.s_exit_status;
+      `P "0 when the image was written; 1 when the scene has an error (printed as \
+          file:line:column: error: … with the source line) or the image cannot be written; 2 on a usage error.";
+      `S Manpage.s_examples;
+      `P "povml +Iscenes/showcase.pov +W640 +H480 +A0.3";
+    ]
+  in
+  let docs = sw in
+  let opt_str names dv doc = Arg.(value & opt (some string) None & info names ~docv:dv ~docs ~doc) in
+  let input = opt_str [ "input"; "I" ] "FILE" "+I: the scene file to render." in
+  let positional = Arg.(value & pos 0 (some string) None & info [] ~docv:"SCENE" ~doc:"The scene file (same as +I).") in
+  let output = opt_str [ "output"; "O" ] "FILE" "+O: the output file. Default: the scene's name with .png (or .ppm), beside the scene." in
+  let width = Arg.(value & opt int 160 & info [ "width"; "W" ] ~docv:"N" ~docs ~doc:"+W: image width in pixels (POV-Ray's built-in default 160).") in
+  let height = Arg.(value & opt int 120 & info [ "height"; "H" ] ~docv:"N" ~docs ~doc:"+H: image height in pixels (default 120).") in
+  let antialias =
+    Arg.(value & opt ~vopt:(Some 0.3) (some float) None & info [ "antialias" ] ~docv:"THRESHOLD" ~docs
+           ~doc:"+A[threshold]: antialias; a pixel is supersampled when it differs from a neighbour by at least THRESHOLD (default 0.3).")
+  in
+  let no_aa = Arg.(value & flag & info [ "no-antialias" ] ~docs ~doc:"-A: no antialiasing (the default).") in
+  let method_ = Arg.(value & opt int 1 & info [ "sampling-method" ] ~docv:"N" ~docs ~doc:"+AM: antialiasing method; 1 (non-adaptive, POV-Ray's default) is supported.") in
+  let depth = Arg.(value & opt int 3 & info [ "aa-depth" ] ~docv:"N" ~docs ~doc:"+R: supersampling depth, N×N samples per supersampled pixel (1 … 9, default 3).") in
+  let jitter = Arg.(value & opt ~vopt:1. float 1. & info [ "jitter" ] ~docv:"AMOUNT" ~docs ~doc:"+J[amount]: jitter antialiasing samples (on by default, amount 1; POV-Ray's deterministic jitter).") in
+  let no_jitter = Arg.(value & flag & info [ "no-jitter" ] ~docs ~doc:"-J: no jitter.") in
+  let aa_gamma = Arg.(value & opt float 2.5 & info [ "aa-gamma" ] ~docv:"G" ~docs ~doc:"+AG: gamma for the antialiasing colour comparison (default 2.5).") in
+  let libs = Arg.(value & opt_all string [] & info [ "library-path" ] ~docv:"DIR" ~docs ~doc:"+L: a directory searched for include files (repeatable).") in
+  let threads = Arg.(value & opt int 2 & info [ "threads" ] ~docv:"N" ~docs ~doc:"+WT: render processes (default 2). The image is the same for any N.") in
+  let fl names doc = Arg.(value & opt (some float) None & info names ~docv:"V" ~docs ~doc) in
+  let sr = fl [ "start-row" ] "+SR: first row of a partial render (a fraction below 1, else a 1-based row)." in
+  let er = fl [ "end-row" ] "+ER: last row of a partial render." in
+  let sc = fl [ "start-column" ] "+SC: first column of a partial render." in
+  let ec = fl [ "end-column" ] "+EC: last column of a partial render." in
+  let block_size = Arg.(value & opt int 32 & info [ "block-size" ] ~docv:"N" ~docs ~doc:"+BS: render block size (default 32, as POV-Ray; antialiasing depends on it).") in
+  let format =
+    Arg.(value & opt (enum [ ("png", `Png); ("ppm", `Ppm) ]) `Png & info [ "format" ] ~docv:"FMT" ~docs ~doc:"+FN (png, default) or +FP (ppm): output file type.")
+  in
+  let display = Arg.(value & vflag false [ (true, info [ "display" ] ~docs ~doc:"+D: accepted; povml has no preview window."); (false, info [ "no-display" ] ~docs ~doc:"-D: no preview window.") ]) in
+  let verbose = Arg.(value & vflag false [ (true, info [ "verbose" ] ~docs ~doc:"+V: accepted."); (false, info [ "no-verbose" ] ~docs ~doc:"-V: accepted.") ]) in
+  let term =
+    Term.(ret (const run $ input $ positional $ output $ width $ height $ antialias $ no_aa $ method_ $ depth $ jitter $ no_jitter $ aa_gamma $ libs $ threads $ sr $ er $ sc $ ec $ block_size $ format $ display $ verbose))
+  in
+  Cmd.v (Cmd.info "povml" ~version:"0.1.0" ~doc ~man ~exits:[]) term
+
+let () =
+  let argv = Array.to_list Sys.argv in
+  let prog = List.hd argv in
+  let bad = ref None in
+  let args =
+    List.map
+      (fun a ->
+        match translate_switch a with
+        | `Keep a -> a
+        | `Use a -> a
+        | `Bad -> if !bad = None then bad := Some a; a)
+      (List.tl argv)
+  in
+  match !bad with
+  | Some a ->
+      Printf.eprintf "povml: unknown or incomplete switch '%s' (see povml --help)\n" a;
+      exit 2
+  | None -> (
+      match Cmd.eval_value ~argv:(Array.of_list (prog :: args)) cmd with
+      | Ok (`Ok code) -> exit code
+      | Ok (`Version | `Help) -> exit 0
+      | Error (`Parse | `Term) -> exit 2
+      | Error `Exn -> exit 3)

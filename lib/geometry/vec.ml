@@ -1,0 +1,27 @@
+type t = { x : float; y : float; z : float }
+
+let[@inline] make x y z = { x; y; z }
+let zero = { x = 0.; y = 0.; z = 0. }
+let[@inline] add a b = { x = a.x +. b.x; y = a.y +. b.y; z = a.z +. b.z }
+let[@inline] sub a b = { x = a.x -. b.x; y = a.y -. b.y; z = a.z -. b.z }
+let[@inline] neg a = { x = -.a.x; y = -.a.y; z = -.a.z }
+let[@inline] scale s a = { x = s *. a.x; y = s *. a.y; z = s *. a.z }
+let[@inline] mul a b = { x = a.x *. b.x; y = a.y *. b.y; z = a.z *. b.z }
+let[@inline] dot a b = (a.x *. b.x) +. (a.y *. b.y) +. (a.z *. b.z)
+
+let[@inline] cross a b =
+  {
+    x = (a.y *. b.z) -. (a.z *. b.y);
+    y = (a.z *. b.x) -. (a.x *. b.z);
+    z = (a.x *. b.y) -. (a.y *. b.x);
+  }
+
+let[@inline] length2 a = dot a a
+let[@inline] length a = sqrt (dot a a)
+
+let[@inline] normalize a =
+  let l = length a in
+  if l = 0. then a else { x = a.x /. l; y = a.y /. l; z = a.z /. l }
+
+let[@inline] madd a s b = { x = a.x +. (s *. b.x); y = a.y +. (s *. b.y); z = a.z +. (s *. b.z) }
+let to_string a = Printf.sprintf "<%g, %g, %g>" a.x a.y a.z

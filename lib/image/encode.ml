@@ -1,0 +1,25 @@
+type t = { width : int; height : int; pixels : Bytes.t }
+
+(* POV-Ray keeps colours and gamma curves in single precision (§8.3). *)
+let[@inline] f32 x = Int32.float_of_bits (Int32.bits_of_float x)
+
+let srgb_encode x = if x <= 0.0031308 then f32 (12.92 *. x) else f32 ((1.055 *. Float.pow x (1. /. 2.4)) -. 0.055)
+
+let channel gamma x =
+  let x = f32 x in
+  let e =
+    match gamma with
+    | Scene.Gamma_off -> x
+    | Scene.Working g -> srgb_encode (f32 (if g = 1. then Float.max x 0. else Float.pow (Float.max x 0.) g))
+  in
+  let c = if e < 0. then 0. else if e > 1. then 1. else e in
+  (* §8.1: floor(clip(v)·255 + 0.5), the product in single precision *)
+  int_of_float (Float.floor (f32 (c *. 255.) +. 0.5))
+
+let image gamma (img : Image.t) =
+  let n = img.width * img.height in
+  let pixels = Bytes.create (3 * n) in
+  for i = 0 to (3 * n) - 1 do
+    Bytes.unsafe_set pixels i (Char.unsafe_chr (channel gamma (Float.Array.get img.data i)))
+  done;
+  { width = img.width; height = img.height; pixels }

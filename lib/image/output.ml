@@ -1,0 +1,65 @@
+type format = Png | Ppm
+
+let write_ppm path (img : Encode.t) =
+  let oc = open_out_bin path in
+  Fun.protect ~finally:(fun () -> close_out_noerr oc) (fun () ->
+      Printf.fprintf oc "P6\n%d %d\n255\n" img.width img.height;
+      output_bytes oc img.pixels)
+
+let write_png path (img : Encode.t) =
+  let rgb = Rgb24.create img.width img.height in
+  for y = 0 to img.height - 1 do
+    for x = 0 to img.width - 1 do
+      let i = 3 * ((y * img.width) + x) in
+      Rgb24.unsafe_set rgb x y
+        { Color.r = Char.code (Bytes.get img.pixels i); g = Char.code (Bytes.get img.pixels (i + 1)); b = Char.code (Bytes.get img.pixels (i + 2)) }
+    done
+  done;
+  Png.save path [] (Images.Rgb24 rgb)
+
+let write fmt path img =
+  let dir = Filename.dirname path in
+  match Filename.temp_file ~temp_dir:dir ".povml-" ".part" with
+  | exception Sys_error msg -> Error msg
+  | tmp -> (
+      match (match fmt with Png -> write_png tmp img | Ppm -> write_ppm tmp img) with
+      | () -> (
+          (* the temporary file is private; the image gets ordinary permissions *)
+          (try Unix.chmod tmp 0o644 with Unix.Unix_error _ -> ());
+          match Unix.rename tmp path with
+          | () -> Ok ()
+          | exception Unix.Unix_error (e, _, _) -> (try Sys.remove tmp with Sys_error _ -> ()); Error (Unix.error_message e))
+      | exception e ->
+          (try Sys.remove tmp with Sys_error _ -> ());
+          Error (match e with Sys_error m | Failure m -> m | e -> Printexc.to_string e))
+
+let read_png path =
+  match Png.load path [] with
+  | exception e -> Error (match e with Sys_error m | Failure m -> m | e -> Printexc.to_string e)
+  | Images.Rgb24 img ->
+      let w = img.Rgb24.width and h = img.Rgb24.height in
+      let pixels = Bytes.create (3 * w * h) in
+      for y = 0 to h - 1 do
+        for x = 0 to w - 1 do
+          let c = Rgb24.get img x y in
+          let i = 3 * ((y * w) + x) in
+          Bytes.set pixels i (Char.chr c.r);
+          Bytes.set pixels (i + 1) (Char.chr c.g);
+          Bytes.set pixels (i + 2) (Char.chr c.b)
+        done
+      done;
+      Ok { Encode.width = w; height = h; pixels }
+  | Images.Rgba32 img ->
+      let w = img.Rgba32.width and h = img.Rgba32.height in
+      let pixels = Bytes.create (3 * w * h) in
+      for y = 0 to h - 1 do
+        for x = 0 to w - 1 do
+          let c = Rgba32.get img x y in
+          let i = 3 * ((y * w) + x) in
+          Bytes.set pixels i (Char.chr c.color.r);
+          Bytes.set pixels (i + 1) (Char.chr c.color.g);
+          Bytes.set pixels (i + 2) (Char.chr c.color.b)
+        done
+      done;
+      Ok { Encode.width = w; height = h; pixels }
+  | _ -> Error (path ^ ": not an 8-bit RGB PNG")

@@ -1,0 +1,8 @@
+(** The compile step: looks at the immutable scene once and builds what the tracer calls. *)
+
+val scene : Scene.t -> Compiled.t
+(** [scene s] is [s] compiled: flat shapes, constant surfaces, the shadow strategy this scene needs,
+    and the camera's starting interior list. *)
+
+val inside : Compiled.shape -> Vec.t -> bool
+(** [inside shape p] is POV-Ray's Inside test (§2.2, §2.3). *)

@@ -1,0 +1,76 @@
+(** The scene as the tracer uses it: built once by [Compile] from the immutable [Scene.t], holding
+    only what this scene needs, in flat unboxed records. *)
+
+(** A sphere (§2.2): centre, radius as written (the normal is divided by it), radius². *)
+type sphere = { cx : float; cy : float; cz : float; radius : float; r2 : float }
+
+(** A plane (§2.3): unit normal and POV-Ray's [Distance] = −d. *)
+type plane = { nx : float; ny : float; nz : float; dist : float }
+
+type shape = Sphere of sphere | Plane of plane
+
+(** Everything about a surface that does not depend on the hit point, derived once from a
+    plain pigment and its finish (§3.2, §3.5, §5). *)
+type surface = {
+  colour : Rgb.t;  (** pigment rgb *)
+  att : float;  (** 1 − f − t (or the legacy formula) *)
+  emitted : Rgb.t;  (** ambient·ambient_light·att + emission·att, times the colour *)
+  lit : bool;  (** diffuse, phong or specular is non-zero: lights are visited *)
+  diffuse : float;
+  brilliance : float;
+  phong : float;
+  phong_size : float;
+  specular : float;
+  spec_exp : float;  (** 1/roughness (0 when roughness is 0) *)
+  metallic : float;
+  refl : Scene.reflection;
+  reflects : bool;  (** some reflection colour is non-zero *)
+  filcol : Rgb.t;  (** rgb·filter + transmit (§3.5) *)
+  transparent : bool;  (** filter or transmit non-zero: a transmitted ray may be traced *)
+  conserve : bool;
+}
+
+(** An object ready to trace. Its [id] is also the identity of its interior in interior lists. *)
+type obj = {
+  id : int;
+  shape : shape;
+  surf : surface;
+  ior : float;
+  fade_distance : float;
+  fade_power : float;
+  fade_colour : Rgb.t;
+  old_refract : float;  (** legacy finish refraction: the transmitted-colour factor (§2.7, §6.3) *)
+  opaque : bool;  (** filter = transmit = 0: stops a shadow ray at once (§2.7) *)
+}
+
+(** A point light with its attenuation settings. *)
+type light = {
+  lx : float;
+  ly : float;
+  lz : float;
+  lcolour : Rgb.t;
+  shadowless : bool;
+  fade : bool;  (** fade_power > 0 and |fade_distance| > EPSILON (§3.4) *)
+  lfade_distance : float;
+  lfade_power : float;
+}
+
+(** How a shadow ray is answered, chosen once for the scene (§4). *)
+type shadow_mode =
+  | No_occluders  (** nothing casts shadows *)
+  | Any_hit  (** every occluder is opaque: a yes/no test *)
+  | Filtered  (** some occluder is transparent: walk every crossing *)
+
+type t = {
+  objects : obj array;  (** every object, in scene order *)
+  occluders : obj array;  (** objects without no_shadow *)
+  shadow_mode : shadow_mode;
+  lights : light array;
+  background : Colour.t;
+  sky : Scene.sky option;
+  max_trace_level : int;
+  adc_bailout : float;
+  legacy : bool;  (** effective version < 3.70 *)
+  camera : Scene.camera;
+  start_interiors : int list;  (** interiors containing the camera, last entered first (§6.4) *)
+}

@@ -1,0 +1,18 @@
+type result = {
+  image : Encode.t;
+  stats : Stats.t;
+  warnings : Error.t list;
+  scene : Scene.t;
+  parse_seconds : float;
+  render_seconds : float;
+}
+
+let run (opts : Render.options) path =
+  let t0 = Unix.gettimeofday () in
+  let scene, warnings = Interp.load_file { Interp.width = opts.width; height = opts.height } path in
+  let t1 = Unix.gettimeofday () in
+  let compiled = Compile.scene scene in
+  let img, stats = Render.render opts compiled scene.gamma in
+  let image = Encode.image scene.gamma img in
+  let t2 = Unix.gettimeofday () in
+  { image; stats; warnings; scene; parse_seconds = t1 -. t0; render_seconds = t2 -. t1 }

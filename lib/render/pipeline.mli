@@ -1,0 +1,14 @@
+(** The whole path from a scene file to an encoded image, for the command line and the tests. *)
+
+type result = {
+  image : Encode.t;
+  stats : Stats.t;
+  warnings : Error.t list;
+  scene : Scene.t;
+  parse_seconds : float;
+  render_seconds : float;
+}
+
+val run : Render.options -> string -> result
+(** [run opts path] interprets, compiles, renders and encodes the scene file [path].
+    Raises [Error.Scene_error] for errors in the scene. *)

@@ -1,0 +1,176 @@
+(* The render loop: camera rays (§1.4), antialiasing method 1 in blocks (§9.3), and the split of
+   blocks over processes. Every block is computed independently from the scene alone, so the image
+   is the same for any number of workers. *)
+
+open Compiled
+
+type area = { left : int; right : int; top : int; bottom : int }
+
+type options = {
+  width : int;
+  height : int;
+  antialias : float option;
+  aa_depth : int;
+  jitter : float;
+  aa_gamma : float;
+  area : area;
+  block_size : int;
+  workers : int;
+}
+
+let full_area w h = { left = 0; right = w - 1; top = 0; bottom = h - 1 }
+
+(* §1.4: the ray through the (possibly fractional) pixel position (x, y). *)
+let camera_dir (cam : Scene.camera) w h x y =
+  let x0 = ((x +. 0.5) /. float_of_int w) -. 0.5 in
+  let y0 = ((float_of_int (h - 1) -. (y -. 0.5)) /. float_of_int h) -. 0.5 in
+  let d = cam.direction and r = cam.right and u = cam.up in
+  Vec.normalize
+    (Vec.make
+       (d.x +. (x0 *. r.x) +. (y0 *. u.x))
+       (d.y +. (x0 *. r.y) +. (y0 *. u.y))
+       (d.z +. (x0 *. r.z) +. (y0 *. u.z)))
+
+let sample ctx opts x y =
+  let sc = ctx.Trace.scene in
+  ctx.stats.camera_rays <- ctx.stats.camera_rays + 1;
+  Trace.trace ctx ~level:0 ~weight:1. ~interiors:sc.start_interiors ~continued:false sc.camera.location
+    (camera_dir sc.camera opts.width opts.height x y)
+
+(* §9.1: colours are compared after x ↦ max(x,0)^(1/aa_gamma), in the working space. *)
+let aa_distance enc (a : Trace.result) (b : Trace.result) =
+  Float.abs (enc a.r -. enc b.r) +. Float.abs (enc a.g -. enc b.g) +. Float.abs (enc a.b -. enc b.b) +. Float.abs (a.tr -. b.tr)
+
+(* §9.3: supersample pixel (x, y) whose first sample is [c]. *)
+let supersample ctx opts (c : Trace.result) x y : Trace.result =
+  let depth = opts.aa_depth in
+  let step = 1. /. float_of_int depth in
+  let js = opts.jitter /. float_of_int depth in
+  let r0 = 0.5 -. (step /. 2.) in
+  let fx = float_of_int x and fy = float_of_int y in
+  let sr = ref c.r and sg = ref c.g and sb = ref c.b and st = ref c.tr in
+  let yy = ref (-.r0) in
+  while !yy <= r0 +. 1e-10 do
+    let xx = ref (-.r0) in
+    while !xx <= r0 +. 1e-10 do
+      let px = fx +. !xx and py = fy +. !yy in
+      let s =
+        if js = 0. then sample ctx opts px py
+        else sample ctx opts (px +. (Jitter.jx px py *. js)) (py +. (Jitter.jy px py *. js))
+      in
+      ctx.stats.samples <- ctx.stats.samples + 1;
+      sr := !sr +. s.r;
+      sg := !sg +. s.g;
+      sb := !sb +. s.b;
+      st := !st +. s.tr;
+      xx := !xx +. step
+    done;
+    yy := !yy +. step
+  done;
+  let n = float_of_int ((depth * depth) + 1) in
+  { r = !sr /. n; g = !sg /. n; b = !sb /. n; tr = !st /. n }
+
+type block = { bx0 : int; by0 : int; bx1 : int; by1 : int }
+
+(* One block: its pixels as r g b triples, row-major. *)
+let render_block ctx opts enc (b : block) =
+  let bw = b.bx1 - b.bx0 + 1 and bh = b.by1 - b.by0 + 1 in
+  let out = Float.Array.make (3 * bw * bh) 0. in
+  let store i (c : Trace.result) =
+    Float.Array.set out (3 * i) c.r;
+    Float.Array.set out ((3 * i) + 1) c.g;
+    Float.Array.set out ((3 * i) + 2) c.b
+  in
+  (match opts.antialias with
+  | None ->
+      for y = b.by0 to b.by1 do
+        for x = b.bx0 to b.bx1 do
+          store (((y - b.by0) * bw) + (x - b.bx0)) (sample ctx opts (float_of_int x) (float_of_int y))
+        done
+      done
+  | Some thr ->
+      (* A (bw+1)×(bh+1) grid whose row 0 and column 0 are the re-traced row above and column left
+         of the block; those are never supersampled (§9.3). *)
+      let gw = bw + 1 in
+      let px = Array.make (gw * (bh + 1)) Trace.black in
+      let done_ = Array.make (gw * (bh + 1)) false in
+      let at x y = ((y - b.by0 + 1) * gw) + (x - b.bx0 + 1) in
+      let tr x y = sample ctx opts (float_of_int x) (float_of_int y) in
+      for x = b.bx0 to b.bx1 do
+        px.(at x (b.by0 - 1)) <- tr x (b.by0 - 1);
+        done_.(at x (b.by0 - 1)) <- true
+      done;
+      for y = b.by0 to b.by1 do
+        px.(at (b.bx0 - 1) y) <- tr (b.bx0 - 1) y;
+        done_.(at (b.bx0 - 1) y) <- true;
+        for x = b.bx0 to b.bx1 do
+          let c = tr x y in
+          px.(at x y) <- c;
+          let ld = aa_distance enc px.(at (x - 1) y) c >= thr in
+          let td = aa_distance enc px.(at x (y - 1)) c >= thr in
+          let sl = (not done_.(at (x - 1) y)) && ld in
+          let st = (not done_.(at x (y - 1))) && td in
+          if sl then begin
+            px.(at (x - 1) y) <- supersample ctx opts px.(at (x - 1) y) (x - 1) y;
+            done_.(at (x - 1) y) <- true
+          end;
+          if st then begin
+            px.(at x (y - 1)) <- supersample ctx opts px.(at x (y - 1)) x (y - 1);
+            done_.(at x (y - 1)) <- true
+          end;
+          if ld || td then begin
+            px.(at x y) <- supersample ctx opts c x y;
+            done_.(at x y) <- true
+          end
+        done
+      done;
+      for y = b.by0 to b.by1 do
+        for x = b.bx0 to b.bx1 do
+          store (((y - b.by0) * bw) + (x - b.bx0)) px.(at x y)
+        done
+      done);
+  out
+
+let blocks opts =
+  let a = opts.area and bs = opts.block_size in
+  let rec rows y acc =
+    if y > a.bottom then List.rev acc
+    else
+      let rec cols x acc =
+        if x > a.right then acc
+        else cols (x + bs) ({ bx0 = x; by0 = y; bx1 = min a.right (x + bs - 1); by1 = min a.bottom (y + bs - 1) } :: acc)
+      in
+      rows (y + bs) (cols a.left acc)
+  in
+  rows a.top []
+
+let render opts (sc : Compiled.t) (gamma : Scene.gamma) : Image.t * Stats.t =
+  let g = match gamma with Scene.Gamma_off -> 1. | Scene.Working g -> g in
+  let inv = 1. /. opts.aa_gamma in
+  let enc x = if g = 1. then Float.pow (Float.max x 0.) inv else Float.pow (Float.pow (Float.max x 0.) g) inv in
+  let work b =
+    let stats = Stats.create () in
+    let ctx = Trace.make_ctx sc stats in
+    let px = render_block ctx opts enc b in
+    (b, px, stats)
+  in
+  let bl = blocks opts in
+  let results =
+    if opts.workers <= 1 || List.length bl <= 1 then List.map work bl
+    else Parmap.parmap ~ncores:opts.workers ~chunksize:1 work (Parmap.L bl)
+  in
+  let img = Image.create opts.width opts.height in
+  let stats =
+    List.fold_left
+      (fun acc (b, px, st) ->
+        let bw = b.bx1 - b.bx0 + 1 in
+        for y = b.by0 to b.by1 do
+          for x = b.bx0 to b.bx1 do
+            let i = 3 * (((y - b.by0) * bw) + (x - b.bx0)) in
+            Image.set img x y (Float.Array.get px i) (Float.Array.get px (i + 1)) (Float.Array.get px (i + 2))
+          done
+        done;
+        Stats.merge acc st)
+      (Stats.create ()) results
+  in
+  (img, stats)

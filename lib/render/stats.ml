@@ -1,0 +1,32 @@
+type t = {
+  mutable camera_rays : int;
+  mutable reflected_rays : int;
+  mutable refracted_rays : int;
+  mutable shadow_rays : int;
+  mutable sphere_tests : int;
+  mutable sphere_hits : int;
+  mutable plane_tests : int;
+  mutable plane_hits : int;
+  mutable max_level : int;
+  mutable samples : int;
+}
+
+let create () =
+  {
+    camera_rays = 0; reflected_rays = 0; refracted_rays = 0; shadow_rays = 0; sphere_tests = 0;
+    sphere_hits = 0; plane_tests = 0; plane_hits = 0; max_level = 0; samples = 0;
+  }
+
+let merge a b =
+  {
+    camera_rays = a.camera_rays + b.camera_rays;
+    reflected_rays = a.reflected_rays + b.reflected_rays;
+    refracted_rays = a.refracted_rays + b.refracted_rays;
+    shadow_rays = a.shadow_rays + b.shadow_rays;
+    sphere_tests = a.sphere_tests + b.sphere_tests;
+    sphere_hits = a.sphere_hits + b.sphere_hits;
+    plane_tests = a.plane_tests + b.plane_tests;
+    plane_hits = a.plane_hits + b.plane_hits;
+    max_level = max a.max_level b.max_level;
+    samples = a.samples + b.samples;
+  }

@@ -1,0 +1,20 @@
+(** Render statistics: rays by kind and intersection tests, counted by each render worker. *)
+
+type t = {
+  mutable camera_rays : int;
+  mutable reflected_rays : int;
+  mutable refracted_rays : int;  (** refracted, and transmitted at ior 1 *)
+  mutable shadow_rays : int;
+  mutable sphere_tests : int;
+  mutable sphere_hits : int;
+  mutable plane_tests : int;
+  mutable plane_hits : int;
+  mutable max_level : int;  (** deepest trace level reached *)
+  mutable samples : int;  (** antialiasing samples beyond the first per pixel *)
+}
+
+val create : unit -> t
+(** [create ()] is a fresh record with every counter at 0. *)
+
+val merge : t -> t -> t
+(** [merge a b] is a new record with the counters of [a] and [b] added (max_level: the larger). *)

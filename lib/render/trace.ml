@@ -1,0 +1,350 @@
+(* The recursive Whitted tracer, following POVRAY-3.7 §2–§7 and Appendix B. A traced colour is a
+   function of the compiled scene and the ray; the only mutation is the per-worker statistics and a
+   one-slot scratch for the nearest depth, both invisible to callers. *)
+
+open Compiled
+
+let epsilon = 1e-10
+let depth_tolerance = 1e-6 (* §2.1: shapes reject roots at or below 1e-6 … *)
+let max_distance = 1e7 (* … and beyond 1e7 *)
+let min_isect_depth = 1e-4 (* §2.1: every ray ignores hits closer than 1e-4 *)
+let shadow_tolerance = 1e-3 (* §4: shadow hits count only from 1e-3 to the light minus 1e-3 *)
+
+type result = { r : float; g : float; b : float; tr : float }
+
+type ctx = { scene : Compiled.t; stats : Stats.t; depth : float array (* scratch: depth of the last hit *) }
+
+let make_ctx scene stats = { scene; stats; depth = [| 0. |] }
+let black = { r = 0.; g = 0.; b = 0.; tr = 0. }
+
+(* ---------------------------------------------------------------------------------------------- *)
+(* Intersections *)
+
+(* The nearest depth of [shape] along the ray that is inside the shape's own limits and at least
+   [lo], or infinity. *)
+let[@inline] hit_shape (stats : Stats.t) shape (o : Vec.t) (d : Vec.t) lo =
+  match shape with
+  | Sphere s ->
+      (* §2.2 *)
+      stats.sphere_tests <- stats.sphere_tests + 1;
+      let ocx = s.cx -. o.x and ocy = s.cy -. o.y and ocz = s.cz -. o.z in
+      let ocs = (ocx *. ocx) +. (ocy *. ocy) +. (ocz *. ocz) in
+      let tca = (ocx *. d.x) +. (ocy *. d.y) +. (ocz *. d.z) in
+      if ocs >= s.r2 && tca < epsilon then infinity
+      else
+        let h2 = s.r2 -. ocs +. (tca *. tca) in
+        if h2 <= epsilon then infinity
+        else begin
+          let h = sqrt h2 in
+          let t1 = tca -. h in
+          if t1 > depth_tolerance && t1 < max_distance && t1 >= lo then (stats.sphere_hits <- stats.sphere_hits + 1; t1)
+          else
+            let t2 = tca +. h in
+            if t2 > depth_tolerance && t2 < max_distance && t2 >= lo then (stats.sphere_hits <- stats.sphere_hits + 1; t2)
+            else infinity
+        end
+  | Plane p ->
+      (* §2.3 *)
+      stats.plane_tests <- stats.plane_tests + 1;
+      let ndd = (p.nx *. d.x) +. (p.ny *. d.y) +. (p.nz *. d.z) in
+      if Float.abs ndd < epsilon then infinity
+      else
+        let ndo = (p.nx *. o.x) +. (p.ny *. o.y) +. (p.nz *. o.z) in
+        let t = -.(ndo +. p.dist) /. ndd in
+        if t >= depth_tolerance && t <= max_distance && t >= lo then (stats.plane_hits <- stats.plane_hits + 1; t)
+        else infinity
+
+(* Index of the nearest object hit at depth ≥ [lo] (ties: the first in order), or −1; its depth is
+   left in [ctx.depth.(0)]. *)
+let nearest ctx (objs : obj array) o d lo =
+  let best = ref infinity and idx = ref (-1) in
+  for i = 0 to Array.length objs - 1 do
+    let t = hit_shape ctx.stats (Array.unsafe_get objs i).shape o d lo in
+    if t < !best then begin
+      best := t;
+      idx := i
+    end
+  done;
+  ctx.depth.(0) <- !best;
+  !idx
+
+let normal obj (p : Vec.t) : Vec.t =
+  match obj.shape with
+  | Sphere s -> Vec.make ((p.x -. s.cx) /. s.radius) ((p.y -. s.cy) /. s.radius) ((p.z -. s.cz) /. s.radius)
+  | Plane pl -> Vec.make pl.nx pl.ny pl.nz
+
+(* ---------------------------------------------------------------------------------------------- *)
+(* Shadows (§4) *)
+
+let[@inline] fade_factor fade_colour fade_distance fade_power depth (c : Rgb.t) =
+  (* §4 and §6.3: exponential above fade_power 1000, else fade_colour + (1 − fade_colour)/(1 + (d/fd)^fp) *)
+  if fade_power >= 1000. then
+    let k x = exp (-.(1. -. x) *. (depth /. fade_distance)) in
+    Rgb.make (c.r *. k fade_colour.Rgb.r) (c.g *. k fade_colour.g) (c.b *. k fade_colour.b)
+  else
+    let a = 1. +. Float.pow (depth /. fade_distance) fade_power in
+    let k x = x +. ((1. -. x) /. a) in
+    Rgb.make (c.r *. k fade_colour.Rgb.r) (c.g *. k fade_colour.g) (c.b *. k fade_colour.b)
+
+let rec remove id = function [] -> [] | x :: rest -> if x = id then rest else x :: remove id rest
+
+(* The light colour [lc] after the shadow ray from [p] towards the light at [dist]. *)
+let shadow ctx (p : Vec.t) (l : Vec.t) dist interiors (lc : Rgb.t) : Rgb.t =
+  let sc = ctx.scene in
+  ctx.stats.shadow_rays <- ctx.stats.shadow_rays + 1;
+  match sc.shadow_mode with
+  | No_occluders -> lc
+  | Any_hit ->
+      let occ = sc.occluders in
+      let limit = dist -. shadow_tolerance in
+      let rec blocked i =
+        i < Array.length occ
+        &&
+        let t = hit_shape ctx.stats (Array.unsafe_get occ i).shape p l shadow_tolerance in
+        t < limit || blocked (i + 1)
+      in
+      if blocked 0 then Rgb.black else lc
+  | Filtered ->
+      let rec walk (o : Vec.t) remaining interiors (lc : Rgb.t) =
+        let i = nearest ctx sc.occluders o l shadow_tolerance in
+        let t = ctx.depth.(0) in
+        if i < 0 || t >= remaining -. shadow_tolerance then lc
+        else
+          let obj = sc.occluders.(i) in
+          if obj.opaque then Rgb.black
+          else
+            let f = obj.surf.filcol in
+            let f =
+              if List.mem obj.id interiors && obj.fade_power > 0. && Float.abs obj.fade_distance > epsilon then
+                fade_factor obj.fade_colour obj.fade_distance obj.fade_power t f
+              else f
+            in
+            let lc = Rgb.mul lc f in
+            let interiors = if List.mem obj.id interiors then remove obj.id interiors else obj.id :: interiors in
+            walk (Vec.madd o t l) (remaining -. t) interiors lc
+      in
+      walk p dist interiors lc
+
+(* ---------------------------------------------------------------------------------------------- *)
+(* Local illumination (§3.3, §3.4) *)
+
+(* §3.3: the empirical metallic Fresnel term for highlights and metallic reflection. *)
+let metallic_factor metallic cos_angle (c : Rgb.t) (lc : Rgb.t) =
+  let x = Float.abs (acos cos_angle) /. (Float.pi /. 2.) in
+  let f = (0.014567225 /. ((x -. 1.12) *. (x -. 1.12))) -. 0.011612903 in
+  let f = Float.min 1. (Float.max 0. f) in
+  let k ch = 1. +. (metallic *. (1. -. f) *. (ch -. 1.)) in
+  Rgb.make (lc.r *. k c.r) (lc.g *. k c.g) (lc.b *. k c.b)
+
+let add_light ctx (s : surface) (p : Vec.t) (n : Vec.t) (d : Vec.t) interiors (acc : Rgb.t) (lt : light) =
+  let lvx = lt.lx -. p.x and lvy = lt.ly -. p.y and lvz = lt.lz -. p.z in
+  let dist = sqrt ((lvx *. lvx) +. (lvy *. lvy) +. (lvz *. lvz)) in
+  let l = Vec.make (lvx /. dist) (lvy /. dist) (lvz /. dist) in
+  let lc =
+    if lt.fade then Rgb.scale (2. /. (1. +. Float.pow (dist /. lt.lfade_distance) lt.lfade_power)) lt.lcolour
+    else lt.lcolour
+  in
+  let small (c : Rgb.t) bound = Float.abs c.r < bound && Float.abs c.g < bound && Float.abs c.b < bound in
+  if small lc epsilon then acc
+  else
+    let nl = Vec.dot n l in
+    if nl < epsilon then acc
+    else
+      let lc = if lt.shadowless then lc else shadow ctx p l dist interiors lc in
+      if Float.abs lc.r <= epsilon && Float.abs lc.g <= epsilon && Float.abs lc.b <= epsilon then acc
+      else
+        let acc =
+          if s.diffuse > 0. then
+            let i = (if s.brilliance = 1. then nl else Float.pow nl s.brilliance) *. s.diffuse *. s.att in
+            Rgb.make
+              (acc.r +. (i *. s.colour.r *. lc.r))
+              (acc.g +. (i *. s.colour.g *. lc.g))
+              (acc.b +. (i *. s.colour.b *. lc.b))
+          else acc
+        in
+        if lt.shadowless then acc (* §3.3: fill lights give no highlights *)
+        else
+          let hl = if s.metallic <> 0. then metallic_factor s.metallic nl s.colour lc else lc in
+          let acc =
+            if s.phong > 0. then
+              let dn = Vec.dot d n in
+              let r = Vec.madd d (-2. *. dn) n in
+              let c = Vec.dot r l in
+              if c > 0. && (s.phong_size < 60. || c > 0.0008) then
+                Rgb.add acc (Rgb.scale (s.phong *. Float.pow c s.phong_size) hl)
+              else acc
+            else acc
+          in
+          if s.specular > 0. then
+            let h = Vec.scale 0.5 (Vec.sub l d) in
+            let hlen = Vec.length h in
+            if hlen > 0. then
+              let c = Vec.dot h n /. hlen in
+              if c > 0. then Rgb.add acc (Rgb.scale (s.specular *. Float.pow c s.spec_exp) hl) else acc
+            else acc
+          else acc
+
+(* ---------------------------------------------------------------------------------------------- *)
+(* Reflectivity (§5.2) *)
+
+(* §5.2: the ratio n_transmitted / n_incident seen by the Fresnel term. *)
+let fresnel_ior sc obj interiors =
+  match interiors with
+  | [] -> obj.ior
+  | last :: rest ->
+      if List.mem obj.id interiors then if rest = [] then 1. /. obj.ior else sc.objects.(last).ior /. obj.ior
+      else obj.ior /. sc.objects.(last).ior
+
+let reflectivity sc (s : surface) obj interiors ci : Rgb.t =
+  let r = s.refl in
+  if not r.fresnel then
+    let frac = if Float.abs (r.falloff -. 1.) > epsilon then Float.pow (1. -. ci) r.falloff else 1. -. ci in
+    if Float.abs frac < epsilon then r.rmin
+    else if Float.abs (frac -. 1.) < epsilon then r.rmax
+    else Rgb.add (Rgb.scale frac r.rmax) (Rgb.scale (1. -. frac) r.rmin)
+  else
+    let n = fresnel_ior sc obj interiors in
+    let sq = (n *. n) +. (ci *. ci) -. 1. in
+    if sq > 0. then
+      let g = sqrt sq in
+      let a = (g -. ci) /. (g +. ci) in
+      let b = ((ci *. (g +. ci)) -. 1.) /. ((ci *. (g -. ci)) +. 1.) in
+      let f = 0.5 *. a *. a *. (1. +. (b *. b)) in
+      let f = Float.min 1. (Float.max 0. f) in
+      Rgb.add (Rgb.scale f r.rmax) (Rgb.scale (1. -. f) r.rmin)
+    else r.rmax
+
+(* ---------------------------------------------------------------------------------------------- *)
+(* Sky and background (§8.4, §18.1) *)
+
+let sky_colour sc : result =
+  let bg = sc.background in
+  match sc.sky with
+  | None -> if sc.legacy then { r = bg.red; g = bg.green; b = bg.blue; tr = bg.transmit } else { r = bg.red; g = bg.green; b = bg.blue; tr = 0. }
+  | Some sky ->
+      let pigs = List.rev_map (fun (Scene.Solid c) -> c) sky.sky_pigments in
+      let e = sky.sky_emission in
+      if not sc.legacy then
+        let col, fil =
+          List.fold_left
+            (fun ((col : Rgb.t), (fil : Rgb.t)) (c : Colour.t) ->
+              let k = 1. -. c.filter -. c.transmit in
+              ( Rgb.add col (Rgb.mul (Rgb.scale k (Rgb.mul (Colour.rgb c) fil)) e),
+                Rgb.mul fil (Colour.transmitted c) ))
+            (Rgb.black, Rgb.white) pigs
+        in
+        let col = Rgb.add col (Rgb.mul (Colour.rgb bg) fil) in
+        { r = col.r; g = col.g; b = col.b; tr = 0. }
+      else
+        let col, f, _ =
+          List.fold_left
+            (fun ((col : Rgb.t), (f : Colour.t), tr) (c : Colour.t) ->
+              let col = Rgb.add col (Rgb.scale (tr *. (1. -. c.filter -. c.transmit)) (Colour.rgb c)) in
+              let f =
+                { Colour.red = f.red *. c.red; green = f.green *. c.green; blue = f.blue *. c.blue; filter = f.filter *. c.filter; transmit = f.transmit *. c.transmit }
+              in
+              (col, f, Float.abs f.filter +. Float.abs f.transmit))
+            (Rgb.black, { Colour.red = 1.; green = 1.; blue = 1.; filter = 1.; transmit = 1. }, 1.)
+            pigs
+        in
+        let col = Rgb.add (Rgb.mul col e) (Rgb.mul (Colour.rgb bg) (Colour.transmitted f)) in
+        { r = col.r; g = col.g; b = col.b; tr = 0. }
+
+(* ---------------------------------------------------------------------------------------------- *)
+(* The recursive trace (§7) and surface colour (§6.5) *)
+
+let rec trace ctx ~level ~weight ~interiors ~continued (o : Vec.t) (d : Vec.t) : result =
+  let sc = ctx.scene in
+  if level >= sc.max_trace_level || weight < sc.adc_bailout then black
+  else
+    let i = nearest ctx sc.objects o d min_isect_depth in
+    if i < 0 then sky_colour sc
+    else
+      let level = if continued then level else level + 1 in
+      if level > ctx.stats.max_level then ctx.stats.max_level <- level;
+      shade ctx sc.objects.(i) ctx.depth.(0) ~level ~weight ~interiors o d
+
+and shade ctx obj depth ~level ~weight ~interiors (o : Vec.t) (d : Vec.t) : result =
+  let sc = ctx.scene in
+  let s = obj.surf in
+  (* §3.2: the layer loop runs while the remaining translucency (1 at the start) exceeds adc_bailout *)
+  if not (1. > sc.adc_bailout) then black
+  else
+    let p = Vec.madd o depth d in
+    let n = normal obj p in
+    let n = if Vec.dot n d > 0. then Vec.neg n else n in
+    (* §3.1 *)
+    let ci = -.Vec.dot d n in
+    let refl = if s.reflects then reflectivity sc s obj interiors ci else Rgb.black in
+    (* §5.2: the reflected ray's weight, taken before the metallic tint *)
+    let w_refl =
+      if s.refl.fresnel then weight *. Rgb.max3 refl
+      else weight *. Float.max (Rgb.max3 s.refl.rmax) (Rgb.max3 s.refl.rmin)
+    in
+    let refl = if s.reflects && s.refl.refl_metallic <> 0. then metallic_factor s.refl.refl_metallic ci s.colour refl else refl in
+    let local = if s.lit then Array.fold_left (add_light ctx s p n d interiors) s.emitted sc.lights else s.emitted in
+    (* §6: transmitted ray *)
+    let local, tr, tir =
+      if not s.transparent then (local, 0., false)
+      else
+        let filcol =
+          if s.conserve && s.reflects then
+            Rgb.mul s.filcol (Rgb.make (Float.min 1. (1. -. refl.r)) (Float.min 1. (1. -. refl.g)) (Float.min 1. (1. -. refl.b)))
+          else s.filcol
+        in
+        let trans = Float.min 1. (Float.abs (Rgb.intensity filcol)) in
+        if not (trans > sc.adc_bailout) then (local, 0., false)
+        else
+          let w = weight *. Float.max (Float.abs filcol.r) (Float.max (Float.abs filcol.g) (Float.abs filcol.b)) in
+          let ct, tir = refract ctx obj ~level ~weight:w ~interiors p d n in
+          let att = Rgb.grey obj.old_refract in
+          let att =
+            if Float.abs obj.fade_distance > epsilon && List.mem obj.id interiors then
+              fade_factor obj.fade_colour obj.fade_distance obj.fade_power depth att
+            else att
+          in
+          if tir then (Rgb.make (local.r +. (att.r *. ct.r)) (local.g +. (att.g *. ct.g)) (local.b +. (att.b *. ct.b)), 0., true)
+          else
+            ( Rgb.make
+                (local.r +. (att.r *. ct.r *. filcol.r))
+                (local.g +. (att.g *. ct.g *. filcol.g))
+                (local.b +. (att.b *. ct.b *. filcol.b)),
+              Rgb.intensity att *. ct.tr *. trans,
+              false )
+    in
+    (* §5.3: reflected ray, skipped after total internal reflection *)
+    if tir || Rgb.is_zero refl then { r = local.r; g = local.g; b = local.b; tr }
+    else
+      let rd = Vec.normalize (Vec.madd d (-2. *. Vec.dot d n) n) in
+      ctx.stats.reflected_rays <- ctx.stats.reflected_rays + 1;
+      let c = trace ctx ~level ~weight:w_refl ~interiors ~continued:false p rd in
+      let e = s.refl.exponent in
+      if e <> 1. then
+        let ie = 1. /. e in
+        { r = local.r +. (refl.r *. Float.pow c.r ie); g = local.g +. (refl.g *. Float.pow c.g ie); b = local.b +. (refl.b *. Float.pow c.b ie); tr }
+      else { r = local.r +. (refl.r *. c.r); g = local.g +. (refl.g *. c.g); b = local.b +. (refl.b *. c.b); tr }
+
+(* §6.2: the transmitted ray; returns its colour and whether total internal reflection happened. *)
+and refract ctx obj ~level ~weight ~interiors p d n : result * bool =
+  let sc = ctx.scene in
+  let ior, inner =
+    match interiors with
+    | [] -> (1. /. obj.ior, [ obj.id ])
+    | last :: rest when last = obj.id -> (obj.ior /. (match rest with [] -> 1. | l :: _ -> sc.objects.(l).ior), rest)
+    | _ when List.mem obj.id interiors -> (1., remove obj.id interiors)
+    | last :: _ -> (sc.objects.(last).ior /. obj.ior, obj.id :: interiors)
+  in
+  ctx.stats.refracted_rays <- ctx.stats.refracted_rays + 1;
+  if Float.abs (ior -. 1.) < epsilon then
+    (* a continued ray: same direction, no new trace level *)
+    (trace ctx ~level ~weight ~interiors:inner ~continued:true p d, false)
+  else
+    let dn = Vec.dot d n in
+    let nn, nl = if dn <= 0. then (-.dn, n) else (dn, Vec.neg n) in
+    let t = 1. +. (ior *. ior *. ((nn *. nn) -. 1.)) in
+    if t < 0. then
+      let rd = Vec.normalize (Vec.madd d (-2. *. dn) n) in
+      (trace ctx ~level ~weight ~interiors ~continued:false p rd, true)
+    else
+      let dir = Vec.add (Vec.scale ior d) (Vec.scale ((ior *. nn) -. sqrt t) nl) in
+      (trace ctx ~level ~weight ~interiors:inner ~continued:false p dir, false)

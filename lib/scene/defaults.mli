@@ -1,0 +1,13 @@
+(** POV-Ray's defaults for finishes, interiors, textures and cameras (POVRAY-3.7 §1.1, §10). *)
+
+val reflection : Scene.reflection
+(** [reflection] is no reflection: min = max = 0, falloff 1, exponent 1. *)
+
+val finish : Scene.finish
+(** [finish] is the default finish (§10.1). *)
+
+val texture : Scene.texture
+(** [texture] is black pigment with the default finish. *)
+
+val interior : Scene.interior
+(** [interior] is ior 1, no fade. *)

@@ -1,0 +1,86 @@
+(** The immutable scene: what the interpreter produces and the compile step reads.
+    Every value reachable from [t] is immutable. *)
+
+(** A pigment. Only plain colours so far. *)
+type pigment = Solid of Colour.t
+
+(** [reflection {…}] of a finish (POVRAY-3.7 §5.1). *)
+type reflection = {
+  rmin : Rgb.t;  (** reflection at normal incidence (or the only value) *)
+  rmax : Rgb.t;  (** reflection at grazing incidence *)
+  fresnel : bool;  (** type 1: Fresnel blend of min and max (§5.2) *)
+  falloff : float;  (** exponent of the (1 − cos) blend *)
+  exponent : float;  (** reflection exponent E as written; 1 means none *)
+  refl_metallic : float;  (** metallic reflection amount *)
+}
+
+(** A finish (§3, §5, §10.1). Values are as written, after albedo conversion. *)
+type finish = {
+  ambient : Rgb.t;
+  emission : Rgb.t;
+  diffuse : float;
+  brilliance : float;
+  phong : float;
+  phong_size : float;
+  specular : float;
+  roughness : float;  (** as written; the specular exponent is 1/roughness *)
+  metallic : float;
+  reflection : reflection;
+  conserve_energy : bool;
+  refraction : float;  (** legacy [refraction]: the transmitted-colour factor, 1 by default (§2.7) *)
+  legacy_ior : float option;  (** legacy [finish { ior }], copied into the interior (§2.7) *)
+}
+
+(** A plain texture: one pigment and one finish. *)
+type texture = { pigment : pigment; finish : finish }
+
+(** An interior (§6, §10.1). *)
+type interior = { ior : float; fade_distance : float; fade_power : float; fade_colour : Rgb.t }
+
+(** Geometry. A plane is the set of points P with [normal]·P = [offset], [normal] unit length (§2.3). *)
+type shape =
+  | Sphere of { centre : Vec.t; radius : float }
+  | Plane of { normal : Vec.t; offset : float }
+
+(** A finished object: textured, with an interior (§2.7). *)
+type obj = {
+  shape : shape;
+  texture : texture;
+  interior : interior;
+  no_shadow : bool;
+  loc : Loc.t;  (** where the object was written *)
+}
+
+(** A point light (§3.3, §3.4, §10.2). *)
+type light = {
+  position : Vec.t;
+  colour : Rgb.t;
+  shadowless : bool;
+  fade_distance : float;
+  fade_power : float;
+}
+
+(** The camera after §1.3: the vectors used by §1.4. *)
+type camera = { location : Vec.t; direction : Vec.t; up : Vec.t; right : Vec.t }
+
+(** How the working colour space maps to the file (§8.1). *)
+type gamma =
+  | Gamma_off  (** legacy scene without assumed_gamma: output = clip(linear) *)
+  | Working of float  (** working gamma G (1.0 neutral); the file is sRGB-encoded *)
+
+(** A sky_sphere with plain pigments, listed in the order written (§18.1). *)
+type sky = { sky_pigments : pigment list; sky_emission : Rgb.t }
+
+(** The whole scene. *)
+type t = {
+  camera : camera;
+  objects : obj list;  (** in the order written *)
+  lights : light list;  (** in the order written *)
+  background : Colour.t;  (** as the tracer returns it for missed rays (§8.4) *)
+  sky : sky option;
+  ambient_light : Rgb.t;
+  max_trace_level : int;
+  adc_bailout : float;
+  version : int;  (** effective language version × 100 (§8.1): 362 without #version *)
+  gamma : gamma;
+}

@@ -1,0 +1,23 @@
+type kind =
+  | Num of float
+  | Str of string
+  | Ident of string
+  | Directive of string
+  | LBrace | RBrace | LParen | RParen | Lt | Gt | LBracket | RBracket
+  | Comma | Semi | Plus | Minus | Star | Slash | Dot | Eq | Ne | Le | Ge
+  | Bang | Amp | Bar | Quest | Colon
+  | Eof
+
+type t = { kind : kind; loc : Loc.t }
+
+let describe = function
+  | Num f -> Printf.sprintf "number %g" f
+  | Str s -> Printf.sprintf "string \"%s\"" (if String.length s > 40 then String.sub s 0 40 ^ "…" else s)
+  | Ident s -> Printf.sprintf "'%s'" (if String.length s > 40 then String.sub s 0 40 ^ "…" else s)
+  | Directive s -> Printf.sprintf "'#%s'" s
+  | LBrace -> "'{'" | RBrace -> "'}'" | LParen -> "'('" | RParen -> "')'"
+  | Lt -> "'<'" | Gt -> "'>'" | LBracket -> "'['" | RBracket -> "']'"
+  | Comma -> "','" | Semi -> "';'" | Plus -> "'+'" | Minus -> "'-'" | Star -> "'*'"
+  | Slash -> "'/'" | Dot -> "'.'" | Eq -> "'='" | Ne -> "'!='" | Le -> "'<='" | Ge -> "'>='"
+  | Bang -> "'!'" | Amp -> "'&'" | Bar -> "'|'" | Quest -> "'?'" | Colon -> "':'"
+  | Eof -> "end of file"
