@@ -14,18 +14,50 @@ let inside shape (p : Vec.t) =
       (dx *. dx) +. (dy *. dy) +. (dz *. dz) < s.r2
   | Plane pl -> (p.x *. pl.nx) +. (p.y *. pl.ny) +. (p.z *. pl.nz) +. pl.dist < epsilon
 
+(* POV-Ray stores colours in single precision (§8.3); rounding the stored values the same way keeps
+   results on the same side of the 8-bit rounding boundaries. *)
+let f32 x = Int32.float_of_bits (Int32.bits_of_float x)
+let rgb32 (c : Rgb.t) = Rgb.make (f32 c.r) (f32 c.g) (f32 c.b)
+
+let colour32 (c : Colour.t) =
+  { Colour.red = f32 c.red; green = f32 c.green; blue = f32 c.blue; filter = f32 c.filter; transmit = f32 c.transmit }
+
+let reflection32 (r : Scene.reflection) =
+  { r with rmin = rgb32 r.rmin; rmax = rgb32 r.rmax; falloff = f32 r.falloff; refl_metallic = f32 r.refl_metallic }
+
 let surface ~legacy ~ambient_light (t : Scene.texture) =
   let (Scene.Solid c) = t.pigment in
-  let f = t.finish in
+  let c = colour32 c in
+  let f0 = t.finish in
+  (* finish scalars are single precision too *)
+  let f =
+    {
+      f0 with
+      ambient = rgb32 f0.ambient;
+      emission = rgb32 f0.emission;
+      reflection = reflection32 f0.reflection;
+      diffuse = f32 f0.diffuse;
+      brilliance = f32 f0.brilliance;
+      phong = f32 f0.phong;
+      phong_size = f32 f0.phong_size;
+      specular = f32 f0.specular;
+      metallic = f32 f0.metallic;
+    }
+  in
+  let ambient_light = rgb32 ambient_light in
   let colour = Colour.rgb c in
   (* §3.2: the legacy "att" formula applies below language version 3.70 *)
   let att =
     if legacy then 1. -. ((c.filter *. Rgb.max3 colour) +. c.transmit) else 1. -. c.filter -. c.transmit
   in
+  (* §3.2, in single precision as POV-Ray sums it: ((C·ambient)·ambient_light)·att, then + (C·emission)·att *)
+  let mul a b = f32 (a *. b) in
+  let term c a l = mul (mul (mul c a) l) att in
   let emitted =
-    Rgb.add
-      (Rgb.scale att (Rgb.mul (Rgb.mul colour f.ambient) ambient_light))
-      (Rgb.scale att (Rgb.mul colour f.emission))
+    Rgb.make
+      (f32 (term colour.r f.ambient.r ambient_light.r +. mul (mul colour.r f.emission.r) att))
+      (f32 (term colour.g f.ambient.g ambient_light.g +. mul (mul colour.g f.emission.g) att))
+      (f32 (term colour.b f.ambient.b ambient_light.b +. mul (mul colour.b f.emission.b) att))
   in
   let r = f.reflection in
   {
@@ -38,11 +70,11 @@ let surface ~legacy ~ambient_light (t : Scene.texture) =
     phong = f.phong;
     phong_size = f.phong_size;
     specular = f.specular;
-    spec_exp = (if f.roughness = 0. then 0. else 1. /. f.roughness);
+    spec_exp = (if f.roughness = 0. then 0. else f32 (1. /. f.roughness));
     metallic = f.metallic;
     refl = r;
     reflects = not (Rgb.is_zero r.rmin && Rgb.is_zero r.rmax);
-    filcol = Colour.transmitted c;
+    filcol = Rgb.make (f32 (f32 (c.red *. c.filter) +. c.transmit)) (f32 (f32 (c.green *. c.filter) +. c.transmit)) (f32 (f32 (c.blue *. c.filter) +. c.transmit));
     transparent = c.filter <> 0. || c.transmit <> 0.;
     conserve = f.conserve_energy;
   }
@@ -58,11 +90,11 @@ let scene (s : Scene.t) : Compiled.t =
              id;
              shape = shape_of o.shape;
              surf;
-             ior = o.interior.ior;
-             fade_distance = o.interior.fade_distance;
-             fade_power = o.interior.fade_power;
-             fade_colour = o.interior.fade_colour;
-             old_refract = o.texture.finish.refraction;
+             ior = f32 o.interior.ior;
+             fade_distance = f32 o.interior.fade_distance;
+             fade_power = f32 o.interior.fade_power;
+             fade_colour = rgb32 o.interior.fade_colour;
+             old_refract = f32 o.texture.finish.refraction;
              opaque = not surf.transparent;
            })
          s.objects)
@@ -82,7 +114,7 @@ let scene (s : Scene.t) : Compiled.t =
              lx = l.position.x;
              ly = l.position.y;
              lz = l.position.z;
-             lcolour = l.colour;
+             lcolour = rgb32 l.colour;
              shadowless = l.shadowless;
              fade = l.fade_power > 0. && Float.abs l.fade_distance > epsilon;
              lfade_distance = l.fade_distance;

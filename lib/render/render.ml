@@ -59,16 +59,16 @@ let supersample ctx opts (c : Trace.result) x y : Trace.result =
         else sample ctx opts (px +. (Jitter.jx px py *. js)) (py +. (Jitter.jy px py *. js))
       in
       ctx.stats.samples <- ctx.stats.samples + 1;
-      sr := !sr +. s.r;
-      sg := !sg +. s.g;
-      sb := !sb +. s.b;
-      st := !st +. s.tr;
+      sr := Trace.f32 (!sr +. s.r);
+      sg := Trace.f32 (!sg +. s.g);
+      sb := Trace.f32 (!sb +. s.b);
+      st := Trace.f32 (!st +. s.tr);
       xx := !xx +. step
     done;
     yy := !yy +. step
   done;
   let n = float_of_int ((depth * depth) + 1) in
-  { r = !sr /. n; g = !sg /. n; b = !sb /. n; tr = !st /. n }
+  { r = Trace.f32 (!sr /. n); g = Trace.f32 (!sg /. n); b = Trace.f32 (!sb /. n); tr = Trace.f32 (!st /. n) }
 
 type block = { bx0 : int; by0 : int; bx1 : int; by1 : int }
 

@@ -12,6 +12,9 @@ let shadow_tolerance = 1e-3 (* §4: shadow hits count only from 1e-3 to the ligh
 
 type result = { r : float; g : float; b : float; tr : float }
 
+(* Colours are single precision in POV-Ray (§8.3): colour arithmetic is rounded the same way. *)
+let[@inline] f32 x = Int32.float_of_bits (Int32.bits_of_float x)
+
 type ctx = { scene : Compiled.t; stats : Stats.t; depth : float array (* scratch: depth of the last hit *) }
 
 let make_ctx scene stats = { scene; stats; depth = [| 0. |] }
@@ -79,12 +82,12 @@ let normal obj (p : Vec.t) : Vec.t =
 let[@inline] fade_factor fade_colour fade_distance fade_power depth (c : Rgb.t) =
   (* §4 and §6.3: exponential above fade_power 1000, else fade_colour + (1 − fade_colour)/(1 + (d/fd)^fp) *)
   if fade_power >= 1000. then
-    let k x = exp (-.(1. -. x) *. (depth /. fade_distance)) in
-    Rgb.make (c.r *. k fade_colour.Rgb.r) (c.g *. k fade_colour.g) (c.b *. k fade_colour.b)
+    let k x = f32 (exp (-.f32 (1. -. x) *. (depth /. fade_distance))) in
+    Rgb.make (f32 (c.r *. k fade_colour.Rgb.r)) (f32 (c.g *. k fade_colour.g)) (f32 (c.b *. k fade_colour.b))
   else
     let a = 1. +. Float.pow (depth /. fade_distance) fade_power in
-    let k x = x +. ((1. -. x) /. a) in
-    Rgb.make (c.r *. k fade_colour.Rgb.r) (c.g *. k fade_colour.g) (c.b *. k fade_colour.b)
+    let k x = f32 (x +. f32 (f32 (1. -. x) /. a)) in
+    Rgb.make (f32 (c.r *. k fade_colour.Rgb.r)) (f32 (c.g *. k fade_colour.g)) (f32 (c.b *. k fade_colour.b))
 
 let rec remove id = function [] -> [] | x :: rest -> if x = id then rest else x :: remove id rest
 
@@ -119,7 +122,7 @@ let shadow ctx (p : Vec.t) (l : Vec.t) dist interiors (lc : Rgb.t) : Rgb.t =
                 fade_factor obj.fade_colour obj.fade_distance obj.fade_power t f
               else f
             in
-            let lc = Rgb.mul lc f in
+            let lc = Rgb.make (f32 (lc.r *. f.r)) (f32 (lc.g *. f.g)) (f32 (lc.b *. f.b)) in
             let interiors = if List.mem obj.id interiors then remove obj.id interiors else obj.id :: interiors in
             walk (Vec.madd o t l) (remaining -. t) interiors lc
       in
@@ -133,15 +136,18 @@ let metallic_factor metallic cos_angle (c : Rgb.t) (lc : Rgb.t) =
   let x = Float.abs (acos cos_angle) /. (Float.pi /. 2.) in
   let f = (0.014567225 /. ((x -. 1.12) *. (x -. 1.12))) -. 0.011612903 in
   let f = Float.min 1. (Float.max 0. f) in
-  let k ch = 1. +. (metallic *. (1. -. f) *. (ch -. 1.)) in
-  Rgb.make (lc.r *. k c.r) (lc.g *. k c.g) (lc.b *. k c.b)
+  let m = metallic *. (1. -. f) in
+  let k ch = f32 (1. +. f32 (m *. f32 (ch -. 1.))) in
+  Rgb.make (f32 (lc.r *. k c.r)) (f32 (lc.g *. k c.g)) (f32 (lc.b *. k c.b))
 
 let add_light ctx (s : surface) (p : Vec.t) (n : Vec.t) (d : Vec.t) interiors (acc : Rgb.t) (lt : light) =
   let lvx = lt.lx -. p.x and lvy = lt.ly -. p.y and lvz = lt.lz -. p.z in
   let dist = sqrt ((lvx *. lvx) +. (lvy *. lvy) +. (lvz *. lvz)) in
   let l = Vec.make (lvx /. dist) (lvy /. dist) (lvz /. dist) in
   let lc =
-    if lt.fade then Rgb.scale (2. /. (1. +. Float.pow (dist /. lt.lfade_distance) lt.lfade_power)) lt.lcolour
+    if lt.fade then
+      let a = 2. /. (1. +. Float.pow (dist /. lt.lfade_distance) lt.lfade_power) in
+      Rgb.make (f32 (lt.lcolour.r *. a)) (f32 (lt.lcolour.g *. a)) (f32 (lt.lcolour.b *. a))
     else lt.lcolour
   in
   let small (c : Rgb.t) bound = Float.abs c.r < bound && Float.abs c.g < bound && Float.abs c.b < bound in
@@ -155,11 +161,11 @@ let add_light ctx (s : surface) (p : Vec.t) (n : Vec.t) (d : Vec.t) interiors (a
       else
         let acc =
           if s.diffuse > 0. then
-            let i = (if s.brilliance = 1. then nl else Float.pow nl s.brilliance) *. s.diffuse *. s.att in
+            let i = (if s.brilliance = 1. then nl else Float.pow nl s.brilliance) *. (s.diffuse *. s.att) in
             Rgb.make
-              (acc.r +. (i *. s.colour.r *. lc.r))
-              (acc.g +. (i *. s.colour.g *. lc.g))
-              (acc.b +. (i *. s.colour.b *. lc.b))
+              (f32 (acc.r +. f32 (f32 (s.colour.r *. i) *. lc.r)))
+              (f32 (acc.g +. f32 (f32 (s.colour.g *. i) *. lc.g)))
+              (f32 (acc.b +. f32 (f32 (s.colour.b *. i) *. lc.b)))
           else acc
         in
         if lt.shadowless then acc (* §3.3: fill lights give no highlights *)
@@ -171,7 +177,8 @@ let add_light ctx (s : surface) (p : Vec.t) (n : Vec.t) (d : Vec.t) interiors (a
               let r = Vec.madd d (-2. *. dn) n in
               let c = Vec.dot r l in
               if c > 0. && (s.phong_size < 60. || c > 0.0008) then
-                Rgb.add acc (Rgb.scale (s.phong *. Float.pow c s.phong_size) hl)
+                let i = s.phong *. Float.pow c s.phong_size in
+                Rgb.make (f32 (acc.r +. f32 (i *. hl.r))) (f32 (acc.g +. f32 (i *. hl.g))) (f32 (acc.b +. f32 (i *. hl.b)))
               else acc
             else acc
           in
@@ -180,7 +187,10 @@ let add_light ctx (s : surface) (p : Vec.t) (n : Vec.t) (d : Vec.t) interiors (a
             let hlen = Vec.length h in
             if hlen > 0. then
               let c = Vec.dot h n /. hlen in
-              if c > 0. then Rgb.add acc (Rgb.scale (s.specular *. Float.pow c s.spec_exp) hl) else acc
+              if c > 0. then
+                let i = s.specular *. Float.pow c s.spec_exp in
+                Rgb.make (f32 (acc.r +. f32 (i *. hl.r))) (f32 (acc.g +. f32 (i *. hl.g))) (f32 (acc.b +. f32 (i *. hl.b)))
+              else acc
             else acc
           else acc
 
@@ -195,13 +205,18 @@ let fresnel_ior sc obj interiors =
       if List.mem obj.id interiors then if rest = [] then 1. /. obj.ior else sc.objects.(last).ior /. obj.ior
       else obj.ior /. sc.objects.(last).ior
 
+(* k·hi + (1 − k)·lo in single precision *)
+let blend k (hi : Rgb.t) (lo : Rgb.t) =
+  let k' = 1. -. k in
+  Rgb.make (f32 (f32 (hi.r *. k) +. f32 (lo.r *. k'))) (f32 (f32 (hi.g *. k) +. f32 (lo.g *. k'))) (f32 (f32 (hi.b *. k) +. f32 (lo.b *. k')))
+
 let reflectivity sc (s : surface) obj interiors ci : Rgb.t =
   let r = s.refl in
   if not r.fresnel then
     let frac = if Float.abs (r.falloff -. 1.) > epsilon then Float.pow (1. -. ci) r.falloff else 1. -. ci in
     if Float.abs frac < epsilon then r.rmin
     else if Float.abs (frac -. 1.) < epsilon then r.rmax
-    else Rgb.add (Rgb.scale frac r.rmax) (Rgb.scale (1. -. frac) r.rmin)
+    else blend frac r.rmax r.rmin
   else
     let n = fresnel_ior sc obj interiors in
     let sq = (n *. n) +. (ci *. ci) -. 1. in
@@ -211,7 +226,7 @@ let reflectivity sc (s : surface) obj interiors ci : Rgb.t =
       let b = ((ci *. (g +. ci)) -. 1.) /. ((ci *. (g -. ci)) +. 1.) in
       let f = 0.5 *. a *. a *. (1. +. (b *. b)) in
       let f = Float.min 1. (Float.max 0. f) in
-      Rgb.add (Rgb.scale f r.rmax) (Rgb.scale (1. -. f) r.rmin)
+      blend f r.rmax r.rmin
     else r.rmax
 
 (* ---------------------------------------------------------------------------------------------- *)
@@ -278,8 +293,7 @@ and shade ctx obj depth ~level ~weight ~interiors (o : Vec.t) (d : Vec.t) : resu
     let refl = if s.reflects then reflectivity sc s obj interiors ci else Rgb.black in
     (* §5.2: the reflected ray's weight, taken before the metallic tint *)
     let w_refl =
-      if s.refl.fresnel then weight *. Rgb.max3 refl
-      else weight *. Float.max (Rgb.max3 s.refl.rmax) (Rgb.max3 s.refl.rmin)
+      f32 (if s.refl.fresnel then weight *. Rgb.max3 refl else weight *. Float.max (Rgb.max3 s.refl.rmax) (Rgb.max3 s.refl.rmin))
     in
     let refl = if s.reflects && s.refl.refl_metallic <> 0. then metallic_factor s.refl.refl_metallic ci s.colour refl else refl in
     let local = if s.lit then Array.fold_left (add_light ctx s p n d interiors) s.emitted sc.lights else s.emitted in
@@ -289,13 +303,14 @@ and shade ctx obj depth ~level ~weight ~interiors (o : Vec.t) (d : Vec.t) : resu
       else
         let filcol =
           if s.conserve && s.reflects then
-            Rgb.mul s.filcol (Rgb.make (Float.min 1. (1. -. refl.r)) (Float.min 1. (1. -. refl.g)) (Float.min 1. (1. -. refl.b)))
+            let k x = f32 (Float.min 1. (1. -. x)) in
+            Rgb.make (f32 (s.filcol.r *. k refl.r)) (f32 (s.filcol.g *. k refl.g)) (f32 (s.filcol.b *. k refl.b))
           else s.filcol
         in
         let trans = Float.min 1. (Float.abs (Rgb.intensity filcol)) in
         if not (trans > sc.adc_bailout) then (local, 0., false)
         else
-          let w = weight *. Float.max (Float.abs filcol.r) (Float.max (Float.abs filcol.g) (Float.abs filcol.b)) in
+          let w = f32 (weight *. Float.max (Float.abs filcol.r) (Float.max (Float.abs filcol.g) (Float.abs filcol.b))) in
           let ct, tir = refract ctx obj ~level ~weight:w ~interiors p d n in
           let att = Rgb.grey obj.old_refract in
           let att =
@@ -303,13 +318,14 @@ and shade ctx obj depth ~level ~weight ~interiors (o : Vec.t) (d : Vec.t) : resu
               fade_factor obj.fade_colour obj.fade_distance obj.fade_power depth att
             else att
           in
-          if tir then (Rgb.make (local.r +. (att.r *. ct.r)) (local.g +. (att.g *. ct.g)) (local.b +. (att.b *. ct.b)), 0., true)
+          if tir then
+            (Rgb.make (f32 (local.r +. f32 (att.r *. ct.r))) (f32 (local.g +. f32 (att.g *. ct.g))) (f32 (local.b +. f32 (att.b *. ct.b))), 0., true)
           else
             ( Rgb.make
-                (local.r +. (att.r *. ct.r *. filcol.r))
-                (local.g +. (att.g *. ct.g *. filcol.g))
-                (local.b +. (att.b *. ct.b *. filcol.b)),
-              Rgb.intensity att *. ct.tr *. trans,
+                (f32 (local.r +. f32 (f32 (att.r *. ct.r) *. filcol.r)))
+                (f32 (local.g +. f32 (f32 (att.g *. ct.g) *. filcol.g)))
+                (f32 (local.b +. f32 (f32 (att.b *. ct.b) *. filcol.b))),
+              f32 (Rgb.intensity att *. ct.tr *. trans),
               false )
     in
     (* §5.3: reflected ray, skipped after total internal reflection *)
@@ -321,8 +337,9 @@ and shade ctx obj depth ~level ~weight ~interiors (o : Vec.t) (d : Vec.t) : resu
       let e = s.refl.exponent in
       if e <> 1. then
         let ie = 1. /. e in
-        { r = local.r +. (refl.r *. Float.pow c.r ie); g = local.g +. (refl.g *. Float.pow c.g ie); b = local.b +. (refl.b *. Float.pow c.b ie); tr }
-      else { r = local.r +. (refl.r *. c.r); g = local.g +. (refl.g *. c.g); b = local.b +. (refl.b *. c.b); tr }
+        let ie = f32 ie in
+        { r = f32 (local.r +. (refl.r *. Float.pow c.r ie)); g = f32 (local.g +. (refl.g *. Float.pow c.g ie)); b = f32 (local.b +. (refl.b *. Float.pow c.b ie)); tr }
+      else { r = f32 (local.r +. f32 (refl.r *. c.r)); g = f32 (local.g +. f32 (refl.g *. c.g)); b = f32 (local.b +. f32 (refl.b *. c.b)); tr }
 
 (* §6.2: the transmitted ray; returns its colour and whether total internal reflection happened. *)
 and refract ctx obj ~level ~weight ~interiors p d n : result * bool =

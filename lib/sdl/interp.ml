@@ -505,11 +505,12 @@ let parse_pigment st (base : Scene.pigment) : Scene.pigment =
 let parse_reflection_block st (r : Scene.reflection) : Scene.reflection =
   (* reflection { MIN [, MAX] [fresnel [b]] [falloff F] [exponent E] [metallic [M]] } (§5.1) *)
   open_block st "reflection";
-  let r =
-    if peek st = RBrace then r
+  let r, one_colour =
+    if peek st = RBrace then (r, false)
     else
       let mn = parse_rgb st "reflection" in
-      if accept st Comma then { r with rmin = mn; rmax = parse_rgb st "reflection" } else { r with rmin = mn; rmax = mn }
+      if accept st Comma then ({ r with rmin = mn; rmax = parse_rgb st "reflection" }, false)
+      else ({ r with rmin = mn; rmax = mn }, true)
   in
   let rec loop (r : Scene.reflection) =
     let loc = peek_loc st in
@@ -522,7 +523,9 @@ let parse_reflection_block st (r : Scene.reflection) : Scene.reflection =
     | Ident s when List.mem s unsupported -> not_supported loc (Printf.sprintf "'%s' in reflection" s)
     | _ -> unexpected st "'fresnel', 'falloff', 'exponent', 'metallic' or '}' in reflection"
   in
-  r |> loop
+  let r = loop r in
+  (* §5.1: with fresnel and a single colour, that colour is the maximum and the minimum is 0 *)
+  if r.fresnel && one_colour then { r with rmin = Rgb.black } else r
 
 let parse_finish st (base : Scene.finish) : Scene.finish =
   open_block st "finish";

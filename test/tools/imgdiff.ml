@@ -11,4 +11,19 @@ let () =
                 (100. *. Povml.Compare.identical_share c) c.peak c.rmse (Povml.Compare.psnr c)
           | Error e -> prerr_endline e; exit 1)
       | Error e, _ | _, Error e -> prerr_endline e; exit 1)
-  | _ -> prerr_endline "usage: imgdiff A.png B.png"; exit 2
+  | [| _; _; _; "-v" |] -> ()
+  | _ -> prerr_endline "usage: imgdiff A.png B.png [-v]"; exit 2
+
+(* With a third argument, list the differing pixels. *)
+let () =
+  match Sys.argv with
+  | [| _; a; b; "-v" |] -> (
+      match (Povml.Output.read_png a, Povml.Output.read_png b) with
+      | Ok ia, Ok ib ->
+          for p = 0 to (ia.width * ia.height) - 1 do
+            let g i = Char.code (Bytes.get ia.pixels i) and h i = Char.code (Bytes.get ib.pixels i) in
+            if g (3 * p) <> h (3 * p) || g ((3 * p) + 1) <> h ((3 * p) + 1) || g ((3 * p) + 2) <> h ((3 * p) + 2) then
+              Printf.printf "(%d,%d): %d %d %d vs %d %d %d\n" (p mod ia.width) (p / ia.width) (g (3 * p)) (g ((3 * p) + 1)) (g ((3 * p) + 2)) (h (3 * p)) (h ((3 * p) + 1)) (h ((3 * p) + 2))
+          done
+      | _ -> ())
+  | _ -> ()

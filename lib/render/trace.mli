@@ -1,0 +1,23 @@
+(** The recursive Whitted tracer (POVRAY-3.7 §2–§7): the colour seen along one ray. *)
+
+type result = { r : float; g : float; b : float; tr : float }
+(** A traced colour, in the working colour space, with its transmittance (used only by the
+    antialiasing comparison, §9.5). *)
+
+type ctx = { scene : Compiled.t; stats : Stats.t; depth : float array }
+(** What a trace reads: the compiled scene, the worker's statistics, a one-slot scratch. *)
+
+val make_ctx : Compiled.t -> Stats.t -> ctx
+(** [make_ctx scene stats] is a context for one render worker. *)
+
+val black : result
+(** [black] is what a ray cut off by max_trace_level or adc_bailout returns. *)
+
+val f32 : float -> float
+(** [f32 x] is [x] rounded to single precision, as POV-Ray stores colours (§8.3). *)
+
+val trace : ctx -> level:int -> weight:float -> interiors:int list -> continued:bool -> Vec.t -> Vec.t -> result
+(** [trace ctx ~level ~weight ~interiors ~continued origin dir] is the colour seen from [origin]
+    along the unit direction [dir] (§7): black past max_trace_level or below adc_bailout, the sky
+    when nothing is hit, else the shaded surface. [interiors] are the objects the ray is inside,
+    last entered first; a [continued] ray (ior 1 transmission) does not use up a trace level. *)
