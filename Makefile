@@ -1,0 +1,42 @@
+# povml — set-up, build, render, test, benchmark.
+# `make render` and `make test` install whatever Debian packages are missing first.
+
+DEB_PACKAGES = libcamlimages-ocaml-dev libalcotest-ocaml-dev \
+               libcmdliner-ocaml-dev libparmap-ocaml-dev libqcheck-ocaml-dev povray povray-includes time
+
+SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
+POVML = ./_build/default/bin/main.exe
+
+.PHONY: all deps build render test bench references clean
+
+all: build
+
+# Install only the packages that are missing (dpkg-query answers quickly; apt-get runs only if needed).
+deps:
+	@missing=""; for p in $(DEB_PACKAGES); do \
+	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q "install ok installed" || missing="$$missing $$p"; \
+	done; \
+	if [ -n "$$missing" ]; then \
+	  echo "Installing Debian packages:$$missing"; \
+	  $(SUDO) apt-get update -q && DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -q $$missing; \
+	fi
+	@mkdir -p $$HOME/.povray/3.7 && touch $$HOME/.povray/3.7/povray.conf
+
+build: deps
+	dune build
+
+render: build
+	$(POVML) +Iscenes/showcase.pov +Oshowcase.png +W640 +H480 +A0.3 -D
+	@echo "The showcase scene is in $$(pwd)/showcase.png"
+
+test: build
+	dune test
+
+bench: build
+	bash scenes/bench/run.sh
+
+references: deps
+	bash reference/regen.sh
+
+clean:
+	dune clean

@@ -1,0 +1,72 @@
+(* Image tests: each (scene, options) line of reference/manifest.tsv is rendered with the povml
+   executable and compared with POV-Ray 3.7.0.10's reference PNG. The thresholds come from the
+   manifest, never from this file. *)
+
+let povml = ref ""
+
+type case = { name : string; scene : string; options : string list; min_identical : float; max_peak : int; reason : string }
+
+let read_manifest path =
+  let ic = open_in path in
+  let rec lines acc = match input_line ic with l -> lines (l :: acc) | exception End_of_file -> close_in ic; List.rev acc in
+  lines []
+  |> List.filter (fun l -> String.trim l <> "" && l.[0] <> '#')
+  |> List.tl (* header *)
+  |> List.map (fun l ->
+         match String.split_on_char '\t' l with
+         | name :: scene :: options :: mi :: mp :: reason ->
+             {
+               name;
+               scene;
+               options = List.filter (( <> ) "") (String.split_on_char ' ' options);
+               min_identical = float_of_string mi;
+               max_peak = int_of_string mp;
+               reason = String.concat "\t" reason;
+             }
+         | _ -> failwith ("malformed manifest line: " ^ l))
+
+let run_povml args =
+  let cmd = Filename.quote_command !povml args ~stdout:"/dev/null" ~stderr:"/dev/null" in
+  Sys.command cmd
+
+let render case out extra = run_povml ([ "+I" ^ case.scene; "+O" ^ out; "-D" ] @ case.options @ extra)
+
+let load path = match Povml.Output.read_png path with Ok i -> i | Error e -> Alcotest.failf "%s: %s" path e
+
+let check case () =
+  let out = Filename.temp_file ("povml-" ^ case.name) ".png" in
+  let code = render case out [] in
+  Alcotest.(check int) (case.name ^ ": povml exit status") 0 code;
+  let mine = load out and theirs = load (Filename.concat "reference" (case.name ^ ".png")) in
+  Sys.remove out;
+  match Povml.Compare.images mine theirs with
+  | Error e -> Alcotest.fail e
+  | Ok c ->
+      let share = Povml.Compare.identical_share c in
+      Printf.printf "%-40s %8.4f%% identical, %5d differing, peak %3d/255 (needs >= %.2f%%, peak <= %d)\n%!" case.name
+        (100. *. share) c.differing c.peak (100. *. case.min_identical) case.max_peak;
+      if share < case.min_identical then
+        Alcotest.failf "%s: only %.4f%% of pixels identical to POV-Ray's (threshold %.2f%%)" case.name (100. *. share)
+          (100. *. case.min_identical);
+      if c.peak > case.max_peak then Alcotest.failf "%s: peak channel error %d/255 exceeds %d" case.name c.peak case.max_peak
+
+(* The image must not depend on the number of render processes (§ issue: both cores). *)
+let same_for_any_thread_count case () =
+  let a = Filename.temp_file "povml-wt1" ".png" and b = Filename.temp_file "povml-wt2" ".png" in
+  Alcotest.(check int) "exit +WT1" 0 (render case a [ "+WT1" ]);
+  Alcotest.(check int) "exit +WT2" 0 (render case b [ "+WT2" ]);
+  let ia = load a and ib = load b in
+  Sys.remove a;
+  Sys.remove b;
+  Alcotest.(check bool) "identical pixels for +WT1 and +WT2" true (Bytes.equal ia.pixels ib.pixels)
+
+let () =
+  povml := (if Filename.is_relative Sys.argv.(1) then Filename.concat (Sys.getcwd ()) Sys.argv.(1) else Sys.argv.(1));
+  Sys.chdir "../..";
+  let cases = read_manifest "reference/manifest.tsv" in
+  let aa = List.find (fun c -> List.exists (fun o -> String.length o > 1 && String.sub o 0 2 = "+A") c.options) cases in
+  Alcotest.run ~argv:[| "test_image" |] "images"
+    [
+      ("against POV-Ray", List.map (fun c -> Alcotest.test_case c.name `Quick (check c)) cases);
+      ("determinism", [ Alcotest.test_case ("+WT1 = +WT2 on " ^ aa.name) `Quick (same_for_any_thread_count aa) ]);
+    ]
