@@ -75,8 +75,19 @@ let tokenize ~file text =
     push (Num f) (loc_at pos);
     !p
   in
+  (* End of file is reported just after the last visible character, so a message about a missing
+     '}' shows the line where the text stops. *)
+  let eof_loc () =
+    let p = ref (len - 1) in
+    while !p >= start && (match text.[!p] with ' ' | '\t' | '\r' | '\n' -> true | _ -> false) do decr p done;
+    if !p < start then { Loc.file; line = 1; col = 1 }
+    else
+      let line = ref 1 and bol = ref start in
+      for i = start to !p do if text.[i] = '\n' then (incr line; bol := i + 1) done;
+      { Loc.file; line = !line; col = !p - !bol + 2 }
+  in
   let rec go pos =
-    if pos >= len then push Eof (loc_at pos)
+    if pos >= len then push Eof (eof_loc ())
     else
       let c = text.[pos] in
       let next = pos + 1 in

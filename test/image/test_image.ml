@@ -3,6 +3,7 @@
    manifest, never from this file. *)
 
 let povml = ref ""
+let summary = ref [] (* lines of the report printed after the run *)
 
 type case = { name : string; scene : string; options : string list; min_identical : float; max_peak : int; reason : string }
 
@@ -43,8 +44,10 @@ let check case () =
   | Error e -> Alcotest.fail e
   | Ok c ->
       let share = Povml.Compare.identical_share c in
-      Printf.printf "%-40s %8.4f%% identical, %5d differing, peak %3d/255 (needs >= %.2f%%, peak <= %d)\n%!" case.name
-        (100. *. share) c.differing c.peak (100. *. case.min_identical) case.max_peak;
+      summary :=
+        Printf.sprintf "%-36s %9.4f%% identical %6d differing  peak %3d/255   (needs >= %.2f%%, peak <= %d)" case.name
+          (100. *. share) c.differing c.peak (100. *. case.min_identical) case.max_peak
+        :: !summary;
       if share < case.min_identical then
         Alcotest.failf "%s: only %.4f%% of pixels identical to POV-Ray's (threshold %.2f%%)" case.name (100. *. share)
           (100. *. case.min_identical);
@@ -65,8 +68,16 @@ let () =
   Sys.chdir "../..";
   let cases = read_manifest "reference/manifest.tsv" in
   let aa = List.find (fun c -> List.exists (fun o -> String.length o > 1 && String.sub o 0 2 = "+A") c.options) cases in
-  Alcotest.run ~argv:[| "test_image" |] "images"
-    [
-      ("against POV-Ray", List.map (fun c -> Alcotest.test_case c.name `Quick (check c)) cases);
-      ("determinism", [ Alcotest.test_case ("+WT1 = +WT2 on " ^ aa.name) `Quick (same_for_any_thread_count aa) ]);
-    ]
+  let report () =
+    print_endline "povml against POV-Ray 3.7.0.10 (reference/manifest.tsv):";
+    List.iter print_endline (List.rev !summary)
+  in
+  match
+    Alcotest.run ~and_exit:false ~argv:[| "test_image" |] "images"
+      [
+        ("against POV-Ray", List.map (fun c -> Alcotest.test_case c.name `Quick (check c)) cases);
+        ("determinism", [ Alcotest.test_case ("+WT1 = +WT2 on " ^ aa.name) `Quick (same_for_any_thread_count aa) ]);
+      ]
+  with
+  | () -> report ()
+  | exception e -> report (); raise e
