@@ -140,7 +140,10 @@ let metallic_factor metallic cos_angle (c : Rgb.t) (lc : Rgb.t) =
   let k ch = f32 (1. +. f32 (m *. f32 (ch -. 1.))) in
   Rgb.make (f32 (lc.r *. k c.r)) (f32 (lc.g *. k c.g)) (f32 (lc.b *. k c.b))
 
-let add_light ctx (s : surface) (p : Vec.t) (n : Vec.t) (d : Vec.t) interiors (acc : Rgb.t) (lt : light) =
+(* One light's diffuse, phong and specular terms, summed in single precision the way POV-Ray sums
+   them: per light first, then into the surface colour. *)
+let light_terms ctx (s : surface) (p : Vec.t) (n : Vec.t) (d : Vec.t) interiors (lt : light) : Rgb.t =
+  let acc = Rgb.black in
   let lvx = lt.lx -. p.x and lvy = lt.ly -. p.y and lvz = lt.lz -. p.z in
   let dist = sqrt ((lvx *. lvx) +. (lvy *. lvy) +. (lvz *. lvz)) in
   let l = Vec.make (lvx /. dist) (lvy /. dist) (lvz /. dist) in
@@ -151,13 +154,13 @@ let add_light ctx (s : surface) (p : Vec.t) (n : Vec.t) (d : Vec.t) interiors (a
     else lt.lcolour
   in
   let small (c : Rgb.t) bound = Float.abs c.r < bound && Float.abs c.g < bound && Float.abs c.b < bound in
-  if small lc epsilon then acc
+  if small lc epsilon then Rgb.black
   else
     let nl = Vec.dot n l in
-    if nl < epsilon then acc
+    if nl < epsilon then Rgb.black
     else
       let lc = if lt.shadowless then lc else shadow ctx p l dist interiors lc in
-      if Float.abs lc.r <= epsilon && Float.abs lc.g <= epsilon && Float.abs lc.b <= epsilon then acc
+      if Float.abs lc.r <= epsilon && Float.abs lc.g <= epsilon && Float.abs lc.b <= epsilon then Rgb.black
       else
         let acc =
           if s.diffuse > 0. then
@@ -193,6 +196,10 @@ let add_light ctx (s : surface) (p : Vec.t) (n : Vec.t) (d : Vec.t) interiors (a
               else acc
             else acc
           else acc
+
+let add_light ctx s p n d interiors (acc : Rgb.t) lt =
+  let t = light_terms ctx s p n d interiors lt in
+  Rgb.make (f32 (acc.r +. t.r)) (f32 (acc.g +. t.g)) (f32 (acc.b +. t.b))
 
 (* ---------------------------------------------------------------------------------------------- *)
 (* Reflectivity (§5.2) *)
