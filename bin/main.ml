@@ -143,6 +143,7 @@ let run input positional output width height antialias no_aa method_ depth jitte
               area;
               block_size = max 4 (min (max width height) block_size);
               workers = max 1 threads;
+              progress = Unix.isatty Unix.stderr;
             }
           in
           match Pipeline.run opts input with

@@ -16,6 +16,7 @@ type options = {
   area : area;
   block_size : int;
   workers : int;
+  progress : bool;
 }
 
 let full_area w h = { left = 0; right = w - 1; top = 0; bottom = h - 1 }
@@ -148,17 +149,22 @@ let render opts (sc : Compiled.t) (gamma : Scene.gamma) : Image.t * Stats.t =
   let g = match gamma with Scene.Gamma_off -> 1. | Scene.Working g -> g in
   let inv = 1. /. opts.aa_gamma in
   let enc x = if g = 1. then Float.pow (Float.max x 0.) inv else Float.pow (Float.pow (Float.max x 0.) g) inv in
-  let work b =
+  let bl = blocks opts in
+  let total = List.length bl in
+  let work (i, b) =
     let stats = Stats.create () in
     let ctx = Trace.make_ctx sc stats in
     let px = render_block ctx opts enc b in
+    (* blocks finish in about this order whichever worker renders them *)
+    if opts.progress then Printf.eprintf "\rRendering block %d of %d %!" (i + 1) total;
     (b, px, stats)
   in
-  let bl = blocks opts in
+  let bl = List.mapi (fun i b -> (i, b)) bl in
   let results =
-    if opts.workers <= 1 || List.length bl <= 1 then List.map work bl
+    if opts.workers <= 1 || total <= 1 then List.map work bl
     else Parmap.parmap ~ncores:opts.workers ~chunksize:1 work (Parmap.L bl)
   in
+  if opts.progress then prerr_string "\r\027[K";
   let img = Image.create opts.width opts.height in
   let stats =
     List.fold_left

@@ -13,6 +13,7 @@ type options = {
   area : area;
   block_size : int;  (** 32 in POV-Ray; the antialiasing result depends on it (§9.3) *)
   workers : int;  (** processes; the image does not depend on it *)
+  progress : bool;  (** print a progress line on stderr *)
 }
 
 val full_area : int -> int -> area
