@@ -452,9 +452,8 @@ and colour_array (c : Colour.t) = [| c.red; c.green; c.blue; c.filter; c.transmi
 let parse_rgb st what =
   let loc = peek_loc st in
   if is_colour_start st then begin
-    let c = parse_colour st in
-    if c.filter <> 0. || c.transmit <> 0. then warn st loc "%s: filter and transmit are ignored here" what;
-    Colour.rgb c
+    (* filter and transmit are dropped silently, as POV-Ray does for light colours *)
+    Colour.rgb (parse_colour st)
   end
   else
     match parse_expr st with
@@ -566,8 +565,14 @@ let parse_finish st (base : Scene.finish) : Scene.finish =
           loop { f with reflection = { f.reflection with rmin = c; rmax = c; falloff = 1.; fresnel = false } }
     | Ident "reflection_exponent" -> advance st; loop { f with reflection = { f.reflection with exponent = parse_float st } }
     | Ident "conserve_energy" -> advance st; loop { f with conserve_energy = parse_bool_opt st }
-    | Ident "refraction" -> advance st; loop { f with refraction = parse_float st }
-    | Ident "ior" -> advance st; loop { f with legacy_ior = Some (parse_float st) }
+    | Ident "refraction" ->
+        advance st;
+        warn st loc "refraction value unnecessary to turn on refraction; to attenuate, the fade_power and fade_distance keywords should be specified in 'interior{...}'";
+        loop { f with refraction = parse_float st }
+    | Ident "ior" ->
+        advance st;
+        warn st loc "index of refraction value should be specified in 'interior{...}' statement";
+        loop { f with legacy_ior = Some (parse_float st) }
     | Ident s when List.mem s unsupported -> not_supported loc (Printf.sprintf "'%s' in a finish" s)
     | _ -> unexpected st "a finish keyword or '}'"
   in
@@ -923,8 +928,13 @@ let finish_scene st : Scene.t =
         warn st Loc.none
           "assumed_gamma not specified in this POV-Ray 3.7 or later scene; the working gamma is 1.0 (add 'assumed_gamma 1.0' to global_settings)";
         Scene.Working 1.
-    | None -> Scene.Gamma_off
+    | None ->
+        warn st Loc.none "assumed_gamma not specified, so gamma correction is turned off for compatibility with this pre POV-Ray 3.7 scene";
+        Scene.Gamma_off
   in
+  if not st.version_set then
+    warn st Loc.none
+      "this scene did not contain a #version directive; it is rendered as a POV-Ray 3.62 scene (no gamma correction, legacy transparency); add '#version 3.7;' at the start";
   let background =
     match st.background with
     | Some b -> b
