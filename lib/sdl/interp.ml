@@ -345,11 +345,16 @@ and parse_function st loc name =
   | "sin" -> f1 sin
   | "cos" -> f1 cos
   | "tan" -> f1 tan
-  | "asin" -> f1 (fun x -> asin (Float.max (-1.) (Float.min 1. x)))
-  | "acos" -> f1 (fun x -> acos (Float.max (-1.) (Float.min 1. x)))
+  | "asin" | "acos" ->
+      (* §11.2: the argument is clamped to ±1 with a warning *)
+      let f = if name = "asin" then asin else acos in
+      f1 (fun x ->
+          if x < -1. || x > 1. then warn st loc "domain error in '%s': %g is clamped to the range -1 … 1" name x;
+          f (Float.max (-1.) (Float.min 1. x)))
   | "atan" -> f1 atan
   | "atan2" -> f2 Float.atan2
-  | "pow" -> f2 Float.pow
+  | "pow" ->
+      f2 (fun a b -> if a = 0. && b = 0. then Error.raise_at loc "pow(0, 0) is undefined" else Float.pow a b)
   | "exp" -> f1 exp
   | "ln" -> f1 log
   | "log" -> f1 log10
@@ -365,7 +370,11 @@ and parse_function st loc name =
       let fs = List.map float_arg args in
       V.Float (List.fold_left (if name = "min" then Float.min else Float.max) (List.hd fs) fs)
   | "vlength" -> arity 1; V.Float (Vec.length (vec_arg (List.hd args)))
-  | "vnormalize" -> arity 1; of_vec (Vec.normalize (vec_arg (List.hd args)))
+  | "vnormalize" ->
+      arity 1;
+      let a = vec_arg (List.hd args) in
+      if Vec.length a = 0. then warn st loc "normalizing zero-length vector; the result is <0,0,0>";
+      of_vec (Vec.normalize a)
   | "vdot" -> arity 2; V.Float (Vec.dot (vec_arg (List.nth args 0)) (vec_arg (List.nth args 1)))
   | "vcross" -> arity 2; of_vec (Vec.cross (vec_arg (List.nth args 0)) (vec_arg (List.nth args 1)))
   | "select" ->
@@ -660,7 +669,7 @@ let parse_object st : V.obj =
       advance st;
       open_block st "sphere";
       let centre = parse_vector st in
-      expect st Comma "',' between the centre and the radius of a sphere";
+      ignore (accept st Comma) (* POV-Ray accepts the comma as optional *);
       let rloc = peek_loc st in
       let radius = parse_float st in
       if radius <= 0. then warn st rloc "sphere radius %g is not positive" radius;
@@ -670,7 +679,7 @@ let parse_object st : V.obj =
       open_block st "plane";
       let nloc = peek_loc st in
       let n = parse_vector st in
-      expect st Comma "',' between the normal and the distance of a plane";
+      ignore (accept st Comma);
       let d = parse_float st in
       (* §2.3: the normal is normalised, the distance is NOT divided by |n| *)
       if Vec.length n = 0. then Error.raise_at nloc "degenerate plane normal <0,0,0>";
@@ -727,10 +736,7 @@ let parse_camera st =
     | Ident s when List.mem s unsupported -> not_supported loc (Printf.sprintf "'%s' in a camera" s)
     | _ -> unexpected st "a camera keyword or '}'"
   in
-  let base = match st.camera with Some c -> c | None -> empty_camera in
-  (* keywords of a second camera statement modify the first, as in POV-Ray *)
-  let c = loop { base with c_translate = Vec.zero } in
-  st.camera <- Some { c with c_translate = Vec.add base.c_translate c.c_translate }
+  st.camera <- Some (loop empty_camera)
 
 (* §1.3: the camera modifiers are applied in a fixed order, whatever order they were written in. *)
 let build_camera st (c : camera_spec) : Scene.camera =
@@ -804,7 +810,8 @@ let parse_global_settings st =
         advance st;
         let g = parse_float st in
         if g <= 0. then Error.raise_at loc "assumed_gamma must be positive, not %g" g;
-        st.assumed_gamma <- Some g;
+        if st.assumed_gamma = None then st.assumed_gamma <- Some g
+        else warn st loc "new instance of assumed_gamma ignored";
         loop ()
     | Ident "max_trace_level" ->
         advance st;
@@ -842,6 +849,9 @@ let parse_sky_sphere st =
   in
   st.sky <- Some (loop [] Rgb.white)
 
+(* §8.1: the version POV-Ray's renderer sees so far: 3.62 until a #version has been read. *)
+let effective_version st = if st.version_set then st.version else 362
+
 let parse_background st =
   advance st;
   open_block st "background";
@@ -850,7 +860,7 @@ let parse_background st =
   (* §8.4: from 3.70 the transmit is folded into rgb; before, filter and transmit become 0 *)
   st.background <-
     Some
-      (if st.version >= 370 then
+      (if effective_version st >= 370 then
          { Colour.red = c.red *. (1. -. c.transmit); green = c.green *. (1. -. c.transmit); blue = c.blue *. (1. -. c.transmit); filter = 0.; transmit = 0. }
        else { c with filter = 0.; transmit = 0. })
 
@@ -905,7 +915,11 @@ let rec parse_statements st =
   | Directive ("declare" | "local") -> parse_declare st; parse_statements st
   | Directive d when List.mem d unsupported_directives -> not_supported loc (Printf.sprintf "'#%s'" d)
   | Directive d -> Error.raise_at loc "unknown directive '#%s'" d
-  | Ident "camera" -> advance st; parse_camera st; parse_statements st
+  | Ident "camera" ->
+      advance st;
+      if st.camera <> None then warn st loc "more than one camera in scene; ignoring previous camera(s)";
+      parse_camera st;
+      parse_statements st
   | Ident "light_source" -> parse_light st; parse_statements st
   | Ident "background" -> parse_background st; parse_statements st
   | Ident "sky_sphere" -> parse_sky_sphere st; parse_statements st

@@ -1,6 +1,7 @@
 open Token
 
 let is_digit c = c >= '0' && c <= '9'
+let is_hex c = is_digit c || (c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F')
 let is_ident_start c = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c = '_'
 let is_ident c = is_ident_start c || is_digit c
 
@@ -47,8 +48,12 @@ let tokenize ~file text =
             | 'v' -> Buffer.add_char buf '\011'
             | '0' -> Buffer.add_char buf '\000'
             | '\\' | '"' | '\'' -> Buffer.add_char buf e
+            | 'u' when p + 5 < len && String.for_all is_hex (String.sub text (p + 2) 4) ->
+                (* \uXXXX: a Unicode code point, kept as UTF-8 *)
+                let cp = int_of_string ("0x" ^ String.sub text (p + 2) 4) in
+                Buffer.add_utf_8_uchar buf (if Uchar.is_valid cp then Uchar.of_int cp else Uchar.rep)
             | _ -> Buffer.add_char buf '\\'; Buffer.add_char buf e);
-            go (p + 2)
+            go (if e = 'u' && p + 5 < len && String.for_all is_hex (String.sub text (p + 2) 4) then p + 6 else p + 2)
         | c -> Buffer.add_char buf c; go (p + 1)
     in
     let p = go pos in

@@ -1,0 +1,99 @@
+(* Render: camera rays (§1.4) and the render loop. *)
+
+open Povml
+open Helpers
+
+let default_cam = (scene "").camera
+
+let test_centre_pixel () =
+  (* 3×3: x0 = (1 + 0.5)/3 − 0.5 = 0, y0 = 0.5 − (1 + 0.5)/3 = 0: along direction *)
+  vec_eq "3x3 centre" (v 0. 0. 1.) (Render.camera_dir default_cam 3 3 1. 1.);
+  (* 5×3 centre pixel (2,1) *)
+  vec_eq "5x3 centre" (v 0. 0. 1.) (Render.camera_dir default_cam 5 3 2. 1.);
+  (* with look_at the centre ray is the unit direction: location <0,0,0>, look_at <1,1,1> *)
+  let cam = (scene "camera { direction <0,0,2> look_at <1,1,1> }").camera in
+  let s3 = 1. /. sqrt 3. in
+  vec_eq ~eps:1e-12 "look_at centre" (v s3 s3 s3) (Render.camera_dir cam 7 5 3. 2.)
+
+let test_pixel_formula () =
+  (* 4×2, pixel (0,0): x0 = 0.5/4 − 0.5 = −0.375, y0 = 0.5 − 0.5/2 = 0.25;
+     direction + x0·right + y0·up = <−0.375·1.33, 0.25, 1> = <−0.49875, 0.25, 1>, length 1.1450989 *)
+  let l = sqrt ((0.49875 *. 0.49875) +. 0.0625 +. 1.) in
+  vec_eq ~eps:1e-12 "4x2 top left" (v (-0.49875 /. l) (0.25 /. l) (1. /. l)) (Render.camera_dir default_cam 4 2 0. 0.);
+  vec_eq ~eps:1e-7 "4x2 top left, rounded" (v (-0.4355519) 0.2183217 0.8732870) (Render.camera_dir default_cam 4 2 0. 0.);
+  (* pixel (3,1): x0 = 3.5/4 − 0.5 = 0.375, y0 = 0.5 − 1.5/2 = −0.25 *)
+  vec_eq ~eps:1e-12 "4x2 bottom right" (v (0.49875 /. l) (-0.25 /. l) (1. /. l)) (Render.camera_dir default_cam 4 2 3. 1.);
+  (* fractional position (−0.5, −0.5) is the top-left corner of the image: x0 = −0.5, y0 = 0.5 *)
+  let c = v (-0.665) 0.5 1. in
+  vec_eq ~eps:1e-12 "image corner" (Vec.normalize c) (Render.camera_dir default_cam 10 10 (-0.5) (-0.5));
+  (* the result is unit length *)
+  float_eq ~eps:1e-12 "unit" 1. (Vec.length (Render.camera_dir default_cam 7 3 0.3 2.9));
+  (* +y is up: the top row looks up, the bottom row down *)
+  Alcotest.(check bool) "top row looks up" true ((Render.camera_dir default_cam 3 3 1. 0.).y > 0.);
+  Alcotest.(check bool) "bottom row looks down" true ((Render.camera_dir default_cam 3 3 1. 2.).y < 0.)
+
+let opts = render_opts
+
+(* A 3×3 image: the centre ray hits a sphere of ambient 1 (colour 1), the corners see the background. *)
+let sphere_scene = "#version 3.7;\nglobal_settings { assumed_gamma 1 }\nbackground { rgb <0.1,0.2,0.3> }\nsphere { <0,0,5>, 1 pigment { rgb 1 } finish { ambient 1 diffuse 0 } }"
+
+let pixel img x y =
+  let r, g, b = Image.get img x y in
+  (r, g, b)
+
+let check_pixel msg (er, eg, eb) img x y =
+  let r, g, b = pixel img x y in
+  float_eq ~eps:1e-6 (msg ^ " r") er r;
+  float_eq ~eps:1e-6 (msg ^ " g") eg g;
+  float_eq ~eps:1e-6 (msg ^ " b") eb b
+
+let test_full_area () =
+  let a = Render.full_area 4 3 in
+  Alcotest.(check (list int)) "left right top bottom" [ 0; 3; 0; 2 ] [ a.left; a.right; a.top; a.bottom ]
+
+let test_render () =
+  let c = compile sphere_scene in
+  let img, stats = Render.render (opts 3 3) c (Scene.Working 1.) in
+  Alcotest.(check int) "width" 3 img.width;
+  check_pixel "centre hits the sphere" (1., 1., 1.) img 1 1;
+  (* corner (0,0): x0 = −1/3 → −0.443, y0 = 1/3; at z = 5 the ray is 2.8 off the axis: background *)
+  check_pixel "corner sees the background" (0.1, 0.2, 0.3) img 0 0;
+  check_pixel "corner (2,2)" (0.1, 0.2, 0.3) img 2 2;
+  Alcotest.(check int) "one camera ray per pixel" 9 stats.camera_rays;
+  Alcotest.(check int) "no AA samples" 0 stats.samples;
+  (* a partial render leaves the rest black *)
+  let o = { (opts 3 3) with area = { left = 1; right = 2; top = 1; bottom = 1 } } in
+  let img, stats = Render.render o c (Scene.Working 1.) in
+  check_pixel "rendered" (1., 1., 1.) img 1 1;
+  check_pixel "rendered (2,1)" (0.1, 0.2, 0.3) img 2 1;
+  check_pixel "not rendered" (0., 0., 0.) img 0 0;
+  Alcotest.(check int) "two camera rays" 2 stats.camera_rays
+
+let test_blocks_and_workers () =
+  (* the image does not depend on the block size or the number of workers *)
+  let c = compile sphere_scene in
+  let a, _ = Render.render (opts 7 5) c (Scene.Working 1.) in
+  let b, sb = Render.render { (opts 7 5) with block_size = 2; workers = 2 } c (Scene.Working 1.) in
+  Alcotest.(check bool) "same image" true (Float.Array.to_list a.data = Float.Array.to_list b.data);
+  Alcotest.(check int) "stats merged over blocks" 35 sb.camera_rays
+
+let test_antialias () =
+  (* a uniform image is never supersampled *)
+  let bg = compile "#version 3.7;\nglobal_settings { assumed_gamma 1 }\nbackground { rgb 0.5 }" in
+  let img, stats = Render.render { (opts 4 4) with antialias = Some 0.3 } bg (Scene.Working 1.) in
+  Alcotest.(check int) "no samples" 0 stats.samples;
+  check_pixel "uniform" (0.5, 0.5, 0.5) img 2 2;
+  (* an edge is: each supersampled pixel takes aa_depth² = 9 more samples *)
+  let _, stats = Render.render { (opts 3 3) with antialias = Some 0.3 } (compile sphere_scene) (Scene.Working 1.) in
+  Alcotest.(check bool) "samples taken" true (stats.samples > 0);
+  Alcotest.(check int) "samples are multiples of 9" 0 (stats.samples mod 9)
+
+let tests =
+  [
+    Alcotest.test_case "centre pixel" `Quick test_centre_pixel;
+    Alcotest.test_case "pixel formula" `Quick test_pixel_formula;
+    Alcotest.test_case "full_area" `Quick test_full_area;
+    Alcotest.test_case "render" `Quick test_render;
+    Alcotest.test_case "blocks and workers" `Quick test_blocks_and_workers;
+    Alcotest.test_case "antialias" `Quick test_antialias;
+  ]

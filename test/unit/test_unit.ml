@@ -1,0 +1,28 @@
+(* Unit tests of the povml library: one group per module. The "POV-Ray source rules" groups hold
+   behaviours first found missing by these tests (optional commas, a second camera or assumed_gamma,
+   \uXXXX escapes, the version a background sees). *)
+
+let () =
+  Alcotest.run "povml"
+    ([
+      ("Vec", Test_vec.tests);
+      ("Lexer", Test_lexer.tests);
+      ("Interp", Test_interp.tests);
+      ("Value", Test_misc.tests_value);
+      ("Suggest", Test_misc.tests_suggest);
+      ("Colour", Test_misc.tests_colour);
+      ("Defaults", Test_misc.tests_defaults);
+      ("Error", Test_misc.tests_error);
+      ("Compile", Test_compile.tests);
+      ("Trace", Test_trace.tests);
+      ("Render", Test_render.tests);
+      ("Jitter", Test_jitter.tests);
+      ("Stats", Test_misc.tests_stats);
+      ("Image", Test_misc.tests_image);
+      ("Encode", Test_encode.tests);
+      ("Compare", Test_compare.tests);
+      ("Output", Test_misc.tests_output);
+      ("Pipeline", Test_misc.tests_pipeline);
+      ("POV-Ray source rules (Lexer)", Test_lexer.source_rules);
+      ("POV-Ray source rules (Interp)", Test_interp.source_rules);
+    ])
