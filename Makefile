@@ -30,7 +30,7 @@ render: build
 	@echo "The showcase scene is in $$(pwd)/showcase.png"
 
 test: build
-	dune test
+	dune test --force
 
 bench: build
 	bash scenes/bench/run.sh
