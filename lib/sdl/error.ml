@@ -42,8 +42,9 @@ let excerpt ~source (loc : Loc.t) =
 
 let render ~source ~kind e =
   let head =
-    if e.loc.line <= 0 then Printf.sprintf "%s: %s\n" kind e.msg
-    else Printf.sprintf "%s: %s: %s\n" (Loc.to_string e.loc) kind e.msg
+    if e.loc.line > 0 then Printf.sprintf "%s: %s: %s\n" (Loc.to_string e.loc) kind e.msg
+    else if e.loc.file <> "" then Printf.sprintf "%s: %s: %s\n" e.loc.file kind e.msg
+    else Printf.sprintf "%s: %s\n" kind e.msg
   in
   let note (l, m) =
     if l.Loc.line <= 0 then Printf.sprintf "note: %s\n" m

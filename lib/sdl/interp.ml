@@ -982,12 +982,21 @@ let load_string opts ~file text =
   (scene, List.rev st.warnings)
 
 let read_file path =
+  let at = { Loc.none with file = path } in
+  let reason msg =
+    (* Sys_error reads "path: reason"; the path is already in the location *)
+    let p = path ^ ": " in
+    if String.length msg > String.length p && String.sub msg 0 (String.length p) = p then
+      String.sub msg (String.length p) (String.length msg - String.length p)
+    else msg
+  in
+  if Sys.file_exists path && Sys.is_directory path then Error.raise_at at "this is a directory, not a scene file";
   match open_in_bin path with
-  | exception Sys_error msg -> Error.raise_at Loc.none "cannot open scene file: %s" msg
+  | exception Sys_error msg -> Error.raise_at at "cannot open the scene file: %s" (reason msg)
   | ic ->
       Fun.protect ~finally:(fun () -> close_in_noerr ic) (fun () ->
           match really_input_string ic (in_channel_length ic) with
           | s -> s
-          | exception Sys_error msg -> Error.raise_at Loc.none "cannot read scene file: %s" msg)
+          | exception Sys_error msg -> Error.raise_at at "cannot read the scene file: %s" (reason msg))
 
 let load_file opts path = load_string opts ~file:path (read_file path)
