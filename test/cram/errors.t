@@ -14,7 +14,7 @@ A misspelt keyword gets a suggestion:
         | ^
   [1]
   $ povml +Inothere.pov -D
-  error: cannot open scene file: nothere.pov: No such file or directory
+  nothere.pov: error: cannot open the scene file: No such file or directory
   [1]
   $ ls typo.png
   ls: cannot access 'typo.png': No such file or directory
