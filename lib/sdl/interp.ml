@@ -18,8 +18,9 @@ type camera_spec = {
 }
 
 type st = {
-  toks : Token.t array;
-  mutable pos : int;
+  lexer : Lexer.t;
+  mutable cur : Token.t;  (* the next token *)
+  mutable ahead : Token.t option;  (* the one after it, once peeked *)
   opts : options;
   table : (string, V.t) Hashtbl.t;
   mutable version : int;  (* languageVersion × 100 *)
@@ -81,10 +82,21 @@ let is_keyword s = List.mem s keywords || List.mem s unsupported
 (* ---------------------------------------------------------------------------------------------- *)
 (* Token access *)
 
-let peek st = st.toks.(st.pos).kind
-let peek_loc st = st.toks.(st.pos).loc
-let peek2 st = if st.pos + 1 < Array.length st.toks then st.toks.(st.pos + 1).kind else Eof
-let advance st = if st.pos < Array.length st.toks - 1 then st.pos <- st.pos + 1
+let peek st = st.cur.kind
+let peek_loc st = st.cur.loc
+
+let peek2 st =
+  match st.ahead with
+  | Some t -> t.kind
+  | None ->
+      let t = Lexer.next st.lexer in
+      st.ahead <- Some t;
+      t.kind
+
+let advance st =
+  match st.ahead with
+  | Some t -> st.cur <- t; st.ahead <- None
+  | None -> if st.cur.kind <> Eof then st.cur <- Lexer.next st.lexer
 
 let warn st loc fmt = Printf.ksprintf (fun msg -> st.warnings <- { Error.loc; msg; notes = [] } :: st.warnings) fmt
 
@@ -969,10 +981,11 @@ let finish_scene st : Scene.t =
   }
 
 let load_string opts ~file text =
-  let toks = Lexer.tokenize ~file text in
+  let lexer = Lexer.create ~file text in
+  let cur = Lexer.next lexer in
   let st =
     {
-      toks; pos = 0; opts; table = Hashtbl.create 64; version = 370; version_set = false; warnings = [];
+      lexer; cur; ahead = None; opts; table = Hashtbl.create 64; version = 370; version_set = false; warnings = [];
       objects = []; lights = []; camera = None; background = None; sky = None;
       assumed_gamma = None; max_trace_level = 5; adc_bailout = 1. /. 255.; ambient_light = Rgb.white;
     }

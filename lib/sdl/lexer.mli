@@ -1,6 +1,16 @@
-(** The lexer: scene text to an array of located tokens (POVRAY-3.7 §11.1). *)
+(** The lexer: scene text to located tokens, read on demand (POVRAY-3.7 §11.1). *)
+
+type t
+(** A lexer over one text. *)
+
+val create : file:string -> string -> t
+(** [create ~file text] starts reading [text] (named [file] in locations); a UTF-8 byte-order mark
+    is skipped. *)
+
+val next : t -> Token.t
+(** [next lx] is the next token, [Eof] at the end (and again after it). Nested comments are skipped.
+    Raises [Error.Scene_error] on an unterminated comment or string or a character that cannot
+    start a token. *)
 
 val tokenize : file:string -> string -> Token.t array
-(** [tokenize ~file text] is every token of [text] followed by [Eof]. Nested comments are skipped, a
-    UTF-8 byte-order mark is ignored. Raises [Error.Scene_error] on an unterminated comment or string
-    or a character that cannot start a token. *)
+(** [tokenize ~file text] is every token of [text] followed by [Eof] (for tests and tools). *)
