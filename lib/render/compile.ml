@@ -2,17 +2,42 @@ open Compiled
 
 let epsilon = 1e-10
 
+(* A shape ready to trace; None for a triangle that POV-Ray never hits (no area, or a standalone
+   smooth triangle whose vertex normals straddle its face). *)
 let shape_of (s : Scene.shape) =
   match s with
-  | Sphere { centre; radius } -> Sphere { cx = centre.x; cy = centre.y; cz = centre.z; radius; r2 = radius *. radius }
-  | Plane { normal; offset } -> Plane { nx = normal.x; ny = normal.y; nz = normal.z; dist = -.offset }
+  | Sphere { centre; radius } -> Some (Sphere { cx = centre.x; cy = centre.y; cz = centre.z; radius; r2 = radius *. radius })
+  | Plane { normal; offset } -> Some (Plane { nx = normal.x; ny = normal.y; nz = normal.z; dist = -.offset })
+  | Triangle { p1; p2; p3 } -> Option.map (fun t -> Triangle t) (Triangle.flat p1 p2 p3)
+  | Smooth_triangle { p1; n1; p2; n2; p3; n3 } -> (
+      match Triangle.smooth p1 n1 p2 n2 p3 n3 with Some (Ok t) -> Some (Smooth_triangle t) | None | Some (Error ()) -> None)
+  | Mesh { mesh; offset; _ } -> Some (Mesh { mesh; offset; moved = offset <> Vec.zero })
 
-let inside shape (p : Vec.t) =
+let inside stack shape (p : Vec.t) =
   match shape with
   | Sphere s ->
       let dx = p.x -. s.cx and dy = p.y -. s.cy and dz = p.z -. s.cz in
       (dx *. dx) +. (dy *. dy) +. (dz *. dz) < s.r2
   | Plane pl -> (p.x *. pl.nx) +. (p.y *. pl.ny) +. (p.z *. pl.nz) +. pl.dist < epsilon
+  | Triangle _ | Smooth_triangle _ -> false
+  | Mesh m -> Mesh.inside m.mesh stack (Vec.sub p m.offset)
+
+(* The box of a bounded shape; None for an unbounded one. *)
+let bounds = function
+  | Sphere s ->
+      let r = Float.abs s.radius in
+      Some [| s.cx -. r; s.cy -. r; s.cz -. r; s.cx +. r; s.cy +. r; s.cz +. r |]
+  | Plane _ -> None
+  | Triangle t | Smooth_triangle t -> Some (Triangle.bounds t)
+  | Mesh m ->
+      let b = Mesh.bounds m.mesh and o = m.offset in
+      Some [| b.(0) +. o.x; b.(1) +. o.y; b.(2) +. o.z; b.(3) +. o.x; b.(4) +. o.y; b.(5) +. o.z |]
+
+let group objs =
+  let unbounded = List.filter (fun o -> bounds o.shape = None) objs in
+  let bounded = List.filter (fun o -> bounds o.shape <> None) objs in
+  let boxes = Array.concat (List.map (fun o -> Option.get (bounds o.shape)) bounded) in
+  { unbounded = Array.of_list unbounded; bounded = Array.of_list bounded; bvh = Bvh.build boxes }
 
 (* POV-Ray stores colours in single precision (§8.3); rounding the stored values the same way keeps
    results on the same side of the 8-bit rounding boundaries. *)
@@ -81,31 +106,39 @@ let surface ~legacy ~ambient_light (t : Scene.texture) =
 
 let scene (s : Scene.t) : Compiled.t =
   let legacy = s.version < 370 in
+  let visible = List.filter_map (fun (o : Scene.obj) -> Option.map (fun sh -> (o, sh)) (shape_of o.shape)) s.objects in
   let objects =
     Array.of_list
       (List.mapi
-         (fun id (o : Scene.obj) ->
+         (fun id ((o : Scene.obj), shape) ->
            let surf = surface ~legacy ~ambient_light:s.ambient_light o.texture in
+           let face_surfs =
+             match o.shape with
+             | Mesh m -> Array.map (surface ~legacy ~ambient_light:s.ambient_light) m.textures
+             | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ -> [||]
+           in
            {
              id;
-             shape = shape_of o.shape;
+             shape;
              surf;
+             face_surfs;
              ior = f32 o.interior.ior;
              fade_distance = f32 o.interior.fade_distance;
              fade_power = f32 o.interior.fade_power;
              fade_colour = rgb32 o.interior.fade_colour;
              old_refract = f32 o.texture.finish.refraction;
-             opaque = not surf.transparent;
+             opaque = (not surf.transparent) && Array.for_all (fun (f : surface) -> not f.transparent) face_surfs;
            })
-         s.objects)
+         visible)
   in
-  let casts = Array.of_list (List.map (fun (o : Scene.obj) -> not o.no_shadow) s.objects) in
-  let occluders = Array.of_list (List.filter (fun (o : obj) -> casts.(o.id)) (Array.to_list objects)) in
+  let casts = Array.of_list (List.map (fun ((o : Scene.obj), _) -> not o.no_shadow) visible) in
+  let occluders = List.filter (fun (o : obj) -> casts.(o.id)) (Array.to_list objects) in
   let shadow_mode =
-    if Array.length occluders = 0 then No_occluders
-    else if Array.for_all (fun o -> o.opaque) occluders then Any_hit
+    if occluders = [] then No_occluders
+    else if List.for_all (fun o -> o.opaque) occluders then Any_hit
     else Filtered
   in
+  let stack = Array.make 256 0 in
   let lights =
     Array.of_list
       (List.map
@@ -125,11 +158,12 @@ let scene (s : Scene.t) : Compiled.t =
   (* §6.4: the camera ray starts inside every object that contains the camera location; the list
      is kept with the last entered first. *)
   let start_interiors =
-    Array.fold_left (fun acc o -> if inside o.shape s.camera.location then o.id :: acc else acc) [] objects
+    Array.fold_left (fun acc o -> if inside stack o.shape s.camera.location then o.id :: acc else acc) [] objects
   in
   {
     objects;
-    occluders;
+    all = group (Array.to_list objects);
+    occluders = group occluders;
     shadow_mode;
     lights;
     background = s.background;

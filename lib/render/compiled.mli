@@ -7,7 +7,15 @@ type sphere = { cx : float; cy : float; cz : float; radius : float; r2 : float }
 (** A plane (§2.3): unit normal and POV-Ray's [Distance] = −d. *)
 type plane = { nx : float; ny : float; nz : float; dist : float }
 
-type shape = Sphere of sphere | Plane of plane
+(** A mesh placed in the scene: shared data, moved by a translation (POV-Ray keeps a transform). *)
+type mesh_inst = { mesh : Mesh.t; offset : Vec.t; moved : bool }
+
+type shape =
+  | Sphere of sphere
+  | Plane of plane
+  | Triangle of Triangle.t
+  | Smooth_triangle of Triangle.t
+  | Mesh of mesh_inst
 
 (** Everything about a surface that does not depend on the hit point, derived once from a
     plain pigment and its finish (§3.2, §3.5, §5). *)
@@ -34,13 +42,14 @@ type surface = {
 type obj = {
   id : int;
   shape : shape;
-  surf : surface;
+  surf : surface;  (** the object's own surface *)
+  face_surfs : surface array;  (** meshes: the surfaces of the per-face textures *)
   ior : float;
   fade_distance : float;
   fade_power : float;
   fade_colour : Rgb.t;
   old_refract : float;  (** legacy finish refraction: the transmitted-colour factor (§2.7, §6.3) *)
-  opaque : bool;  (** filter = transmit = 0: stops a shadow ray at once (§2.7) *)
+  opaque : bool;  (** every surface has filter = transmit = 0: stops a shadow ray at once (§2.7) *)
 }
 
 (** A point light with its attenuation settings. *)
@@ -61,9 +70,14 @@ type shadow_mode =
   | Any_hit  (** every occluder is opaque: a yes/no test *)
   | Filtered  (** some occluder is transparent: walk every crossing *)
 
+(** Objects as the tracer searches them: unbounded ones (planes) one by one, the others through a
+    bounding-volume hierarchy whose leaves index [bounded]. *)
+type group = { unbounded : obj array; bounded : obj array; bvh : Bvh.t }
+
 type t = {
-  objects : obj array;  (** every object, in scene order *)
-  occluders : obj array;  (** objects without no_shadow *)
+  objects : obj array;  (** every object, in scene order; [id] indexes this array *)
+  all : group;  (** every object *)
+  occluders : group;  (** objects without no_shadow *)
   shadow_mode : shadow_mode;
   lights : light array;
   background : Colour.t;

@@ -7,6 +7,10 @@ type t = {
   mutable sphere_hits : int;
   mutable plane_tests : int;
   mutable plane_hits : int;
+  mutable triangle_tests : int;
+  mutable triangle_hits : int;
+  mutable mesh_tests : int;
+  mutable mesh_hits : int;
   mutable max_level : int;
   mutable samples : int;
 }
@@ -14,7 +18,7 @@ type t = {
 let create () =
   {
     camera_rays = 0; reflected_rays = 0; refracted_rays = 0; shadow_rays = 0; sphere_tests = 0;
-    sphere_hits = 0; plane_tests = 0; plane_hits = 0; max_level = 0; samples = 0;
+    sphere_hits = 0; plane_tests = 0; plane_hits = 0; triangle_tests = 0; triangle_hits = 0; mesh_tests = 0; mesh_hits = 0; max_level = 0; samples = 0;
   }
 
 let merge a b =
@@ -27,6 +31,10 @@ let merge a b =
     sphere_hits = a.sphere_hits + b.sphere_hits;
     plane_tests = a.plane_tests + b.plane_tests;
     plane_hits = a.plane_hits + b.plane_hits;
+    triangle_tests = a.triangle_tests + b.triangle_tests;
+    triangle_hits = a.triangle_hits + b.triangle_hits;
+    mesh_tests = a.mesh_tests + b.mesh_tests;
+    mesh_hits = a.mesh_hits + b.mesh_hits;
     max_level = max a.max_level b.max_level;
     samples = a.samples + b.samples;
   }

@@ -9,6 +9,10 @@ type t = {
   mutable sphere_hits : int;
   mutable plane_tests : int;
   mutable plane_hits : int;
+  mutable triangle_tests : int;
+  mutable triangle_hits : int;
+  mutable mesh_tests : int;
+  mutable mesh_hits : int;
   mutable max_level : int;  (** deepest trace level reached *)
   mutable samples : int;  (** antialiasing samples beyond the first per pixel *)
 }

@@ -15,17 +15,25 @@ type result = { r : float; g : float; b : float; tr : float }
 (* Colours are single precision in POV-Ray (§8.3): colour arithmetic is rounded the same way. *)
 let[@inline] f32 x = Int32.float_of_bits (Int32.bits_of_float x)
 
-type ctx = { scene : Compiled.t; stats : Stats.t; depth : float array (* scratch: depth of the last hit *) }
+type ctx = {
+  scene : Compiled.t;
+  stats : Stats.t;
+  depth : float array;  (* scratch: depth of the last hit *)
+  sub : int array;  (* scratch: the mesh face of the last hit *)
+  stack : int array;  (* traversal room for the scene's hierarchy … *)
+  mstack : int array;  (* … and for a mesh's *)
+}
 
-let make_ctx scene stats = { scene; stats; depth = [| 0. |] }
+let make_ctx scene stats = { scene; stats; depth = [| 0. |]; sub = [| -1 |]; stack = Array.make 256 0; mstack = Array.make 256 0 }
 let black = { r = 0.; g = 0.; b = 0.; tr = 0. }
 
 (* ---------------------------------------------------------------------------------------------- *)
 (* Intersections *)
 
 (* The nearest depth of [shape] along the ray that is inside the shape's own limits and at least
-   [lo], or infinity. *)
-let[@inline] hit_shape (stats : Stats.t) shape (o : Vec.t) (d : Vec.t) lo =
+   [lo], or infinity; for a mesh the face is left in [ctx.sub.(0)]. *)
+let hit_shape ctx shape (o : Vec.t) (d : Vec.t) lo =
+  let stats = ctx.stats in
   match shape with
   | Sphere s ->
       (* §2.2 *)
@@ -56,25 +64,77 @@ let[@inline] hit_shape (stats : Stats.t) shape (o : Vec.t) (d : Vec.t) lo =
         let t = -.(ndo +. p.dist) /. ndd in
         if t >= depth_tolerance && t <= max_distance && t >= lo then (stats.plane_hits <- stats.plane_hits + 1; t)
         else infinity
+  | Triangle t | Smooth_triangle t ->
+      (* §2.4 *)
+      stats.triangle_tests <- stats.triangle_tests + 1;
+      let depth = Triangle.intersect t o d in
+      if depth >= lo && depth < infinity then (stats.triangle_hits <- stats.triangle_hits + 1; depth) else infinity
+  | Mesh m ->
+      (* §2.6: a moved mesh is searched in its own space with the direction renormalised, and the
+         depth is divided by that length *)
+      stats.mesh_tests <- stats.mesh_tests + 1;
+      let k, depth =
+        if not m.moved then
+          let k = Mesh.nearest m.mesh ctx.mstack o d lo ctx.depth in
+          (k, ctx.depth.(0))
+        else
+          let len = Vec.length d in
+          let k = Mesh.nearest m.mesh ctx.mstack (Vec.sub o m.offset) (Vec.scale (1. /. len) d) (lo *. len) ctx.depth in
+          (k, ctx.depth.(0) /. len)
+      in
+      if k >= 0 && depth >= lo then begin
+        stats.mesh_hits <- stats.mesh_hits + 1;
+        ctx.sub.(0) <- k;
+        depth
+      end
+      else infinity
 
-(* Index of the nearest object hit at depth ≥ [lo] (ties: the first in order), or −1; its depth is
-   left in [ctx.depth.(0)]. *)
-let nearest ctx (objs : obj array) o d lo =
-  let best = ref infinity and idx = ref (-1) in
-  for i = 0 to Array.length objs - 1 do
-    let t = hit_shape ctx.stats (Array.unsafe_get objs i).shape o d lo in
+(* The nearest object of [g] hit at depth ≥ [lo]: its id, or −1. Its depth is left in
+   [ctx.depth.(0)] and, for a mesh, its face in [ctx.sub.(0)]. Ties keep the first found. *)
+let nearest ctx (g : group) (o : Vec.t) (d : Vec.t) lo =
+  let best = ref infinity and id = ref (-1) and sub = ref (-1) in
+  let try_obj ob =
+    let t = hit_shape ctx ob.shape o d lo in
     if t < !best then begin
       best := t;
-      idx := i
+      id := ob.id;
+      sub := ctx.sub.(0)
     end
-  done;
+  in
+  Array.iter try_obj g.unbounded;
+  if g.bvh.nodes > 0 then Bvh.walk g.bvh ctx.stack o.x o.y o.z d.x d.y d.z infinity (fun i -> try_obj g.bounded.(i); !best);
   ctx.depth.(0) <- !best;
-  !idx
+  ctx.sub.(0) <- !sub;
+  !id
 
-let normal obj (p : Vec.t) : Vec.t =
+(* Whether some object of [g] is hit at a depth in [lo, hi). *)
+let any_hit ctx (g : group) (o : Vec.t) (d : Vec.t) lo hi =
+  let hit ob = hit_shape ctx ob.shape o d lo < hi in
+  Array.exists hit g.unbounded
+  ||
+  let found = ref false in
+  if g.bvh.nodes > 0 then
+    Bvh.walk g.bvh ctx.stack o.x o.y o.z d.x d.y d.z hi (fun i ->
+        if (not !found) && hit g.bounded.(i) then found := true;
+        if !found then neg_infinity else hi);
+  !found
+
+(* The surface at a hit: a mesh face may carry its own texture. *)
+let surface_of obj sub =
+  match obj.shape with
+  | Mesh m when sub >= 0 ->
+      let t = Mesh.texture m.mesh sub in
+      if t >= 0 then obj.face_surfs.(t) else obj.surf
+  | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ -> obj.surf
+
+let normal obj sub (p : Vec.t) : Vec.t =
   match obj.shape with
   | Sphere s -> Vec.make ((p.x -. s.cx) /. s.radius) ((p.y -. s.cy) /. s.radius) ((p.z -. s.cz) /. s.radius)
   | Plane pl -> Vec.make pl.nx pl.ny pl.nz
+  | Triangle t -> Vec.make t.nx t.ny t.nz
+  | Smooth_triangle t -> Triangle.smooth_normal t p
+  | Mesh m ->
+      if m.moved then Vec.normalize (Mesh.normal m.mesh sub (Vec.sub p m.offset)) else Mesh.normal m.mesh sub p
 
 (* ---------------------------------------------------------------------------------------------- *)
 (* Shadows (§4) *)
@@ -97,26 +157,17 @@ let shadow ctx (p : Vec.t) (l : Vec.t) dist interiors (lc : Rgb.t) : Rgb.t =
   ctx.stats.shadow_rays <- ctx.stats.shadow_rays + 1;
   match sc.shadow_mode with
   | No_occluders -> lc
-  | Any_hit ->
-      let occ = sc.occluders in
-      let limit = dist -. shadow_tolerance in
-      let rec blocked i =
-        i < Array.length occ
-        &&
-        let t = hit_shape ctx.stats (Array.unsafe_get occ i).shape p l shadow_tolerance in
-        t < limit || blocked (i + 1)
-      in
-      if blocked 0 then Rgb.black else lc
+  | Any_hit -> if any_hit ctx sc.occluders p l shadow_tolerance (dist -. shadow_tolerance) then Rgb.black else lc
   | Filtered ->
       let rec walk (o : Vec.t) remaining interiors (lc : Rgb.t) =
         let i = nearest ctx sc.occluders o l shadow_tolerance in
         let t = ctx.depth.(0) in
         if i < 0 || t >= remaining -. shadow_tolerance then lc
         else
-          let obj = sc.occluders.(i) in
+          let obj = sc.objects.(i) in
           if obj.opaque then Rgb.black
           else
-            let f = obj.surf.filcol in
+            let f = (surface_of obj ctx.sub.(0)).filcol in
             let f =
               if List.mem obj.id interiors && obj.fade_power > 0. && Float.abs obj.fade_distance > epsilon then
                 fade_factor obj.fade_colour obj.fade_distance obj.fade_power t f
@@ -279,21 +330,21 @@ let rec trace ctx ~level ~weight ~interiors ~continued (o : Vec.t) (d : Vec.t) :
   let sc = ctx.scene in
   if level >= sc.max_trace_level || weight < sc.adc_bailout then black
   else
-    let i = nearest ctx sc.objects o d min_isect_depth in
+    let i = nearest ctx sc.all o d min_isect_depth in
     if i < 0 then sky_colour sc
     else
       let level = if continued then level else level + 1 in
       if level > ctx.stats.max_level then ctx.stats.max_level <- level;
-      shade ctx sc.objects.(i) ctx.depth.(0) ~level ~weight ~interiors o d
+      shade ctx sc.objects.(i) ctx.sub.(0) ctx.depth.(0) ~level ~weight ~interiors o d
 
-and shade ctx obj depth ~level ~weight ~interiors (o : Vec.t) (d : Vec.t) : result =
+and shade ctx obj sub depth ~level ~weight ~interiors (o : Vec.t) (d : Vec.t) : result =
   let sc = ctx.scene in
-  let s = obj.surf in
+  let s = surface_of obj sub in
   (* §3.2: the layer loop runs while the remaining translucency (1 at the start) exceeds adc_bailout *)
   if not (1. > sc.adc_bailout) then black
   else
     let p = Vec.madd o depth d in
-    let n = normal obj p in
+    let n = normal obj sub p in
     let n = if Vec.dot n d > 0. then Vec.neg n else n in
     (* §3.1 *)
     let ci = -.Vec.dot d n in

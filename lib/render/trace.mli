@@ -4,8 +4,16 @@ type result = { r : float; g : float; b : float; tr : float }
 (** A traced colour, in the working colour space, with its transmittance (used only by the
     antialiasing comparison, §9.5). *)
 
-type ctx = { scene : Compiled.t; stats : Stats.t; depth : float array }
-(** What a trace reads: the compiled scene, the worker's statistics, a one-slot scratch. *)
+type ctx = {
+  scene : Compiled.t;
+  stats : Stats.t;
+  depth : float array;
+  sub : int array;
+  stack : int array;
+  mstack : int array;
+}
+(** What a trace reads: the compiled scene, the worker's statistics, and scratch space (the last
+    hit's depth and mesh face, traversal stacks) private to one worker. *)
 
 val make_ctx : Compiled.t -> Stats.t -> ctx
 (** [make_ctx scene stats] is a context for one render worker. *)

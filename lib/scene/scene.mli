@@ -41,6 +41,11 @@ type interior = { ior : float; fade_distance : float; fade_power : float; fade_c
 type shape =
   | Sphere of { centre : Vec.t; radius : float }
   | Plane of { normal : Vec.t; offset : float }
+  | Triangle of { p1 : Vec.t; p2 : Vec.t; p3 : Vec.t }  (** §2.4, corners as written and moved *)
+  | Smooth_triangle of { p1 : Vec.t; n1 : Vec.t; p2 : Vec.t; n2 : Vec.t; p3 : Vec.t; n3 : Vec.t }
+      (** §2.5, unit vertex normals *)
+  | Mesh of { mesh : Mesh.t; offset : Vec.t; textures : texture array }
+      (** §2.6: shared mesh data, moved by [offset]; faces with a texture index use [textures] *)
 
 (** A finished object: textured, with an interior (§2.7). *)
 type obj = {

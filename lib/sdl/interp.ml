@@ -53,11 +53,13 @@ let keywords =
     "version"; "x"; "y"; "yes"; "z"; "albedo"; "charset"; "number_of_waves"; "noise_generator";
     "irid_wavelength"; "quick_color"; "quick_colour"; "abs"; "sqrt"; "sqr"; "sin"; "cos"; "tan"; "asin"; "acos";
     "atan"; "atan2"; "pow"; "exp"; "ln"; "log"; "min"; "max"; "int"; "floor"; "ceil"; "mod"; "div"; "radians";
-    "degrees"; "vlength"; "vnormalize"; "vdot"; "vcross"; "select" ]
+    "degrees"; "vlength"; "vnormalize"; "vdot"; "vcross"; "select"; "triangle"; "smooth_triangle"; "mesh";
+    "mesh2"; "vertex_vectors"; "normal_vectors"; "uv_vectors"; "texture_list"; "face_indices"; "normal_indices";
+    "uv_indices"; "inside_vector" ]
 
 (* POV-Ray keywords that a later povml will read; meeting one is a located "not supported yet". *)
 let unsupported =
-  [ "box"; "cylinder"; "cone"; "disc"; "torus"; "triangle"; "smooth_triangle"; "mesh"; "mesh2"; "polygon";
+  [ "box"; "cylinder"; "cone"; "disc"; "torus"; "polygon";
     "prism"; "lathe"; "sor"; "blob"; "text"; "height_field"; "isosurface"; "superellipsoid"; "julia_fractal";
     "parametric"; "bicubic_patch"; "ovus"; "quadric"; "cubic"; "quartic"; "poly"; "union"; "intersection";
     "difference"; "merge"; "rotate"; "scale"; "matrix"; "transform"; "inverse"; "no_image"; "no_reflection";
@@ -70,7 +72,7 @@ let unsupported =
     "media"; "fog"; "rainbow"; "irid"; "crand"; "dispersion"; "dispersion_samples"; "caustics";
     "bounded_by"; "clipped_by"; "uv_mapping"; "srgb"; "srgbf"; "srgbt"; "srgbft"; "subsurface";
     "interior_texture"; "light_group"; "no_radiosity"; "split_union"; "cutaway_textures"; "sturm";
-    "open"; "inside_vector"; "phong_albedo"; "metallic_albedo"; "texture_list"; "translucency" ]
+    "open"; "phong_albedo"; "metallic_albedo"; "translucency" ]
 
 let unsupported_directives =
   [ "include"; "macro"; "if"; "ifdef"; "ifndef"; "else"; "elseif"; "end"; "while"; "for"; "switch"; "case";
@@ -647,6 +649,9 @@ let translate_shape (s : Scene.shape) (v : Vec.t) : Scene.shape =
   match s with
   | Sphere { centre; radius } -> Sphere { centre = Vec.add centre v; radius }
   | Plane { normal; offset } -> Plane { normal; offset = offset +. Vec.dot normal v }
+  | Triangle { p1; p2; p3 } -> Triangle { p1 = Vec.add p1 v; p2 = Vec.add p2 v; p3 = Vec.add p3 v }
+  | Smooth_triangle t -> Smooth_triangle { t with p1 = Vec.add t.p1 v; p2 = Vec.add t.p2 v; p3 = Vec.add t.p3 v }
+  | Mesh m -> Mesh { m with offset = Vec.add m.offset v }
 
 let parse_object_mods st (o : V.obj) what : V.obj =
   let tex o = match o.V.texture with Some t -> t | None -> Defaults.texture in
@@ -674,9 +679,105 @@ let parse_object_mods st (o : V.obj) what : V.obj =
 
 let new_obj shape loc = { V.shape; texture = None; interior = None; no_shadow = false; oloc = loc }
 
-let parse_object st : V.obj =
+let f32 x = Int32.float_of_bits (Int32.bits_of_float x)
+
+(* Vertex normals: normalised; a zero normal becomes <1,0,0> with a warning (§2.6). *)
+let unit_normal st loc (n : Vec.t) =
+  if Vec.length n = 0. then begin
+    warn st loc "zero-length normal replaced by <1,0,0>";
+    Vec.make 1. 0. 0.
+  end
+  else Vec.normalize n
+
+let comma st = ignore (accept st Comma)
+
+(* triangle { P1, P2, P3 } and smooth_triangle { P1, N1, P2, N2, P3, N3 } (§2.4, §2.5). *)
+let parse_triangle_corners st ~smooth =
+  let p1 = parse_vector st in
+  comma st;
+  if smooth then begin
+    let l1 = peek_loc st in
+    let n1 = parse_vector st in
+    comma st;
+    let p2 = parse_vector st in
+    comma st;
+    let l2 = peek_loc st in
+    let n2 = parse_vector st in
+    comma st;
+    let p3 = parse_vector st in
+    comma st;
+    let l3 = peek_loc st in
+    let n3 = parse_vector st in
+    (p1, p2, p3, Some (unit_normal st l1 n1, unit_normal st l2 n2, unit_normal st l3 n3))
+  end
+  else begin
+    let p2 = parse_vector st in
+    comma st;
+    let p3 = parse_vector st in
+    (p1, p2, p3, None)
+  end
+
+(* A block "{ n, item, item … }" of a mesh2; returns the items and checks their number. *)
+let parse_counted_block st what item =
+  let loc = peek_loc st in
+  open_block st what;
+  let nloc = peek_loc st in
+  let n = parse_float st in
+  if n < 0. || Float.of_int (int_of_float n) <> n then Error.raise_at nloc "the count of %s must be a whole number, not %g" what n;
+  let n = int_of_float n in
+  let items = ref [] and count = ref 0 in
+  while peek st <> RBrace do
+    if peek st = Eof then close_block st what;
+    comma st;
+    if peek st <> RBrace then begin
+      let l = peek_loc st in
+      items := item l :: !items;
+      incr count
+    end
+  done;
+  advance st;
+  if !count <> n then Error.raise_at loc "%s says %d entries but lists %d" what n !count;
+  Array.of_list (List.rev !items)
+
+let vec3 (v : Vec.t) = [| v.x; v.y; v.z |]
+let f32_vec (v : Vec.t) = Vec.make (f32 v.x) (f32 v.y) (f32 v.z)
+
+let index_vector st loc limit what =
+  let v = parse_vector st in
+  let check x =
+    if Float.of_int (int_of_float x) <> x || x < 0. || int_of_float x >= limit then
+      Error.raise_at loc "%s index %g is out of range: there are %d" what x limit;
+    int_of_float x
+  in
+  (check v.x, check v.y, check v.z)
+
+let parse_texture_in_block st =
+  (* texture { … } or a texture identifier inside a mesh triangle *)
+  advance st;
+  parse_texture st Defaults.texture
+
+let rec parse_object st : V.obj =
   let loc = peek_loc st in
   match peek st with
+  | Ident ("triangle" | "smooth_triangle" as kw) ->
+      advance st;
+      open_block st kw;
+      let smooth = kw = "smooth_triangle" in
+      let p1, p2, p3, ns = parse_triangle_corners st ~smooth in
+      let shape : Scene.shape =
+        match ns with
+        | None ->
+            if Triangle.flat p1 p2 p3 = None then warn st loc "degenerate triangle; please remove it";
+            Triangle { p1; p2; p3 }
+        | Some (n1, n2, n3) ->
+            (match Triangle.smooth p1 n1 p2 n2 p3 n3 with
+            | None | Some (Error ()) -> warn st loc "degenerate triangle; please remove it"
+            | Some (Ok _) -> ());
+            Smooth_triangle { p1; n1; p2; n2; p3; n3 }
+      in
+      parse_object_mods st (new_obj shape loc) kw
+  | Ident "mesh" -> advance st; parse_mesh st loc
+  | Ident "mesh2" -> advance st; parse_mesh2 st loc
   | Ident "sphere" ->
       advance st;
       open_block st "sphere";
@@ -715,6 +816,135 @@ let parse_object st : V.obj =
       | Some (V.Object o) -> advance st; { o with oloc = loc }
       | _ -> unexpected st "an object")
   | _ -> unexpected st "an object"
+
+(* mesh { triangle {…} smooth_triangle {…} … [inside_vector V] modifiers } (§2.6). Vertices are kept
+   in single precision; each face is set up from the values as parsed. *)
+and parse_mesh st loc =
+  open_block st "mesh";
+  let verts = ref [] and nverts = ref 0 in
+  let norms = ref [] and nnorms = ref 0 in
+  let textures = ref [] and ntex = ref 0 in
+  let faces = ref [] in
+  let inside = ref None in
+  let add_vertex v = verts := f32_vec v :: !verts; incr nverts; !nverts - 1 in
+  let add_normal n = norms := f32_vec n :: !norms; incr nnorms; !nnorms - 1 in
+  let rec items () =
+    match peek st with
+    | Ident ("triangle" | "smooth_triangle" as kw) ->
+        advance st;
+        open_block st kw;
+        let p1, p2, p3, ns = parse_triangle_corners st ~smooth:(kw = "smooth_triangle") in
+        let tex =
+          if is_ident st "texture" then begin
+            let t = parse_texture_in_block st in
+            textures := t :: !textures;
+            incr ntex;
+            !ntex - 1
+          end
+          else -1
+        in
+        close_block st kw;
+        let vi = (add_vertex p1, add_vertex p2, add_vertex p3) in
+        let ni = Option.map (fun (a, b, c) -> (add_normal a, add_normal b, add_normal c)) ns in
+        faces := { Mesh.corners = (p1, p2, p3); vi; ni; tex } :: !faces;
+        items ()
+    | Ident "inside_vector" -> advance st; inside := Some (parse_vector st); items ()
+    | _ -> ()
+  in
+  items ();
+  let vertices = Array.concat (List.rev_map vec3 !verts) in
+  let vertex_normals = Array.concat (List.rev_map vec3 !norms) in
+  let mesh = Mesh.build ~vertices ~vertex_normals ~faces:(Array.of_list (List.rev !faces)) ~inside_vector:!inside in
+  if mesh.faces = 0 then warn st loc "the mesh has no triangles with an area";
+  let shape = Scene.Mesh { mesh; offset = Vec.zero; textures = Array.of_list (List.rev !textures) } in
+  parse_object_mods st (new_obj shape loc) "mesh"
+
+(* mesh2 { vertex_vectors normal_vectors texture_list face_indices normal_indices inside_vector … } *)
+and parse_mesh2 st loc =
+  open_block st "mesh2";
+  let vertices = ref None and normals = ref None and textures = ref [||] in
+  let faces = ref None and nidx = ref None and inside = ref None in
+  let rec sections () =
+    let l = peek_loc st in
+    match peek st with
+    | Ident "vertex_vectors" -> advance st; vertices := Some (l, parse_counted_block st "vertex_vectors" (fun _ -> f32_vec (parse_vector st))); sections ()
+    | Ident "normal_vectors" ->
+        advance st;
+        normals := Some (l, parse_counted_block st "normal_vectors" (fun l -> f32_vec (unit_normal st l (parse_vector st))));
+        sections ()
+    | Ident "uv_vectors" -> not_supported l "'uv_vectors'"
+    | Ident "texture_list" ->
+        advance st;
+        textures :=
+          parse_counted_block st "texture_list" (fun l ->
+              if is_ident st "texture" then parse_texture_in_block st else Error.raise_at l "expected a texture in texture_list");
+        sections ()
+    | Ident "face_indices" ->
+        advance st;
+        let nv = match !vertices with Some (_, v) -> Array.length v | None -> Error.raise_at l "face_indices before vertex_vectors" in
+        let ntex = Array.length !textures in
+        faces :=
+          Some
+            ( l,
+              parse_counted_block st "face_indices" (fun l ->
+                  let vi = index_vector st l nv "vertex" in
+                  (* an optional texture index (or three, which would interpolate) follows *)
+                  let tex =
+                    if peek st = Comma && (match peek2 st with Num _ -> true | _ -> false) then begin
+                      advance st;
+                      let tl = peek_loc st in
+                      let t = parse_float st in
+                      if peek st = Comma && (match peek2 st with Num _ -> true | _ -> false) then
+                        not_supported tl "three texture indices per face (interpolated textures)";
+                      if Float.of_int (int_of_float t) <> t || t < 0. || int_of_float t >= ntex then
+                        Error.raise_at tl "texture index %g is out of range: the texture_list has %d" t ntex;
+                      int_of_float t
+                    end
+                    else -1
+                  in
+                  (vi, tex)) );
+        sections ()
+    | Ident "normal_indices" ->
+        advance st;
+        let nn = match !normals with Some (_, n) -> Array.length n | None -> Error.raise_at l "normal_indices before normal_vectors" in
+        nidx := Some (l, parse_counted_block st "normal_indices" (fun l -> index_vector st l nn "normal"));
+        sections ()
+    | Ident "uv_indices" -> not_supported l "'uv_indices'"
+    | Ident "inside_vector" -> advance st; inside := Some (parse_vector st); sections ()
+    | _ -> ()
+  in
+  sections ();
+  let vs = match !vertices with Some (_, v) -> v | None -> Error.raise_at loc "mesh2 needs vertex_vectors" in
+  let fl, fs = match !faces with Some f -> f | None -> Error.raise_at loc "mesh2 needs face_indices" in
+  let ns = match !normals with Some (_, n) -> n | None -> [||] in
+  (* §2.6: without normal_indices the face indices serve when there are as many normals as vertices *)
+  let normal_index =
+    match !nidx with
+    | Some (_, ni) -> fun k -> if k < Array.length ni then Some ni.(k) else None
+    | None ->
+        if Array.length ns = 0 then fun _ -> None
+        else if Array.length ns = Array.length vs then fun k -> Some (fst fs.(k))
+        else
+          Error.raise_at fl "normal_vectors has %d entries and vertex_vectors %d: without normal_indices they must be as many"
+            (Array.length ns) (Array.length vs)
+  in
+  (match !nidx with
+  | Some (nl, ni) when Array.length ni > Array.length fs ->
+      Error.raise_at nl "normal_indices has %d entries but there are only %d faces" (Array.length ni) (Array.length fs)
+  | _ -> ());
+  let vertex k = vs.(k) in
+  let faces =
+    Array.mapi
+      (fun k ((a, b, c), tex) ->
+        { Mesh.corners = (vertex a, vertex b, vertex c); vi = (a, b, c); ni = normal_index k; tex })
+      fs
+  in
+  let mesh =
+    Mesh.build ~vertices:(Array.concat (Array.to_list (Array.map vec3 vs)))
+      ~vertex_normals:(Array.concat (Array.to_list (Array.map vec3 ns))) ~faces ~inside_vector:!inside
+  in
+  let shape = Scene.Mesh { mesh; offset = Vec.zero; textures = !textures } in
+  parse_object_mods st (new_obj shape loc) "mesh2"
 
 (* §2.7: every object gets a texture and an interior; a legacy finish ior goes into the interior. *)
 let finish_object (o : V.obj) : Scene.obj =
@@ -894,7 +1124,7 @@ let parse_declare st =
   let rloc = peek_loc st in
   let value, needs_semi =
     match peek st with
-    | Ident ("sphere" | "plane" | "object") -> (V.Object (parse_object st), false)
+    | Ident ("sphere" | "plane" | "object" | "triangle" | "smooth_triangle" | "mesh" | "mesh2") -> (V.Object (parse_object st), false)
     | Ident "pigment" -> advance st; (V.Pigment (parse_pigment st (Scene.Solid Colour.black)), false)
     | Ident "finish" -> advance st; (V.Finish (parse_finish st Defaults.finish), false)
     | Ident "texture" -> advance st; (V.Texture (parse_texture st Defaults.texture), false)
@@ -936,7 +1166,7 @@ let rec parse_statements st =
   | Ident "background" -> parse_background st; parse_statements st
   | Ident "sky_sphere" -> parse_sky_sphere st; parse_statements st
   | Ident "global_settings" -> advance st; parse_global_settings st; parse_statements st
-  | Ident ("sphere" | "plane" | "object") ->
+  | Ident ("sphere" | "plane" | "object" | "triangle" | "smooth_triangle" | "mesh" | "mesh2") ->
       st.objects <- finish_object (parse_object st) :: st.objects;
       parse_statements st
   | Ident s when (match lookup st s with Some (V.Object _) -> true | _ -> false) ->

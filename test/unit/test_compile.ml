@@ -6,7 +6,7 @@ open Helpers
 let v37 = "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"
 
 let shape_of_text text = (compile text).objects.(0).shape
-let inside_t msg expected shape p = Alcotest.(check bool) msg expected (Compile.inside shape p)
+let inside_t msg expected shape p = Alcotest.(check bool) msg expected (Compile.inside (Array.make 256 0) shape p)
 
 let test_sphere_inside () =
   let s = shape_of_text "sphere { <0,0,3>, 1 }" in
@@ -26,7 +26,7 @@ let test_sphere_inside () =
       float_eq "r2" 1. sp.r2;
       float_eq "radius" 1. sp.radius;
       float_eq "cz" 3. sp.cz
-  | Compiled.Plane _ -> Alcotest.fail "expected a sphere"
+  | Compiled.Plane _ | Compiled.Triangle _ | Compiled.Smooth_triangle _ | Compiled.Mesh _ -> Alcotest.fail "expected a sphere"
 
 let test_plane_inside () =
   (* plane { y, 1 }: inside is n̂·P − d < EPSILON, the side opposite the normal *)
@@ -39,7 +39,7 @@ let test_plane_inside () =
       (* POV-Ray's Distance = −d *)
       float_eq "dist = -d" (-1.) pl.dist;
       float_eq "ny" 1. pl.ny
-  | Compiled.Sphere _ -> Alcotest.fail "expected a plane");
+  | Compiled.Sphere _ | Compiled.Triangle _ | Compiled.Smooth_triangle _ | Compiled.Mesh _ -> Alcotest.fail "expected a plane");
   (* plane { -y, 1 } is y = −1 with the normal down: inside is −y − 1 < 0, i.e. y > −1 *)
   let p = shape_of_text "plane { -y, 1 }" in
   inside_t "flipped: origin inside" true p (v 0. 0. 0.);
@@ -70,7 +70,7 @@ let test_shadow_mode () =
     (mode "sphere { 0, 1 } sphere { x, 1 pigment { rgbt 0.5 } no_shadow }");
   let c = compile "sphere { 0, 1 } sphere { x, 1 no_shadow } sphere { y, 1 }" in
   Alcotest.(check (list int)) "occluders are the objects without no_shadow" [ 0; 2 ]
-    (Array.to_list (Array.map (fun (o : Compiled.obj) -> o.id) c.occluders));
+    (List.sort compare (List.map (fun (o : Compiled.obj) -> o.id) (Array.to_list c.occluders.unbounded @ Array.to_list c.occluders.bounded)));
   Alcotest.(check (list bool)) "opaque flags" [ true; false ]
     (List.map (fun (o : Compiled.obj) -> o.opaque) (Array.to_list (compile "sphere { 0, 1 } sphere { 0, 1 pigment { rgbt 0.1 } }").objects))
 

@@ -1,0 +1,194 @@
+(* A bounding-volume hierarchy built with the binned surface-area heuristic and stored flat: one
+   float array of node boxes and one int array of node links, so traversal allocates nothing. *)
+
+type t = {
+  boxes : float array;  (* 6 per node: min x y z, max x y z *)
+  links : int array;  (* 3 per node: leaf: first, count, -1; inner: left, right, split axis *)
+  order : int array;  (* primitive indices, leaves refer to ranges of this array *)
+  nodes : int;
+}
+
+let bins = 16
+let leaf_size = 2
+
+let empty = { boxes = [||]; links = [||]; order = [||]; nodes = 0 }
+
+(* Surface area (half of it; only ratios matter) of a box given as six floats. *)
+let half_area x0 y0 z0 x1 y1 z1 =
+  let dx = x1 -. x0 and dy = y1 -. y0 and dz = z1 -. z0 in
+  if dx < 0. then 0. else (dx *. dy) +. (dy *. dz) +. (dz *. dx)
+
+let build (prim : float array) =
+  (* [prim] holds 6 floats per primitive: its box. Boxes are widened by a relative 1e-9 so that
+     rounding in the slab test never loses a hit on a flat (zero-thickness) box. *)
+  let n = Array.length prim / 6 in
+  let prim =
+    Array.mapi
+      (fun k v ->
+        let pad = (1e-9 *. Float.abs v) +. 1e-300 in
+        if k mod 6 < 3 then v -. pad else v +. pad)
+      prim
+  in
+  if n = 0 then empty
+  else begin
+    let order = Array.init n (fun i -> i) in
+    let centre = Array.init (3 * n) (fun k -> let i = k / 3 and a = k mod 3 in 0.5 *. (prim.((6 * i) + a) +. prim.((6 * i) + 3 + a))) in
+    let cap = 2 * n in
+    let boxes = Array.make (6 * cap) 0. and links = Array.make (3 * cap) 0 in
+    let count = ref 0 in
+    let bin_box = Array.make (6 * bins) 0. and bin_n = Array.make bins 0 in
+    let right_area = Array.make bins 0. and right_n = Array.make bins 0 in
+    let rec node first cnt =
+      let id = !count in
+      incr count;
+      (* bounds of the primitives and of their centres *)
+      let b = Array.make 6 infinity in
+      b.(3) <- neg_infinity; b.(4) <- neg_infinity; b.(5) <- neg_infinity;
+      let c = [| infinity; infinity; infinity; neg_infinity; neg_infinity; neg_infinity |] in
+      for k = first to first + cnt - 1 do
+        let i = order.(k) in
+        for a = 0 to 2 do
+          b.(a) <- Float.min b.(a) prim.((6 * i) + a);
+          b.(3 + a) <- Float.max b.(3 + a) prim.((6 * i) + 3 + a);
+          c.(a) <- Float.min c.(a) centre.((3 * i) + a);
+          c.(3 + a) <- Float.max c.(3 + a) centre.((3 * i) + a)
+        done
+      done;
+      Array.blit b 0 boxes (6 * id) 6;
+      let leaf () = links.(3 * id) <- first; links.((3 * id) + 1) <- cnt; links.((3 * id) + 2) <- -1 in
+      if cnt <= leaf_size then leaf ()
+      else begin
+        (* binned SAH over the three axes *)
+        let best_cost = ref infinity and best_axis = ref (-1) and best_split = ref 0 in
+        for a = 0 to 2 do
+          let lo = c.(a) and hi = c.(3 + a) in
+          if hi > lo then begin
+            let scale = float_of_int bins /. (hi -. lo) in
+            for j = 0 to bins - 1 do
+              bin_n.(j) <- 0;
+              for q = 0 to 2 do bin_box.((6 * j) + q) <- infinity; bin_box.((6 * j) + 3 + q) <- neg_infinity done
+            done;
+            for k = first to first + cnt - 1 do
+              let i = order.(k) in
+              let j = min (bins - 1) (int_of_float ((centre.((3 * i) + a) -. lo) *. scale)) in
+              bin_n.(j) <- bin_n.(j) + 1;
+              for q = 0 to 2 do
+                bin_box.((6 * j) + q) <- Float.min bin_box.((6 * j) + q) prim.((6 * i) + q);
+                bin_box.((6 * j) + 3 + q) <- Float.max bin_box.((6 * j) + 3 + q) prim.((6 * i) + 3 + q)
+              done
+            done;
+            (* sweep from the right, then from the left *)
+            let acc = Array.make 6 0. in
+            let reset () = acc.(0) <- infinity; acc.(1) <- infinity; acc.(2) <- infinity; acc.(3) <- neg_infinity; acc.(4) <- neg_infinity; acc.(5) <- neg_infinity in
+            let grow j = for q = 0 to 2 do acc.(q) <- Float.min acc.(q) bin_box.((6 * j) + q); acc.(3 + q) <- Float.max acc.(3 + q) bin_box.((6 * j) + 3 + q) done in
+            reset ();
+            let rn = ref 0 in
+            for j = bins - 1 downto 1 do
+              grow j;
+              rn := !rn + bin_n.(j);
+              right_n.(j) <- !rn;
+              right_area.(j) <- half_area acc.(0) acc.(1) acc.(2) acc.(3) acc.(4) acc.(5)
+            done;
+            reset ();
+            let ln = ref 0 in
+            for j = 0 to bins - 2 do
+              grow j;
+              ln := !ln + bin_n.(j);
+              if !ln > 0 && right_n.(j + 1) > 0 then begin
+                let cost = (half_area acc.(0) acc.(1) acc.(2) acc.(3) acc.(4) acc.(5) *. float_of_int !ln) +. (right_area.(j + 1) *. float_of_int right_n.(j + 1)) in
+                if cost < !best_cost then begin best_cost := cost; best_axis := a; best_split := j + 1 end
+              end
+            done
+          end
+        done;
+        let parent_cost = half_area b.(0) b.(1) b.(2) b.(3) b.(4) b.(5) *. float_of_int cnt in
+        if !best_axis < 0 || (!best_cost >= parent_cost && cnt <= 8) then
+          if !best_axis < 0 && cnt > leaf_size then begin
+            (* all centres coincide: split in the middle of the list *)
+            let half = cnt / 2 in
+            links.((3 * id) + 2) <- 0;
+            let l = node first half in
+            let r = node (first + half) (cnt - half) in
+            links.(3 * id) <- l; links.((3 * id) + 1) <- r
+          end
+          else leaf ()
+        else begin
+          let a = !best_axis in
+          let lo = c.(a) and hi = c.(3 + a) in
+          let scale = float_of_int bins /. (hi -. lo) in
+          let bin_of i = min (bins - 1) (int_of_float ((centre.((3 * i) + a) -. lo) *. scale)) in
+          (* partition order[first..first+cnt) by bin < best_split *)
+          let i = ref first and j = ref (first + cnt - 1) in
+          while !i <= !j do
+            if bin_of order.(!i) < !best_split then incr i
+            else begin
+              let t = order.(!i) in
+              order.(!i) <- order.(!j); order.(!j) <- t; decr j
+            end
+          done;
+          let nl = !i - first in
+          links.((3 * id) + 2) <- a;
+          let l = node first nl in
+          let r = node (first + nl) (cnt - nl) in
+          links.(3 * id) <- l; links.((3 * id) + 1) <- r
+        end
+      end;
+      id
+    in
+    ignore (node 0 n);
+    let nodes = !count in
+    { boxes = Array.sub boxes 0 (6 * nodes); links = Array.sub links 0 (3 * nodes); order; nodes }
+  end
+
+(* Slab test of node [k] against the ray (origin o, reciprocal direction id, where a zero direction
+   component has a huge finite reciprocal); the entry distance when the box is met between [tmin]
+   and [tmax], else infinity. *)
+let[@inline] entry t k ox oy oz idx idy idz tmin tmax =
+  let b = t.boxes and o = 6 * k in
+  let tx0 = (b.(o) -. ox) *. idx and tx1 = (b.(o + 3) -. ox) *. idx in
+  let ty0 = (b.(o + 1) -. oy) *. idy and ty1 = (b.(o + 4) -. oy) *. idy in
+  let tz0 = (b.(o + 2) -. oz) *. idz and tz1 = (b.(o + 5) -. oz) *. idz in
+  let near = Float.max (Float.max (Float.min tx0 tx1) (Float.min ty0 ty1)) (Float.max (Float.min tz0 tz1) tmin) in
+  let far = Float.min (Float.min (Float.max tx0 tx1) (Float.max ty0 ty1)) (Float.min (Float.max tz0 tz1) tmax) in
+  if near <= far then near else infinity
+
+let recip x = if x = 0. then 1e300 else 1. /. x
+
+(* Visit the primitives whose boxes the ray meets, nearer boxes first; [visit i] returns the new
+   limit beyond which boxes are skipped. *)
+let walk bvh stack ox oy oz dx dy dz limit0 visit =
+  if bvh.nodes > 0 then begin
+    let idx = recip dx and idy = recip dy and idz = recip dz in
+    let limit = ref limit0 in
+    let sp = ref 0 in
+    if entry bvh 0 ox oy oz idx idy idz 0. !limit < infinity then begin
+      stack.(0) <- 0;
+      sp := 1
+    end;
+    while !sp > 0 do
+      decr sp;
+      let k = stack.(!sp) in
+      let l = bvh.links in
+      let axis = l.((3 * k) + 2) in
+      if axis < 0 then begin
+        let first = l.(3 * k) and cnt = l.((3 * k) + 1) in
+        for j = first to first + cnt - 1 do
+          limit := Float.min !limit (visit bvh.order.(j))
+        done
+      end
+      else begin
+        let a = l.(3 * k) and b = l.((3 * k) + 1) in
+        let ta = entry bvh a ox oy oz idx idy idz 0. !limit and tb = entry bvh b ox oy oz idx idy idz 0. !limit in
+        (* push the farther child first so the nearer one is visited first *)
+        if ta <= tb then begin
+          if tb < infinity then (stack.(!sp) <- b; incr sp);
+          if ta < infinity then (stack.(!sp) <- a; incr sp)
+        end
+        else begin
+          if ta < infinity then (stack.(!sp) <- a; incr sp);
+          if tb < infinity then (stack.(!sp) <- b; incr sp)
+        end
+      end
+    done
+  end
+
