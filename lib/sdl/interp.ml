@@ -836,7 +836,16 @@ and parse_mesh st loc =
         let p1, p2, p3, ns = parse_triangle_corners st ~smooth:(kw = "smooth_triangle") in
         let tex =
           if is_ident st "texture" then begin
-            let t = parse_texture_in_block st in
+            (* POV-Ray takes only a texture identifier here: texture { T } *)
+            advance st;
+            open_block st "texture";
+            let tl = peek_loc st in
+            let t =
+              match ident_of_kind st (function V.Texture t -> Some t | _ -> None) with
+              | Some t -> t
+              | None -> Error.raise_at tl "expected a texture identifier: a mesh triangle takes texture { Identifier }"
+            in
+            close_block st "texture";
             textures := t :: !textures;
             incr ntex;
             !ntex - 1
