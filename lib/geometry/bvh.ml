@@ -9,7 +9,12 @@ type t = {
 }
 
 let bins = 16
-let leaf_size = 2
+
+(* fmin/max also order −0 and NaN, which costs a C call; boxes need neither. *)
+let[@inline] fmin (a : float) b = if a < b then a else b
+let[@inline] fmax (a : float) b = if a > b then a else b
+let[@inline] imin (a : int) b = if a < b then a else b
+let leaf_size = 4
 
 let empty = { boxes = [||]; links = [||]; order = [||]; nodes = 0 }
 
@@ -19,28 +24,36 @@ let half_area x0 y0 z0 x1 y1 z1 =
   if dx < 0. then 0. else (dx *. dy) +. (dy *. dz) +. (dz *. dx)
 
 let build (prim : float array) =
-  (* [prim] holds 6 floats per primitive: its box. Boxes are widened by a relative 1e-9 so that
-     rounding in the slab test never loses a hit on a flat (zero-thickness) box. *)
+  (* [prim] holds 6 floats per primitive: its box. Boxes are widened in place by a relative 1e-9
+     so that rounding in the slab test never loses a hit on a flat (zero-thickness) box. *)
   let n = Array.length prim / 6 in
-  let prim =
-    Array.mapi
-      (fun k v ->
-        let pad = (1e-9 *. Float.abs v) +. 1e-300 in
-        if k mod 6 < 3 then v -. pad else v +. pad)
-      prim
-  in
+  Array.iteri
+    (fun k v ->
+      let pad = (1e-9 *. Float.abs v) +. 1e-300 in
+      prim.(k) <- (if k mod 6 < 3 then v -. pad else v +. pad))
+    prim;
   if n = 0 then empty
   else begin
     let order = Array.init n (fun i -> i) in
     let centre = Array.init (3 * n) (fun k -> let i = k / 3 and a = k mod 3 in 0.5 *. (prim.((6 * i) + a) +. prim.((6 * i) + 3 + a))) in
-    let cap = 2 * n in
-    let boxes = Array.make (6 * cap) 0. and links = Array.make (3 * cap) 0 in
+    (* room for the nodes grows as needed: leaves hold up to [leaf_size] primitives, so a tree
+       usually has fewer than n nodes and the worst case (2n − 1) is rare *)
+    let boxes_r = ref (Array.make (6 * (n + 1)) 0.) and links_r = ref (Array.make (3 * (n + 1)) 0) in
     let count = ref 0 in
+    let reserve id =
+      if 3 * (id + 1) > Array.length !links_r then begin
+        let grow a len = let b = Array.make (len + (len / 2)) (Array.unsafe_get a 0) in Array.blit a 0 b 0 (Array.length a); b in
+        boxes_r := grow !boxes_r (Array.length !boxes_r);
+        links_r := grow !links_r (Array.length !links_r)
+      end
+    in
     let bin_box = Array.make (6 * bins) 0. and bin_n = Array.make bins 0 in
     let right_area = Array.make bins 0. and right_n = Array.make bins 0 in
     let rec node first cnt =
       let id = !count in
       incr count;
+      reserve id;
+      let boxes = !boxes_r and links = !links_r in
       (* bounds of the primitives and of their centres *)
       let b = Array.make 6 infinity in
       b.(3) <- neg_infinity; b.(4) <- neg_infinity; b.(5) <- neg_infinity;
@@ -48,19 +61,22 @@ let build (prim : float array) =
       for k = first to first + cnt - 1 do
         let i = order.(k) in
         for a = 0 to 2 do
-          b.(a) <- Float.min b.(a) prim.((6 * i) + a);
-          b.(3 + a) <- Float.max b.(3 + a) prim.((6 * i) + 3 + a);
-          c.(a) <- Float.min c.(a) centre.((3 * i) + a);
-          c.(3 + a) <- Float.max c.(3 + a) centre.((3 * i) + a)
+          b.(a) <- fmin b.(a) prim.((6 * i) + a);
+          b.(3 + a) <- fmax b.(3 + a) prim.((6 * i) + 3 + a);
+          c.(a) <- fmin c.(a) centre.((3 * i) + a);
+          c.(3 + a) <- fmax c.(3 + a) centre.((3 * i) + a)
         done
       done;
       Array.blit b 0 boxes (6 * id) 6;
       let leaf () = links.(3 * id) <- first; links.((3 * id) + 1) <- cnt; links.((3 * id) + 2) <- -1 in
       if cnt <= leaf_size then leaf ()
       else begin
-        (* binned SAH over the three axes *)
+        (* binned SAH *)
         let best_cost = ref infinity and best_axis = ref (-1) and best_split = ref 0 in
-        for a = 0 to 2 do
+        (* bin along the axis where the centres spread most *)
+        let ext a = c.(3 + a) -. c.(a) in
+        let widest = if ext 0 >= ext 1 && ext 0 >= ext 2 then 0 else if ext 1 >= ext 2 then 1 else 2 in
+        for a = widest to widest do
           let lo = c.(a) and hi = c.(3 + a) in
           if hi > lo then begin
             let scale = float_of_int bins /. (hi -. lo) in
@@ -70,17 +86,17 @@ let build (prim : float array) =
             done;
             for k = first to first + cnt - 1 do
               let i = order.(k) in
-              let j = min (bins - 1) (int_of_float ((centre.((3 * i) + a) -. lo) *. scale)) in
+              let j = imin (bins - 1) (int_of_float ((centre.((3 * i) + a) -. lo) *. scale)) in
               bin_n.(j) <- bin_n.(j) + 1;
               for q = 0 to 2 do
-                bin_box.((6 * j) + q) <- Float.min bin_box.((6 * j) + q) prim.((6 * i) + q);
-                bin_box.((6 * j) + 3 + q) <- Float.max bin_box.((6 * j) + 3 + q) prim.((6 * i) + 3 + q)
+                bin_box.((6 * j) + q) <- fmin bin_box.((6 * j) + q) prim.((6 * i) + q);
+                bin_box.((6 * j) + 3 + q) <- fmax bin_box.((6 * j) + 3 + q) prim.((6 * i) + 3 + q)
               done
             done;
             (* sweep from the right, then from the left *)
             let acc = Array.make 6 0. in
             let reset () = acc.(0) <- infinity; acc.(1) <- infinity; acc.(2) <- infinity; acc.(3) <- neg_infinity; acc.(4) <- neg_infinity; acc.(5) <- neg_infinity in
-            let grow j = for q = 0 to 2 do acc.(q) <- Float.min acc.(q) bin_box.((6 * j) + q); acc.(3 + q) <- Float.max acc.(3 + q) bin_box.((6 * j) + 3 + q) done in
+            let grow j = for q = 0 to 2 do acc.(q) <- fmin acc.(q) bin_box.((6 * j) + q); acc.(3 + q) <- fmax acc.(3 + q) bin_box.((6 * j) + 3 + q) done in
             reset ();
             let rn = ref 0 in
             for j = bins - 1 downto 1 do
@@ -109,14 +125,14 @@ let build (prim : float array) =
             links.((3 * id) + 2) <- 0;
             let l = node first half in
             let r = node (first + half) (cnt - half) in
-            links.(3 * id) <- l; links.((3 * id) + 1) <- r
+            !links_r.(3 * id) <- l; !links_r.((3 * id) + 1) <- r
           end
           else leaf ()
         else begin
           let a = !best_axis in
           let lo = c.(a) and hi = c.(3 + a) in
           let scale = float_of_int bins /. (hi -. lo) in
-          let bin_of i = min (bins - 1) (int_of_float ((centre.((3 * i) + a) -. lo) *. scale)) in
+          let bin_of i = imin (bins - 1) (int_of_float ((centre.((3 * i) + a) -. lo) *. scale)) in
           (* partition order[first..first+cnt) by bin < best_split *)
           let i = ref first and j = ref (first + cnt - 1) in
           while !i <= !j do
@@ -130,14 +146,14 @@ let build (prim : float array) =
           links.((3 * id) + 2) <- a;
           let l = node first nl in
           let r = node (first + nl) (cnt - nl) in
-          links.(3 * id) <- l; links.((3 * id) + 1) <- r
+          !links_r.(3 * id) <- l; !links_r.((3 * id) + 1) <- r
         end
       end;
       id
     in
     ignore (node 0 n);
-    let nodes = !count in
-    { boxes = Array.sub boxes 0 (6 * nodes); links = Array.sub links 0 (3 * nodes); order; nodes }
+    (* the arrays may be longer than the nodes need; [nodes] says how many are used *)
+    { boxes = !boxes_r; links = !links_r; order; nodes = !count }
   end
 
 (* Slab test of node [k] against the ray (origin o, reciprocal direction id, where a zero direction
@@ -148,8 +164,8 @@ let[@inline] entry t k ox oy oz idx idy idz tmin tmax =
   let tx0 = (b.(o) -. ox) *. idx and tx1 = (b.(o + 3) -. ox) *. idx in
   let ty0 = (b.(o + 1) -. oy) *. idy and ty1 = (b.(o + 4) -. oy) *. idy in
   let tz0 = (b.(o + 2) -. oz) *. idz and tz1 = (b.(o + 5) -. oz) *. idz in
-  let near = Float.max (Float.max (Float.min tx0 tx1) (Float.min ty0 ty1)) (Float.max (Float.min tz0 tz1) tmin) in
-  let far = Float.min (Float.min (Float.max tx0 tx1) (Float.max ty0 ty1)) (Float.min (Float.max tz0 tz1) tmax) in
+  let near = fmax (fmax (fmin tx0 tx1) (fmin ty0 ty1)) (fmax (fmin tz0 tz1) tmin) in
+  let far = fmin (fmin (fmax tx0 tx1) (fmax ty0 ty1)) (fmin (fmax tz0 tz1) tmax) in
   if near <= far then near else infinity
 
 let recip x = if x = 0. then 1e300 else 1. /. x
@@ -173,7 +189,7 @@ let walk bvh stack ox oy oz dx dy dz limit0 visit =
       if axis < 0 then begin
         let first = l.(3 * k) and cnt = l.((3 * k) + 1) in
         for j = first to first + cnt - 1 do
-          limit := Float.min !limit (visit bvh.order.(j))
+          limit := fmin !limit (visit bvh.order.(j))
         done
       end
       else begin

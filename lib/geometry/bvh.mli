@@ -12,7 +12,7 @@ type t = {
 
 val build : float array -> t
 (** [build boxes] builds a hierarchy over primitives whose boxes are given as 6 floats each
-    (min x, y, z, max x, y, z). *)
+    (min x, y, z, max x, y, z); [boxes] is widened in place by a relative 1e-9 and then unused. *)
 
 val entry : t -> int -> float -> float -> float -> float -> float -> float -> float -> float -> float
 (** [entry bvh k ox oy oz idx idy idz tmin tmax] is the distance at which the ray from (ox,oy,oz)

@@ -1,29 +1,35 @@
 (** Triangle meshes as POV-Ray stores them (POVRAY-3.7 §2.6), with a BVH over the faces. A mesh is
     immutable and shared by every object that uses it. *)
 
+type f32s = (float, Bigarray.float32_elt, Bigarray.c_layout) Bigarray.Array1.t
+type i32s = (int32, Bigarray.int32_elt, Bigarray.c_layout) Bigarray.Array1.t
+
 type t = private {
-  vertices : float array;  (** x y z per vertex, in single precision *)
-  normals : float array;  (** x y z per normal: the vertex normals, then one per face *)
-  tri_f : float array;  (** 4 per face: plane distance, Perp x y z *)
-  tri_i : int array;  (** 9 per face: v1 v2 v3, face normal, n1 n2 n3 (−1 when flat), axis·4 + vaxis, texture *)
+  vertices : f32s;  (** x y z per vertex *)
+  vnormals : f32s;  (** x y z per vertex normal *)
+  fgeom : f32s;  (** 6 per face: face normal x y z, Perp x y z *)
+  fdist : float array;  (** 1 per face: the plane distance, in double precision *)
+  fidx : i32s;  (** 7 per face: v1 v2 v3, n1 n2 n3 (−1 when flat), axis + 4·vaxis + 16·(texture + 1) *)
   faces : int;
   bvh : Bvh.t;
   inside_vector : Vec.t option;
 }
 
-(** A face as written. *)
-type face = {
-  corners : Vec.t * Vec.t * Vec.t;  (** positions the set-up is computed from (the parsed values for
-                                        [mesh], the stored single-precision ones for [mesh2]) *)
-  vi : int * int * int;  (** vertex indices *)
-  ni : (int * int * int) option;  (** vertex-normal indices of a smooth face *)
-  tex : int;  (** texture index, −1 for the mesh's own texture *)
-}
-
-val build : vertices:float array -> vertex_normals:float array -> faces:face array -> inside_vector:Vec.t option -> t
-(** [build ~vertices ~vertex_normals ~faces ~inside_vector] sets up every face (dropping those without
-    area, flattening smooth faces whose three normals are equal) and builds the BVH. Vertices and
-    normals must already be single-precision values, normals of unit length. *)
+val build :
+  vertices:float array ->
+  vertex_normals:float array ->
+  fv:int array ->
+  fn:int array ->
+  ftex:int array ->
+  corners:float array option ->
+  inside_vector:Vec.t option ->
+  t
+(** [build ~vertices ~vertex_normals ~fv ~fn ~ftex ~corners ~inside_vector] sets up every face and
+    builds the BVH. Per face: three vertex indices in [fv], three vertex-normal indices in [fn] (−1
+    for a flat face; an empty [fn] makes every face flat), a texture index in [ftex] (−1: the mesh's own). [corners] (9 floats per face)
+    are the positions the set-up is computed from when they differ from the stored vertices (the
+    parsed values of a [mesh]). Faces without area are dropped, smooth faces whose three normals are
+    equal become flat. Vertices and normals must be single-precision values, normals unit length. *)
 
 val nearest : t -> int array -> Vec.t -> Vec.t -> float -> float array -> int
 (** [nearest m stack o d lo hit] is the nearest face hit at depth ≥ [lo] along the unit direction

@@ -98,7 +98,7 @@ let peek2 st =
 let advance st =
   match st.ahead with
   | Some t -> st.cur <- t; st.ahead <- None
-  | None -> if st.cur.kind <> Eof then st.cur <- Lexer.next st.lexer
+  | None -> if st.cur.kind != Eof then st.cur <- Lexer.next st.lexer
 
 let warn st loc fmt = Printf.ksprintf (fun msg -> st.warnings <- { Error.loc; msg; notes = [] } :: st.warnings) fmt
 
@@ -124,8 +124,9 @@ let unexpected st what =
   | Directive d when List.mem d unsupported_directives -> not_supported (peek_loc st) (Printf.sprintf "'#%s'" d)
   | _ -> Error.raise_at (peek_loc st) "expected %s but found %s" what (describe k)
 
-let expect st k what = if peek st = k then advance st else unexpected st what
-let accept st k = if peek st = k then (advance st; true) else false
+(* [k] is always a constant constructor here, so physical equality is the cheap, exact test *)
+let expect st k what = if peek st == k then advance st else unexpected st what
+let accept st k = if peek st == k then (advance st; true) else false
 let is_ident st s = match peek st with Ident i -> String.equal i s | _ -> false
 
 let accept_ident st s =
@@ -231,7 +232,7 @@ and parse_postfix st =
 and parse_full st =
   (* inside parentheses: ?:, & |, relational (§11.2) *)
   let c = parse_logical st in
-  if peek st = Quest then begin
+  if peek st == Quest then begin
     let loc = peek_loc st in
     advance st;
     let a = parse_full st in
@@ -528,7 +529,7 @@ let parse_reflection_block st (r : Scene.reflection) : Scene.reflection =
   (* reflection { MIN [, MAX] [fresnel [b]] [falloff F] [exponent E] [metallic [M]] } (§5.1) *)
   open_block st "reflection";
   let r, one_colour =
-    if peek st = RBrace then (r, false)
+    if peek st == RBrace then (r, false)
     else
       let mn = parse_rgb st "reflection" in
       if accept st Comma then ({ r with rmin = mn; rmax = parse_rgb st "reflection" }, false)
@@ -581,7 +582,7 @@ let parse_finish st (base : Scene.finish) : Scene.finish =
     | Ident "metallic" -> advance st; loop { f with metallic = (if float_follows st then parse_float st else 1.) }
     | Ident "reflection" ->
         advance st;
-        if peek st = LBrace then loop { f with reflection = parse_reflection_block st f.reflection }
+        if peek st == LBrace then loop { f with reflection = parse_reflection_block st f.reflection }
         else
           (* old syntax: min = max = value, falloff 1, type 0 (§5.1) *)
           let c = parse_rgb st "reflection" in
@@ -717,7 +718,26 @@ let parse_triangle_corners st ~smooth =
     (p1, p2, p3, None)
   end
 
-(* A block "{ n, item, item … }" of a mesh2; returns the items and checks their number. *)
+(* Growable arrays for mesh data, private to one parse. *)
+module Grow = struct
+  type 'a t = { mutable data : 'a array; mutable len : int }
+
+  let create x = { data = Array.make 1024 x; len = 0 }
+
+  let push g x =
+    if g.len = Array.length g.data then begin
+      let d = Array.make (2 * g.len) x in
+      Array.blit g.data 0 d 0 g.len;
+      g.data <- d
+    end;
+    g.data.(g.len) <- x;
+    g.len <- g.len + 1
+
+  let to_array g = Array.sub g.data 0 g.len
+end
+
+(* A block "{ n, item, item … }" of a mesh2: [item] is called for each entry (with its location),
+   and the number of entries must be n. *)
 let parse_counted_block st what item =
   let loc = peek_loc st in
   open_block st what;
@@ -725,31 +745,20 @@ let parse_counted_block st what item =
   let n = parse_float st in
   if n < 0. || Float.of_int (int_of_float n) <> n then Error.raise_at nloc "the count of %s must be a whole number, not %g" what n;
   let n = int_of_float n in
-  let items = ref [] and count = ref 0 in
-  while peek st <> RBrace do
-    if peek st = Eof then close_block st what;
+  let count = ref 0 in
+  while peek st != RBrace do
+    if peek st == Eof then close_block st what;
     comma st;
-    if peek st <> RBrace then begin
-      let l = peek_loc st in
-      items := item l :: !items;
+    if peek st != RBrace then begin
+      item (peek_loc st);
       incr count
     end
   done;
   advance st;
   if !count <> n then Error.raise_at loc "%s says %d entries but lists %d" what n !count;
-  Array.of_list (List.rev !items)
+  n
 
-let vec3 (v : Vec.t) = [| v.x; v.y; v.z |]
 let f32_vec (v : Vec.t) = Vec.make (f32 v.x) (f32 v.y) (f32 v.z)
-
-let index_vector st loc limit what =
-  let v = parse_vector st in
-  let check x =
-    if Float.of_int (int_of_float x) <> x || x < 0. || int_of_float x >= limit then
-      Error.raise_at loc "%s index %g is out of range: there are %d" what x limit;
-    int_of_float x
-  in
-  (check v.x, check v.y, check v.z)
 
 let parse_texture_in_block st =
   (* texture { … } or a texture identifier inside a mesh triangle *)
@@ -821,13 +830,13 @@ let rec parse_object st : V.obj =
    in single precision; each face is set up from the values as parsed. *)
 and parse_mesh st loc =
   open_block st "mesh";
-  let verts = ref [] and nverts = ref 0 in
-  let norms = ref [] and nnorms = ref 0 in
+  let verts = Grow.create 0. and norms = Grow.create 0. and corners = Grow.create 0. in
+  let fv = Grow.create 0 and fn = Grow.create 0 and ftex = Grow.create 0 in
   let textures = ref [] and ntex = ref 0 in
-  let faces = ref [] in
   let inside = ref None in
-  let add_vertex v = verts := f32_vec v :: !verts; incr nverts; !nverts - 1 in
-  let add_normal n = norms := f32_vec n :: !norms; incr nnorms; !nnorms - 1 in
+  let push3 g (v : Vec.t) = Grow.push g v.x; Grow.push g v.y; Grow.push g v.z in
+  let add_vertex v = push3 verts (f32_vec v); Grow.push fv ((verts.len / 3) - 1) in
+  let add_normal n = push3 norms (f32_vec n); Grow.push fn ((norms.len / 3) - 1) in
   let rec items () =
     match peek st with
     | Ident ("triangle" | "smooth_triangle" as kw) ->
@@ -853,17 +862,21 @@ and parse_mesh st loc =
           else -1
         in
         close_block st kw;
-        let vi = (add_vertex p1, add_vertex p2, add_vertex p3) in
-        let ni = Option.map (fun (a, b, c) -> (add_normal a, add_normal b, add_normal c)) ns in
-        faces := { Mesh.corners = (p1, p2, p3); vi; ni; tex } :: !faces;
+        add_vertex p1; add_vertex p2; add_vertex p3;
+        push3 corners p1; push3 corners p2; push3 corners p3;
+        (match ns with
+        | Some (a, b, c) -> add_normal a; add_normal b; add_normal c
+        | None -> Grow.push fn (-1); Grow.push fn (-1); Grow.push fn (-1));
+        Grow.push ftex tex;
         items ()
     | Ident "inside_vector" -> advance st; inside := Some (parse_vector st); items ()
     | _ -> ()
   in
   items ();
-  let vertices = Array.concat (List.rev_map vec3 !verts) in
-  let vertex_normals = Array.concat (List.rev_map vec3 !norms) in
-  let mesh = Mesh.build ~vertices ~vertex_normals ~faces:(Array.of_list (List.rev !faces)) ~inside_vector:!inside in
+  let mesh =
+    Mesh.build ~vertices:(Grow.to_array verts) ~vertex_normals:(Grow.to_array norms) ~fv:(Grow.to_array fv)
+      ~fn:(Grow.to_array fn) ~ftex:(Grow.to_array ftex) ~corners:(Some (Grow.to_array corners)) ~inside_vector:!inside
+  in
   if mesh.faces = 0 then warn st loc "the mesh has no triangles with an area";
   let shape = Scene.Mesh { mesh; offset = Vec.zero; textures = Array.of_list (List.rev !textures) } in
   parse_object_mods st (new_obj shape loc) "mesh"
@@ -873,85 +886,95 @@ and parse_mesh2 st loc =
   open_block st "mesh2";
   let vertices = ref None and normals = ref None and textures = ref [||] in
   let faces = ref None and nidx = ref None and inside = ref None in
+  let vectors what ~unit =
+    let g = Grow.create 0. in
+    let n =
+      parse_counted_block st what (fun l ->
+          let v = parse_vector st in
+          let v = f32_vec (if unit then unit_normal st l v else v) in
+          Grow.push g v.x; Grow.push g v.y; Grow.push g v.z)
+    in
+    (n, Grow.to_array g)
+  in
+  let indices st l limit what g =
+    let v = parse_vector st in
+    let check x =
+      if Float.of_int (int_of_float x) <> x || x < 0. || int_of_float x >= limit then
+        Error.raise_at l "%s index %g is out of range: there are %d" what x limit;
+      Grow.push g (int_of_float x)
+    in
+    check v.x; check v.y; check v.z
+  in
   let rec sections () =
     let l = peek_loc st in
     match peek st with
-    | Ident "vertex_vectors" -> advance st; vertices := Some (l, parse_counted_block st "vertex_vectors" (fun _ -> f32_vec (parse_vector st))); sections ()
-    | Ident "normal_vectors" ->
-        advance st;
-        normals := Some (l, parse_counted_block st "normal_vectors" (fun l -> f32_vec (unit_normal st l (parse_vector st))));
-        sections ()
+    | Ident "vertex_vectors" -> advance st; vertices := Some (vectors "vertex_vectors" ~unit:false); sections ()
+    | Ident "normal_vectors" -> advance st; normals := Some (vectors "normal_vectors" ~unit:true); sections ()
     | Ident "uv_vectors" -> not_supported l "'uv_vectors'"
     | Ident "texture_list" ->
         advance st;
-        textures :=
-          parse_counted_block st "texture_list" (fun l ->
-              if is_ident st "texture" then parse_texture_in_block st else Error.raise_at l "expected a texture in texture_list");
+        let g = ref [] in
+        ignore
+          (parse_counted_block st "texture_list" (fun l ->
+               if is_ident st "texture" then g := parse_texture_in_block st :: !g
+               else Error.raise_at l "expected a texture in texture_list"));
+        textures := Array.of_list (List.rev !g);
         sections ()
     | Ident "face_indices" ->
         advance st;
-        let nv = match !vertices with Some (_, v) -> Array.length v | None -> Error.raise_at l "face_indices before vertex_vectors" in
+        let nv = match !vertices with Some (n, _) -> n | None -> Error.raise_at l "face_indices before vertex_vectors" in
         let ntex = Array.length !textures in
-        faces :=
-          Some
-            ( l,
-              parse_counted_block st "face_indices" (fun l ->
-                  let vi = index_vector st l nv "vertex" in
-                  (* an optional texture index (or three, which would interpolate) follows *)
-                  let tex =
-                    if peek st = Comma && (match peek2 st with Num _ -> true | _ -> false) then begin
-                      advance st;
-                      let tl = peek_loc st in
-                      let t = parse_float st in
-                      if peek st = Comma && (match peek2 st with Num _ -> true | _ -> false) then
-                        not_supported tl "three texture indices per face (interpolated textures)";
-                      if Float.of_int (int_of_float t) <> t || t < 0. || int_of_float t >= ntex then
-                        Error.raise_at tl "texture index %g is out of range: the texture_list has %d" t ntex;
-                      int_of_float t
-                    end
-                    else -1
-                  in
-                  (vi, tex)) );
+        let fv = Grow.create 0 and ftex = Grow.create 0 in
+        let n =
+          parse_counted_block st "face_indices" (fun l ->
+              indices st l nv "vertex" fv;
+              (* an optional texture index (three would interpolate, which is not read yet) *)
+              let tex =
+                if peek st == Comma && (match peek2 st with Num _ -> true | _ -> false) then begin
+                  advance st;
+                  let tl = peek_loc st in
+                  let t = parse_float st in
+                  if peek st == Comma && (match peek2 st with Num _ -> true | _ -> false) then
+                    not_supported tl "three texture indices per face (interpolated textures)";
+                  if Float.of_int (int_of_float t) <> t || t < 0. || int_of_float t >= ntex then
+                    Error.raise_at tl "texture index %g is out of range: the texture_list has %d" t ntex;
+                  int_of_float t
+                end
+                else -1
+              in
+              Grow.push ftex tex)
+        in
+        faces := Some (l, n, Grow.to_array fv, Grow.to_array ftex);
         sections ()
     | Ident "normal_indices" ->
         advance st;
-        let nn = match !normals with Some (_, n) -> Array.length n | None -> Error.raise_at l "normal_indices before normal_vectors" in
-        nidx := Some (l, parse_counted_block st "normal_indices" (fun l -> index_vector st l nn "normal"));
+        let nn = match !normals with Some (n, _) -> n | None -> Error.raise_at l "normal_indices before normal_vectors" in
+        let g = Grow.create 0 in
+        let n = parse_counted_block st "normal_indices" (fun l -> indices st l nn "normal" g) in
+        nidx := Some (l, n, Grow.to_array g);
         sections ()
     | Ident "uv_indices" -> not_supported l "'uv_indices'"
     | Ident "inside_vector" -> advance st; inside := Some (parse_vector st); sections ()
     | _ -> ()
   in
   sections ();
-  let vs = match !vertices with Some (_, v) -> v | None -> Error.raise_at loc "mesh2 needs vertex_vectors" in
-  let fl, fs = match !faces with Some f -> f | None -> Error.raise_at loc "mesh2 needs face_indices" in
-  let ns = match !normals with Some (_, n) -> n | None -> [||] in
-  (* §2.6: without normal_indices the face indices serve when there are as many normals as vertices *)
-  let normal_index =
+  let nv, vs = match !vertices with Some v -> v | None -> Error.raise_at loc "mesh2 needs vertex_vectors" in
+  let fl, nf, fv, ftex = match !faces with Some f -> f | None -> Error.raise_at loc "mesh2 needs face_indices" in
+  let nn, ns = match !normals with Some n -> n | None -> (0, [||]) in
+  (* §2.6: without normal_indices the face indices serve when there are as many normals as vertices;
+     only the first faces, as many as there are normal indices, can be smooth *)
+  let fn =
     match !nidx with
-    | Some (_, ni) -> fun k -> if k < Array.length ni then Some ni.(k) else None
+    | Some (nl, n, ni) ->
+        if n > nf then Error.raise_at nl "normal_indices has %d entries but there are only %d faces" n nf;
+        Array.init (3 * nf) (fun i -> if i < 3 * n then ni.(i) else -1)
     | None ->
-        if Array.length ns = 0 then fun _ -> None
-        else if Array.length ns = Array.length vs then fun k -> Some (fst fs.(k))
+        if nn = 0 then [||]
+        else if nn = nv then fv
         else
-          Error.raise_at fl "normal_vectors has %d entries and vertex_vectors %d: without normal_indices they must be as many"
-            (Array.length ns) (Array.length vs)
+          Error.raise_at fl "normal_vectors has %d entries and vertex_vectors %d: without normal_indices they must be as many" nn nv
   in
-  (match !nidx with
-  | Some (nl, ni) when Array.length ni > Array.length fs ->
-      Error.raise_at nl "normal_indices has %d entries but there are only %d faces" (Array.length ni) (Array.length fs)
-  | _ -> ());
-  let vertex k = vs.(k) in
-  let faces =
-    Array.mapi
-      (fun k ((a, b, c), tex) ->
-        { Mesh.corners = (vertex a, vertex b, vertex c); vi = (a, b, c); ni = normal_index k; tex })
-      fs
-  in
-  let mesh =
-    Mesh.build ~vertices:(Array.concat (Array.to_list (Array.map vec3 vs)))
-      ~vertex_normals:(Array.concat (Array.to_list (Array.map vec3 ns))) ~faces ~inside_vector:!inside
-  in
+  let mesh = Mesh.build ~vertices:vs ~vertex_normals:ns ~fv ~fn ~ftex ~corners:None ~inside_vector:!inside in
   let shape = Scene.Mesh { mesh; offset = Vec.zero; textures = !textures } in
   parse_object_mods st (new_obj shape loc) "mesh2"
 
@@ -1034,7 +1057,7 @@ let parse_light st =
   let position = parse_vector st in
   ignore (accept st Comma);
   (* §10.2: the colour after the position; without one the light is black *)
-  let colour = if peek st = RBrace || (match peek st with Ident s -> List.mem s [ "shadowless"; "fade_distance"; "fade_power"; "translate" ] | _ -> false) then Rgb.black else parse_rgb st "a light colour" in
+  let colour = if peek st == RBrace || (match peek st with Ident s -> List.mem s [ "shadowless"; "fade_distance"; "fade_power"; "translate" ] | _ -> false) then Rgb.black else parse_rgb st "a light colour" in
   ignore loc;
   let rec loop (l : Scene.light) =
     let loc = peek_loc st in

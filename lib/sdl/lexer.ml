@@ -86,17 +86,27 @@ let lex_string lx pos =
   ({ kind = Str (Buffer.contents buf); loc }, p)
 
 (* A number: digits, an optional fraction, an optional exponent (§11.1). *)
+(* Exact powers of ten: a mantissa below 2^53 divided by one of these is correctly rounded. *)
+let pow10 = Array.init 23 (fun i -> float_of_string ("1e" ^ string_of_int i))
+
 let lex_number lx pos =
   let text = lx.text and len = lx.len in
   let p = ref pos in
-  while !p < len && is_digit text.[!p] do incr p done;
+  (* the digits are also accumulated for the fast path of plain decimals *)
+  let mant = ref 0 and digits = ref 0 and frac = ref 0 in
+  let digit c = mant := (!mant * 10) + (Char.code c - 48); incr digits in
+  while !p < len && is_digit text.[!p] do digit text.[!p]; incr p done;
   (* "1.x" is not a number followed by ".x": a '.' followed by a letter other than e/E stays a dot *)
   if !p < len && text.[!p] = '.'
      && not (!p + 1 < len && is_ident_start text.[!p + 1] && text.[!p + 1] <> 'e' && text.[!p + 1] <> 'E')
   then begin
     incr p;
-    while !p < len && is_digit text.[!p] do incr p done
+    while !p < len && is_digit text.[!p] do digit text.[!p]; incr frac; incr p done
   end;
+  if !digits <= 15 && !frac <= 22 && not (!p < len && (text.[!p] = 'e' || text.[!p] = 'E')) then
+    (* plain decimal with few digits: one correctly rounded division, as strtod would give *)
+    ({ kind = Num (float_of_int !mant /. pow10.(!frac)); loc = loc_at lx pos }, !p)
+  else begin
   if !p < len && (text.[!p] = 'e' || text.[!p] = 'E') then begin
     let q = ref (!p + 1) in
     if !q < len && (text.[!q] = '+' || text.[!q] = '-') then incr q;
@@ -108,6 +118,7 @@ let lex_number lx pos =
   let s = String.sub text pos (!p - pos) in
   let f = match float_of_string_opt s with Some f -> f | None -> Error.raise_at (loc_at lx pos) "malformed number '%s'" s in
   ({ kind = Num f; loc = loc_at lx pos }, !p)
+  end
 
 let next lx =
   let text = lx.text and len = lx.len in
