@@ -72,6 +72,8 @@ let print_stats (r : Pipeline.result) (o : Render.options) =
   Printf.eprintf "Rays:        %11d   Max Level: %d/%d\n%s\n" rays s.max_level r.scene.max_trace_level line;
   Printf.eprintf "Ray->Shape Intersection          Tests       Succeeded  Percentage\n%s\n" line;
   if s.plane_tests > 0 then Printf.eprintf "Plane                      %11d     %11d  %10.2f\n" s.plane_tests s.plane_hits (pct s.plane_hits s.plane_tests);
+  if s.triangle_tests > 0 then Printf.eprintf "Triangle                   %11d     %11d  %10.2f\n" s.triangle_tests s.triangle_hits (pct s.triangle_hits s.triangle_tests);
+  if s.mesh_tests > 0 then Printf.eprintf "Mesh                       %11d     %11d  %10.2f\n" s.mesh_tests s.mesh_hits (pct s.mesh_hits s.mesh_tests);
   if s.sphere_tests > 0 then Printf.eprintf "Sphere                     %11d     %11d  %10.2f\n" s.sphere_tests s.sphere_hits (pct s.sphere_hits s.sphere_tests);
   Printf.eprintf "%s\n" line;
   Printf.eprintf "Camera Rays:               %11d\n" s.camera_rays;
