@@ -69,13 +69,35 @@ let build (prim : float array) =
       done;
       Array.blit b 0 boxes (6 * id) 6;
       let leaf () = links.(3 * id) <- first; links.((3 * id) + 1) <- cnt; links.((3 * id) + 2) <- -1 in
-      if cnt <= leaf_size then leaf ()
+      let ext a = c.(3 + a) -. c.(a) in
+      let widest = if ext 0 >= ext 1 && ext 0 >= ext 2 then 0 else if ext 1 >= ext 2 then 1 else 2 in
+      (* Large nodes are split at the middle of their centres along the widest axis: far cheaper
+         than binning, and for big meshes nearly as good; the SAH decides below that size. *)
+      let mid_split () =
+        let a = widest in
+        let m = 0.5 *. (c.(a) +. c.(3 + a)) in
+        let i = ref first and j = ref (first + cnt - 1) in
+        while !i <= !j do
+          if centre.((3 * order.(!i)) + a) < m then incr i
+          else begin
+            let t = order.(!i) in
+            order.(!i) <- order.(!j); order.(!j) <- t; decr j
+          end
+        done;
+        !i - first
+      in
+      let nl = if cnt > 8192 && ext widest > 0. then mid_split () else 0 in
+      if nl > 0 && nl < cnt then begin
+        links.((3 * id) + 2) <- widest;
+        let l = node first nl in
+        let r = node (first + nl) (cnt - nl) in
+        !links_r.(3 * id) <- l; !links_r.((3 * id) + 1) <- r
+      end
+      else if cnt <= leaf_size then leaf ()
       else begin
         (* binned SAH *)
         let best_cost = ref infinity and best_axis = ref (-1) and best_split = ref 0 in
         (* bin along the axis where the centres spread most *)
-        let ext a = c.(3 + a) -. c.(a) in
-        let widest = if ext 0 >= ext 1 && ext 0 >= ext 2 then 0 else if ext 1 >= ext 2 then 1 else 2 in
         for a = widest to widest do
           let lo = c.(a) and hi = c.(3 + a) in
           if hi > lo then begin

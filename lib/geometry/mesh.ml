@@ -31,7 +31,8 @@ let f32s_of_array a =
 
 let build ~(vertices : float array) ~(vertex_normals : float array) ~(fv : int array) ~(fn : int array) ~(ftex : int array)
     ~(corners : float array option) ~inside_vector =
-  let nf = Array.length ftex in
+  let nf = Array.length fv / 3 in
+  let tex f = if Array.length ftex = 0 then -1 else ftex.(f) in
   let vn i = Vec.make vertex_normals.(3 * i) vertex_normals.((3 * i) + 1) vertex_normals.((3 * i) + 2) in
   let vx i = Vec.make vertices.(3 * i) vertices.((3 * i) + 1) vertices.((3 * i) + 2) in
   let corner f j =
@@ -84,7 +85,7 @@ let build ~(vertices : float array) ~(vertex_normals : float array) ~(fv : int a
       seti (o + 3) (if smooth then na else -1);
       seti (o + 4) (if smooth then nb else -1);
       seti (o + 5) (if smooth then nc else -1);
-      seti (o + 6) (axis + (4 * vaxis) + (16 * (ftex.(f) + 1)));
+      seti (o + 6) (axis + (4 * vaxis) + (16 * (tex f + 1)));
       incr n
     end
   done;

@@ -26,7 +26,8 @@ val build :
   t
 (** [build ~vertices ~vertex_normals ~fv ~fn ~ftex ~corners ~inside_vector] sets up every face and
     builds the BVH. Per face: three vertex indices in [fv], three vertex-normal indices in [fn] (−1
-    for a flat face; an empty [fn] makes every face flat), a texture index in [ftex] (−1: the mesh's own). [corners] (9 floats per face)
+    for a flat face; an empty [fn] makes every face flat), a texture index in [ftex] (−1: the mesh's own; an empty [ftex]: every face uses the mesh's
+    own). [corners] (9 floats per face)
     are the positions the set-up is computed from when they differ from the stored vertices (the
     parsed values of a [mesh]). Faces without area are dropped, smooth faces whose three normals are
     equal become flat. Vertices and normals must be single-precision values, normals unit length. *)

@@ -157,32 +157,29 @@ let truth x = Float.abs x > 1e-10
 
 let rec parse_expr st =
   (* additive level; relational and logical operators only inside parentheses *)
-  let lhs = parse_term st in
-  let rec loop lhs =
-    match peek st with
-    | Plus -> let loc = peek_loc st in advance st; loop (binop st loc ( +. ) lhs (parse_term st))
-    | Minus -> let loc = peek_loc st in advance st; loop (binop st loc ( -. ) lhs (parse_term st))
-    | _ -> lhs
-  in
-  loop lhs
+  expr_rest st (parse_term st)
 
-and parse_term st =
-  let lhs = parse_unary st in
-  let rec loop lhs =
-    match peek st with
-    | Star -> let loc = peek_loc st in advance st; loop (binop st loc ( *. ) lhs (parse_unary st))
-    | Slash ->
-        let loc = peek_loc st in
-        advance st;
-        let rhs = parse_unary st in
-        let divided = ref false in
-        let div a b = if b = 0. then (divided := true; 1e17) else a /. b in
-        let r = binop st loc div lhs rhs in
-        if !divided then warn st loc "division by zero; the result is 1e17";
-        loop r
-    | _ -> lhs
-  in
-  loop lhs
+and expr_rest st lhs =
+  match peek st with
+  | Plus -> let loc = peek_loc st in advance st; expr_rest st (binop st loc ( +. ) lhs (parse_term st))
+  | Minus -> let loc = peek_loc st in advance st; expr_rest st (binop st loc ( -. ) lhs (parse_term st))
+  | _ -> lhs
+
+and parse_term st = term_rest st (parse_unary st)
+
+and term_rest st lhs =
+  match peek st with
+  | Star -> let loc = peek_loc st in advance st; term_rest st (binop st loc ( *. ) lhs (parse_unary st))
+  | Slash ->
+      let loc = peek_loc st in
+      advance st;
+      let rhs = parse_unary st in
+      let divided = ref false in
+      let div a b = if b = 0. then (divided := true; 1e17) else a /. b in
+      let r = binop st loc div lhs rhs in
+      if !divided then warn st loc "division by zero; the result is 1e17";
+      term_rest st r
+  | _ -> lhs
 
 and binop st loc op a b =
   ignore st;
@@ -403,14 +400,31 @@ and parse_function st loc name =
   | _ -> Error.raise_at loc "unknown function '%s'" name
 
 and parse_float st =
-  let loc = peek_loc st in
-  match parse_expr st with
-  | V.Float f -> f
-  | v -> Error.raise_at loc "expected a float but found %s" (V.kind_name v)
+  (* A plain number that ends a list item or a vector needs no expression machinery: the fast path
+     for the millions of numbers of a mesh. *)
+  let ends = function Comma | Gt | RBrace | Semi | RParen -> true | _ -> false in
+  match peek st with
+  | Num f when ends (peek2 st) -> advance st; f
+  | Minus when (match peek2 st with Num _ -> true | _ -> false) -> (
+      advance st;
+      match peek st with
+      | Num f when ends (peek2 st) -> advance st; -.f
+      | _ -> (
+          (* the minus applies to a longer operand: negate the rest of the unary operand *)
+          let loc = peek_loc st in
+          match numeric_map loc (fun x -> -.x) (parse_unary st) |> term_rest st |> expr_rest st with
+          | V.Float f -> f
+          | v -> Error.raise_at loc "expected a float but found %s" (V.kind_name v)))
+  | _ -> (
+      let loc = peek_loc st in
+      match parse_expr st with
+      | V.Float f -> f
+      | v -> Error.raise_at loc "expected a float but found %s" (V.kind_name v))
 
 and parse_vector st =
   let loc = peek_loc st in
   match parse_expr st with
+  | V.Vector [| x; y; z |] -> Vec.make x y z
   | (V.Float _ | V.Vector _) as v -> let a = V.promote v 3 in Vec.make a.(0) a.(1) a.(2)
   | V.Colour a -> Vec.make a.(0) a.(1) a.(2)
   | v -> Error.raise_at loc "expected a vector but found %s" (V.kind_name v)
@@ -722,7 +736,7 @@ let parse_triangle_corners st ~smooth =
 module Grow = struct
   type 'a t = { mutable data : 'a array; mutable len : int }
 
-  let create x = { data = Array.make 1024 x; len = 0 }
+  let create ?(capacity = 1024) x = { data = Array.make (max 16 capacity) x; len = 0 }
 
   let push g x =
     if g.len = Array.length g.data then begin
@@ -738,13 +752,15 @@ end
 
 (* A block "{ n, item, item … }" of a mesh2: [item] is called for each entry (with its location),
    and the number of entries must be n. *)
-let parse_counted_block st what item =
+let parse_counted_block ?(start = fun (_ : int) -> ()) st what item =
   let loc = peek_loc st in
   open_block st what;
   let nloc = peek_loc st in
   let n = parse_float st in
   if n < 0. || Float.of_int (int_of_float n) <> n then Error.raise_at nloc "the count of %s must be a whole number, not %g" what n;
   let n = int_of_float n in
+  (* room for the announced entries, within reason: a wrong count is reported after the block *)
+  start (min n 50_000_000);
   let count = ref 0 in
   while peek st != RBrace do
     if peek st == Eof then close_block st what;
@@ -887,14 +903,15 @@ and parse_mesh2 st loc =
   let vertices = ref None and normals = ref None and textures = ref [||] in
   let faces = ref None and nidx = ref None and inside = ref None in
   let vectors what ~unit =
-    let g = Grow.create 0. in
+    let g = ref (Grow.create 0.) in
     let n =
-      parse_counted_block st what (fun l ->
+      parse_counted_block st what ~start:(fun n -> g := Grow.create ~capacity:(3 * n) 0.) (fun l ->
+          let g = !g in
           let v = parse_vector st in
           let v = f32_vec (if unit then unit_normal st l v else v) in
           Grow.push g v.x; Grow.push g v.y; Grow.push g v.z)
     in
-    (n, Grow.to_array g)
+    (n, Grow.to_array !g)
   in
   let indices st l limit what g =
     let v = parse_vector st in
@@ -924,9 +941,15 @@ and parse_mesh2 st loc =
         advance st;
         let nv = match !vertices with Some (n, _) -> n | None -> Error.raise_at l "face_indices before vertex_vectors" in
         let ntex = Array.length !textures in
-        let fv = Grow.create 0 and ftex = Grow.create 0 in
+        let fv = ref (Grow.create 0) and ftex = ref (Grow.create 0) in
         let n =
-          parse_counted_block st "face_indices" (fun l ->
+          parse_counted_block st "face_indices"
+            ~start:(fun n ->
+              fv := Grow.create ~capacity:(3 * n) 0;
+              (* per-face texture indices only when there is a texture list *)
+              if ntex > 0 then ftex := Grow.create ~capacity:n 0)
+            (fun l ->
+              let fv = !fv and ftex = !ftex in
               indices st l nv "vertex" fv;
               (* an optional texture index (three would interpolate, which is not read yet) *)
               let tex =
@@ -942,16 +965,19 @@ and parse_mesh2 st loc =
                 end
                 else -1
               in
-              Grow.push ftex tex)
+              if ntex > 0 then Grow.push ftex tex)
         in
-        faces := Some (l, n, Grow.to_array fv, Grow.to_array ftex);
+        faces := Some (l, n, Grow.to_array !fv, if ntex > 0 then Grow.to_array !ftex else [||]);
         sections ()
     | Ident "normal_indices" ->
         advance st;
         let nn = match !normals with Some (n, _) -> n | None -> Error.raise_at l "normal_indices before normal_vectors" in
-        let g = Grow.create 0 in
-        let n = parse_counted_block st "normal_indices" (fun l -> indices st l nn "normal" g) in
-        nidx := Some (l, n, Grow.to_array g);
+        let g = ref (Grow.create 0) in
+        let n =
+          parse_counted_block st "normal_indices" ~start:(fun n -> g := Grow.create ~capacity:(3 * n) 0) (fun l ->
+              indices st l nn "normal" !g)
+        in
+        nidx := Some (l, n, Grow.to_array !g);
         sections ()
     | Ident "uv_indices" -> not_supported l "'uv_indices'"
     | Ident "inside_vector" -> advance st; inside := Some (parse_vector st); sections ()
