@@ -1,12 +1,49 @@
-(* A bounding-volume hierarchy built with the binned surface-area heuristic and stored flat: one
-   float array of node boxes and one int array of node links, so traversal allocates nothing. *)
+(* A bounding-volume hierarchy built with the binned surface-area heuristic and stored flat, in
+   single precision outside the OCaml heap: node boxes (rounded outwards, as POV-Ray's bounding
+   boxes are single precision too), node links and the primitive order. Traversal allocates
+   nothing. *)
+
+open Bigarray
+
+type f32s = (float, float32_elt, c_layout) Array1.t
+type i32s = (int32, int32_elt, c_layout) Array1.t
 
 type t = {
-  boxes : float array;  (* 6 per node: min x y z, max x y z *)
-  links : int array;  (* 3 per node: leaf: first, count, -1; inner: left, right, split axis *)
-  order : int array;  (* primitive indices, leaves refer to ranges of this array *)
+  boxes : f32s;  (* 6 per node: min x y z, max x y z *)
+  links : i32s;  (* 3 per node: leaf: first, count, -1; inner: left, right, split axis *)
+  order : i32s;  (* primitive indices, leaves refer to ranges of this array *)
   nodes : int;
 }
+
+let[@inline] fget (a : f32s) i = Array1.unsafe_get a i
+let[@inline] iget (a : i32s) i = Int32.to_int (Array1.unsafe_get a i)
+let[@inline] iset (a : i32s) i x = Array1.unsafe_set a i (Int32.of_int x)
+
+let f32 x = Int32.float_of_bits (Int32.bits_of_float x)
+
+(* The single-precision value nearest below (above) x. *)
+let f32_down x =
+  let r = f32 x in
+  if r <= x then r
+  else if r > 0. then Int32.float_of_bits (Int32.pred (Int32.bits_of_float r))
+  else if r < 0. then Int32.float_of_bits (Int32.succ (Int32.bits_of_float r))
+  else -1.4e-45
+
+let f32_up x = -.f32_down (-.x)
+
+let create_boxes n = Array1.create float32 c_layout (6 * n)
+
+(* Store primitive [i]'s box, widened by a relative 1e-9 and rounded outwards to single precision,
+   so that no rounding in the slab test loses a hit on a flat (zero-thickness) box. *)
+let set_box (b : f32s) i x0 y0 z0 x1 y1 z1 =
+  let lo v = f32_down (v -. ((1e-9 *. Float.abs v) +. 1e-300)) and hi v = f32_up (v +. ((1e-9 *. Float.abs v) +. 1e-300)) in
+  let o = 6 * i in
+  Array1.unsafe_set b o (lo x0);
+  Array1.unsafe_set b (o + 1) (lo y0);
+  Array1.unsafe_set b (o + 2) (lo z0);
+  Array1.unsafe_set b (o + 3) (hi x1);
+  Array1.unsafe_set b (o + 4) (hi y1);
+  Array1.unsafe_set b (o + 5) (hi z1)
 
 let bins = 16
 
@@ -16,35 +53,36 @@ let[@inline] fmax (a : float) b = if a > b then a else b
 let[@inline] imin (a : int) b = if a < b then a else b
 let leaf_size = 4
 
-let empty = { boxes = [||]; links = [||]; order = [||]; nodes = 0 }
+let empty = { boxes = create_boxes 0; links = Array1.create int32 c_layout 0; order = Array1.create int32 c_layout 0; nodes = 0 }
 
 (* Surface area (half of it; only ratios matter) of a box given as six floats. *)
 let half_area x0 y0 z0 x1 y1 z1 =
   let dx = x1 -. x0 and dy = y1 -. y0 and dz = z1 -. z0 in
   if dx < 0. then 0. else (dx *. dy) +. (dy *. dz) +. (dz *. dx)
 
-let build (prim : float array) =
-  (* [prim] holds 6 floats per primitive: its box. Boxes are widened in place by a relative 1e-9
-     so that rounding in the slab test never loses a hit on a flat (zero-thickness) box. *)
-  let n = Array.length prim / 6 in
-  Array.iteri
-    (fun k v ->
-      let pad = (1e-9 *. Float.abs v) +. 1e-300 in
-      prim.(k) <- (if k mod 6 < 3 then v -. pad else v +. pad))
-    prim;
+let build (prim : f32s) =
+  (* [prim] holds 6 values per primitive: its box, as [set_box] stores it *)
+  let n = Array1.dim prim / 6 in
   if n = 0 then empty
   else begin
-    let order = Array.init n (fun i -> i) in
-    let centre = Array.init (3 * n) (fun k -> let i = k / 3 and a = k mod 3 in 0.5 *. (prim.((6 * i) + a) +. prim.((6 * i) + 3 + a))) in
+    let order = Array1.create int32 c_layout n in
+    for i = 0 to n - 1 do iset order i i done;
+    let[@inline] centre i a = 0.5 *. (fget prim ((6 * i) + a) +. fget prim ((6 * i) + 3 + a)) in
     (* room for the nodes grows as needed: leaves hold up to [leaf_size] primitives, so a tree
        usually has fewer than n nodes and the worst case (2n − 1) is rare *)
-    let boxes_r = ref (Array.make (6 * (n + 1)) 0.) and links_r = ref (Array.make (3 * (n + 1)) 0) in
+    let boxes_r = ref (create_boxes (n + 1)) and links_r = ref (Array1.create int32 c_layout (3 * (n + 1))) in
     let count = ref 0 in
     let reserve id =
-      if 3 * (id + 1) > Array.length !links_r then begin
-        let grow a len = let b = Array.make (len + (len / 2)) (Array.unsafe_get a 0) in Array.blit a 0 b 0 (Array.length a); b in
-        boxes_r := grow !boxes_r (Array.length !boxes_r);
-        links_r := grow !links_r (Array.length !links_r)
+      if 3 * (id + 1) > Array1.dim !links_r then begin
+        let grow : 'a 'b. ('a, 'b, c_layout) Array1.t -> ('a, 'b, c_layout) Array1.t =
+         fun a ->
+          let len = Array1.dim a in
+          let b = Array1.create (Array1.kind a) c_layout (len + (len / 2)) in
+          Array1.blit a (Array1.sub b 0 len);
+          b
+        in
+        boxes_r := grow !boxes_r;
+        links_r := grow !links_r
       end
     in
     let bin_box = Array.make (6 * bins) 0. and bin_n = Array.make bins 0 in
@@ -59,16 +97,16 @@ let build (prim : float array) =
       b.(3) <- neg_infinity; b.(4) <- neg_infinity; b.(5) <- neg_infinity;
       let c = [| infinity; infinity; infinity; neg_infinity; neg_infinity; neg_infinity |] in
       for k = first to first + cnt - 1 do
-        let i = order.(k) in
+        let i = iget order k in
         for a = 0 to 2 do
-          b.(a) <- fmin b.(a) prim.((6 * i) + a);
-          b.(3 + a) <- fmax b.(3 + a) prim.((6 * i) + 3 + a);
-          c.(a) <- fmin c.(a) centre.((3 * i) + a);
-          c.(3 + a) <- fmax c.(3 + a) centre.((3 * i) + a)
+          b.(a) <- fmin b.(a) (fget prim ((6 * i) + a));
+          b.(3 + a) <- fmax b.(3 + a) (fget prim ((6 * i) + 3 + a));
+          c.(a) <- fmin c.(a) (centre i a);
+          c.(3 + a) <- fmax c.(3 + a) (centre i a)
         done
       done;
-      Array.blit b 0 boxes (6 * id) 6;
-      let leaf () = links.(3 * id) <- first; links.((3 * id) + 1) <- cnt; links.((3 * id) + 2) <- -1 in
+      for q = 0 to 5 do Array1.unsafe_set boxes ((6 * id) + q) b.(q) done;
+      let leaf () = iset links (3 * id) first; iset links ((3 * id) + 1) cnt; iset links ((3 * id) + 2) (-1) in
       let ext a = c.(3 + a) -. c.(a) in
       let widest = if ext 0 >= ext 1 && ext 0 >= ext 2 then 0 else if ext 1 >= ext 2 then 1 else 2 in
       (* Large nodes are split at the middle of their centres along the widest axis: far cheaper
@@ -78,20 +116,20 @@ let build (prim : float array) =
         let m = 0.5 *. (c.(a) +. c.(3 + a)) in
         let i = ref first and j = ref (first + cnt - 1) in
         while !i <= !j do
-          if centre.((3 * order.(!i)) + a) < m then incr i
+          if centre (iget order !i) a < m then incr i
           else begin
-            let t = order.(!i) in
-            order.(!i) <- order.(!j); order.(!j) <- t; decr j
+            let t = iget order !i in
+            iset order !i (iget order !j); iset order !j t; decr j
           end
         done;
         !i - first
       in
       let nl = if cnt > 8192 && ext widest > 0. then mid_split () else 0 in
       if nl > 0 && nl < cnt then begin
-        links.((3 * id) + 2) <- widest;
+        iset links ((3 * id) + 2) widest;
         let l = node first nl in
         let r = node (first + nl) (cnt - nl) in
-        !links_r.(3 * id) <- l; !links_r.((3 * id) + 1) <- r
+        iset !links_r (3 * id) l; iset !links_r ((3 * id) + 1) r
       end
       else if cnt <= leaf_size then leaf ()
       else begin
@@ -107,12 +145,12 @@ let build (prim : float array) =
               for q = 0 to 2 do bin_box.((6 * j) + q) <- infinity; bin_box.((6 * j) + 3 + q) <- neg_infinity done
             done;
             for k = first to first + cnt - 1 do
-              let i = order.(k) in
-              let j = imin (bins - 1) (int_of_float ((centre.((3 * i) + a) -. lo) *. scale)) in
+              let i = iget order k in
+              let j = imin (bins - 1) (int_of_float ((centre i a -. lo) *. scale)) in
               bin_n.(j) <- bin_n.(j) + 1;
               for q = 0 to 2 do
-                bin_box.((6 * j) + q) <- fmin bin_box.((6 * j) + q) prim.((6 * i) + q);
-                bin_box.((6 * j) + 3 + q) <- fmax bin_box.((6 * j) + 3 + q) prim.((6 * i) + 3 + q)
+                bin_box.((6 * j) + q) <- fmin bin_box.((6 * j) + q) (fget prim ((6 * i) + q));
+                bin_box.((6 * j) + 3 + q) <- fmax bin_box.((6 * j) + 3 + q) (fget prim ((6 * i) + 3 + q))
               done
             done;
             (* sweep from the right, then from the left *)
@@ -144,31 +182,31 @@ let build (prim : float array) =
           if !best_axis < 0 && cnt > leaf_size then begin
             (* all centres coincide: split in the middle of the list *)
             let half = cnt / 2 in
-            links.((3 * id) + 2) <- 0;
+            iset links ((3 * id) + 2) 0;
             let l = node first half in
             let r = node (first + half) (cnt - half) in
-            !links_r.(3 * id) <- l; !links_r.((3 * id) + 1) <- r
+            iset !links_r (3 * id) l; iset !links_r ((3 * id) + 1) r
           end
           else leaf ()
         else begin
           let a = !best_axis in
           let lo = c.(a) and hi = c.(3 + a) in
           let scale = float_of_int bins /. (hi -. lo) in
-          let bin_of i = imin (bins - 1) (int_of_float ((centre.((3 * i) + a) -. lo) *. scale)) in
+          let bin_of i = imin (bins - 1) (int_of_float ((centre i a -. lo) *. scale)) in
           (* partition order[first..first+cnt) by bin < best_split *)
           let i = ref first and j = ref (first + cnt - 1) in
           while !i <= !j do
-            if bin_of order.(!i) < !best_split then incr i
+            if bin_of (iget order !i) < !best_split then incr i
             else begin
-              let t = order.(!i) in
-              order.(!i) <- order.(!j); order.(!j) <- t; decr j
+              let t = iget order !i in
+              iset order !i (iget order !j); iset order !j t; decr j
             end
           done;
           let nl = !i - first in
-          links.((3 * id) + 2) <- a;
+          iset links ((3 * id) + 2) a;
           let l = node first nl in
           let r = node (first + nl) (cnt - nl) in
-          !links_r.(3 * id) <- l; !links_r.((3 * id) + 1) <- r
+          iset !links_r (3 * id) l; iset !links_r ((3 * id) + 1) r
         end
       end;
       id
@@ -183,9 +221,9 @@ let build (prim : float array) =
    and [tmax], else infinity. *)
 let[@inline] entry t k ox oy oz idx idy idz tmin tmax =
   let b = t.boxes and o = 6 * k in
-  let tx0 = (b.(o) -. ox) *. idx and tx1 = (b.(o + 3) -. ox) *. idx in
-  let ty0 = (b.(o + 1) -. oy) *. idy and ty1 = (b.(o + 4) -. oy) *. idy in
-  let tz0 = (b.(o + 2) -. oz) *. idz and tz1 = (b.(o + 5) -. oz) *. idz in
+  let tx0 = (fget b o -. ox) *. idx and tx1 = (fget b (o + 3) -. ox) *. idx in
+  let ty0 = (fget b (o + 1) -. oy) *. idy and ty1 = (fget b (o + 4) -. oy) *. idy in
+  let tz0 = (fget b (o + 2) -. oz) *. idz and tz1 = (fget b (o + 5) -. oz) *. idz in
   let near = fmax (fmax (fmin tx0 tx1) (fmin ty0 ty1)) (fmax (fmin tz0 tz1) tmin) in
   let far = fmin (fmin (fmax tx0 tx1) (fmax ty0 ty1)) (fmin (fmax tz0 tz1) tmax) in
   if near <= far then near else infinity
@@ -207,15 +245,15 @@ let walk bvh stack ox oy oz dx dy dz limit0 visit =
       decr sp;
       let k = stack.(!sp) in
       let l = bvh.links in
-      let axis = l.((3 * k) + 2) in
+      let axis = iget l ((3 * k) + 2) in
       if axis < 0 then begin
-        let first = l.(3 * k) and cnt = l.((3 * k) + 1) in
+        let first = iget l (3 * k) and cnt = iget l ((3 * k) + 1) in
         for j = first to first + cnt - 1 do
-          limit := fmin !limit (visit bvh.order.(j))
+          limit := fmin !limit (visit (iget bvh.order j))
         done
       end
       else begin
-        let a = l.(3 * k) and b = l.((3 * k) + 1) in
+        let a = iget l (3 * k) and b = iget l ((3 * k) + 1) in
         let ta = entry bvh a ox oy oz idx idy idz 0. !limit and tb = entry bvh b ox oy oz idx idy idz 0. !limit in
         (* push the farther child first so the nearer one is visited first *)
         if ta <= tb then begin
@@ -230,3 +268,6 @@ let walk bvh stack ox oy oz dx dy dz limit0 visit =
     done
   end
 
+
+let box_min t a = fget t.boxes a
+let box_max t a = fget t.boxes (3 + a)

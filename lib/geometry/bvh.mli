@@ -1,18 +1,28 @@
-(** Bounding-volume hierarchies: binned surface-area heuristic, stored flat (no allocation while
-    traversing). Used over the scene's bounded objects and inside each mesh. *)
+(** Bounding-volume hierarchies: binned surface-area heuristic, stored flat in single precision
+    outside the OCaml heap (no allocation while traversing). Used over the scene's bounded objects
+    and inside each mesh. *)
 
-type t = {
-  boxes : float array;  (** 6 floats per node: min x, y, z then max x, y, z *)
-  links : int array;
-      (** 3 ints per node. Leaf: first index into [order], count, −1. Inner: left child, right
-          child, split axis (0, 1, 2). Node 0 is the root. *)
-  order : int array;  (** primitive indices in leaf order *)
+type f32s = (float, Bigarray.float32_elt, Bigarray.c_layout) Bigarray.Array1.t
+type i32s = (int32, Bigarray.int32_elt, Bigarray.c_layout) Bigarray.Array1.t
+
+type t = private {
+  boxes : f32s;  (** 6 values per node: min x, y, z then max x, y, z *)
+  links : i32s;
+      (** 3 per node. Leaf: first index into [order], count, −1. Inner: left child, right child,
+          split axis (0, 1, 2). Node 0 is the root. The arrays may be longer than [nodes] needs. *)
+  order : i32s;  (** primitive indices in leaf order *)
   nodes : int;  (** number of nodes; 0 for an empty hierarchy *)
 }
 
-val build : float array -> t
-(** [build boxes] builds a hierarchy over primitives whose boxes are given as 6 floats each
-    (min x, y, z, max x, y, z); [boxes] is widened in place by a relative 1e-9 and then unused. *)
+val create_boxes : int -> f32s
+(** [create_boxes n] is room for [n] primitive boxes, filled with [set_box]. *)
+
+val set_box : f32s -> int -> float -> float -> float -> float -> float -> float -> unit
+(** [set_box boxes i x0 y0 z0 x1 y1 z1] stores primitive [i]'s box, widened by a relative 1e-9 and
+    rounded outwards to single precision. *)
+
+val build : f32s -> t
+(** [build boxes] builds a hierarchy over the primitives whose boxes were stored with [set_box]. *)
 
 val entry : t -> int -> float -> float -> float -> float -> float -> float -> float -> float -> float
 (** [entry bvh k ox oy oz idx idy idz tmin tmax] is the distance at which the ray from (ox,oy,oz)
@@ -28,3 +38,9 @@ val walk : t -> int array -> float -> float -> float -> float -> float -> float 
     whose box the ray from (ox,oy,oz) along (dx,dy,dz) meets before the current limit, nearer boxes
     first; [visit] returns the new limit ([limit] at the start). [stack] needs one slot per level
     of the tree (256 is ample). *)
+
+val box_min : t -> int -> float
+(** [box_min bvh a] is the root box's minimum along axis [a] (the tree must not be empty). *)
+
+val box_max : t -> int -> float
+(** [box_max bvh a] is the root box's maximum along axis [a]. *)

@@ -93,13 +93,11 @@ let build ~(vertices : float array) ~(vertex_normals : float array) ~(fv : int a
   let fgeom = if faces = nf then fgeom else Array1.sub fgeom 0 (6 * faces) in
   let fidx = if faces = nf then fidx else Array1.sub fidx 0 (7 * faces) in
   let fdist = if faces = nf then fdist else Array.sub fdist 0 faces in
-  let boxes = Array.make (6 * faces) 0. in
+  let boxes = Bvh.create_boxes faces in
   for k = 0 to faces - 1 do
-    for a = 0 to 2 do
-      let v j = vertices.((3 * iget fidx ((7 * k) + j)) + a) in
-      boxes.((6 * k) + a) <- Float.min (v 0) (Float.min (v 1) (v 2));
-      boxes.((6 * k) + 3 + a) <- Float.max (v 0) (Float.max (v 1) (v 2))
-    done
+    let v j a = vertices.((3 * iget fidx ((7 * k) + j)) + a) in
+    let lo a = Float.min (v 0 a) (Float.min (v 1 a) (v 2 a)) and hi a = Float.max (v 0 a) (Float.max (v 1 a) (v 2 a)) in
+    Bvh.set_box boxes k (lo 0) (lo 1) (lo 2) (hi 0) (hi 1) (hi 2)
   done;
   let bvh = Bvh.build boxes in
   {
@@ -196,4 +194,5 @@ let normal m k (p : Vec.t) =
 let texture m k = (iget m.fidx ((7 * k) + 6) lsr 4) - 1
 
 let bounds m =
-  if m.faces = 0 then [| 0.; 0.; 0.; 0.; 0.; 0. |] else Array.sub m.bvh.boxes 0 6
+  if m.faces = 0 then [| 0.; 0.; 0.; 0.; 0.; 0. |]
+  else Array.init 6 (fun i -> if i < 3 then Bvh.box_min m.bvh i else Bvh.box_max m.bvh (i - 3))

@@ -36,7 +36,8 @@ let bounds = function
 let group objs =
   let unbounded = List.filter (fun o -> bounds o.shape = None) objs in
   let bounded = List.filter (fun o -> bounds o.shape <> None) objs in
-  let boxes = Array.concat (List.map (fun o -> Option.get (bounds o.shape)) bounded) in
+  let boxes = Bvh.create_boxes (List.length bounded) in
+  List.iteri (fun i o -> let b = Option.get (bounds o.shape) in Bvh.set_box boxes i b.(0) b.(1) b.(2) b.(3) b.(4) b.(5)) bounded;
   { unbounded = Array.of_list unbounded; bounded = Array.of_list bounded; bvh = Bvh.build boxes }
 
 (* POV-Ray stores colours in single precision (§8.3); rounding the stored values the same way keeps
