@@ -93,18 +93,22 @@ let build (prim : f32s) =
       reserve id;
       let boxes = !boxes_r and links = !links_r in
       (* bounds of the primitives and of their centres *)
-      let b = Array.make 6 infinity in
-      b.(3) <- neg_infinity; b.(4) <- neg_infinity; b.(5) <- neg_infinity;
-      let c = [| infinity; infinity; infinity; neg_infinity; neg_infinity; neg_infinity |] in
+      let bx0 = ref infinity and by0 = ref infinity and bz0 = ref infinity in
+      let bx1 = ref neg_infinity and by1 = ref neg_infinity and bz1 = ref neg_infinity in
+      let cx0 = ref infinity and cy0 = ref infinity and cz0 = ref infinity in
+      let cx1 = ref neg_infinity and cy1 = ref neg_infinity and cz1 = ref neg_infinity in
       for k = first to first + cnt - 1 do
-        let i = iget order k in
-        for a = 0 to 2 do
-          b.(a) <- fmin b.(a) (fget prim ((6 * i) + a));
-          b.(3 + a) <- fmax b.(3 + a) (fget prim ((6 * i) + 3 + a));
-          c.(a) <- fmin c.(a) (centre i a);
-          c.(3 + a) <- fmax c.(3 + a) (centre i a)
-        done
+        let o = 6 * iget order k in
+        let x0 = fget prim o and y0 = fget prim (o + 1) and z0 = fget prim (o + 2) in
+        let x1 = fget prim (o + 3) and y1 = fget prim (o + 4) and z1 = fget prim (o + 5) in
+        bx0 := fmin !bx0 x0; by0 := fmin !by0 y0; bz0 := fmin !bz0 z0;
+        bx1 := fmax !bx1 x1; by1 := fmax !by1 y1; bz1 := fmax !bz1 z1;
+        let cx = 0.5 *. (x0 +. x1) and cy = 0.5 *. (y0 +. y1) and cz = 0.5 *. (z0 +. z1) in
+        cx0 := fmin !cx0 cx; cy0 := fmin !cy0 cy; cz0 := fmin !cz0 cz;
+        cx1 := fmax !cx1 cx; cy1 := fmax !cy1 cy; cz1 := fmax !cz1 cz
       done;
+      let b = [| !bx0; !by0; !bz0; !bx1; !by1; !bz1 |] in
+      let c = [| !cx0; !cy0; !cz0; !cx1; !cy1; !cz1 |] in
       for q = 0 to 5 do Array1.unsafe_set boxes ((6 * id) + q) b.(q) done;
       let leaf () = iset links (3 * id) first; iset links ((3 * id) + 1) cnt; iset links ((3 * id) + 2) (-1) in
       let ext a = c.(3 + a) -. c.(a) in
@@ -232,42 +236,44 @@ let recip x = if x = 0. then 1e300 else 1. /. x
 
 (* Visit the primitives whose boxes the ray meets, nearer boxes first; [visit i] returns the new
    limit beyond which boxes are skipped. *)
-let walk bvh stack ox oy oz dx dy dz limit0 visit =
+let walk bvh (stack : float array) ox oy oz dx dy dz limit0 visit =
+  (* the stack holds (node, entry distance) pairs; a node whose box starts beyond the current
+     limit when it is popped is skipped *)
   if bvh.nodes > 0 then begin
     let idx = recip dx and idy = recip dy and idz = recip dz in
     let limit = ref limit0 in
     let sp = ref 0 in
-    if entry bvh 0 ox oy oz idx idy idz 0. !limit < infinity then begin
-      stack.(0) <- 0;
-      sp := 1
-    end;
+    let push k t = stack.(2 * !sp) <- float_of_int k; stack.((2 * !sp) + 1) <- t; incr sp in
+    let t0 = entry bvh 0 ox oy oz idx idy idz 0. !limit in
+    if t0 < infinity then push 0 t0;
     while !sp > 0 do
       decr sp;
-      let k = stack.(!sp) in
-      let l = bvh.links in
-      let axis = iget l ((3 * k) + 2) in
-      if axis < 0 then begin
-        let first = iget l (3 * k) and cnt = iget l ((3 * k) + 1) in
-        for j = first to first + cnt - 1 do
-          limit := fmin !limit (visit (iget bvh.order j))
-        done
-      end
-      else begin
-        let a = iget l (3 * k) and b = iget l ((3 * k) + 1) in
-        let ta = entry bvh a ox oy oz idx idy idz 0. !limit and tb = entry bvh b ox oy oz idx idy idz 0. !limit in
-        (* push the farther child first so the nearer one is visited first *)
-        if ta <= tb then begin
-          if tb < infinity then (stack.(!sp) <- b; incr sp);
-          if ta < infinity then (stack.(!sp) <- a; incr sp)
+      if stack.((2 * !sp) + 1) <= !limit then begin
+        let k = int_of_float stack.(2 * !sp) in
+        let l = bvh.links in
+        let axis = iget l ((3 * k) + 2) in
+        if axis < 0 then begin
+          let first = iget l (3 * k) and cnt = iget l ((3 * k) + 1) in
+          for j = first to first + cnt - 1 do
+            limit := fmin !limit (visit (iget bvh.order j))
+          done
         end
         else begin
-          if ta < infinity then (stack.(!sp) <- a; incr sp);
-          if tb < infinity then (stack.(!sp) <- b; incr sp)
+          let a = iget l (3 * k) and b = iget l ((3 * k) + 1) in
+          let ta = entry bvh a ox oy oz idx idy idz 0. !limit and tb = entry bvh b ox oy oz idx idy idz 0. !limit in
+          (* push the farther child first so the nearer one is visited first *)
+          if ta <= tb then begin
+            if tb < infinity then push b tb;
+            if ta < infinity then push a ta
+          end
+          else begin
+            if ta < infinity then push a ta;
+            if tb < infinity then push b tb
+          end
         end
       end
     done
   end
-
 
 let box_min t a = fget t.boxes a
 let box_max t a = fget t.boxes (3 + a)

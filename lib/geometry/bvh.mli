@@ -33,11 +33,11 @@ val entry : t -> int -> float -> float -> float -> float -> float -> float -> fl
 val recip : float -> float
 (** [recip x] is 1/x, or a huge finite number for 0, as [entry] needs. *)
 
-val walk : t -> int array -> float -> float -> float -> float -> float -> float -> float -> (int -> float) -> unit
+val walk : t -> float array -> float -> float -> float -> float -> float -> float -> float -> (int -> float) -> unit
 (** [walk bvh stack ox oy oz dx dy dz limit visit] calls [visit i] for every primitive [i] in a leaf
     whose box the ray from (ox,oy,oz) along (dx,dy,dz) meets before the current limit, nearer boxes
-    first; [visit] returns the new limit ([limit] at the start). [stack] needs one slot per level
-    of the tree (256 is ample). *)
+    first; [visit] returns the new limit ([limit] at the start). [stack] needs two slots per level
+    of the tree (512 is ample). *)
 
 val box_min : t -> int -> float
 (** [box_min bvh a] is the root box's minimum along axis [a] (the tree must not be empty). *)

@@ -32,14 +32,14 @@ val build :
     parsed values of a [mesh]). Faces without area are dropped, smooth faces whose three normals are
     equal become flat. Vertices and normals must be single-precision values, normals unit length. *)
 
-val nearest : t -> int array -> Vec.t -> Vec.t -> float -> float array -> int
+val nearest : t -> float array -> Vec.t -> Vec.t -> float -> float array -> int
 (** [nearest m stack o d lo hit] is the nearest face hit at depth ≥ [lo] along the unit direction
     [d] (mesh space), or −1; the depth is stored in [hit.(0)]. *)
 
-val any_hit : t -> int array -> Vec.t -> Vec.t -> float -> float -> bool
+val any_hit : t -> float array -> Vec.t -> Vec.t -> float -> float -> bool
 (** [any_hit m stack o d lo hi] tells whether a face is hit at a depth in [lo, hi). *)
 
-val inside : t -> int array -> Vec.t -> bool
+val inside : t -> float array -> Vec.t -> bool
 (** [inside m stack p]: an odd number of faces along the inside vector; false without one. *)
 
 val normal : t -> int -> Vec.t -> Vec.t

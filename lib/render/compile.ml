@@ -105,8 +105,25 @@ let surface ~legacy ~ambient_light (t : Scene.texture) =
     conserve = f.conserve_energy;
   }
 
+(* Objects that share a texture (a declared one) share its compiled surface. *)
+module Texture_memo = Hashtbl.Make (struct
+  type t = Scene.texture
+
+  let equal = ( == )
+  let hash = Hashtbl.hash
+end)
+
 let scene (s : Scene.t) : Compiled.t =
   let legacy = s.version < 370 in
+  let memo = Texture_memo.create 16 in
+  let surface ~legacy ~ambient_light t =
+    match Texture_memo.find_opt memo t with
+    | Some sf -> sf
+    | None ->
+        let sf = surface ~legacy ~ambient_light t in
+        Texture_memo.add memo t sf;
+        sf
+  in
   let visible = List.filter_map (fun (o : Scene.obj) -> Option.map (fun sh -> (o, sh)) (shape_of o.shape)) s.objects in
   let objects =
     Array.of_list
@@ -139,7 +156,7 @@ let scene (s : Scene.t) : Compiled.t =
     else if List.for_all (fun o -> o.opaque) occluders then Any_hit
     else Filtered
   in
-  let stack = Array.make 256 0 in
+  let stack = Array.make 512 0. in
   let lights =
     Array.of_list
       (List.map

@@ -4,6 +4,6 @@ val scene : Scene.t -> Compiled.t
 (** [scene s] is [s] compiled: flat shapes, constant surfaces, the shadow strategy this scene needs,
     and the camera's starting interior list. *)
 
-val inside : int array -> Compiled.shape -> Vec.t -> bool
+val inside : float array -> Compiled.shape -> Vec.t -> bool
 (** [inside stack shape p] is POV-Ray's Inside test (§2.2, §2.3, §2.6); [stack] is traversal room
-    for meshes (256 ints). *)
+    for meshes (512 floats). *)

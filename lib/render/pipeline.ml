@@ -4,6 +4,7 @@ type result = {
   warnings : Error.t list;
   scene : Scene.t;
   parse_seconds : float;
+  build_seconds : float;
   render_seconds : float;
 }
 
@@ -12,7 +13,8 @@ let run (opts : Render.options) path =
   let scene, warnings = Interp.load_file { Interp.width = opts.width; height = opts.height } path in
   let t1 = Unix.gettimeofday () in
   let compiled = Compile.scene scene in
+  let t2 = Unix.gettimeofday () in
   let img, stats = Render.render opts compiled scene.gamma in
   let image = Encode.image scene.gamma img in
-  let t2 = Unix.gettimeofday () in
-  { image; stats; warnings; scene; parse_seconds = t1 -. t0; render_seconds = t2 -. t1 }
+  let t3 = Unix.gettimeofday () in
+  { image; stats; warnings; scene; parse_seconds = t1 -. t0; build_seconds = t2 -. t1; render_seconds = t3 -. t2 }

@@ -5,8 +5,9 @@ type result = {
   stats : Stats.t;
   warnings : Error.t list;
   scene : Scene.t;
-  parse_seconds : float;
-  render_seconds : float;
+  parse_seconds : float;  (** reading the scene, meshes and their hierarchies included *)
+  build_seconds : float;  (** the compile step: the scene's hierarchy, the surfaces *)
+  render_seconds : float;  (** tracing and encoding *)
 }
 
 val run : Render.options -> string -> result

@@ -20,11 +20,11 @@ type ctx = {
   stats : Stats.t;
   depth : float array;  (* scratch: depth of the last hit *)
   sub : int array;  (* scratch: the mesh face of the last hit *)
-  stack : int array;  (* traversal room for the scene's hierarchy … *)
-  mstack : int array;  (* … and for a mesh's *)
+  stack : float array;  (* traversal room for the scene's hierarchy … *)
+  mstack : float array;  (* … and for a mesh's *)
 }
 
-let make_ctx scene stats = { scene; stats; depth = [| 0. |]; sub = [| -1 |]; stack = Array.make 256 0; mstack = Array.make 256 0 }
+let make_ctx scene stats = { scene; stats; depth = [| 0. |]; sub = [| -1 |]; stack = Array.make 512 0.; mstack = Array.make 512 0. }
 let black = { r = 0.; g = 0.; b = 0.; tr = 0. }
 
 (* ---------------------------------------------------------------------------------------------- *)

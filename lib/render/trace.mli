@@ -9,8 +9,8 @@ type ctx = {
   stats : Stats.t;
   depth : float array;
   sub : int array;
-  stack : int array;
-  mstack : int array;
+  stack : float array;
+  mstack : float array;
 }
 (** What a trace reads: the compiled scene, the worker's statistics, and scratch space (the last
     hit's depth and mesh face, traversal stacks) private to one worker. *)
