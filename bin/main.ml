@@ -81,7 +81,8 @@ let print_stats (r : Pipeline.result) (o : Render.options) =
   Printf.eprintf "Reflected Rays:            %11d\n" s.reflected_rays;
   Printf.eprintf "Refracted Rays:            %11d\n" s.refracted_rays;
   Printf.eprintf "%s\n" line;
-  Printf.eprintf "Parse Time:  %s\nRender Time: %s\n              using %d process(es)\n" (hms r.parse_seconds) (hms r.render_seconds) o.workers
+  Printf.eprintf "Parse Time:    %s\nBounding Time: %s\nRender Time:   %s\n              using %d process(es)\n"
+    (hms r.parse_seconds) (hms r.build_seconds) (hms r.render_seconds) o.workers
 
 (* ---------------------------------------------------------------------------------------------- *)
 (* The render command *)
@@ -220,6 +221,8 @@ let cmd =
   Cmd.v (Cmd.info "povml" ~version:"0.1.0" ~doc ~man ~exits:[]) term
 
 let () =
+  (* a larger minor heap: rays allocate small short-lived vectors, and fewer of them get promoted *)
+  Gc.set { (Gc.get ()) with minor_heap_size = 1 lsl 20 };
   let argv = Array.to_list Sys.argv in
   let prog = List.hd argv in
   let bad = ref None in

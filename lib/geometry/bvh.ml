@@ -243,9 +243,8 @@ let walk bvh (stack : float array) ox oy oz dx dy dz limit0 visit =
     let idx = recip dx and idy = recip dy and idz = recip dz in
     let limit = ref limit0 in
     let sp = ref 0 in
-    let push k t = stack.(2 * !sp) <- float_of_int k; stack.((2 * !sp) + 1) <- t; incr sp in
     let t0 = entry bvh 0 ox oy oz idx idy idz 0. !limit in
-    if t0 < infinity then push 0 t0;
+    if t0 < infinity then begin stack.(0) <- 0.; stack.(1) <- t0; sp := 1 end;
     while !sp > 0 do
       decr sp;
       if stack.((2 * !sp) + 1) <= !limit then begin
@@ -261,14 +260,18 @@ let walk bvh (stack : float array) ox oy oz dx dy dz limit0 visit =
         else begin
           let a = iget l (3 * k) and b = iget l ((3 * k) + 1) in
           let ta = entry bvh a ox oy oz idx idy idz 0. !limit and tb = entry bvh b ox oy oz idx idy idz 0. !limit in
-          (* push the farther child first so the nearer one is visited first *)
-          if ta <= tb then begin
-            if tb < infinity then push b tb;
-            if ta < infinity then push a ta
-          end
-          else begin
-            if ta < infinity then push a ta;
-            if tb < infinity then push b tb
+          (* push the farther child first so that the nearer one is visited first *)
+          let a_first = ta <= tb in
+          let tf = if a_first then tb else ta and tn = if a_first then ta else tb in
+          if tf < infinity then begin
+            stack.(2 * !sp) <- float_of_int (if a_first then b else a);
+            stack.((2 * !sp) + 1) <- tf;
+            incr sp
+          end;
+          if tn < infinity then begin
+            stack.(2 * !sp) <- float_of_int (if a_first then a else b);
+            stack.((2 * !sp) + 1) <- tn;
+            incr sp
           end
         end
       end
@@ -277,3 +280,12 @@ let walk bvh (stack : float array) ox oy oz dx dy dz limit0 visit =
 
 let box_min t a = fget t.boxes a
 let box_max t a = fget t.boxes (3 + a)
+
+(* The same tree with its primitives renumbered in leaf order (so that primitives met together lie
+   together in memory): new primitive j is old primitive perm.(j). *)
+let renumber t =
+  let n = Array1.dim t.order in
+  let perm = Array.init n (fun j -> iget t.order j) in
+  let order = Array1.create int32 c_layout n in
+  for j = 0 to n - 1 do iset order j j done;
+  ({ t with order }, perm)

@@ -44,3 +44,7 @@ val box_min : t -> int -> float
 
 val box_max : t -> int -> float
 (** [box_max bvh a] is the root box's maximum along axis [a]. *)
+
+val renumber : t -> t * int array
+(** [renumber bvh] is the same tree with the primitives numbered in leaf order, and the
+    permutation: new primitive [j] is old primitive [perm.(j)]. *)

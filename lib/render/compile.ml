@@ -38,7 +38,17 @@ let group objs =
   let bounded = List.filter (fun o -> bounds o.shape <> None) objs in
   let boxes = Bvh.create_boxes (List.length bounded) in
   List.iteri (fun i o -> let b = Option.get (bounds o.shape) in Bvh.set_box boxes i b.(0) b.(1) b.(2) b.(3) b.(4) b.(5)) bounded;
-  { unbounded = Array.of_list unbounded; bounded = Array.of_list bounded; bvh = Bvh.build boxes }
+  let bvh, perm = Bvh.renumber (Bvh.build boxes) in
+  let objs = Array.of_list bounded in
+  let bounded = Array.map (fun i -> objs.(i)) perm in
+  let spheres = Array.make (4 * Array.length bounded) nan in
+  Array.iteri
+    (fun i o ->
+      match o.shape with
+      | Sphere s -> spheres.(4 * i) <- s.cx; spheres.((4 * i) + 1) <- s.cy; spheres.((4 * i) + 2) <- s.cz; spheres.((4 * i) + 3) <- s.r2
+      | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ -> ())
+    bounded;
+  { unbounded = Array.of_list unbounded; bounded; bvh; spheres }
 
 (* POV-Ray stores colours in single precision (§8.3); rounding the stored values the same way keeps
    results on the same side of the 8-bit rounding boundaries. *)
@@ -175,13 +185,14 @@ let scene (s : Scene.t) : Compiled.t =
   in
   (* §6.4: the camera ray starts inside every object that contains the camera location; the list
      is kept with the last entered first. *)
+  let all = group (Array.to_list objects) in
   let start_interiors =
     Array.fold_left (fun acc o -> if inside stack o.shape s.camera.location then o.id :: acc else acc) [] objects
   in
   {
     objects;
-    all = group (Array.to_list objects);
-    occluders = group occluders;
+    all;
+    occluders = (if List.length occluders = Array.length objects then all else group occluders);
     shadow_mode;
     lights;
     background = s.background;

@@ -72,7 +72,14 @@ type shadow_mode =
 
 (** Objects as the tracer searches them: unbounded ones (planes) one by one, the others through a
     bounding-volume hierarchy whose leaves index [bounded]. *)
-type group = { unbounded : obj array; bounded : obj array; bvh : Bvh.t }
+type group = {
+  unbounded : obj array;
+  bounded : obj array;  (** in the hierarchy's leaf order *)
+  bvh : Bvh.t;
+  spheres : float array;
+      (** 4 per bounded object: a sphere's centre and radius², tested without touching the object
+          record; radius² is nan for other shapes *)
+}
 
 type t = {
   objects : obj array;  (** every object, in scene order; [id] indexes this array *)

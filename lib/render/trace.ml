@@ -32,28 +32,30 @@ let black = { r = 0.; g = 0.; b = 0.; tr = 0. }
 
 (* The nearest depth of [shape] along the ray that is inside the shape's own limits and at least
    [lo], or infinity; for a mesh the face is left in [ctx.sub.(0)]. *)
+(* §2.2: the nearer root of the sphere (cx, cy, cz, r²) within the limits, or infinity. *)
+let[@inline] sphere_depth (stats : Stats.t) cx cy cz r2 (o : Vec.t) (d : Vec.t) lo =
+  stats.sphere_tests <- stats.sphere_tests + 1;
+  let ocx = cx -. o.x and ocy = cy -. o.y and ocz = cz -. o.z in
+  let ocs = (ocx *. ocx) +. (ocy *. ocy) +. (ocz *. ocz) in
+  let tca = (ocx *. d.x) +. (ocy *. d.y) +. (ocz *. d.z) in
+  if ocs >= r2 && tca < epsilon then infinity
+  else
+    let h2 = r2 -. ocs +. (tca *. tca) in
+    if h2 <= epsilon then infinity
+    else begin
+      let h = sqrt h2 in
+      let t1 = tca -. h in
+      if t1 > depth_tolerance && t1 < max_distance && t1 >= lo then (stats.sphere_hits <- stats.sphere_hits + 1; t1)
+      else
+        let t2 = tca +. h in
+        if t2 > depth_tolerance && t2 < max_distance && t2 >= lo then (stats.sphere_hits <- stats.sphere_hits + 1; t2)
+        else infinity
+    end
+
 let hit_shape ctx shape (o : Vec.t) (d : Vec.t) lo =
   let stats = ctx.stats in
   match shape with
-  | Sphere s ->
-      (* §2.2 *)
-      stats.sphere_tests <- stats.sphere_tests + 1;
-      let ocx = s.cx -. o.x and ocy = s.cy -. o.y and ocz = s.cz -. o.z in
-      let ocs = (ocx *. ocx) +. (ocy *. ocy) +. (ocz *. ocz) in
-      let tca = (ocx *. d.x) +. (ocy *. d.y) +. (ocz *. d.z) in
-      if ocs >= s.r2 && tca < epsilon then infinity
-      else
-        let h2 = s.r2 -. ocs +. (tca *. tca) in
-        if h2 <= epsilon then infinity
-        else begin
-          let h = sqrt h2 in
-          let t1 = tca -. h in
-          if t1 > depth_tolerance && t1 < max_distance && t1 >= lo then (stats.sphere_hits <- stats.sphere_hits + 1; t1)
-          else
-            let t2 = tca +. h in
-            if t2 > depth_tolerance && t2 < max_distance && t2 >= lo then (stats.sphere_hits <- stats.sphere_hits + 1; t2)
-            else infinity
-        end
+  | Sphere s -> sphere_depth stats s.cx s.cy s.cz s.r2 o d lo
   | Plane p ->
       (* §2.3 *)
       stats.plane_tests <- stats.plane_tests + 1;
@@ -102,7 +104,21 @@ let nearest ctx (g : group) (o : Vec.t) (d : Vec.t) lo =
     end
   in
   Array.iter try_obj g.unbounded;
-  if g.bvh.nodes > 0 then Bvh.walk g.bvh ctx.stack o.x o.y o.z d.x d.y d.z infinity (fun i -> try_obj g.bounded.(i); !best);
+  let sp = g.spheres in
+  if g.bvh.nodes > 0 then
+    Bvh.walk g.bvh ctx.stack o.x o.y o.z d.x d.y d.z infinity (fun i ->
+        let r2 = Array.unsafe_get sp ((4 * i) + 3) in
+        if r2 = r2 then begin
+          (* a sphere, straight from the flat array *)
+          let t = sphere_depth ctx.stats (Array.unsafe_get sp (4 * i)) (Array.unsafe_get sp ((4 * i) + 1)) (Array.unsafe_get sp ((4 * i) + 2)) r2 o d lo in
+          if t < !best then begin
+            best := t;
+            id := (Array.unsafe_get g.bounded i).id;
+            sub := -1
+          end
+        end
+        else try_obj g.bounded.(i);
+        !best);
   ctx.depth.(0) <- !best;
   ctx.sub.(0) <- !sub;
   !id
@@ -113,9 +129,16 @@ let any_hit ctx (g : group) (o : Vec.t) (d : Vec.t) lo hi =
   Array.exists hit g.unbounded
   ||
   let found = ref false in
+  let sp = g.spheres in
   if g.bvh.nodes > 0 then
     Bvh.walk g.bvh ctx.stack o.x o.y o.z d.x d.y d.z hi (fun i ->
-        if (not !found) && hit g.bounded.(i) then found := true;
+        if not !found then begin
+          let r2 = Array.unsafe_get sp ((4 * i) + 3) in
+          if r2 = r2 then begin
+            if sphere_depth ctx.stats (Array.unsafe_get sp (4 * i)) (Array.unsafe_get sp ((4 * i) + 1)) (Array.unsafe_get sp ((4 * i) + 2)) r2 o d lo < hi then found := true
+          end
+          else if hit g.bounded.(i) then found := true
+        end;
         if !found then neg_infinity else hi);
   !found
 
