@@ -13,6 +13,9 @@ let () =
       ("Colour", Test_misc.tests_colour);
       ("Defaults", Test_misc.tests_defaults);
       ("Error", Test_misc.tests_error);
+      ("Triangle", Test_triangle.tests);
+      ("Mesh", Test_mesh.tests @ Test_mesh.trace_tests);
+      ("Bvh", Test_bvh.tests);
       ("Compile", Test_compile.tests);
       ("Trace", Test_trace.tests);
       ("Render", Test_render.tests);
