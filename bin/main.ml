@@ -151,6 +151,7 @@ let run input positional output width height antialias no_aa method_ depth jitte
           in
           match Pipeline.run opts input with
           | exception Error.Scene_error e -> print_error e; `Ok 1
+          | exception Pool.Worker_failed msg -> Printf.eprintf "povml: error: %s; no image was written\n" msg; `Ok 1
           | r -> (
               List.iter print_warning r.warnings;
               let f = match fmt with Png_fmt -> Output.Png | Ppm_fmt -> Output.Ppm in
@@ -221,8 +222,9 @@ let cmd =
   Cmd.v (Cmd.info "povml" ~version:"0.1.0" ~doc ~man ~exits:[]) term
 
 let () =
-  (* a larger minor heap: rays allocate small short-lived vectors, and fewer of them get promoted *)
-  Gc.set { (Gc.get ()) with minor_heap_size = 1 lsl 20 };
+  (* a larger minor heap: rays allocate small short-lived vectors, and fewer of them get promoted;
+     no compaction: a render is one short run, and compacting a large parsed scene only costs time *)
+  Gc.set { (Gc.get ()) with minor_heap_size = 1 lsl 20; max_overhead = 1_000_000 };
   let argv = Array.to_list Sys.argv in
   let prog = List.hd argv in
   let bad = ref None in

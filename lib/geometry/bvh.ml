@@ -53,6 +53,12 @@ let[@inline] fmax (a : float) b = if a > b then a else b
 let[@inline] imin (a : int) b = if a < b then a else b
 let leaf_size = 4
 
+(* Hierarchies over at most [sah_all] primitives are built by the binned SAH alone; larger ones
+   by Morton-order splits down to ranges of at most [sah_cluster] primitives, which the SAH then
+   splits into leaves. *)
+let sah_all = 4096
+let sah_cluster = 16
+
 let empty = { boxes = create_boxes 0; links = Array1.create int32 c_layout 0; order = Array1.create int32 c_layout 0; nodes = 0 }
 
 (* Surface area (half of it; only ratios matter) of a box given as six floats. *)
@@ -60,6 +66,10 @@ let half_area x0 y0 z0 x1 y1 z1 =
   let dx = x1 -. x0 and dy = y1 -. y0 and dz = z1 -. z0 in
   if dx < 0. then 0. else (dx *. dy) +. (dy *. dz) +. (dz *. dx)
 
+(* [build] permutes [prim] along with [order], so that the primitives of a node lie together in
+   memory while the tree is built; callers do not use the boxes afterwards. Each node receives its
+   box and the bounds of its primitives' centres from its parent (the bins of the parent's split
+   hold both), so a level of the tree costs one binning pass and one partition pass. *)
 let build (prim : f32s) =
   (* [prim] holds 6 values per primitive: its box, as [set_box] stores it *)
   let n = Array1.dim prim / 6 in
@@ -67,7 +77,17 @@ let build (prim : f32s) =
   else begin
     let order = Array1.create int32 c_layout n in
     for i = 0 to n - 1 do iset order i i done;
-    let[@inline] centre i a = 0.5 *. (fget prim ((6 * i) + a) +. fget prim ((6 * i) + 3 + a)) in
+    let[@inline] centre k a = 0.5 *. (fget prim ((6 * k) + a) +. fget prim ((6 * k) + 3 + a)) in
+    let swap i j =
+      let t = iget order i in
+      iset order i (iget order j); iset order j t;
+      let oi = 6 * i and oj = 6 * j in
+      for q = 0 to 5 do
+        let v = fget prim (oi + q) in
+        Array1.unsafe_set prim (oi + q) (fget prim (oj + q));
+        Array1.unsafe_set prim (oj + q) v
+      done
+    in
     (* room for the nodes grows as needed: leaves hold up to [leaf_size] primitives, so a tree
        usually has fewer than n nodes and the worst case (2n − 1) is rare *)
     let boxes_r = ref (create_boxes (n + 1)) and links_r = ref (Array1.create int32 c_layout (3 * (n + 1))) in
@@ -85,137 +105,225 @@ let build (prim : f32s) =
         links_r := grow !links_r
       end
     in
-    let bin_box = Array.make (6 * bins) 0. and bin_n = Array.make bins 0 in
+    (* bounds: 12 floats, the box (min x y z, max x y z) then the centres' bounds likewise *)
+    let empty_bounds () = [| infinity; infinity; infinity; neg_infinity; neg_infinity; neg_infinity; infinity; infinity; infinity; neg_infinity; neg_infinity; neg_infinity |] in
+    let[@inline] add_prim (r : float array) k =
+      let o = 6 * k in
+      for q = 0 to 2 do
+        let lo = fget prim (o + q) and hi = fget prim (o + 3 + q) in
+        r.(q) <- fmin r.(q) lo;
+        r.(3 + q) <- fmax r.(3 + q) hi;
+        let c = 0.5 *. (lo +. hi) in
+        r.(6 + q) <- fmin r.(6 + q) c;
+        r.(9 + q) <- fmax r.(9 + q) c
+      done
+    in
+    let bounds first cnt =
+      let r = empty_bounds () in
+      for k = first to first + cnt - 1 do add_prim r k done;
+      r
+    in
+    (* 12 floats per bin, as [bounds] *)
+    let bin_b = Array.make (12 * bins) 0. and bin_n = Array.make bins 0 in
     let right_area = Array.make bins 0. and right_n = Array.make bins 0 in
-    let rec node first cnt =
+    let union_bins j0 j1 =
+      let r = empty_bounds () in
+      for j = j0 to j1 - 1 do
+        for q = 0 to 2 do
+          r.(q) <- fmin r.(q) bin_b.((12 * j) + q);
+          r.(3 + q) <- fmax r.(3 + q) bin_b.((12 * j) + 3 + q);
+          r.(6 + q) <- fmin r.(6 + q) bin_b.((12 * j) + 6 + q);
+          r.(9 + q) <- fmax r.(9 + q) bin_b.((12 * j) + 9 + q)
+        done
+      done;
+      r
+    in
+    let rec node first cnt (bd : float array) =
       let id = !count in
       incr count;
       reserve id;
       let boxes = !boxes_r and links = !links_r in
-      (* bounds of the primitives and of their centres *)
-      let bx0 = ref infinity and by0 = ref infinity and bz0 = ref infinity in
-      let bx1 = ref neg_infinity and by1 = ref neg_infinity and bz1 = ref neg_infinity in
-      let cx0 = ref infinity and cy0 = ref infinity and cz0 = ref infinity in
-      let cx1 = ref neg_infinity and cy1 = ref neg_infinity and cz1 = ref neg_infinity in
-      for k = first to first + cnt - 1 do
-        let o = 6 * iget order k in
-        let x0 = fget prim o and y0 = fget prim (o + 1) and z0 = fget prim (o + 2) in
-        let x1 = fget prim (o + 3) and y1 = fget prim (o + 4) and z1 = fget prim (o + 5) in
-        bx0 := fmin !bx0 x0; by0 := fmin !by0 y0; bz0 := fmin !bz0 z0;
-        bx1 := fmax !bx1 x1; by1 := fmax !by1 y1; bz1 := fmax !bz1 z1;
-        let cx = 0.5 *. (x0 +. x1) and cy = 0.5 *. (y0 +. y1) and cz = 0.5 *. (z0 +. z1) in
-        cx0 := fmin !cx0 cx; cy0 := fmin !cy0 cy; cz0 := fmin !cz0 cz;
-        cx1 := fmax !cx1 cx; cy1 := fmax !cy1 cy; cz1 := fmax !cz1 cz
-      done;
-      let b = [| !bx0; !by0; !bz0; !bx1; !by1; !bz1 |] in
-      let c = [| !cx0; !cy0; !cz0; !cx1; !cy1; !cz1 |] in
-      for q = 0 to 5 do Array1.unsafe_set boxes ((6 * id) + q) b.(q) done;
+      for q = 0 to 5 do Array1.unsafe_set boxes ((6 * id) + q) bd.(q) done;
       let leaf () = iset links (3 * id) first; iset links ((3 * id) + 1) cnt; iset links ((3 * id) + 2) (-1) in
-      let ext a = c.(3 + a) -. c.(a) in
-      let widest = if ext 0 >= ext 1 && ext 0 >= ext 2 then 0 else if ext 1 >= ext 2 then 1 else 2 in
-      (* Large nodes are split at the middle of their centres along the widest axis: far cheaper
-         than binning, and for big meshes nearly as good; the SAH decides below that size. *)
-      let mid_split () =
-        let a = widest in
-        let m = 0.5 *. (c.(a) +. c.(3 + a)) in
-        let i = ref first and j = ref (first + cnt - 1) in
-        while !i <= !j do
-          if centre (iget order !i) a < m then incr i
-          else begin
-            let t = iget order !i in
-            iset order !i (iget order !j); iset order !j t; decr j
-          end
-        done;
-        !i - first
-      in
-      let nl = if cnt > 8192 && ext widest > 0. then mid_split () else 0 in
-      if nl > 0 && nl < cnt then begin
-        iset links ((3 * id) + 2) widest;
-        let l = node first nl in
-        let r = node (first + nl) (cnt - nl) in
+      let inner axis nl lb rb =
+        iset links ((3 * id) + 2) axis;
+        let l = node first nl lb in
+        let r = node (first + nl) (cnt - nl) rb in
         iset !links_r (3 * id) l; iset !links_r ((3 * id) + 1) r
-      end
-      else if cnt <= leaf_size then leaf ()
-      else begin
-        (* binned SAH *)
-        let best_cost = ref infinity and best_axis = ref (-1) and best_split = ref 0 in
-        (* bin along the axis where the centres spread most *)
-        for a = widest to widest do
-          let lo = c.(a) and hi = c.(3 + a) in
-          if hi > lo then begin
+      in
+      let ext a = bd.(9 + a) -. bd.(6 + a) in
+      let widest = if ext 0 >= ext 1 && ext 0 >= ext 2 then 0 else if ext 1 >= ext 2 then 1 else 2 in
+      (if cnt <= leaf_size then leaf ()
+          else begin
+            (* binned SAH, along the axis where the centres spread most *)
+            let best_cost = ref infinity and best_split = ref 0 in
+            let a = widest in
+            let lo = bd.(6 + a) and hi = bd.(9 + a) in
             let scale = float_of_int bins /. (hi -. lo) in
-            for j = 0 to bins - 1 do
-              bin_n.(j) <- 0;
-              for q = 0 to 2 do bin_box.((6 * j) + q) <- infinity; bin_box.((6 * j) + 3 + q) <- neg_infinity done
-            done;
-            for k = first to first + cnt - 1 do
-              let i = iget order k in
-              let j = imin (bins - 1) (int_of_float ((centre i a -. lo) *. scale)) in
-              bin_n.(j) <- bin_n.(j) + 1;
-              for q = 0 to 2 do
-                bin_box.((6 * j) + q) <- fmin bin_box.((6 * j) + q) (fget prim ((6 * i) + q));
-                bin_box.((6 * j) + 3 + q) <- fmax bin_box.((6 * j) + 3 + q) (fget prim ((6 * i) + 3 + q))
+            let[@inline] bin_of k = imin (bins - 1) (int_of_float ((centre k a -. lo) *. scale)) in
+            if hi > lo then begin
+              for j = 0 to bins - 1 do
+                bin_n.(j) <- 0;
+                for q = 0 to 2 do
+                  bin_b.((12 * j) + q) <- infinity; bin_b.((12 * j) + 3 + q) <- neg_infinity;
+                  bin_b.((12 * j) + 6 + q) <- infinity; bin_b.((12 * j) + 9 + q) <- neg_infinity
+                done
+              done;
+              for k = first to first + cnt - 1 do
+                let j = bin_of k in
+                bin_n.(j) <- bin_n.(j) + 1;
+                let o = 6 * k and ob = 12 * j in
+                for q = 0 to 2 do
+                  let lo = fget prim (o + q) and hi = fget prim (o + 3 + q) in
+                  bin_b.(ob + q) <- fmin bin_b.(ob + q) lo;
+                  bin_b.(ob + 3 + q) <- fmax bin_b.(ob + 3 + q) hi;
+                  let c = 0.5 *. (lo +. hi) in
+                  bin_b.(ob + 6 + q) <- fmin bin_b.(ob + 6 + q) c;
+                  bin_b.(ob + 9 + q) <- fmax bin_b.(ob + 9 + q) c
+                done
+              done;
+              (* sweep from the right, then from the left *)
+              let acc = Array.make 6 0. in
+              let reset () = acc.(0) <- infinity; acc.(1) <- infinity; acc.(2) <- infinity; acc.(3) <- neg_infinity; acc.(4) <- neg_infinity; acc.(5) <- neg_infinity in
+              let grow j = for q = 0 to 2 do acc.(q) <- fmin acc.(q) bin_b.((12 * j) + q); acc.(3 + q) <- fmax acc.(3 + q) bin_b.((12 * j) + 3 + q) done in
+              reset ();
+              let rn = ref 0 in
+              for j = bins - 1 downto 1 do
+                grow j;
+                rn := !rn + bin_n.(j);
+                right_n.(j) <- !rn;
+                right_area.(j) <- half_area acc.(0) acc.(1) acc.(2) acc.(3) acc.(4) acc.(5)
+              done;
+              reset ();
+              let ln = ref 0 in
+              for j = 0 to bins - 2 do
+                grow j;
+                ln := !ln + bin_n.(j);
+                if !ln > 0 && right_n.(j + 1) > 0 then begin
+                  let cost = (half_area acc.(0) acc.(1) acc.(2) acc.(3) acc.(4) acc.(5) *. float_of_int !ln) +. (right_area.(j + 1) *. float_of_int right_n.(j + 1)) in
+                  if cost < !best_cost then begin best_cost := cost; best_split := j + 1 end
+                end
               done
-            done;
-            (* sweep from the right, then from the left *)
-            let acc = Array.make 6 0. in
-            let reset () = acc.(0) <- infinity; acc.(1) <- infinity; acc.(2) <- infinity; acc.(3) <- neg_infinity; acc.(4) <- neg_infinity; acc.(5) <- neg_infinity in
-            let grow j = for q = 0 to 2 do acc.(q) <- fmin acc.(q) bin_box.((6 * j) + q); acc.(3 + q) <- fmax acc.(3 + q) bin_box.((6 * j) + 3 + q) done in
-            reset ();
-            let rn = ref 0 in
-            for j = bins - 1 downto 1 do
-              grow j;
-              rn := !rn + bin_n.(j);
-              right_n.(j) <- !rn;
-              right_area.(j) <- half_area acc.(0) acc.(1) acc.(2) acc.(3) acc.(4) acc.(5)
-            done;
-            reset ();
-            let ln = ref 0 in
-            for j = 0 to bins - 2 do
-              grow j;
-              ln := !ln + bin_n.(j);
-              if !ln > 0 && right_n.(j + 1) > 0 then begin
-                let cost = (half_area acc.(0) acc.(1) acc.(2) acc.(3) acc.(4) acc.(5) *. float_of_int !ln) +. (right_area.(j + 1) *. float_of_int right_n.(j + 1)) in
-                if cost < !best_cost then begin best_cost := cost; best_axis := a; best_split := j + 1 end
+            end;
+            let found = !best_cost < infinity in
+            let parent_cost = half_area bd.(0) bd.(1) bd.(2) bd.(3) bd.(4) bd.(5) *. float_of_int cnt in
+            if (not found) || (!best_cost >= parent_cost && cnt <= 8) then
+              if (not found) && cnt > leaf_size then begin
+                (* all centres coincide: split in the middle of the list *)
+                let half = cnt / 2 in
+                inner 0 half (bounds first half) (bounds (first + half) (cnt - half))
               end
-            done
-          end
-        done;
-        let parent_cost = half_area b.(0) b.(1) b.(2) b.(3) b.(4) b.(5) *. float_of_int cnt in
-        if !best_axis < 0 || (!best_cost >= parent_cost && cnt <= 8) then
-          if !best_axis < 0 && cnt > leaf_size then begin
-            (* all centres coincide: split in the middle of the list *)
-            let half = cnt / 2 in
-            iset links ((3 * id) + 2) 0;
-            let l = node first half in
-            let r = node (first + half) (cnt - half) in
-            iset !links_r (3 * id) l; iset !links_r ((3 * id) + 1) r
-          end
-          else leaf ()
-        else begin
-          let a = !best_axis in
-          let lo = c.(a) and hi = c.(3 + a) in
-          let scale = float_of_int bins /. (hi -. lo) in
-          let bin_of i = imin (bins - 1) (int_of_float ((centre i a -. lo) *. scale)) in
-          (* partition order[first..first+cnt) by bin < best_split *)
-          let i = ref first and j = ref (first + cnt - 1) in
-          while !i <= !j do
-            if bin_of (iget order !i) < !best_split then incr i
+              else leaf ()
             else begin
-              let t = iget order !i in
-              iset order !i (iget order !j); iset order !j t; decr j
+              let split = !best_split in
+              let lb = union_bins 0 split and rb = union_bins split bins in
+              let i = ref first and j = ref (first + cnt - 1) in
+              while !i <= !j do
+                if bin_of !i < split then incr i
+                else begin swap !i !j; decr j end
+              done;
+              inner a (!i - first) lb rb
             end
-          done;
-          let nl = !i - first in
-          iset links ((3 * id) + 2) a;
-          let l = node first nl in
-          let r = node (first + nl) (cnt - nl) in
-          iset !links_r (3 * id) l; iset !links_r ((3 * id) + 1) r
-        end
-      end;
+          end);
       id
     in
-    ignore (node 0 n);
+    (* Large hierarchies: the top levels by Morton order (a linear BVH). The centres are
+       quantised to a 1024³ grid over the cube around their bounds, the primitives sorted by the
+       interleaved bits (a stable radix sort) and every range split where its highest differing
+       bit changes: the middle of a grid cell, found by binary search, so a level costs no pass
+       over the primitives. On the meshes and object fields this is for, the result traces as
+       fast as a full SAH tree, which costs several times more to build. *)
+    if n <= sah_all then ignore (node 0 n (bounds 0 n))
+    else begin
+      let bd = bounds 0 n in
+      let ext = fmax (bd.(9) -. bd.(6)) (fmax (bd.(10) -. bd.(7)) (bd.(11) -. bd.(8))) in
+      let scale = if ext > 0. then 1024. /. ext else 0. in
+      (* spread the 10 low bits of x to every third bit *)
+      let spread x =
+        let x = (x lor (x lsl 16)) land 0x030000FF in
+        let x = (x lor (x lsl 8)) land 0x0300F00F in
+        let x = (x lor (x lsl 4)) land 0x030C30C3 in
+        (x lor (x lsl 2)) land 0x09249249
+      in
+      let q k a = let v = int_of_float ((centre k a -. bd.(6 + a)) *. scale) in if v < 0 then 0 else if v > 1023 then 1023 else v in
+      (* key: the 30-bit code above the primitive's index *)
+      let keys = Array.init n (fun k -> (((spread (q k 0) lsl 2) lor (spread (q k 1) lsl 1) lor spread (q k 2)) lsl 32) lor k) in
+      let tmp = Array.make n 0 in
+      let counts = Array.make 1024 0 in
+      let src = ref keys and dst = ref tmp in
+      List.iter
+        (fun shift ->
+          let s = !src and d = !dst in
+          Array.fill counts 0 1024 0;
+          for k = 0 to n - 1 do let b = (s.(k) lsr shift) land 1023 in counts.(b) <- counts.(b) + 1 done;
+          let sum = ref 0 in
+          for b = 0 to 1023 do let c = counts.(b) in counts.(b) <- !sum; sum := !sum + c done;
+          for k = 0 to n - 1 do
+            let b = (s.(k) lsr shift) land 1023 in
+            d.(counts.(b)) <- s.(k);
+            counts.(b) <- counts.(b) + 1
+          done;
+          src := d; dst := s)
+        [ 32; 42; 52 ];
+      let keys = !src and spare = !dst in
+      (* move the boxes into sorted order, cycle by cycle (a moved slot is marked in [tmp]) *)
+      let mask = (1 lsl 32) - 1 in
+      let from j = keys.(j) land mask in
+      let moved = spare in
+      Array.fill moved 0 n 0;
+      let saved = Array.make 6 0. in
+      for j = 0 to n - 1 do
+        if moved.(j) = 0 && from j <> j then begin
+          for q = 0 to 5 do saved.(q) <- fget prim ((6 * j) + q) done;
+          let k = ref j in
+          while from !k <> j do
+            let f = from !k in
+            for q = 0 to 5 do Array1.unsafe_set prim ((6 * !k) + q) (fget prim ((6 * f) + q)) done;
+            moved.(!k) <- 1;
+            k := f
+          done;
+          for q = 0 to 5 do Array1.unsafe_set prim ((6 * !k) + q) saved.(q) done;
+          moved.(!k) <- 1
+        end
+      done;
+      for j = 0 to n - 1 do iset order j (from j) done;
+      let code j = keys.(j) lsr 32 in
+      let rec lnode first cnt =
+        if cnt <= sah_cluster then node first cnt (bounds first cnt)
+        else begin
+          let id = !count in
+          incr count;
+          reserve id;
+          let last = first + cnt - 1 in
+          let x = code first lxor code last in
+          let nl, axis =
+            if x = 0 then (cnt / 2, 0)
+            else begin
+              (* the highest differing bit, then the first code that has it *)
+              let bit = ref 29 in
+              while x land (1 lsl !bit) = 0 do decr bit done;
+              let lo = ref first and hi = ref last in
+              while !lo < !hi do
+                let m = (!lo + !hi) / 2 in
+                if code m land (1 lsl !bit) <> 0 then hi := m else lo := m + 1
+              done;
+              (!lo - first, 2 - (!bit mod 3))
+            end
+          in
+          iset !links_r ((3 * id) + 2) axis;
+          let l = lnode first nl in
+          let r = lnode (first + nl) (cnt - nl) in
+          let links = !links_r and boxes = !boxes_r in
+          iset links (3 * id) l; iset links ((3 * id) + 1) r;
+          for q = 0 to 2 do
+            Array1.unsafe_set boxes ((6 * id) + q) (fmin (fget boxes ((6 * l) + q)) (fget boxes ((6 * r) + q)));
+            Array1.unsafe_set boxes ((6 * id) + 3 + q) (fmax (fget boxes ((6 * l) + 3 + q)) (fget boxes ((6 * r) + 3 + q)))
+          done;
+          id
+        end
+      in
+      ignore (lnode 0 n)
+    end;
     (* the arrays may be longer than the nodes need; [nodes] says how many are used *)
     { boxes = !boxes_r; links = !links_r; order; nodes = !count }
   end

@@ -22,7 +22,8 @@ val set_box : f32s -> int -> float -> float -> float -> float -> float -> float 
     rounded outwards to single precision. *)
 
 val build : f32s -> t
-(** [build boxes] builds a hierarchy over the primitives whose boxes were stored with [set_box]. *)
+(** [build boxes] builds a hierarchy over the primitives whose boxes were stored with [set_box].
+    It reorders [boxes] in place (into leaf order), so they are of no further use. *)
 
 val entry : t -> int -> float -> float -> float -> float -> float -> float -> float -> float -> float
 (** [entry bvh k ox oy oz idx idy idz tmin tmax] is the distance at which the ray from (ox,oy,oz)

@@ -160,9 +160,14 @@ let render opts (sc : Compiled.t) (gamma : Scene.gamma) : Image.t * Stats.t =
     (b, px, stats)
   in
   let bl = List.mapi (fun i b -> (i, b)) bl in
+  (* Tracing allocates only short-lived values, and the scene stays alive throughout: a major
+     collection would only walk the scene (and, in forked workers, copy every page it marks), so
+     the major collector is kept almost idle while rendering. *)
+  let gc = Gc.get () in
+  Gc.set { gc with space_overhead = 10_000 };
   let results =
-    if opts.workers <= 1 || total <= 1 then List.map work bl
-    else Parmap.parmap ~ncores:opts.workers ~chunksize:1 work (Parmap.L bl)
+    Fun.protect ~finally:(fun () -> Gc.set gc) (fun () ->
+        Pool.map ~workers:opts.workers work bl)
   in
   if opts.progress then prerr_string "\r\027[K";
   let img = Image.create opts.width opts.height in

@@ -747,7 +747,7 @@ module Grow = struct
     g.data.(g.len) <- x;
     g.len <- g.len + 1
 
-  let to_array g = Array.sub g.data 0 g.len
+  let to_array g = if g.len = Array.length g.data then g.data else Array.sub g.data 0 g.len
 end
 
 (* A block "{ n, item, item … }" of a mesh2: [item] is called for each entry (with its location),
@@ -773,6 +773,12 @@ let parse_counted_block ?(start = fun (_ : int) -> ()) st what item =
   advance st;
   if !count <> n then Error.raise_at loc "%s says %d entries but lists %d" what n !count;
   n
+
+(* A vector written as plain numbers, read without tokens (Lexer.scan_vector3) into [out]: true
+   when that worked, and the parser then stands after the '>'. *)
+let fast_vector3 st out =
+  st.cur.kind == Lt && Option.is_none st.ahead && Lexer.scan_vector3 st.lexer out
+  && begin st.cur <- Lexer.next st.lexer; true end
 
 let f32_vec (v : Vec.t) = Vec.make (f32 v.x) (f32 v.y) (f32 v.z)
 
@@ -902,25 +908,34 @@ and parse_mesh2 st loc =
   open_block st "mesh2";
   let vertices = ref None and normals = ref None and textures = ref [||] in
   let faces = ref None and nidx = ref None and inside = ref None in
+  let buf = [| 0.; 0.; 0. |] in
   let vectors what ~unit =
     let g = ref (Grow.create 0.) in
     let n =
       parse_counted_block st what ~start:(fun n -> g := Grow.create ~capacity:(3 * n) 0.) (fun l ->
           let g = !g in
-          let v = parse_vector st in
-          let v = f32_vec (if unit then unit_normal st l v else v) in
-          Grow.push g v.x; Grow.push g v.y; Grow.push g v.z)
+          if (not unit) && fast_vector3 st buf then begin
+            Grow.push g (f32 buf.(0)); Grow.push g (f32 buf.(1)); Grow.push g (f32 buf.(2))
+          end
+          else begin
+            let v = parse_vector st in
+            let v = f32_vec (if unit then unit_normal st l v else v) in
+            Grow.push g v.x; Grow.push g v.y; Grow.push g v.z
+          end)
     in
     (n, Grow.to_array !g)
   in
   let indices st l limit what g =
-    let v = parse_vector st in
-    let check x =
+    if not (fast_vector3 st buf) then begin
+      let v = parse_vector st in
+      buf.(0) <- v.x; buf.(1) <- v.y; buf.(2) <- v.z
+    end;
+    for i = 0 to 2 do
+      let x = buf.(i) in
       if Float.of_int (int_of_float x) <> x || x < 0. || int_of_float x >= limit then
         Error.raise_at l "%s index %g is out of range: there are %d" what x limit;
       Grow.push g (int_of_float x)
-    in
-    check v.x; check v.y; check v.z
+    done
   in
   let rec sections () =
     let l = peek_loc st in

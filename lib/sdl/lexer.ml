@@ -120,6 +120,71 @@ let lex_number lx pos =
   ({ kind = Num f; loc = loc_at lx pos }, !p)
   end
 
+(* The mesh fast path: the lists of a mesh hold millions of vectors like "<-1.25, 0.5, 3>", and
+   reading each through tokens and expressions costs far more than the numbers are worth. From just
+   after a '<', [scan_vector3] reads three plain decimals (an optional sign, digits, an optional
+   fraction: the numbers [lex_number] converts by one division) separated by commas, and the '>'
+   after them, when the next character is ',' or '}' (so nothing could continue an expression). It
+   then stores the numbers, moves past the '>' and returns true; for anything else it moves
+   nothing and returns false, and the caller reads the vector the general way. *)
+let rec skip_ws lx p =
+  if p >= lx.len then p
+  else
+    match String.unsafe_get lx.text p with
+    | ' ' | '\t' | '\r' -> skip_ws lx (p + 1)
+    | '\n' -> newline lx p; skip_ws lx (p + 1)
+    | _ -> p
+
+(* a plain decimal at [p] into out.(i): the position after it, or −1 *)
+let scan_number lx p (out : float array) i =
+  let text = lx.text and len = lx.len in
+  let p = skip_ws lx p in
+  let neg = p < len && String.unsafe_get text p = '-' in
+  let p = if p < len && (neg || String.unsafe_get text p = '+') then skip_ws lx (p + 1) else p in
+  let q = ref p and mant = ref 0 and digits = ref 0 and frac = ref 0 in
+  while !q < len && is_digit (String.unsafe_get text !q) do
+    mant := (!mant * 10) + (Char.code (String.unsafe_get text !q) - 48); incr digits; incr q
+  done;
+  if !q < len && String.unsafe_get text !q = '.' then begin
+    incr q;
+    while !q < len && is_digit (String.unsafe_get text !q) do
+      mant := (!mant * 10) + (Char.code (String.unsafe_get text !q) - 48); incr digits; incr frac; incr q
+    done
+  end;
+  let e = !q < len && (match String.unsafe_get text !q with 'e' | 'E' | '_' | 'a' .. 'd' | 'f' .. 'z' | 'A' .. 'D' | 'F' .. 'Z' | '.' -> true | _ -> false) in
+  if !digits = 0 || !digits > 15 || !frac > 22 || e then -1
+  else begin
+    let f = float_of_int !mant /. Array.unsafe_get pow10 !frac in
+    out.(i) <- (if neg then -.f else f);
+    !q
+  end
+
+let scan_vector3 lx (out : float array) =
+  let line = lx.line and bol = lx.bol in
+  let text = lx.text and len = lx.len in
+  let sep p c = let p = skip_ws lx p in if p < len && String.unsafe_get text p = c then p + 1 else -1 in
+  let ok =
+    let p = scan_number lx lx.pos out 0 in
+    let p = if p < 0 then -1 else sep p ',' in
+    let p = if p < 0 then -1 else scan_number lx p out 1 in
+    let p = if p < 0 then -1 else sep p ',' in
+    let p = if p < 0 then -1 else scan_number lx p out 2 in
+    let p = if p < 0 then -1 else sep p '>' in
+    if p < 0 then false
+    else begin
+      (* what follows must end the item (looked at without counting lines: [next] counts them) *)
+      let q = ref p in
+      while !q < len && (match String.unsafe_get text !q with ' ' | '\t' | '\r' | '\n' -> true | _ -> false) do incr q done;
+      let q = !q in
+      if q < len && (match String.unsafe_get text q with ',' | '}' -> true | _ -> false) then begin
+        lx.pos <- p; true
+      end
+      else false
+    end
+  in
+  if not ok then begin lx.line <- line; lx.bol <- bol end;
+  ok
+
 let next lx =
   let text = lx.text and len = lx.len in
   let rec go pos =

@@ -12,5 +12,11 @@ val next : t -> Token.t
     Raises [Error.Scene_error] on an unterminated comment or string or a character that cannot
     start a token. *)
 
+val scan_vector3 : t -> float array -> bool
+(** [scan_vector3 lx out], just after a '<': if the text goes on with three plain decimals
+    (optional sign, digits, optional fraction) separated by commas, then '>', then (after white
+    space) ',' or '}', stores the three numbers in [out.(0..2)] — the values [next] would give —,
+    moves past the '>' and is true. Otherwise it moves nothing and is false. *)
+
 val tokenize : file:string -> string -> Token.t array
 (** [tokenize ~file text] is every token of [text] followed by [Eof] (for tests and tools). *)

@@ -6,11 +6,14 @@ open Helpers
 
 let stack () = Array.make 512 0.
 
-(* Boxes as (x0, y0, z0, x1, y1, z1) tuples, stored with set_box and built. *)
+(* Boxes as (x0, y0, z0, x1, y1, z1) tuples, stored with set_box and built; the boxes returned are
+   a copy made before the build (which reorders its argument). *)
 let build_boxes (l : (float * float * float * float * float * float) list) =
   let prim = Bvh.create_boxes (List.length l) in
   List.iteri (fun i (x0, y0, z0, x1, y1, z1) -> Bvh.set_box prim i x0 y0 z0 x1 y1 z1) l;
-  (prim, Bvh.build prim)
+  let kept = Bvh.create_boxes (List.length l) in
+  Bigarray.Array1.blit prim kept;
+  (kept, Bvh.build prim)
 
 let range n = List.init n Fun.id
 
@@ -121,6 +124,46 @@ let test_random_rays () =
   Alcotest.(check bool) "boxes crossed" true (!total > 3000);
   Alcotest.(check bool) "boxes crossed by rays with zero components" true (!axis_total > 1000);
   Alcotest.(check bool) "boxes crossed from inside a box" true (!inside_total > 1000)
+
+(* Every primitive in exactly one leaf; every box holds its children's (or its primitives') boxes. *)
+let check_structure prim (t : Bvh.t) =
+  let n = count prim in
+  let seen = Array.make n 0 in
+  let inside (outer : float array) (b : float array) =
+    outer.(0) <= b.(0) && outer.(1) <= b.(1) && outer.(2) <= b.(2) && outer.(3) >= b.(3) && outer.(4) >= b.(4) && outer.(5) >= b.(5)
+  in
+  for k = 0 to t.nodes - 1 do
+    let l = Int32.to_int t.links.{3 * k} and r = Int32.to_int t.links.{(3 * k) + 1} in
+    if t.links.{(3 * k) + 2} = -1l then
+      for j = l to l + r - 1 do
+        let i = Int32.to_int t.order.{j} in
+        seen.(i) <- seen.(i) + 1;
+        if not (inside (node_box t k) (prim_box prim i)) then Alcotest.failf "leaf %d does not hold primitive %d" k i
+      done
+    else begin
+      if l <= k || r <= k || l >= t.nodes || r >= t.nodes then Alcotest.failf "node %d has children %d and %d" k l r;
+      if not (inside (node_box t k) (node_box t l) && inside (node_box t k) (node_box t r)) then
+        Alcotest.failf "node %d does not hold its children" k
+    end
+  done;
+  Array.iteri (fun i c -> if c <> 1 then Alcotest.failf "primitive %d is in %d leaves" i c) seen
+
+(* More primitives than the SAH-only limit: the Morton-order top levels. *)
+let test_large () =
+  let prim, t = build_boxes (grid 17) in
+  check_structure prim t;
+  let rs = Random.State.make [| 7 |] in
+  let u lo hi = lo +. Random.State.float rs (hi -. lo) in
+  let total = ref 0 in
+  for r = 0 to 199 do
+    let o = Array.init 3 (fun _ -> u (-3.) 20.) in
+    (* aimed at a point of the grid; every fifth ray with one zero component *)
+    let target = Array.init 3 (fun _ -> u 0. 17.) in
+    let d = Array.init 3 (fun a -> if r mod 5 = 0 && a = r mod 3 then 0. else target.(a) -. o.(a)) in
+    let limit = if r mod 4 = 3 then u 0. 15. else infinity in
+    total := !total + check_walk ~limit (Printf.sprintf "ray %d" r) prim t o d
+  done;
+  Alcotest.(check bool) "boxes crossed" true (!total > 1000)
 
 let test_axis_rays () =
   let prim, t = build_boxes (grid 5) in
@@ -285,5 +328,6 @@ let tests =
     Alcotest.test_case "entry" `Quick test_entry;
     Alcotest.test_case "empty" `Quick test_empty;
     Alcotest.test_case "flat boxes" `Quick test_flat_boxes;
+    Alcotest.test_case "4913 boxes: Morton-order top, structure and rays" `Quick test_large;
     Alcotest.test_case "renumber" `Quick test_renumber;
   ]

@@ -126,6 +126,46 @@ let test_errors () =
    keeps it as the six characters written. *)
 let test_unicode_escape () = check_kinds "\\u0041" [ Str "A"; Eof ] {|"\u0041"|}
 
+(* The mesh fast path: after a '<', scan_vector3 either gives the three numbers the tokens give
+   (and leaves the lexer after the '>', with the line count right) or moves nothing. *)
+let scan text =
+  let lx = Lexer.create ~file:"t.pov" text in
+  ignore (Lexer.next lx : Token.t) (* the '<' *);
+  let out = [| nan; nan; nan |] in
+  let ok = Lexer.scan_vector3 lx out in
+  (ok, out, Lexer.next lx)
+
+let test_scan_vector3 () =
+  let rs = Random.State.make [| 11 |] in
+  let num () =
+    let i = Random.State.int rs 100000 and f = Random.State.int rs 100000 in
+    let body = match Random.State.int rs 3 with 0 -> string_of_int i | 1 -> Printf.sprintf "%d.%d" i f | _ -> Printf.sprintf ".%d" f in
+    (match Random.State.int rs 3 with 0 -> "-" | 1 -> "+ " | _ -> "") ^ body
+  in
+  for _ = 1 to 2000 do
+    let a = num () and b = num () and c = num () in
+    let text = Printf.sprintf "< %s,%s ,\n %s>\n, 7" a b c in
+    let ok, out, after = scan text in
+    if not ok then Alcotest.failf "not read: %S" text;
+    (* the general way: the tokens of each number, signs applied *)
+    let value s = match kinds s with [ Num f; Eof ] -> f | [ Minus; Num f; Eof ] -> -.f | [ Plus; Num f; Eof ] -> f | _ -> Alcotest.failf "%S" s in
+    List.iteri (fun i s -> Alcotest.(check (float 0.)) (Printf.sprintf "%S term %d" text i) (value s) out.(i)) [ a; b; c ];
+    Alcotest.(check kind_t) "then the comma" Comma after.kind;
+    Alcotest.(check (pair int int)) "its location" (3, 1) (loc_of after)
+  done;
+  (* not plain numbers, or something after the '>' that could continue an expression *)
+  List.iter
+    (fun text ->
+      let ok, _, after = scan text in
+      Alcotest.(check bool) (text ^ " is left to the parser") false ok;
+      Alcotest.(check kind_t) (text ^ ": nothing moved") (List.nth (kinds text) 1) after.kind)
+    [ "<1,2,3>*2,"; "<1,2,3> + x,"; "<1e3,2,3>,"; "<1,2>,"; "<1,2,3,4>,"; "<x,2,3>,"; "<1,2,3>"; "<1, 2, 3> // c\n,";
+      "<1.x,2,3>,"; "<--1,2,3>,"; "<1234567890123456,1,1>," ];
+  (* a '}' after it is fine *)
+  let ok, _, after = scan "<1,2,3> }" in
+  Alcotest.(check bool) "before '}'" true ok;
+  Alcotest.(check kind_t) "then the brace" RBrace after.kind
+
 let source_rules = [ Alcotest.test_case "\\uXXXX escape" `Quick test_unicode_escape ]
 
 let tests =
@@ -140,4 +180,5 @@ let tests =
     Alcotest.test_case "CRLF" `Quick test_crlf;
     Alcotest.test_case "locations" `Quick test_locations;
     Alcotest.test_case "errors" `Quick test_errors;
+    Alcotest.test_case "mesh fast path (scan_vector3)" `Quick test_scan_vector3;
   ]

@@ -88,8 +88,21 @@ let test_antialias () =
   Alcotest.(check bool) "samples taken" true (stats.samples > 0);
   Alcotest.(check int) "samples are multiples of 9" 0 (stats.samples mod 9)
 
+(* Pool: results in task order whatever the worker count; a worker that raises is reported. *)
+let test_pool () =
+  let xs = List.init 97 Fun.id in
+  let f x = (x, Array.make (x mod 7) (float_of_int x *. 0.5)) in
+  List.iter
+    (fun w -> Alcotest.(check bool) (Printf.sprintf "%d workers" w) true (Pool.map ~workers:w f xs = List.map f xs))
+    [ 1; 2; 3; 8 ];
+  Alcotest.(check (list int)) "no tasks" [] (Pool.map ~workers:2 Fun.id []);
+  match Pool.map ~workers:2 (fun x -> if x = 50 then failwith "boom" else x) xs with
+  | _ -> Alcotest.fail "a failing task went unnoticed"
+  | exception Pool.Worker_failed _ -> ()
+
 let tests =
   [
+    Alcotest.test_case "worker pool" `Quick test_pool;
     Alcotest.test_case "centre pixel" `Quick test_centre_pixel;
     Alcotest.test_case "pixel formula" `Quick test_pixel_formula;
     Alcotest.test_case "full_area" `Quick test_full_area;

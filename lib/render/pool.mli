@@ -1,0 +1,10 @@
+(** Running independent tasks in worker processes (fork), without copying or compacting the
+    parent's heap first. *)
+
+exception Worker_failed of string
+(** A worker died or raised; the message says how. *)
+
+val map : workers:int -> ('a -> 'b) -> 'a list -> 'b list
+(** [map ~workers f xs] is [List.map f xs], computed by up to [workers] processes that take the
+    next task as they finish one. With one worker (or one task) it runs in this process. Results
+    come back by [Marshal], so they must not contain functions. *)
