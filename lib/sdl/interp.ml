@@ -707,7 +707,19 @@ let unit_normal st loc (n : Vec.t) =
 let comma st = ignore (accept st Comma)
 
 (* triangle { P1, P2, P3 } and smooth_triangle { P1, N1, P2, N2, P3, N3 } (§2.4, §2.5). *)
+(* A vector written as plain numbers, read without tokens (Lexer.scan_vector3) into [out]: true
+   when that worked, and the parser then stands after the '>'. *)
+let fast_vector3 st out =
+  st.cur.kind == Lt && Option.is_none st.ahead && Lexer.scan_vector3 st.lexer out
+  && begin st.cur <- Lexer.next st.lexer; true end
+
+(* A vector of a mesh: by the fast path when it is written as plain numbers. *)
+let mesh_vector st =
+  let buf = [| 0.; 0.; 0. |] in
+  if fast_vector3 st buf then Vec.make buf.(0) buf.(1) buf.(2) else parse_vector st
+
 let parse_triangle_corners st ~smooth =
+  let parse_vector = mesh_vector in
   let p1 = parse_vector st in
   comma st;
   if smooth then begin
@@ -732,22 +744,87 @@ let parse_triangle_corners st ~smooth =
     (p1, p2, p3, None)
   end
 
-(* Growable arrays for mesh data, private to one parse. *)
+(* Growable arrays for the lists of a mesh. With a capacity given (mesh2 announces its counts) the
+   array is made once at that size and handed over as it is; otherwise the values go into chunks
+   and [to_array] copies them once, so growing never holds more than the values and one copy. *)
 module Grow = struct
-  type 'a t = { mutable data : 'a array; mutable len : int }
+  (* [chunks.(0)] has the first size (the capacity, or 1024), every later chunk [chunk] values *)
+  type 'a t = { fill : 'a; mutable chunks : 'a array array; mutable n : int; mutable len : int }
 
-  let create ?(capacity = 1024) x = { data = Array.make (max 16 capacity) x; len = 0 }
+  let chunk = 65536
+
+  let create ?capacity x =
+    let first = match capacity with Some c -> max 16 c | None -> 1024 in
+    { fill = x; chunks = [| Array.make first x |]; n = 1; len = 0 }
+
+  let first g = Array.length g.chunks.(0)
 
   let push g x =
-    if g.len = Array.length g.data then begin
-      let d = Array.make (2 * g.len) x in
-      Array.blit g.data 0 d 0 g.len;
-      g.data <- d
+    let f = first g in
+    let c, i = if g.len < f then (0, g.len) else (1 + ((g.len - f) / chunk), (g.len - f) mod chunk) in
+    if c = g.n then begin
+      if g.n = Array.length g.chunks then g.chunks <- Array.append g.chunks (Array.make g.n [||]);
+      g.chunks.(c) <- Array.make chunk g.fill;
+      g.n <- g.n + 1
     end;
-    g.data.(g.len) <- x;
+    Array.unsafe_set g.chunks.(c) i x;
     g.len <- g.len + 1
 
-  let to_array g = if g.len = Array.length g.data then g.data else Array.sub g.data 0 g.len
+  let get g i =
+    let f = first g in
+    if i < f then g.chunks.(0).(i) else g.chunks.(1 + ((i - f) / chunk)).((i - f) mod chunk)
+
+  let to_array g =
+    if g.n = 1 && g.len = first g then g.chunks.(0)
+    else begin
+      let a = Array.make g.len g.fill in
+      let at = ref 0 in
+      for c = 0 to g.n - 1 do
+        let k = min (Array.length g.chunks.(c)) (g.len - !at) in
+        Array.blit g.chunks.(c) 0 a !at k;
+        at := !at + k
+      done;
+      a
+    end
+end
+
+(* Vertices (or normals) of a mesh { } merged when equal, as POV-Ray merges them: an open
+   addressing table over the stored single-precision triples. *)
+module Vertex_table = struct
+  type t = { store : float Grow.t; mutable slots : int array; mutable count : int }
+
+  let create () = { store = Grow.create 0.; slots = Array.make 1024 (-1); count = 0 }
+
+  let hash x y z = Hashtbl.hash (Int64.bits_of_float x, Int64.bits_of_float y, Int64.bits_of_float z)
+
+  let coord t i = Grow.get t.store i
+
+  let rec insert t x y z =
+    let mask = Array.length t.slots - 1 in
+    let rec probe h =
+      let k = t.slots.(h) in
+      if k < 0 then begin
+        t.slots.(h) <- t.count;
+        Grow.push t.store x; Grow.push t.store y; Grow.push t.store z;
+        t.count <- t.count + 1;
+        t.count - 1
+      end
+      else if coord t (3 * k) = x && coord t ((3 * k) + 1) = y && coord t ((3 * k) + 2) = z then k
+      else probe ((h + 1) land mask)
+    in
+    if 2 * (t.count + 1) > Array.length t.slots then begin
+      let n = 2 * Array.length t.slots in
+      let slots = Array.make n (-1) in
+      for k = 0 to t.count - 1 do
+        let rec place h = if slots.(h) < 0 then slots.(h) <- k else place ((h + 1) land (n - 1)) in
+        place (hash (coord t (3 * k)) (coord t ((3 * k) + 1)) (coord t ((3 * k) + 2)) land (n - 1))
+      done;
+      t.slots <- slots;
+      insert t x y z
+    end
+    else probe (hash x y z land mask)
+
+  let to_array t = Grow.to_array t.store
 end
 
 (* A block "{ n, item, item … }" of a mesh2: [item] is called for each entry (with its location),
@@ -773,12 +850,6 @@ let parse_counted_block ?(start = fun (_ : int) -> ()) st what item =
   advance st;
   if !count <> n then Error.raise_at loc "%s says %d entries but lists %d" what n !count;
   n
-
-(* A vector written as plain numbers, read without tokens (Lexer.scan_vector3) into [out]: true
-   when that worked, and the parser then stands after the '>'. *)
-let fast_vector3 st out =
-  st.cur.kind == Lt && Option.is_none st.ahead && Lexer.scan_vector3 st.lexer out
-  && begin st.cur <- Lexer.next st.lexer; true end
 
 let f32_vec (v : Vec.t) = Vec.make (f32 v.x) (f32 v.y) (f32 v.z)
 
@@ -852,13 +923,13 @@ let rec parse_object st : V.obj =
    in single precision; each face is set up from the values as parsed. *)
 and parse_mesh st loc =
   open_block st "mesh";
-  let verts = Grow.create 0. and norms = Grow.create 0. and corners = Grow.create 0. in
+  let verts = Vertex_table.create () and norms = Vertex_table.create () and corners = Grow.create 0. in
   let fv = Grow.create 0 and fn = Grow.create 0 and ftex = Grow.create 0 in
   let textures = ref [] and ntex = ref 0 in
   let inside = ref None in
   let push3 g (v : Vec.t) = Grow.push g v.x; Grow.push g v.y; Grow.push g v.z in
-  let add_vertex v = push3 verts (f32_vec v); Grow.push fv ((verts.len / 3) - 1) in
-  let add_normal n = push3 norms (f32_vec n); Grow.push fn ((norms.len / 3) - 1) in
+  let add_vertex (v : Vec.t) = Grow.push fv (Vertex_table.insert verts (f32 v.x) (f32 v.y) (f32 v.z)) in
+  let add_normal (n : Vec.t) = Grow.push fn (Vertex_table.insert norms (f32 n.x) (f32 n.y) (f32 n.z)) in
   let rec items () =
     match peek st with
     | Ident ("triangle" | "smooth_triangle" as kw) ->
@@ -896,7 +967,7 @@ and parse_mesh st loc =
   in
   items ();
   let mesh =
-    Mesh.build ~vertices:(Grow.to_array verts) ~vertex_normals:(Grow.to_array norms) ~fv:(Grow.to_array fv)
+    Mesh.build ~vertices:(Vertex_table.to_array verts) ~vertex_normals:(Vertex_table.to_array norms) ~fv:(Grow.to_array fv)
       ~fn:(Grow.to_array fn) ~ftex:(Grow.to_array ftex) ~corners:(Some (Grow.to_array corners)) ~inside_vector:!inside
   in
   if mesh.faces = 0 then warn st loc "the mesh has no triangles with an area";
