@@ -107,20 +107,21 @@ let build (prim : f32s) =
     in
     (* bounds: 12 floats, the box (min x y z, max x y z) then the centres' bounds likewise *)
     let empty_bounds () = [| infinity; infinity; infinity; neg_infinity; neg_infinity; neg_infinity; infinity; infinity; infinity; neg_infinity; neg_infinity; neg_infinity |] in
-    let[@inline] add_prim (r : float array) k =
+    (* widen the bounds at r.(at .. at + 11) by primitive k *)
+    let[@inline] add_prim (r : float array) at k =
       let o = 6 * k in
       for q = 0 to 2 do
         let lo = fget prim (o + q) and hi = fget prim (o + 3 + q) in
-        r.(q) <- fmin r.(q) lo;
-        r.(3 + q) <- fmax r.(3 + q) hi;
+        r.(at + q) <- fmin r.(at + q) lo;
+        r.(at + 3 + q) <- fmax r.(at + 3 + q) hi;
         let c = 0.5 *. (lo +. hi) in
-        r.(6 + q) <- fmin r.(6 + q) c;
-        r.(9 + q) <- fmax r.(9 + q) c
+        r.(at + 6 + q) <- fmin r.(at + 6 + q) c;
+        r.(at + 9 + q) <- fmax r.(at + 9 + q) c
       done
     in
     let bounds first cnt =
       let r = empty_bounds () in
-      for k = first to first + cnt - 1 do add_prim r k done;
+      for k = first to first + cnt - 1 do add_prim r 0 k done;
       r
     in
     (* 12 floats per bin, as [bounds] *)
@@ -172,15 +173,7 @@ let build (prim : f32s) =
               for k = first to first + cnt - 1 do
                 let j = bin_of k in
                 bin_n.(j) <- bin_n.(j) + 1;
-                let o = 6 * k and ob = 12 * j in
-                for q = 0 to 2 do
-                  let lo = fget prim (o + q) and hi = fget prim (o + 3 + q) in
-                  bin_b.(ob + q) <- fmin bin_b.(ob + q) lo;
-                  bin_b.(ob + 3 + q) <- fmax bin_b.(ob + 3 + q) hi;
-                  let c = 0.5 *. (lo +. hi) in
-                  bin_b.(ob + 6 + q) <- fmin bin_b.(ob + 6 + q) c;
-                  bin_b.(ob + 9 + q) <- fmax bin_b.(ob + 9 + q) c
-                done
+                add_prim bin_b (12 * j) k
               done;
               (* sweep from the right, then from the left *)
               let acc = Array.make 6 0. in
@@ -266,7 +259,7 @@ let build (prim : f32s) =
           src := d; dst := s)
         [ 32; 42; 52 ];
       let keys = !src and spare = !dst in
-      (* move the boxes into sorted order, cycle by cycle (a moved slot is marked in [tmp]) *)
+      (* move the boxes into sorted order, cycle by cycle (a moved slot is marked in [moved]) *)
       let mask = (1 lsl 32) - 1 in
       let from j = keys.(j) land mask in
       let moved = spare in

@@ -72,14 +72,15 @@ let map ~workers f items =
     (* if every worker died, writing tasks must fail with EPIPE, not kill this process *)
     let pipe_handler = Sys.signal Sys.sigpipe Sys.Signal_ignore in
     let buf = Bytes.create 4 in
-    (try
-       for i = 0 to n - 1 do
-         Bytes.set_int32_le buf 0 (Int32.of_int i);
-         write_all task_w buf 0 4
-       done
-     with Unix.Unix_error (Unix.EPIPE, _, _) -> ());
-    Unix.close task_w;
-    Sys.set_signal Sys.sigpipe pipe_handler;
+    Fun.protect
+      ~finally:(fun () -> Unix.close task_w; Sys.set_signal Sys.sigpipe pipe_handler)
+      (fun () ->
+        try
+          for i = 0 to n - 1 do
+            Bytes.set_int32_le buf 0 (Int32.of_int i);
+            write_all task_w buf 0 4
+          done
+        with Unix.Unix_error (Unix.EPIPE, _, _) -> ());
     let failed = ref None in
     Array.iter
       (fun pid ->

@@ -706,7 +706,6 @@ let unit_normal st loc (n : Vec.t) =
 
 let comma st = ignore (accept st Comma)
 
-(* triangle { P1, P2, P3 } and smooth_triangle { P1, N1, P2, N2, P3, N3 } (§2.4, §2.5). *)
 (* A vector written as plain numbers, read without tokens (Lexer.scan_vector3) into [out]: true
    when that worked, and the parser then stands after the '>'. *)
 let fast_vector3 st out =
@@ -718,29 +717,29 @@ let mesh_vector st =
   let buf = [| 0.; 0.; 0. |] in
   if fast_vector3 st buf then Vec.make buf.(0) buf.(1) buf.(2) else parse_vector st
 
+(* triangle { P1, P2, P3 } and smooth_triangle { P1, N1, P2, N2, P3, N3 } (§2.4, §2.5). *)
 let parse_triangle_corners st ~smooth =
-  let parse_vector = mesh_vector in
-  let p1 = parse_vector st in
+  let p1 = mesh_vector st in
   comma st;
   if smooth then begin
     let l1 = peek_loc st in
-    let n1 = parse_vector st in
+    let n1 = mesh_vector st in
     comma st;
-    let p2 = parse_vector st in
+    let p2 = mesh_vector st in
     comma st;
     let l2 = peek_loc st in
-    let n2 = parse_vector st in
+    let n2 = mesh_vector st in
     comma st;
-    let p3 = parse_vector st in
+    let p3 = mesh_vector st in
     comma st;
     let l3 = peek_loc st in
-    let n3 = parse_vector st in
+    let n3 = mesh_vector st in
     (p1, p2, p3, Some (unit_normal st l1 n1, unit_normal st l2 n2, unit_normal st l3 n3))
   end
   else begin
-    let p2 = parse_vector st in
+    let p2 = mesh_vector st in
     comma st;
-    let p3 = parse_vector st in
+    let p3 = mesh_vector st in
     (p1, p2, p3, None)
   end
 
@@ -979,34 +978,25 @@ and parse_mesh2 st loc =
   open_block st "mesh2";
   let vertices = ref None and normals = ref None and textures = ref [||] in
   let faces = ref None and nidx = ref None and inside = ref None in
-  let buf = [| 0.; 0.; 0. |] in
   let vectors what ~unit =
     let g = ref (Grow.create 0.) in
     let n =
       parse_counted_block st what ~start:(fun n -> g := Grow.create ~capacity:(3 * n) 0.) (fun l ->
           let g = !g in
-          if (not unit) && fast_vector3 st buf then begin
-            Grow.push g (f32 buf.(0)); Grow.push g (f32 buf.(1)); Grow.push g (f32 buf.(2))
-          end
-          else begin
-            let v = parse_vector st in
-            let v = f32_vec (if unit then unit_normal st l v else v) in
-            Grow.push g v.x; Grow.push g v.y; Grow.push g v.z
-          end)
+          let v = mesh_vector st in
+          let v = f32_vec (if unit then unit_normal st l v else v) in
+          Grow.push g v.x; Grow.push g v.y; Grow.push g v.z)
     in
     (n, Grow.to_array !g)
   in
   let indices st l limit what g =
-    if not (fast_vector3 st buf) then begin
-      let v = parse_vector st in
-      buf.(0) <- v.x; buf.(1) <- v.y; buf.(2) <- v.z
-    end;
-    for i = 0 to 2 do
-      let x = buf.(i) in
+    let v = mesh_vector st in
+    let check x =
       if Float.of_int (int_of_float x) <> x || x < 0. || int_of_float x >= limit then
         Error.raise_at l "%s index %g is out of range: there are %d" what x limit;
       Grow.push g (int_of_float x)
-    done
+    in
+    check v.x; check v.y; check v.z
   in
   let rec sections () =
     let l = peek_loc st in
