@@ -8,9 +8,10 @@ type result = {
   render_seconds : float;
 }
 
-let run (opts : Render.options) path =
+let run ?interp (opts : Render.options) path =
   let t0 = Unix.gettimeofday () in
-  let scene, warnings = Interp.load_file { Interp.width = opts.width; height = opts.height } path in
+  let iopts = match interp with Some i -> i | None -> Interp.default_options ~width:opts.width ~height:opts.height in
+  let scene, warnings = Interp.load_file { iopts with width = opts.width; height = opts.height } path in
   let t1 = Unix.gettimeofday () in
   let compiled = Compile.scene scene in
   let t2 = Unix.gettimeofday () in

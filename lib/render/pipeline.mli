@@ -10,6 +10,7 @@ type result = {
   render_seconds : float;  (** tracing and encoding *)
 }
 
-val run : Render.options -> string -> result
-(** [run opts path] interprets, compiles, renders and encodes the scene file [path].
+val run : ?interp:Interp.options -> Render.options -> string -> result
+(** [run ?interp opts path] interprets (with [interp], whose size is replaced by [opts]'), compiles,
+    renders and encodes the scene file [path].
     Raises [Error.Scene_error] for errors in the scene. *)

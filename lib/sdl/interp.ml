@@ -4,9 +4,15 @@
 open Token
 module V = Value
 
-type options = { width : int; height : int }
+type options = {
+  width : int;
+  height : int;
+  clock : float;  (** +K *)
+  library_paths : string list;  (** +L, searched in order after the including file's directory *)
+  debug : string -> unit;  (** where #debug text goes *)
+}
 
-type camera_spec = {
+type camera_spec = V.camera_spec = {
   c_location : Vec.t option;
   c_direction : Vec.t option;
   c_up : Vec.t option;
@@ -17,12 +23,38 @@ type camera_spec = {
   c_translate : Vec.t;
 }
 
+(* A feature povml does not render yet. Inside a declaration it makes the declared value
+   [V.Unsupported] (an error only where it is used); anywhere else it is a located error. *)
+exception Unsupported of Loc.t * string * (Loc.t * string) list
+
+(* Where tokens come from: the scene file, an included file, or a macro body (§11.3). Each frame
+   has its own stack of open conditionals and loops. *)
+type frame = { lx : Lexer.t; kind : frame_kind; mutable conds : cond list }
+
+and frame_kind =
+  | Main
+  | Included of Loc.t  (* where the #include was *)
+  | Macro_body of string * Loc.t  (* the macro and where it was called *)
+
+and cond =
+  | If_branch of Loc.t  (* inside the branch of an #if/#ifdef that is taken *)
+  | While_loop of Lexer.mark * Loc.t  (* the mark is just before the condition *)
+  | For_loop of { var : V.t ref; stop : float; step : float; body : Lexer.mark; floc : Loc.t }
+  | Switch_case of { value : float; mutable running : bool; sloc : Loc.t }
+
 type st = {
-  lexer : Lexer.t;
-  mutable cur : Token.t;  (* the next token *)
-  mutable ahead : Token.t option;  (* the one after it, once peeked *)
+  mutable frames : frame list;  (* innermost first; never empty *)
+  mutable cur : Token.t;  (* the current token, valid when [have] *)
+  mutable have : bool;
+  mutable cur_elem : (V.array_v * int) option;  (* the current token is this array element *)
+  mutable no_expand : bool;
+  mutable streams : V.stream array;  (* the random streams made by seed() *)  (* reading the argument of defined(): a macro name is not called *)
+  mutable depth : int;  (* '{' minus '}' consumed: how a declaration that fails is skipped *)
   opts : options;
-  table : (string, V.t) Hashtbl.t;
+  global : (string, V.t ref) Hashtbl.t;
+  mutable tables : (string, V.t ref) Hashtbl.t list;  (* innermost first; the global table is last *)
+  mutable includes : int;  (* open include files *)
+  mutable macro_depth : int;
   mutable version : int;  (* languageVersion × 100 *)
   mutable version_set : bool;
   mutable warnings : Error.t list;  (* newest first *)
@@ -35,6 +67,10 @@ type st = {
   mutable max_trace_level : int;
   mutable adc_bailout : float;
   mutable ambient_light : Rgb.t;
+  mutable default_texture : Scene.texture;
+  mutable directive : st -> string -> Loc.t -> unit;  (* the directive reader, tied below *)
+  mutable invoke : st -> V.macro -> Loc.t -> unit;  (* the macro caller, tied below *)
+  mutable index : st -> V.array_v -> int;  (* reads the subscripts of an array element, tied below *)
 }
 
 (* ---------------------------------------------------------------------------------------------- *)
@@ -61,7 +97,7 @@ let keywords =
 let unsupported =
   [ "box"; "cylinder"; "cone"; "disc"; "torus"; "polygon";
     "prism"; "lathe"; "sor"; "blob"; "text"; "height_field"; "isosurface"; "superellipsoid"; "julia_fractal";
-    "parametric"; "bicubic_patch"; "ovus"; "quadric"; "cubic"; "quartic"; "poly"; "union"; "intersection";
+    "parametric"; "bicubic_patch"; "ovus"; "quadric"; "cubic"; "quartic"; "poly"; "intersection";
     "difference"; "merge"; "rotate"; "scale"; "matrix"; "transform"; "inverse"; "no_image"; "no_reflection";
     "double_illuminate"; "normal"; "material"; "checker"; "gradient"; "hexagon"; "brick"; "image_map";
     "bozo"; "marble"; "wood"; "agate"; "granite"; "spotted"; "leopard"; "onion"; "radial"; "spiral1";
@@ -74,38 +110,95 @@ let unsupported =
     "interior_texture"; "light_group"; "no_radiosity"; "split_union"; "cutaway_textures"; "sturm";
     "open"; "phong_albedo"; "metallic_albedo"; "translucency" ]
 
-let unsupported_directives =
-  [ "include"; "macro"; "if"; "ifdef"; "ifndef"; "else"; "elseif"; "end"; "while"; "for"; "switch"; "case";
-    "range"; "break"; "undef"; "default"; "debug"; "warning"; "error"; "fopen"; "fclose"; "read"; "write";
-    "render"; "statistics" ]
-
 let is_keyword s = List.mem s keywords || List.mem s unsupported
 
 (* ---------------------------------------------------------------------------------------------- *)
-(* Token access *)
+(* Token access
 
-let peek st = st.cur.kind
-let peek_loc st = st.cur.loc
+   The parser sees one token at a time, as POV-Ray's does: [peek] reads the next token only when it is
+   asked for, and reading is where directives run and macros are called (§11.3). So a directive is
+   executed when the parser first looks past it, and [advance] never reads ahead. *)
 
-let peek2 st =
-  match st.ahead with
-  | Some t -> t.kind
-  | None ->
-      let t = Lexer.next st.lexer in
-      st.ahead <- Some t;
-      t.kind
+let top st = List.hd st.frames
+
+let lookup_cell st name =
+  let rec go = function
+    | [] -> None
+    | t :: rest -> ( match Hashtbl.find_opt t name with Some c -> Some c | None -> go rest)
+  in
+  go st.tables
+
+let lookup st name = match lookup_cell st name with Some c -> Some !c | None -> None
+
+let rec fill st =
+  let f = top st in
+  let t = Lexer.next f.lx in
+  match t.kind with
+  | Eof -> end_of_frame st f t
+  | Directive d ->
+      st.directive st d t.loc;
+      if not st.have then fill st
+  | Ident s -> (
+      match lookup st s with
+      | Some (V.Macro m) when not st.no_expand ->
+          st.invoke st m t.loc;
+          if not st.have then fill st
+      | Some (V.Array a) when Lexer.next_char f.lx = Some '[' ->
+          (* an array element is resolved as it is read, so every context sees its value (§11.2) *)
+          let i = st.index st a in
+          st.cur <- t; st.have <- true; st.cur_elem <- Some (a, i)
+      | _ -> st.cur <- t; st.have <- true; st.cur_elem <- None)
+  | _ -> st.cur <- t; st.have <- true; st.cur_elem <- None
+
+and end_of_frame st f t =
+  (match f.conds with
+  | [] -> ()
+  | c :: _ ->
+      let loc, what =
+        match c with
+        | If_branch l -> (l, "#if")
+        | While_loop (_, l) -> (l, "#while")
+        | For_loop { floc; _ } -> (floc, "#for")
+        | Switch_case { sloc; _ } -> (sloc, "#switch")
+      in
+      Error.raise_at loc "%s has no matching #end before the end of the file" what);
+  match f.kind with
+  | Main -> st.cur <- t; st.have <- true; st.cur_elem <- None
+  | Included _ ->
+      st.frames <- List.tl st.frames;
+      st.tables <- List.tl st.tables;
+      st.includes <- st.includes - 1;
+      fill st
+  | Macro_body (name, _) -> Error.raise_at t.loc "the body of macro '%s' ends without #end" name
+
+let peek st = if not st.have then fill st; st.cur.kind
+
+(* The value of the identifier [name] that is the current token (an array element if subscripted). *)
+let cur_value st name =
+  match st.cur_elem with
+  | Some (a, i) -> (
+      match a.cells.(i) with
+      | Some v -> Some v
+      | None -> Error.raise_at st.cur.loc "element %d of the array '%s' has not been assigned a value" i name)
+  | None -> lookup st name
+let peek_loc st = if not st.have then fill st; st.cur.loc
 
 let advance st =
-  match st.ahead with
-  | Some t -> st.cur <- t; st.ahead <- None
-  | None -> if st.cur.kind != Eof then st.cur <- Lexer.next st.lexer
+  if not st.have then fill st;
+  (match st.cur.kind with LBrace -> st.depth <- st.depth + 1 | RBrace -> st.depth <- st.depth - 1 | _ -> ());
+  if st.cur.kind != Eof then st.have <- false
 
 let warn st loc fmt = Printf.ksprintf (fun msg -> st.warnings <- { Error.loc; msg; notes = [] } :: st.warnings) fmt
 
-let not_supported loc what = Error.raise_at loc "not supported yet: %s" what
+let not_supported loc what = raise (Unsupported (loc, what, []))
+
+(* Using a declared value that needed an unsupported feature. *)
+let unsupported_use loc name what at = raise (Unsupported (loc, Printf.sprintf "%s (used through '%s')" what name, [ (at, Printf.sprintf "'%s' was declared here" name) ]))
+
+let all_names st = List.concat_map (fun t -> Hashtbl.fold (fun k _ acc -> k :: acc) t []) st.tables
 
 let unknown_identifier st loc name =
-  let candidates = Hashtbl.fold (fun k _ acc -> k :: acc) st.table [] @ keywords in
+  let candidates = all_names st @ keywords in
   match Suggest.nearest name candidates with
   | [] -> Error.raise_at loc "unknown identifier '%s'" name
   | s -> Error.raise_at loc "unknown identifier '%s'; did you mean %s?" name (String.concat " or " (List.map (Printf.sprintf "'%s'") s))
@@ -114,14 +207,18 @@ let unexpected st what =
   let k = peek st in
   match k with
   | Ident s when List.mem s unsupported -> not_supported (peek_loc st) (Printf.sprintf "'%s'" s)
-  | Ident s when (not (is_keyword s)) && not (Hashtbl.mem st.table s) -> (
-      let candidates = Hashtbl.fold (fun k _ acc -> k :: acc) st.table [] @ keywords in
+  | Ident s when (not (is_keyword s)) && cur_value st s = None -> (
+      let candidates = all_names st @ keywords in
       match Suggest.nearest s candidates with
       | [] -> Error.raise_at (peek_loc st) "expected %s but found %s" what (describe k)
       | sug ->
           Error.raise_at (peek_loc st) "expected %s but found %s; did you mean %s?" what (describe k)
             (String.concat " or " (List.map (Printf.sprintf "'%s'") sug)))
-  | Directive d when List.mem d unsupported_directives -> not_supported (peek_loc st) (Printf.sprintf "'#%s'" d)
+  | Ident s -> (
+      match cur_value st s with
+      | Some (V.Unsupported u) -> unsupported_use (peek_loc st) s u.what u.at
+      | Some v -> Error.raise_at (peek_loc st) "expected %s but found '%s', which is %s" what s (V.kind_name v)
+      | None -> Error.raise_at (peek_loc st) "expected %s but found %s" what (describe k))
   | _ -> Error.raise_at (peek_loc st) "expected %s but found %s" what (describe k)
 
 (* [k] is always a constant constructor here, so physical equality is the cheap, exact test *)
@@ -132,7 +229,21 @@ let is_ident st s = match peek st with Ident i -> String.equal i s | _ -> false
 let accept_ident st s =
   if is_ident st s then (advance st; true) else false
 
-let lookup st name = Hashtbl.find_opt st.table name
+let include_dirs st =
+  let here = Filename.dirname (Lexer.file (top st).lx) in
+  let main = Filename.dirname (Lexer.file (List.nth st.frames (List.length st.frames - 1)).lx) in
+  let debian = "/usr/share/povray-3.7/include" in
+  ignore here;
+  (* the scene's directory (POV-Ray searches the working directory, usually the scene's), then +L *)
+  let dirs = [ main; Filename.current_dir_name ] @ st.opts.library_paths @ (if Sys.file_exists debian then [ debian ] else []) in
+  List.fold_left (fun acc d -> if List.mem d acc then acc else acc @ [ d ]) [] dirs
+
+let find_file st name =
+  let candidates =
+    if Filename.is_relative name then List.concat_map (fun d -> [ Filename.concat d name; Filename.concat d (name ^ ".inc") ]) (include_dirs st)
+    else [ name; name ^ ".inc" ]
+  in
+  List.find_opt (fun p -> Sys.file_exists p && not (Sys.is_directory p)) candidates
 
 (* ---------------------------------------------------------------------------------------------- *)
 (* Expressions (§11.2) *)
@@ -150,10 +261,13 @@ let colour_keywords = [ "color"; "colour"; "rgb"; "rgbf"; "rgbt"; "rgbft"; "red"
 let is_colour_start st =
   match peek st with
   | Ident s when List.mem s colour_keywords -> true
-  | Ident s -> ( match lookup st s with Some (V.Colour _) -> true | _ -> false)
+  | Ident s -> ( match cur_value st s with Some (V.Colour _) -> true | _ -> false)
   | _ -> false
 
 let truth x = Float.abs x > 1e-10
+
+(* C's (int) cast on x86: truncation, and -2147483648 for what does not fit (checked with POV-Ray). *)
+let c_int x = if Float.is_nan x || Float.abs x >= 2147483648. then -2147483648. else Float.trunc x
 
 let rec parse_expr st =
   (* additive level; relational and logical operators only inside parentheses *)
@@ -174,10 +288,11 @@ and term_rest st lhs =
       let loc = peek_loc st in
       advance st;
       let rhs = parse_unary st in
+      (* dividing by exactly 0 gives +infinity, whatever the sign, with a warning (checked with POV-Ray) *)
       let divided = ref false in
-      let div a b = if b = 0. then (divided := true; 1e17) else a /. b in
+      let div a b = if b = 0. then (divided := true; Float.infinity) else a /. b in
       let r = binop st loc div lhs rhs in
-      if !divided then warn st loc "division by zero; the result is 1e17";
+      if !divided then warn st loc "divide by zero; the result is infinity";
       term_rest st r
   | _ -> lhs
 
@@ -197,34 +312,33 @@ and parse_unary st =
 and numeric_map loc f v =
   match V.map f v with Some v -> v | None -> Error.raise_at loc "expected a number but found %s" (V.kind_name v)
 
-and parse_postfix st =
-  let v = parse_primary st in
-  let rec loop v =
-    match (peek st, peek2 st) with
-    | Dot, Ident c ->
-        let loc = peek_loc st in
-        advance st;
-        advance st;
-        let pick i =
+and parse_postfix st = postfix_rest st (parse_primary st)
+
+(* Component selectors after a value: .x .y .z .t .u .v .red … .gray (§11.1). *)
+and postfix_rest st v =
+  if peek st != Dot then v
+  else begin
+    let loc = peek_loc st in
+    advance st;
+    let c = match peek st with Ident c -> advance st; c | _ -> unexpected st "a component name after '.'" in
+    let pick i =
+      match v with
+      | V.Vector a | V.Colour a ->
+          if i < Array.length a then V.Float a.(i)
+          else Error.raise_at loc "'.%s' needs a vector of at least %d terms, this one has %d" c (i + 1) (Array.length a)
+      | V.Float _ -> Error.raise_at loc "'.%s' cannot select from a float" c
+      | _ -> Error.raise_at loc "'.%s' cannot select from %s" c (V.kind_name v)
+    in
+    let r =
+      match c with
+      | "gray" | "grey" -> (
           match v with
-          | V.Vector a | V.Colour a ->
-              if i < Array.length a then V.Float a.(i)
-              else Error.raise_at loc "'.%s' needs a vector of at least %d terms, this one has %d" c (i + 1) (Array.length a)
-          | V.Float _ -> Error.raise_at loc "'.%s' cannot select from a float" c
-          | _ -> Error.raise_at loc "'.%s' cannot select from %s" c (V.kind_name v)
-        in
-        let r =
-          match c with
-          | "gray" | "grey" -> (
-              match v with
-              | V.Vector a | V.Colour a when Array.length a >= 3 -> V.Float ((0.297 *. a.(0)) +. (0.589 *. a.(1)) +. (0.114 *. a.(2)))
-              | _ -> Error.raise_at loc "'.%s' needs a colour" c)
-          | _ -> ( match component_index c with Some i -> pick i | None -> Error.raise_at loc "unknown component '.%s'" c)
-        in
-        loop r
-    | _ -> v
-  in
-  loop v
+          | V.Vector a | V.Colour a when Array.length a >= 3 -> V.Float ((0.297 *. a.(0)) +. (0.589 *. a.(1)) +. (0.114 *. a.(2)))
+          | _ -> Error.raise_at loc "'.%s' needs a colour" c)
+      | _ -> ( match component_index c with Some i -> pick i | None -> Error.raise_at loc "unknown component '.%s'" c)
+    in
+    postfix_rest st r
+  end
 
 and parse_full st =
   (* inside parentheses: ?:, & |, relational (§11.2) *)
@@ -257,21 +371,25 @@ and logic loc f a b =
   | _ -> Error.raise_at loc "logical and relational operators need floats, not %s and %s" (V.kind_name a) (V.kind_name b)
 
 and parse_relational st =
-  let lhs = parse_expr st in
-  let rel f =
-    let loc = peek_loc st in
-    advance st;
-    let rhs = parse_expr st in
-    logic loc f lhs rhs
+  (* comparisons chain left to right: (1 < 2 < 3) is ((1 < 2) < 3) *)
+  let eps = 1e-10 in
+  let rec loop lhs =
+    let rel f =
+      let loc = peek_loc st in
+      advance st;
+      let rhs = parse_expr st in
+      loop (logic loc f lhs rhs)
+    in
+    match peek st with
+    | Lt -> rel (fun a b -> a < b)
+    | Le -> rel (fun a b -> a < b || Float.abs (a -. b) < eps)
+    | Gt -> rel (fun a b -> a > b)
+    | Ge -> rel (fun a b -> a > b || Float.abs (a -. b) < eps)
+    | Eq -> rel (fun a b -> Float.abs (a -. b) < eps)
+    | Ne -> rel (fun a b -> Float.abs (a -. b) >= eps)
+    | _ -> lhs
   in
-  match peek st with
-  | Lt -> rel (fun a b -> a < b)
-  | Le -> rel (fun a b -> a <= b)
-  | Gt -> rel (fun a b -> a > b)
-  | Ge -> rel (fun a b -> a >= b)
-  | Eq -> rel (fun a b -> Float.abs (a -. b) <= 1e-10)
-  | Ne -> rel (fun a b -> Float.abs (a -. b) > 1e-10)
-  | _ -> lhs
+  loop (parse_expr st)
 
 and parse_primary st =
   let loc = peek_loc st in
@@ -313,50 +431,96 @@ and parse_ident_value st loc name =
   | "false" | "no" | "off" -> advance st; V.Float 0.
   | "image_width" -> advance st; V.Float (float_of_int st.opts.width)
   | "image_height" -> advance st; V.Float (float_of_int st.opts.height)
-  | "clock" -> advance st; V.Float 0.
+  | "clock" -> advance st; V.Float st.opts.clock
+  | "clock_delta" -> advance st; V.Float 0.
+  | "clock_on" | "frame_number" | "initial_clock" | "final_clock" | "initial_frame" | "final_frame" ->
+      advance st;
+      (* a single still image: frame 0 of no animation, clock from +K *)
+      V.Float (match name with "initial_clock" | "final_clock" -> st.opts.clock | _ -> 0.)
   | "version" -> advance st; V.Float (float_of_int st.version /. 100.)
+  | "now" ->
+      advance st;
+      (* days since 2000-01-01 00:00 UTC *)
+      V.Float ((Unix.gettimeofday () -. 946684800.) /. 86400.)
+  | "input_file_name" -> advance st; V.String (Lexer.file (List.nth st.frames (List.length st.frames - 1)).lx)
   | _ when List.mem name colour_keywords -> V.Colour (colour_array (parse_colour st))
   | _ when List.mem name function_names -> parse_function st loc name
   | _ -> (
-      match lookup st name with
+      match cur_value st name with
       | Some ((V.Float _ | V.Vector _ | V.Colour _ | V.String _) as v) -> advance st; v
+      | Some (V.Unsupported u) -> unsupported_use loc name u.what u.at
       | Some v -> Error.raise_at loc "expected a numeric expression but '%s' is %s" name (V.kind_name v)
       | None ->
           if List.mem name unsupported then not_supported loc (Printf.sprintf "'%s'" name)
+          else if List.mem name unsupported_functions then not_supported loc (Printf.sprintf "the function '%s'" name)
           else if is_keyword name then Error.raise_at loc "expected a numeric expression but found '%s'" name
           else unknown_identifier st loc name)
 
 and function_names =
-  [ "abs"; "sqrt"; "sqr"; "sin"; "cos"; "tan"; "asin"; "acos"; "atan"; "atan2"; "pow"; "exp"; "ln"; "log"; "min";
+  [ "abs"; "sqrt"; "sin"; "cos"; "tan"; "asin"; "acos"; "atan"; "atan2"; "pow"; "exp"; "ln"; "log"; "min";
     "max"; "int"; "floor"; "ceil"; "mod"; "div"; "radians"; "degrees"; "vlength"; "vnormalize"; "vdot"; "vcross";
-    "select" ]
+    "select"; "sinh"; "cosh"; "tanh"; "asinh"; "acosh"; "atanh"; "defined"; "dimensions"; "dimension_size";
+    "seed"; "rand"; "bitwise_and"; "bitwise_or"; "bitwise_xor"; "vrotate"; "vaxis_rotate"; "str"; "vstr";
+    "concat"; "substr"; "chr"; "asc"; "strlen"; "strupr"; "strlwr"; "val"; "strcmp"; "file_exists" ]
+
+and unsupported_functions = [ "inside"; "trace"; "min_extent"; "max_extent"; "vturbulence"; "datetime"; "function" ]
+
+(* The argument of defined(…) and #ifdef: an identifier (or array element) that is not evaluated. *)
+and parse_defined_arg st =
+  st.no_expand <- true;
+  let k = Fun.protect ~finally:(fun () -> st.no_expand <- false) (fun () -> peek st) in
+  match k with
+  | Ident s ->
+      let d =
+        match st.cur_elem with
+        | Some (a, i) -> a.cells.(i) <> None
+        | None -> lookup st s <> None || List.mem s [ "x"; "y"; "z"; "t"; "u"; "v"; "pi"; "clock"; "version" ]
+      in
+      advance st;
+      d
+  | _ -> unexpected st "an identifier"
 
 and parse_function st loc name =
   advance st;
   expect st LParen (Printf.sprintf "'(' after '%s'" name);
+  if name = "defined" then begin
+    let d = parse_defined_arg st in
+    expect st RParen "')' closing 'defined'";
+    V.Float (if d then 1. else 0.)
+  end
+  else
   let rec args acc =
     let a = (peek_loc st, parse_full st) in
     if accept st Comma then args (a :: acc) else List.rev (a :: acc)
   in
-  let args = args [] in
+  let args = if name = "dimensions" || name = "dimension_size" then array_args st else args [] in
   expect st RParen (Printf.sprintf "')' closing the arguments of '%s'" name);
   let float_arg (l, v) = match v with V.Float f -> f | v -> Error.raise_at l "'%s' expects a float argument, not %s" name (V.kind_name v) in
+  let string_arg (l, v) = match v with V.String s -> s | v -> Error.raise_at l "'%s' expects a string argument, not %s" name (V.kind_name v) in
   let vec_arg (l, v) =
     match v with
     | V.Float _ | V.Vector _ | V.Colour _ -> let a = V.promote v 3 in Vec.make a.(0) a.(1) a.(2)
     | v -> Error.raise_at l "'%s' expects a vector argument, not %s" name (V.kind_name v)
   in
-  let arity n = if List.length args <> n then Error.raise_at loc "'%s' takes %d argument%s, not %d" name n (if n = 1 then "" else "s") (List.length args) in
-  let f1 f = arity 1; V.Float (f (float_arg (List.hd args))) in
-  let f2 f = arity 2; V.Float (f (float_arg (List.nth args 0)) (float_arg (List.nth args 1))) in
+  let n = List.length args in
+  let arity k = if n <> k then Error.raise_at loc "'%s' takes %d argument%s, not %d" name k (if k = 1 then "" else "s") n in
+  let arg i = List.nth args i in
+  let f1 f = arity 1; V.Float (f (float_arg (arg 0))) in
+  let f2 f = arity 2; V.Float (f (float_arg (arg 0)) (float_arg (arg 1))) in
   let of_vec (v : Vec.t) = V.Vector [| v.x; v.y; v.z |] in
+  let int_arg a = int_of_float (c_int (float_arg a)) in
   match name with
   | "abs" -> f1 Float.abs
-  | "sqrt" -> f1 sqrt
-  | "sqr" -> f1 (fun x -> x *. x)
+  | "sqrt" -> f1 (fun x -> if x < 0. then Error.raise_at loc "sqrt of negative number %f" x else sqrt x)
   | "sin" -> f1 sin
   | "cos" -> f1 cos
   | "tan" -> f1 tan
+  | "sinh" -> f1 sinh
+  | "cosh" -> f1 cosh
+  | "tanh" -> f1 tanh
+  | "asinh" -> f1 (fun x -> Float.log (x +. sqrt ((x *. x) +. 1.)))
+  | "acosh" -> f1 (fun x -> Float.log (x +. sqrt ((x *. x) -. 1.)))
+  | "atanh" -> f1 (fun x -> 0.5 *. Float.log ((1. +. x) /. (1. -. x)))
   | "asin" | "acos" ->
       (* §11.2: the argument is clamped to ±1 with a warning *)
       let f = if name = "asin" then asin else acos in
@@ -364,62 +528,150 @@ and parse_function st loc name =
           if x < -1. || x > 1. then warn st loc "domain error in '%s': %g is clamped to the range -1 … 1" name x;
           f (Float.max (-1.) (Float.min 1. x)))
   | "atan" -> f1 atan
-  | "atan2" -> f2 Float.atan2
+  | "atan2" -> f2 (fun a b -> if Float.abs a < 1e-10 && Float.abs b < 1e-10 then Error.raise_at loc "domain error in atan2(0, 0)" else Float.atan2 a b)
   | "pow" ->
       f2 (fun a b -> if a = 0. && b = 0. then Error.raise_at loc "pow(0, 0) is undefined" else Float.pow a b)
   | "exp" -> f1 exp
-  | "ln" -> f1 log
-  | "log" -> f1 log10
-  | "int" -> f1 Float.trunc
+  | "ln" -> f1 (fun x -> if x <= 0. then Error.raise_at loc "ln of a number that is not positive: %f" x else log x)
+  | "log" -> f1 (fun x -> if x <= 0. then Error.raise_at loc "log of a number that is not positive: %f" x else log10 x)
+  | "int" -> f1 c_int
   | "floor" -> f1 floor
   | "ceil" -> f1 ceil
-  | "mod" -> f2 Float.rem
-  | "div" -> f2 (fun a b -> Float.trunc (a /. b))
+  | "mod" -> f2 Float.rem (* C fmod: mod(x, 0) is NaN *)
+  | "div" -> f2 (fun a b -> c_int (a /. b))
   | "radians" -> f1 (fun d -> d *. Float.pi /. 180.)
   | "degrees" -> f1 (fun r -> r *. 180. /. Float.pi)
   | "min" | "max" ->
       if args = [] then Error.raise_at loc "'%s' needs at least one argument" name;
       let fs = List.map float_arg args in
       V.Float (List.fold_left (if name = "min" then Float.min else Float.max) (List.hd fs) fs)
-  | "vlength" -> arity 1; V.Float (Vec.length (vec_arg (List.hd args)))
+  | "bitwise_and" | "bitwise_or" | "bitwise_xor" ->
+      if n < 2 then Error.raise_at loc "'%s' needs at least two arguments" name;
+      let op = match name with "bitwise_and" -> ( land ) | "bitwise_or" -> ( lor ) | _ -> ( lxor ) in
+      let is = List.map int_arg args in
+      V.Float (float_of_int (List.fold_left op (List.hd is) (List.tl is)))
+  | "seed" ->
+      (* §11.2: each seed() makes a new stream and returns its number *)
+      arity 1;
+      st.streams <- Array.append st.streams [| { V.state = int_arg (arg 0) land 0xFFFFFFFF } |];
+      V.Float (float_of_int (Array.length st.streams - 1))
+  | "rand" ->
+      arity 1;
+      let l, _ = arg 0 in
+      let i = int_arg (arg 0) in
+      if i < 0 || i >= Array.length st.streams then Error.raise_at l "rand(%d): there is no such random stream (make one with seed())" i;
+      let r = st.streams.(i) in
+      (* a 32-bit linear congruential step *)
+      r.state <- ((r.state * 1812433253) + 12345) land 0xFFFFFFFF;
+      V.Float (float_of_int r.state /. 4294967295.)
+  | "vlength" -> arity 1; V.Float (Vec.length (vec_arg (arg 0)))
   | "vnormalize" ->
       arity 1;
-      let a = vec_arg (List.hd args) in
-      if Vec.length a = 0. then warn st loc "normalizing zero-length vector; the result is <0,0,0>";
-      of_vec (Vec.normalize a)
-  | "vdot" -> arity 2; V.Float (Vec.dot (vec_arg (List.nth args 0)) (vec_arg (List.nth args 1)))
-  | "vcross" -> arity 2; of_vec (Vec.cross (vec_arg (List.nth args 0)) (vec_arg (List.nth args 1)))
+      let a = vec_arg (arg 0) in
+      if Vec.length a = 0. then begin
+        warn st loc "normalizing zero-length vector; the result is <0,0,0>";
+        of_vec Vec.zero
+      end
+      else of_vec (Vec.normalize a)
+  | "vdot" -> arity 2; V.Float (Vec.dot (vec_arg (arg 0)) (vec_arg (arg 1)))
+  | "vcross" -> arity 2; of_vec (Vec.cross (vec_arg (arg 0)) (vec_arg (arg 1)))
+  | "vrotate" -> arity 2; of_vec (Xform.point (Xform.rotate (vec_arg (arg 1))) (vec_arg (arg 0)))
+  | "vaxis_rotate" ->
+      arity 3;
+      of_vec (Xform.point (Xform.axis_rotate (vec_arg (arg 1)) (float_arg (arg 2))) (vec_arg (arg 0)))
   | "select" ->
-      if List.length args <> 3 && List.length args <> 4 then Error.raise_at loc "'select' takes 3 or 4 arguments";
-      let c = float_arg (List.hd args) in
-      let pick i = snd (List.nth args i) in
-      if List.length args = 3 then if c < 0. then pick 1 else pick 2
+      if n <> 3 && n <> 4 then Error.raise_at loc "'select' takes 3 or 4 arguments";
+      let c = float_arg (arg 0) in
+      let pick i = snd (arg i) in
+      if n = 3 then if c < 0. then pick 1 else pick 2
       else if c < 0. then pick 1
       else if c = 0. then pick 2
       else pick 3
+  | "dimensions" -> (
+      match args with
+      | [ (_, V.Array a) ] -> V.Float (float_of_int (Array.length a.dims))
+      | _ -> Error.raise_at loc "'dimensions' takes one array")
+  | "dimension_size" -> (
+      match args with
+      | [ (_, V.Array a); d ] ->
+          let d = int_arg d in
+          if d < 1 || d > Array.length a.dims then Error.raise_at loc "dimension %d is out of range: the array has %d" d (Array.length a.dims);
+          V.Float (float_of_int a.dims.(d - 1))
+      | _ -> Error.raise_at loc "'dimension_size' takes an array and a dimension number")
+  | "str" -> arity 3; V.String (Strfmt.str (float_arg (arg 0)) (int_arg (arg 1)) (int_arg (arg 2)))
+  | "vstr" ->
+      arity 5;
+      let k = int_arg (arg 0) in
+      let k = max 2 (min 5 k) in
+      (* the value is not promoted: a float is its first term, the others are 0 *)
+      let terms =
+        match arg 1 with
+        | _, V.Float f -> Array.init k (fun i -> if i = 0 then f else 0.)
+        | _, (V.Vector a | V.Colour a) -> Array.init k (fun i -> if i < Array.length a then a.(i) else 0.)
+        | l, v -> Error.raise_at l "'vstr' expects a vector, not %s" (V.kind_name v)
+      in
+      V.String (Strfmt.vstr terms (string_arg (arg 2)) (int_arg (arg 3)) (int_arg (arg 4)))
+  | "concat" -> V.String (String.concat "" (List.map string_arg args))
+  | "substr" ->
+      arity 3;
+      let s = string_arg (arg 0) and p = int_arg (arg 1) and l = int_arg (arg 2) in
+      if p < 1 || l < 0 || p + l - 1 > String.length s then
+        Error.raise_at loc "substr(\"%s\", %d, %d) is outside the string (length %d)" s p l (String.length s);
+      V.String (String.sub s (p - 1) l)
+  | "chr" ->
+      arity 1;
+      let c = int_arg (arg 0) in
+      if c < 0 || c > 65535 then Error.raise_at loc "chr(%d): the value must be 0 … 65535" c;
+      let b = Buffer.create 4 in
+      Buffer.add_utf_8_uchar b (if Uchar.is_valid c then Uchar.of_int c else Uchar.rep);
+      V.String (Buffer.contents b)
+  | "asc" -> arity 1; let s = string_arg (arg 0) in V.Float (if s = "" then 0. else float_of_int (Char.code s.[0]))
+  | "strlen" -> arity 1; V.Float (float_of_int (String.length (string_arg (arg 0))))
+  | "strupr" -> arity 1; V.String (String.uppercase_ascii (string_arg (arg 0)))
+  | "strlwr" -> arity 1; V.String (String.lowercase_ascii (string_arg (arg 0)))
+  | "val" -> arity 1; V.Float (Strfmt.value (string_arg (arg 0)))
+  | "strcmp" -> arity 2; V.Float (float_of_int (Strfmt.compare (string_arg (arg 0)) (string_arg (arg 1))))
+  | "file_exists" -> arity 1; V.Float (if find_file st (string_arg (arg 0)) <> None then 1. else 0.)
   | _ -> Error.raise_at loc "unknown function '%s'" name
+
+(* The arguments of dimensions() and dimension_size(): an array identifier, then floats. *)
+and array_args st =
+  let l = peek_loc st in
+  let a =
+    match peek st with
+    | Ident s -> (
+        match cur_value st s with
+        | Some (V.Array _ as a) -> advance st; a
+        | Some v -> Error.raise_at l "'%s' is %s, not an array" s (V.kind_name v)
+        | None -> unknown_identifier st l s)
+    | _ -> unexpected st "an array identifier"
+  in
+  let rec more acc = if accept st Comma then more ((peek_loc st, parse_full st) :: acc) else List.rev acc in
+  (l, a) :: more []
 
 and parse_float st =
   (* A plain number that ends a list item or a vector needs no expression machinery: the fast path
-     for the millions of numbers of a mesh. *)
-  let ends = function Comma | Gt | RBrace | Semi | RParen -> true | _ -> false in
+     for the millions of numbers of a mesh. Otherwise the number is the first operand. *)
+  let loc = peek_loc st in
+  let as_float v = match v with V.Float f -> f | v -> Error.raise_at loc "expected a float but found %s" (V.kind_name v) in
+  let continue v = as_float (expr_rest st (term_rest st (postfix_rest st v))) in
   match peek st with
-  | Num f when ends (peek2 st) -> advance st; f
-  | Minus when (match peek2 st with Num _ -> true | _ -> false) -> (
+  | Num f -> (
       advance st;
       match peek st with
-      | Num f when ends (peek2 st) -> advance st; -.f
-      | _ -> (
-          (* the minus applies to a longer operand: negate the rest of the unary operand *)
-          let loc = peek_loc st in
-          match numeric_map loc (fun x -> -.x) (parse_unary st) |> term_rest st |> expr_rest st with
-          | V.Float f -> f
-          | v -> Error.raise_at loc "expected a float but found %s" (V.kind_name v)))
-  | _ -> (
-      let loc = peek_loc st in
-      match parse_expr st with
-      | V.Float f -> f
-      | v -> Error.raise_at loc "expected a float but found %s" (V.kind_name v))
+      | Comma | Gt | RBrace | Semi | RParen -> f
+      | _ -> continue (V.Float f))
+  | Minus -> (
+      advance st;
+      match peek st with
+      | Num f -> (
+          advance st;
+          match peek st with
+          | Comma | Gt | RBrace | Semi | RParen -> -.f
+          | Dot -> as_float (expr_rest st (term_rest st (numeric_map loc (fun x -> -.x) (postfix_rest st (V.Float f)))))
+          | _ -> as_float (expr_rest st (term_rest st (V.Float (-.f)))))
+      | _ -> as_float (expr_rest st (term_rest st (numeric_map loc (fun x -> -.x) (parse_unary st)))))
+  | _ -> as_float (parse_expr st)
 
 and parse_vector st =
   let loc = peek_loc st in
@@ -475,7 +727,7 @@ and parse_colour st : Colour.t =
       | Ident s when List.mem s colour_keywords -> ()
       | _ -> let loc = peek_loc st in ignore (set_terms loc 5 (parse_expr st)))
   | Ident s when not (List.mem s colour_keywords) -> (
-      match lookup st s with
+      match cur_value st s with
       | Some (V.Colour _) -> let loc = peek_loc st in ignore (set_terms loc 5 (parse_expr st)); keyword_seen := true
       | _ -> ())
   | _ -> ());
@@ -503,7 +755,7 @@ let parse_rgb st what =
 let float_follows st =
   match peek st with
   | Num _ | LParen | Minus | Plus -> true
-  | Ident s -> ( match lookup st s with Some (V.Float _) -> true | _ -> List.mem s function_names || List.mem s [ "pi"; "true"; "false"; "yes"; "no"; "on"; "off"; "clock"; "version"; "image_width"; "image_height" ])
+  | Ident s -> ( match cur_value st s with Some (V.Float _) -> true | _ -> List.mem s function_names || List.mem s [ "pi"; "true"; "false"; "yes"; "no"; "on"; "off"; "clock"; "version"; "image_width"; "image_height" ])
   | _ -> false
 
 let parse_bool_opt st = if float_follows st then truth (parse_float st) else true
@@ -517,7 +769,7 @@ let close_block st what = expect st RBrace (Printf.sprintf "'}' closing '%s' or 
 
 let ident_of_kind st f =
   match peek st with
-  | Ident s -> ( match lookup st s with Some v -> (match f v with Some r -> advance st; Some r | None -> None) | None -> None)
+  | Ident s -> ( match cur_value st s with Some v -> (match f v with Some r -> advance st; Some r | None -> None) | None -> None)
   | _ -> None
 
 let parse_pigment st (base : Scene.pigment) : Scene.pigment =
@@ -660,6 +912,7 @@ let parse_interior st (base : Scene.interior) : Scene.interior =
 (* ---------------------------------------------------------------------------------------------- *)
 (* Objects *)
 
+(* §14.4: a modifier moves the shape, the lights of a union, and (later) attached textures. *)
 let translate_shape (s : Scene.shape) (v : Vec.t) : Scene.shape =
   match s with
   | Sphere { centre; radius } -> Sphere { centre = Vec.add centre v; radius }
@@ -668,8 +921,30 @@ let translate_shape (s : Scene.shape) (v : Vec.t) : Scene.shape =
   | Smooth_triangle t -> Smooth_triangle { t with p1 = Vec.add t.p1 v; p2 = Vec.add t.p2 v; p3 = Vec.add t.p3 v }
   | Mesh m -> Mesh { m with offset = Vec.add m.offset v }
 
+type op = Translate of Vec.t
+
+let parse_op st : op =
+  let loc = peek_loc st in
+  match peek st with
+  | Ident "translate" -> advance st; Translate (parse_vector st)
+  | Ident ("rotate" | "scale" | "matrix" | "transform" as k) -> not_supported loc (Printf.sprintf "'%s'" k)
+  | _ -> unexpected st "a transformation"
+
+let move_shape op s = match op with Translate v -> translate_shape s v
+
+let move_light op (l : Scene.light) = match op with Translate v -> { l with position = Vec.add l.position v }
+
+let rec move_obj op (o : V.obj) =
+  match o.shape with
+  | Prim s -> { o with shape = Prim (move_shape op s) }
+  | Union ms -> { o with shape = Union (List.map (move_member op) ms) }
+
+and move_member op = function
+  | V.Member_obj o -> V.Member_obj (move_obj op o)
+  | V.Member_light l -> V.Member_light (move_light op l)
+
 let parse_object_mods st (o : V.obj) what : V.obj =
-  let tex o = match o.V.texture with Some t -> t | None -> Defaults.texture in
+  let tex o = match o.V.texture with Some t -> t | None -> st.default_texture in
   let rec loop (o : V.obj) =
     let loc = peek_loc st in
     match peek st with
@@ -679,12 +954,12 @@ let parse_object_mods st (o : V.obj) what : V.obj =
     | Ident "texture" ->
         advance st;
         if o.texture <> None then not_supported loc "layered textures (a texture added to an object that has one)";
-        loop { o with texture = Some (parse_texture st Defaults.texture) }
+        loop { o with texture = Some (parse_texture st st.default_texture) }
     | Ident "interior" ->
         advance st;
         let base = match o.interior with Some i -> i | None -> Defaults.interior in
         loop { o with interior = Some (parse_interior st base) }
-    | Ident "translate" -> advance st; let v = parse_vector st in loop { o with shape = translate_shape o.shape v }
+    | Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") -> loop (move_obj (parse_op st) o)
     | Ident "no_shadow" -> advance st; loop { o with no_shadow = true }
     | Ident "hollow" -> advance st; ignore (parse_bool_opt st); loop o
     | Ident s when List.mem s unsupported -> not_supported loc (Printf.sprintf "'%s'" s)
@@ -692,7 +967,39 @@ let parse_object_mods st (o : V.obj) what : V.obj =
   in
   loop o
 
-let new_obj shape loc = { V.shape; texture = None; interior = None; no_shadow = false; oloc = loc }
+let new_obj_of shape loc = { V.shape; texture = None; interior = None; no_shadow = false; oloc = loc }
+let new_obj shape loc = new_obj_of (V.Prim shape) loc
+
+let object_keywords = [ "sphere"; "plane"; "object"; "triangle"; "smooth_triangle"; "mesh"; "mesh2"; "union" ]
+
+(* Objects povml does not render yet: inside a union they are reported as "not supported yet". *)
+let unsupported_objects =
+  [ "box"; "cylinder"; "cone"; "disc"; "torus"; "polygon"; "prism"; "lathe"; "sor"; "blob"; "text"; "height_field";
+    "isosurface"; "superellipsoid"; "julia_fractal"; "parametric"; "bicubic_patch"; "ovus"; "quadric"; "cubic";
+    "quartic"; "poly"; "intersection"; "difference"; "merge"; "sphere_sweep"; "lemon" ]
+
+let parse_light st =
+  let loc = peek_loc st in
+  advance st;
+  open_block st "light_source";
+  let position = parse_vector st in
+  ignore (accept st Comma);
+  (* §10.2: the colour after the position; without one the light is black *)
+  let colour = if peek st == RBrace || (match peek st with Ident s -> List.mem s [ "shadowless"; "fade_distance"; "fade_power"; "translate" ] | _ -> false) then Rgb.black else parse_rgb st "a light colour" in
+  ignore loc;
+  let rec loop (l : Scene.light) =
+    let loc = peek_loc st in
+    match peek st with
+    | RBrace -> advance st; l
+    | Ident "shadowless" -> advance st; loop { l with shadowless = true }
+    | Ident "fade_distance" -> advance st; loop { l with fade_distance = parse_float st }
+    | Ident "fade_power" -> advance st; loop { l with fade_power = parse_float st }
+    | Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") -> loop (move_light (parse_op st) l)
+    | Ident ("color" | "colour" | "rgb") -> loop { l with colour = parse_rgb st "a light colour" }
+    | Ident s when List.mem s unsupported -> not_supported loc (Printf.sprintf "'%s' in a light_source" s)
+    | _ -> unexpected st "a light_source keyword or '}'"
+  in
+  loop { Scene.position; colour; shadowless = false; fade_distance = 0.; fade_power = 0. }
 
 let f32 x = Int32.float_of_bits (Int32.bits_of_float x)
 
@@ -709,8 +1016,8 @@ let comma st = ignore (accept st Comma)
 (* A vector written as plain numbers, read without tokens (Lexer.scan_vector3) into [out]: true
    when that worked, and the parser then stands after the '>'. *)
 let fast_vector3 st out =
-  st.cur.kind == Lt && Option.is_none st.ahead && Lexer.scan_vector3 st.lexer out
-  && begin st.cur <- Lexer.next st.lexer; true end
+  (* the '<' was read from the current frame, so the numbers are in the same text *)
+  peek st == Lt && Lexer.scan_vector3 (top st).lx out && begin st.have <- false; true end
 
 (* A vector of a mesh: by the fast path when it is written as plain numbers. *)
 let mesh_vector st =
@@ -855,7 +1162,7 @@ let f32_vec (v : Vec.t) = Vec.make (f32 v.x) (f32 v.y) (f32 v.z)
 let parse_texture_in_block st =
   (* texture { … } or a texture identifier inside a mesh triangle *)
   advance st;
-  parse_texture st Defaults.texture
+  parse_texture st st.default_texture
 
 let rec parse_object st : V.obj =
   let loc = peek_loc st in
@@ -904,19 +1211,46 @@ let rec parse_object st : V.obj =
       let iloc = peek_loc st in
       let o =
         match peek st with
+        | Ident s when List.mem s object_keywords -> parse_object st
         | Ident s -> (
-            match lookup st s with
+            match cur_value st s with
             | Some (V.Object o) -> advance st; { o with oloc = loc }
+            | Some (V.Light l) -> advance st; { (new_obj_of (V.Union [ V.Member_light l ]) loc) with oloc = loc }
+            | Some (V.Unsupported u) -> unsupported_use iloc s u.what u.at
             | Some v -> Error.raise_at iloc "'%s' is %s, not an object" s (V.kind_name v)
             | None -> if is_keyword s then unexpected st "an object identifier" else unknown_identifier st iloc s)
         | _ -> unexpected st "an object identifier"
       in
       parse_object_mods st o "object"
+  | Ident "union" ->
+      (* §16.4: a union is dissolved into its members when it enters the scene; its texture,
+         interior and flags go to the members that have none *)
+      advance st;
+      open_block st "union";
+      let rec members acc =
+        match peek st with
+        | Ident "light_source" -> members (V.Member_light (parse_light st) :: acc)
+        | _ when object_follows st -> members (V.Member_obj (parse_object st) :: acc)
+        | _ -> List.rev acc
+      in
+      let ms = members [] in
+      if List.length ms < 2 then warn st loc "a union should have at least two members";
+      parse_object_mods st (new_obj_of (V.Union ms) loc) "union"
+  | Ident "light_source" -> new_obj_of (V.Union [ V.Member_light (parse_light st) ]) loc
   | Ident s -> (
-      match lookup st s with
+      match cur_value st s with
       | Some (V.Object o) -> advance st; { o with oloc = loc }
+      | Some (V.Light l) -> advance st; new_obj_of (V.Union [ V.Member_light l ]) loc
+      | Some (V.Unsupported u) -> unsupported_use loc s u.what u.at
       | _ -> unexpected st "an object")
   | _ -> unexpected st "an object"
+
+(* Does an object (a keyword or an identifier of one) come next? *)
+and object_follows st =
+  match peek st with
+  | Ident s when List.mem s object_keywords -> true
+  | Ident s -> ( match cur_value st s with Some (V.Object _ | V.Light _) -> true | Some (V.Unsupported _) -> true | _ -> List.mem s unsupported_objects)
+  | _ -> false
 
 (* mesh { triangle {…} smooth_triangle {…} … [inside_vector V] modifiers } (§2.6). Vertices are kept
    in single precision; each face is set up from the values as parsed. *)
@@ -1029,12 +1363,11 @@ and parse_mesh2 st loc =
               indices st l nv "vertex" fv;
               (* an optional texture index (three would interpolate, which is not read yet) *)
               let tex =
-                if peek st == Comma && (match peek2 st with Num _ -> true | _ -> false) then begin
-                  advance st;
+                let index_follows () = accept st Comma && (match peek st with Lt | RBrace -> false | _ -> true) in
+                if index_follows () then begin
                   let tl = peek_loc st in
                   let t = parse_float st in
-                  if peek st == Comma && (match peek2 st with Num _ -> true | _ -> false) then
-                    not_supported tl "three texture indices per face (interpolated textures)";
+                  if index_follows () then not_supported tl "three texture indices per face (interpolated textures)";
                   if Float.of_int (int_of_float t) <> t || t < 0. || int_of_float t >= ntex then
                     Error.raise_at tl "texture index %g is out of range: the texture_list has %d" t ntex;
                   int_of_float t
@@ -1081,12 +1414,31 @@ and parse_mesh2 st loc =
   parse_object_mods st (new_obj shape loc) "mesh2"
 
 (* §2.7: every object gets a texture and an interior; a legacy finish ior goes into the interior. *)
-let finish_object (o : V.obj) : Scene.obj =
-  let texture = match o.texture with Some t -> t | None -> Defaults.texture in
+let finish_prim st (o : V.obj) shape : Scene.obj =
+  let texture = match o.texture with Some t -> t | None -> st.default_texture in
   let interior = match o.interior with Some i -> i | None -> Defaults.interior in
   let interior = match texture.finish.legacy_ior with Some ior -> { interior with ior } | None -> interior in
   let interior = if interior.ior = 0. then { interior with ior = 1. } else interior in
-  { Scene.shape = o.shape; texture; interior; no_shadow = o.no_shadow; loc = o.oloc }
+  { Scene.shape; texture; interior; no_shadow = o.no_shadow; loc = o.oloc }
+
+(* An object entering the scene (§16.4, §16.5): a union is dissolved, its members without a texture
+   or interior take the union's, and its no_shadow goes to every member; its lights join the scene's. *)
+let rec add_object st (o : V.obj) =
+  match o.shape with
+  | Prim shape -> st.objects <- finish_prim st o shape :: st.objects
+  | Union ms ->
+      List.iter
+        (function
+          | V.Member_light l -> st.lights <- l :: st.lights
+          | V.Member_obj c ->
+              add_object st
+                {
+                  c with
+                  texture = (match c.texture with Some _ -> c.texture | None -> o.texture);
+                  interior = (match c.interior with Some _ -> c.interior | None -> o.interior);
+                  no_shadow = c.no_shadow || o.no_shadow;
+                })
+        ms
 
 (* ---------------------------------------------------------------------------------------------- *)
 (* Camera, lights, settings *)
@@ -1096,6 +1448,11 @@ let empty_camera =
 
 let parse_camera st =
   open_block st "camera";
+  let base =
+    match peek st with
+    | Ident s -> ( match cur_value st s with Some (V.Camera c) -> advance st; c | _ -> empty_camera)
+    | _ -> empty_camera
+  in
   let rec loop c =
     let loc = peek_loc st in
     match peek st with
@@ -1112,7 +1469,7 @@ let parse_camera st =
     | Ident s when List.mem s unsupported -> not_supported loc (Printf.sprintf "'%s' in a camera" s)
     | _ -> unexpected st "a camera keyword or '}'"
   in
-  st.camera <- Some (loop empty_camera)
+  loop base
 
 (* §1.3: the camera modifiers are applied in a fixed order, whatever order they were written in. *)
 let build_camera st (c : camera_spec) : Scene.camera =
@@ -1151,30 +1508,6 @@ let build_camera st (c : camera_spec) : Scene.camera =
         (Vec.scale dl d, Vec.scale (if handedness > 0. then rl else -.rl) r, Vec.scale ul u)
   in
   { Scene.location = Vec.add location c.c_translate; direction; up; right }
-
-let parse_light st =
-  let loc = peek_loc st in
-  advance st;
-  open_block st "light_source";
-  let position = parse_vector st in
-  ignore (accept st Comma);
-  (* §10.2: the colour after the position; without one the light is black *)
-  let colour = if peek st == RBrace || (match peek st with Ident s -> List.mem s [ "shadowless"; "fade_distance"; "fade_power"; "translate" ] | _ -> false) then Rgb.black else parse_rgb st "a light colour" in
-  ignore loc;
-  let rec loop (l : Scene.light) =
-    let loc = peek_loc st in
-    match peek st with
-    | RBrace -> advance st; l
-    | Ident "shadowless" -> advance st; loop { l with shadowless = true }
-    | Ident "fade_distance" -> advance st; loop { l with fade_distance = parse_float st }
-    | Ident "fade_power" -> advance st; loop { l with fade_power = parse_float st }
-    | Ident "translate" -> advance st; loop { l with position = Vec.add l.position (parse_vector st) }
-    | Ident ("color" | "colour" | "rgb") -> loop { l with colour = parse_rgb st "a light colour" }
-    | Ident s when List.mem s unsupported -> not_supported loc (Printf.sprintf "'%s' in a light_source" s)
-    | _ -> unexpected st "a light_source keyword or '}'"
-  in
-  let l = loop { Scene.position; colour; shadowless = false; fade_distance = 0.; fade_power = 0. } in
-  st.lights <- l :: st.lights
 
 let parse_global_settings st =
   open_block st "global_settings";
@@ -1243,69 +1576,458 @@ let parse_background st =
 (* ---------------------------------------------------------------------------------------------- *)
 (* Declarations and statements *)
 
-let parse_declare st =
-  let dloc = peek_loc st in
+(* The value of a #declare or of a macro argument (the parser's "rvalue"), and whether a ';' should
+   follow it (§11.3: after floats, vectors, colours and strings). *)
+let rec parse_rvalue st : V.t * bool =
+  let loc = peek_loc st in
+  match peek st with
+  | Ident "light_source" -> (V.Light (parse_light st), false)
+  | Ident s when List.mem s object_keywords -> (V.Object (parse_object st), false)
+  | Ident "pigment" -> advance st; (V.Pigment (parse_pigment st (Scene.Solid Colour.black)), false)
+  | Ident "finish" -> advance st; (V.Finish (parse_finish st Defaults.finish), false)
+  | Ident "texture" -> advance st; (V.Texture (parse_texture st st.default_texture), false)
+  | Ident "interior" -> advance st; (V.Interior (parse_interior st Defaults.interior), false)
+  | Ident "camera" -> advance st; (V.Camera (parse_camera st), false)
+  | Ident "array" -> (parse_array st, false)
+  | Ident s when List.mem s unsupported_objects || List.mem s unsupported_rvalues -> not_supported loc (Printf.sprintf "'%s'" s)
+  | Ident s -> (
+      match cur_value st s with
+      | Some (V.Object o) -> advance st; (V.Object { o with oloc = loc }, false)
+      | Some ((V.Pigment _ | V.Finish _ | V.Texture _ | V.Interior _ | V.Light _ | V.Camera _ | V.Stream _ | V.Unsupported _) as v) ->
+          advance st; (v, false)
+      | Some (V.Array a) -> advance st; (V.Array { a with cells = Array.copy a.cells }, false)
+      | _ -> (parse_expr st, true))
+  | _ -> (parse_expr st, true)
+
+(* Values povml cannot make yet; a declaration of one is kept as [V.Unsupported]. *)
+and unsupported_rvalues =
+  [ "material"; "normal"; "color_map"; "colour_map"; "pigment_map"; "normal_map"; "texture_map"; "slope_map";
+    "function"; "spline"; "media"; "density"; "fog"; "rainbow"; "sky_sphere"; "transform"; "isosurface" ]
+
+(* array[d1][d2]… [{ initialisers }] (§11.2). *)
+and parse_array st =
+  let loc = peek_loc st in
   advance st;
+  let rec dims acc =
+    if peek st == LBracket then begin
+      advance st;
+      let l = peek_loc st in
+      let n = parse_float st in
+      if n < 1. || Float.of_int (int_of_float n) <> n then Error.raise_at l "an array dimension must be a whole number of at least 1, not %g" n;
+      expect st RBracket "']' after an array dimension";
+      dims (int_of_float n :: acc)
+    end
+    else List.rev acc
+  in
+  let dims = Array.of_list (dims []) in
+  if Array.length dims = 0 then Error.raise_at loc "'array' needs a size: array[N]";
+  let total = Array.fold_left ( * ) 1 dims in
+  if total > 50_000_000 then Error.raise_at loc "this array would have %d elements; the limit is 50,000,000" total;
+  let cells = Array.make total None in
+  if peek st == LBrace then begin
+    (* nested braces, one level per dimension *)
+    let rec fill_level d offset =
+      let bl = peek_loc st in
+      expect st LBrace "'{' of an array initialiser";
+      let stride = Array.fold_left ( * ) 1 (Array.sub dims (d + 1) (Array.length dims - d - 1)) in
+      for i = 0 to dims.(d) - 1 do
+        if i > 0 then expect st Comma "',' between array elements";
+        if peek st == RBrace then Error.raise_at bl "this initialiser has %d elements; the array dimension is %d" i dims.(d);
+        if d = Array.length dims - 1 then cells.(offset + i) <- Some (fst (parse_rvalue st))
+        else fill_level (d + 1) (offset + (i * stride))
+      done;
+      ignore (accept st Comma);
+      if peek st != RBrace then Error.raise_at (peek_loc st) "too many elements in an array initialiser: the dimension is %d" dims.(d);
+      advance st
+    in
+    fill_level 0 0
+  end;
+  V.Array { dims; cells }
+
+(* The subscripts [i][j]… of an element of [a], as a row-major index. *)
+let parse_index st (a : V.array_v) =
+  let n = Array.length a.dims in
+  let rec go d acc =
+    if d = n then acc
+    else begin
+      expect st LBracket "'[' of an array subscript";
+      let l = peek_loc st in
+      let i = parse_float st in
+      let i = int_of_float i in
+      if i < 0 || i >= a.dims.(d) then Error.raise_at l "array subscript %d is out of range 0 … %d" i (a.dims.(d) - 1);
+      expect st RBracket "']' closing an array subscript";
+      go (d + 1) ((acc * a.dims.(d)) + i)
+    end
+  in
+  go 0 0
+
+(* Where #declare and #local write (§11.3): an existing identifier is changed where it is found (the
+   innermost table that has it), a new one goes to the global table for #declare and to the current
+   table (file or macro) for #local. *)
+let assign st ~local name value =
+  let current = List.hd st.tables in
+  match (local, lookup_cell st name) with
+  | true, _ -> (
+      match Hashtbl.find_opt current name with Some c -> c := value | None -> Hashtbl.replace current name (ref value))
+  | false, Some c -> c := value
+  | false, None -> Hashtbl.replace st.global name (ref value)
+
+(* After an unsupported feature inside a declaration: skip the rest of the declared value, that is
+   the blocks it opened, or at its own level up to a ';' or through its first block. *)
+let skip_declaration st d0 =
+  let rec close () = if st.depth > d0 && peek st != Eof then (advance st; close ()) in
+  if st.depth > d0 then close ()
+  else
+    let rec scan () =
+      match peek st with
+      | Semi | RBrace | Eof -> ()
+      | LBrace -> advance st; close ()
+      | _ -> advance st; scan ()
+    in
+    scan ()
+
+let parse_declare st ~local dloc =
   let nloc = peek_loc st in
-  let name =
-    match peek st with
+  st.no_expand <- true;
+  let k = Fun.protect ~finally:(fun () -> st.no_expand <- false) (fun () -> peek st) in
+  let target =
+    match k with
     | Ident s when is_keyword s -> Error.raise_at nloc "'%s' is a keyword and cannot be declared" s
-    | Ident s -> advance st; s
-    | _ -> unexpected st "an identifier to declare"
-  in
-  ignore dloc;
-  expect st Eq (Printf.sprintf "'=' after '%s'" name);
-  let rloc = peek_loc st in
-  let value, needs_semi =
-    match peek st with
-    | Ident ("sphere" | "plane" | "object" | "triangle" | "smooth_triangle" | "mesh" | "mesh2") -> (V.Object (parse_object st), false)
-    | Ident "pigment" -> advance st; (V.Pigment (parse_pigment st (Scene.Solid Colour.black)), false)
-    | Ident "finish" -> advance st; (V.Finish (parse_finish st Defaults.finish), false)
-    | Ident "texture" -> advance st; (V.Texture (parse_texture st Defaults.texture), false)
-    | Ident "interior" -> advance st; (V.Interior (parse_interior st Defaults.interior), false)
     | Ident s -> (
-        match lookup st s with
-        | Some (V.Object o) -> advance st; (V.Object { o with oloc = rloc }, false)
-        | Some ((V.Pigment _ | V.Finish _ | V.Texture _ | V.Interior _) as v) -> advance st; (v, false)
-        | _ -> (parse_expr st, true))
-    | _ -> (parse_expr st, true)
+        match st.cur_elem with
+        | Some (a, i) -> advance st; `Element (s, a, i)
+        | None -> advance st; `Name s)
+    | _ -> unexpected st (Printf.sprintf "an identifier after '#%s'" (if local then "local" else "declare"))
   in
-  if needs_semi && not (accept st Semi) then
+  let name = match target with `Name s | `Element (s, _, _) -> s in
+  expect st Eq (Printf.sprintf "'=' after '%s'" name);
+  let d0 = st.depth in
+  let value, needs_semi =
+    try parse_rvalue st
+    with Unsupported (l, what, _) ->
+      (* a declaration povml cannot make yet is no error until it is used (issue: include files
+         declare much more than a scene uses) *)
+      skip_declaration st d0;
+      if List.length st.frames = 1 then warn st dloc "'%s' uses %s, which povml does not support yet; using it will be an error" name what;
+      (V.Unsupported { what; at = l }, false)
+  in
+  (* the value is stored before anything after it is read: the next token may be a directive *)
+  (match target with
+  | `Name s -> assign st ~local s value
+  | `Element (_, a, i) -> a.cells.(i) <- Some value);
+  if needs_semi && not (accept st Semi) then begin
     if st.version >= 350 then
       warn st (peek_loc st) "all #declares of float, vector, and color require semicolon ';' at end if the language version is 3.5 or higher"
-    else ()
-  else ignore (accept st Semi);
-  Hashtbl.replace st.table name value
+  end
+  else if not needs_semi then ignore (accept st Semi)
+
+let read_file path =
+  let at = { Loc.none with file = path } in
+  let reason msg =
+    (* Sys_error reads "path: reason"; the path is already in the location *)
+    let p = path ^ ": " in
+    if String.length msg > String.length p && String.sub msg 0 (String.length p) = p then
+      String.sub msg (String.length p) (String.length msg - String.length p)
+    else msg
+  in
+  if Sys.file_exists path && Sys.is_directory path then Error.raise_at at "this is a directory, not a scene file";
+  match open_in_bin path with
+  | exception Sys_error msg -> Error.raise_at at "cannot open the scene file: %s" (reason msg)
+  | ic ->
+      Fun.protect ~finally:(fun () -> close_in_noerr ic) (fun () ->
+          match really_input_string ic (in_channel_length ic) with
+          | s -> s
+          | exception Sys_error msg -> Error.raise_at at "cannot read the scene file: %s" (reason msg))
+
+(* ---------------------------------------------------------------------------------------------- *)
+(* Directives (§11.3): run as the token stream is read *)
+
+let block_openers = [ "if"; "ifdef"; "ifndef"; "while"; "for"; "switch"; "macro" ]
+
+(* Skip raw tokens of the current frame (a branch not taken, a loop that ends, a macro definition)
+   up to the #end at this level, or up to one of [stops] at this level; returns what it stopped at. *)
+let skip st ~stops open_loc what =
+  let f = top st in
+  let rec go depth =
+    let t = Lexer.next f.lx in
+    match t.kind with
+    | Eof -> Error.raise_at open_loc "%s has no matching #end" what
+    | Directive d when List.mem d block_openers -> go (depth + 1)
+    | Directive "end" -> if depth = 0 then `End else go (depth - 1)
+    | Directive d when depth = 0 && List.mem d stops -> `Stop (d, t.loc)
+    | _ -> go depth
+  in
+  go 0
+
+let skip_to_end st open_loc what = ignore (skip st ~stops:[] open_loc what)
+
+(* (expression): the condition of #if, #while, #switch, #case. Read without looking past the ')',
+   so nothing after it runs before the directive has decided. *)
+let cond_value st what =
+  if peek st != LParen then unexpected st (Printf.sprintf "'(' after '#%s'" what);
+  advance st;
+  let l = peek_loc st in
+  let v = parse_full st in
+  expect st RParen (Printf.sprintf "')' closing the condition of '#%s'" what);
+  match v with V.Float f -> f | v -> Error.raise_at l "the condition of '#%s' must be a float, not %s" what (V.kind_name v)
+
+(* A string argument (#include, #debug …), also read without looking past it. *)
+let string_arg st what =
+  let l = peek_loc st in
+  match parse_primary st with
+  | V.String s -> s
+  | v -> Error.raise_at l "'#%s' needs a string, not %s" what (V.kind_name v)
+
+let push_cond st c = let f = top st in f.conds <- c :: f.conds
+
+let pop_cond st = let f = top st in f.conds <- List.tl f.conds
+
+(* #if (c) / #elseif chain, from a condition already evaluated to [c]. *)
+let rec run_if st c loc =
+  if c then push_cond st (If_branch loc)
+  else
+    match skip st ~stops:[ "else"; "elseif" ] loc "#if" with
+    | `End -> ()
+    | `Stop ("else", _) -> push_cond st (If_branch loc)
+    | `Stop (_, l) -> run_if st (truth (cond_value st "elseif")) l
+
+(* Look for the #case, #range or #else of a #switch that matches. *)
+let rec find_case st (sw : cond) =
+  match sw with
+  | Switch_case r -> (
+      match skip st ~stops:[ "case"; "range"; "else" ] r.sloc "#switch" with
+      | `End -> pop_cond st
+      | `Stop ("else", _) -> r.running <- true
+      | `Stop ("case", _) -> if Float.abs (cond_value st "case" -. r.value) < 1e-10 then r.running <- true else find_case st sw
+      | `Stop (_, _) ->
+          let lo, hi = range_args st in
+          if lo <= r.value && r.value <= hi then r.running <- true else find_case st sw)
+  | If_branch _ | While_loop _ | For_loop _ -> ()
+
+and range_args st =
+  expect st LParen "'(' after '#range'";
+  let lo = parse_float st in
+  expect st Comma "',' between the bounds of '#range'";
+  let hi = parse_float st in
+  expect st RParen "')' closing '#range'";
+  (lo, hi)
+
+let max_include_depth = 64
+let max_macro_depth = 10_000
+
+let directive_names =
+  [ "declare"; "local"; "undef"; "version"; "include"; "if"; "ifdef"; "ifndef"; "elseif"; "else"; "end"; "while";
+    "for"; "switch"; "case"; "range"; "break"; "macro"; "debug"; "warning"; "error"; "default"; "fopen"; "fclose";
+    "read"; "write"; "render"; "statistics" ]
+
+let directive st d loc =
+  let f = top st in
+  match d with
+  | "declare" | "local" -> parse_declare st ~local:(d = "local") loc
+  | "undef" -> (
+      st.no_expand <- true;
+      let k = Fun.protect ~finally:(fun () -> st.no_expand <- false) (fun () -> peek st) in
+      match k with
+      | Ident s ->
+          advance st;
+          (match List.find_opt (fun t -> Hashtbl.mem t s) st.tables with
+          | Some t -> Hashtbl.remove t s
+          | None -> warn st loc "attempt to #undef the unknown identifier '%s'" s)
+      | _ -> unexpected st "an identifier after '#undef'")
+  | "version" ->
+      let v = parse_float st in
+      ignore (accept st Semi);
+      st.version <- int_of_float ((v *. 100.) +. 0.5);
+      st.version_set <- true
+  | "include" -> (
+      let name = string_arg st "include" in
+      if st.includes >= max_include_depth then
+        Error.raise_at loc "includes are nested more than %d deep (does a file include itself?)" max_include_depth;
+      match find_file st name with
+      | None ->
+          Error.raise_at loc "cannot find the include file \"%s\" (searched %s)" name (String.concat ", " (include_dirs st))
+      | Some path ->
+          let text = read_file path in
+          st.frames <- { lx = Lexer.create ~file:path text; kind = Included loc; conds = [] } :: st.frames;
+          st.tables <- Hashtbl.create 16 :: st.tables;
+          st.includes <- st.includes + 1)
+  | "if" -> run_if st (truth (cond_value st "if")) loc
+  | "ifdef" | "ifndef" ->
+      expect st LParen (Printf.sprintf "'(' after '#%s'" d);
+      let def = parse_defined_arg st in
+      expect st RParen (Printf.sprintf "')' closing '#%s'" d);
+      run_if st (if d = "ifdef" then def else not def) loc
+  | "else" | "elseif" -> (
+      match f.conds with
+      | If_branch l :: _ -> pop_cond st; skip_to_end st l "#if"
+      | Switch_case { running = true; _ } :: _ when d = "else" -> () (* falls through, as #case does *)
+      | _ -> Error.raise_at loc "'#%s' without a matching #if" d)
+  | "end" -> (
+      match f.conds with
+      | If_branch _ :: _ | Switch_case _ :: _ -> pop_cond st
+      | While_loop (m, l) :: _ ->
+          Lexer.reset f.lx m;
+          if not (truth (cond_value st "while")) then begin pop_cond st; skip_to_end st l "#while" end
+      | For_loop r :: _ -> (
+          match !(r.var) with
+          | V.Float i ->
+              let i = i +. r.step in
+              r.var := V.Float i;
+              if (r.step > 0. && i <= r.stop +. 1e-10) || (r.step < 0. && i >= r.stop -. 1e-10) then Lexer.reset f.lx r.body
+              else pop_cond st
+          | v -> Error.raise_at r.floc "the #for variable was changed to %s inside the loop" (V.kind_name v))
+      | [] -> (
+          match f.kind with
+          | Macro_body _ ->
+              st.frames <- List.tl st.frames;
+              st.tables <- List.tl st.tables;
+              st.macro_depth <- st.macro_depth - 1
+          | Main | Included _ -> Error.raise_at loc "'#end' without a matching #if, #while, #for, #switch or #macro"))
+  | "while" ->
+      let m = Lexer.mark f.lx in
+      if truth (cond_value st "while") then push_cond st (While_loop (m, loc)) else skip_to_end st loc "#while"
+  | "for" ->
+      expect st LParen "'(' after '#for'";
+      st.no_expand <- true;
+      let k = Fun.protect ~finally:(fun () -> st.no_expand <- false) (fun () -> peek st) in
+      let name = match k with Ident s when not (is_keyword s) -> advance st; s | _ -> unexpected st "the loop variable of '#for'" in
+      expect st Comma "',' after the #for variable";
+      let start = parse_float st in
+      expect st Comma "',' after the start value of '#for'";
+      let stop = parse_float st in
+      let sl = peek_loc st in
+      let step = if accept st Comma then parse_float st else 1. in
+      expect st RParen "')' closing '#for'";
+      assign st ~local:true name (V.Float start);
+      let var = Option.get (lookup_cell st name) in
+      if Float.abs step < 1e-10 then Error.raise_at sl "the step of '#for' must not be 0";
+      if (step > 0. && start < stop +. 1e-10) || (step < 0. && start > stop -. 1e-10) then
+        push_cond st (For_loop { var; stop; step; body = Lexer.mark f.lx; floc = loc })
+      else skip_to_end st loc "#for"
+  | "switch" ->
+      let v = cond_value st "switch" in
+      let sw = Switch_case { value = v; running = false; sloc = loc } in
+      push_cond st sw;
+      find_case st sw
+  | "case" | "range" -> (
+      match f.conds with
+      | Switch_case { running = true; _ } :: _ ->
+          (* no #break before it: execution falls through *)
+          if d = "case" then ignore (cond_value st "case") else ignore (range_args st)
+      | _ -> Error.raise_at loc "'#%s' outside a #switch" d)
+  | "break" -> (
+      (* leave the innermost #switch, #while or #for, closing the branches opened inside it *)
+      let rec out conds skipped =
+        match conds with
+        | (If_branch _) :: rest -> out rest (skipped + 1)
+        | (Switch_case _ | While_loop _ | For_loop _) :: rest ->
+            f.conds <- rest;
+            for _ = 0 to skipped do skip_to_end st loc "#break" done
+        | [] -> (
+            match f.kind with
+            | Macro_body _ ->
+                (* #break in a macro returns from it *)
+                st.frames <- List.tl st.frames;
+                st.tables <- List.tl st.tables;
+                st.macro_depth <- st.macro_depth - 1
+            | Main | Included _ -> Error.raise_at loc "'#break' outside a #switch, #while, #for or macro")
+      in
+      out f.conds 0)
+  | "macro" ->
+      st.no_expand <- true;
+      let k = Fun.protect ~finally:(fun () -> st.no_expand <- false) (fun () -> peek st) in
+      let name = match k with Ident s when not (is_keyword s) -> advance st; s | _ -> unexpected st "a macro name after '#macro'" in
+      expect st LParen (Printf.sprintf "'(' after the macro name '%s'" name);
+      let rec params acc =
+        st.no_expand <- true;
+        let k = Fun.protect ~finally:(fun () -> st.no_expand <- false) (fun () -> peek st) in
+        match k with
+        | RParen -> advance st; List.rev acc
+        | Ident p when not (is_keyword p) ->
+            advance st;
+            ignore (accept st Comma);
+            params (p :: acc)
+        | _ -> unexpected st "a parameter name or ')'"
+      in
+      let params = params [] in
+      let m = { V.mname = name; params; source = f.lx; body = Lexer.mark f.lx; mloc = loc } in
+      skip_to_end st loc (Printf.sprintf "#macro %s" name);
+      Hashtbl.replace st.global name (ref (V.Macro m))
+  | "debug" -> st.opts.debug (string_arg st "debug")
+  | "warning" -> let s = string_arg st "warning" in warn st loc "%s" s
+  | "error" -> let s = string_arg st "error" in Error.raise_at loc "#error: %s" s
+  | "default" ->
+      open_block st "#default";
+      let rec loop () =
+        let l = peek_loc st in
+        match peek st with
+        | RBrace -> advance st
+        | Ident "texture" -> advance st; st.default_texture <- parse_texture st st.default_texture; loop ()
+        | Ident "pigment" -> advance st; st.default_texture <- { st.default_texture with pigment = parse_pigment st st.default_texture.pigment }; loop ()
+        | Ident "finish" -> advance st; st.default_texture <- { st.default_texture with finish = parse_finish st st.default_texture.finish }; loop ()
+        | Ident s when List.mem s [ "normal"; "radiosity"; "media" ] -> not_supported l (Printf.sprintf "'%s' in #default" s)
+        | _ -> unexpected st "'texture', 'pigment', 'finish' or '}' in #default"
+      in
+      loop ()
+  | "fopen" | "fclose" | "read" | "write" -> not_supported loc (Printf.sprintf "'#%s'" d)
+  | "render" | "statistics" -> st.opts.debug (string_arg st d)
+  | _ -> (
+      match Suggest.nearest d directive_names with
+      | [] -> Error.raise_at loc "unknown directive '#%s'" d
+      | s -> Error.raise_at loc "unknown directive '#%s'; did you mean %s?" d (String.concat " or " (List.map (Printf.sprintf "'#%s'") s)))
+
+(* A macro call (§11.3): the arguments are read in the caller, an identifier standing alone is
+   passed by reference, then the body is read in a table of its own. *)
+let invoke st (m : V.macro) loc =
+  if st.macro_depth >= max_macro_depth then
+    Error.raise_at loc "macro calls are nested more than %d deep (does '%s' call itself without end?)" max_macro_depth m.mname;
+  expect st LParen (Printf.sprintf "'(' after the macro name '%s'" m.mname);
+  let table = Hashtbl.create 8 in
+  let nparams = List.length m.params in
+  List.iteri
+    (fun i p ->
+      if peek st == RParen then
+        raise
+          (Error.Scene_error
+             { loc = peek_loc st; msg = Printf.sprintf "macro '%s' takes %d argument%s, this call gives %d" m.mname nparams (if nparams = 1 then "" else "s") i; notes = [ (m.mloc, "the macro is defined here") ] });
+      if i > 0 then expect st Comma "',' between macro arguments";
+      let by_ref =
+        match peek st with
+        | Ident s when st.cur_elem = None -> (
+            match lookup_cell st s with
+            | Some c when (match Lexer.next_char (top st).lx with Some (',' | ')') -> true | _ -> false) -> advance st; Some c
+            | _ -> None)
+        | _ -> None
+      in
+      let cell = match by_ref with Some c -> c | None -> ref (fst (parse_rvalue st)) in
+      Hashtbl.replace table p cell)
+    m.params;
+  if peek st != RParen then
+    raise
+      (Error.Scene_error
+         { loc = peek_loc st; msg = Printf.sprintf "too many arguments for macro '%s', which takes %d" m.mname nparams; notes = [ (m.mloc, "the macro is defined here") ] });
+  advance st;
+  st.tables <- table :: st.tables;
+  st.frames <- { lx = Lexer.at m.source m.body; kind = Macro_body (m.mname, loc); conds = [] } :: st.frames;
+  st.macro_depth <- st.macro_depth + 1
+
+(* ---------------------------------------------------------------------------------------------- *)
+(* Statements *)
 
 let rec parse_statements st =
   let loc = peek_loc st in
   match peek st with
   | Eof -> ()
-  | Directive "version" ->
-      advance st;
-      let v = parse_float st in
-      ignore (accept st Semi);
-      st.version <- int_of_float ((v *. 100.) +. 0.5);
-      st.version_set <- true;
-      parse_statements st
-  | Directive ("declare" | "local") -> parse_declare st; parse_statements st
-  | Directive d when List.mem d unsupported_directives -> not_supported loc (Printf.sprintf "'#%s'" d)
-  | Directive d -> Error.raise_at loc "unknown directive '#%s'" d
   | Ident "camera" ->
       advance st;
       if st.camera <> None then warn st loc "more than one camera in scene; ignoring previous camera(s)";
-      parse_camera st;
+      st.camera <- Some (parse_camera st);
       parse_statements st
-  | Ident "light_source" -> parse_light st; parse_statements st
+  | Ident "light_source" -> st.lights <- parse_light st :: st.lights; parse_statements st
   | Ident "background" -> parse_background st; parse_statements st
   | Ident "sky_sphere" -> parse_sky_sphere st; parse_statements st
   | Ident "global_settings" -> advance st; parse_global_settings st; parse_statements st
-  | Ident ("sphere" | "plane" | "object" | "triangle" | "smooth_triangle" | "mesh" | "mesh2") ->
-      st.objects <- finish_object (parse_object st) :: st.objects;
-      parse_statements st
-  | Ident s when (match lookup st s with Some (V.Object _) -> true | _ -> false) ->
-      st.objects <- finish_object (parse_object st) :: st.objects;
-      parse_statements st
+  | _ when object_follows st -> add_object st (parse_object st); parse_statements st
   | _ -> unexpected st "an object, light_source, camera or directive"
 
 let finish_scene st : Scene.t =
@@ -1344,36 +2066,42 @@ let finish_scene st : Scene.t =
     gamma;
   }
 
+(* Where the reading was when an error arose: the include and macro-call chain, innermost first. *)
+let chain st =
+  List.filter_map
+    (fun f ->
+      match f.kind with
+      | Main -> None
+      | Included l -> Some (l, "in the file included from here")
+      | Macro_body (name, l) -> Some (l, Printf.sprintf "in macro '%s' called from here" name))
+    st.frames
+
 let load_string opts ~file text =
   let lexer = Lexer.create ~file text in
-  let cur = Lexer.next lexer in
+  let global = Hashtbl.create 256 in
   let st =
     {
-      lexer; cur; ahead = None; opts; table = Hashtbl.create 64; version = 370; version_set = false; warnings = [];
+      frames = [ { lx = lexer; kind = Main; conds = [] } ];
+      cur = { Token.kind = Eof; loc = Loc.none }; have = false; cur_elem = None; no_expand = false; streams = [||];
+      depth = 0; opts; global; tables = [ global ]; includes = 0; macro_depth = 0;
+      version = 370; version_set = false; warnings = [];
       objects = []; lights = []; camera = None; background = None; sky = None;
       assumed_gamma = None; max_trace_level = 5; adc_bailout = 1. /. 255.; ambient_light = Rgb.white;
+      default_texture = Defaults.texture;
+      directive = (fun _ _ _ -> ()); invoke = (fun _ _ _ -> ()); index = (fun _ _ -> 0);
     }
   in
-  parse_statements st;
+  st.directive <- directive;
+  st.invoke <- invoke;
+  st.index <- parse_index;
+  (try parse_statements st with
+  | Unsupported (loc, what, notes) ->
+      raise (Error.Scene_error { loc; msg = "not supported yet: " ^ what; notes = notes @ chain st })
+  | Error.Scene_error e -> raise (Error.Scene_error { e with notes = e.notes @ chain st }));
   let scene = finish_scene st in
   (scene, List.rev st.warnings)
 
-let read_file path =
-  let at = { Loc.none with file = path } in
-  let reason msg =
-    (* Sys_error reads "path: reason"; the path is already in the location *)
-    let p = path ^ ": " in
-    if String.length msg > String.length p && String.sub msg 0 (String.length p) = p then
-      String.sub msg (String.length p) (String.length msg - String.length p)
-    else msg
-  in
-  if Sys.file_exists path && Sys.is_directory path then Error.raise_at at "this is a directory, not a scene file";
-  match open_in_bin path with
-  | exception Sys_error msg -> Error.raise_at at "cannot open the scene file: %s" (reason msg)
-  | ic ->
-      Fun.protect ~finally:(fun () -> close_in_noerr ic) (fun () ->
-          match really_input_string ic (in_channel_length ic) with
-          | s -> s
-          | exception Sys_error msg -> Error.raise_at at "cannot read the scene file: %s" (reason msg))
+let default_options ~width ~height =
+  { width; height; clock = 0.; library_paths = []; debug = (fun s -> prerr_string s; flush stderr) }
 
 let load_file opts path = load_string opts ~file:path (read_file path)

@@ -1,7 +1,16 @@
 (** The scene-language interpreter: text to an immutable [Scene.t] (POVRAY-3.7 §11). *)
 
-type options = { width : int; height : int }
-(** What the scene can see of the command line: [image_width] and [image_height]. *)
+(** What the scene can see of the command line. *)
+type options = {
+  width : int;  (** [image_width] *)
+  height : int;  (** [image_height] *)
+  clock : float;  (** [clock], from +K *)
+  library_paths : string list;  (** +L directories, searched for include files after the scene's *)
+  debug : string -> unit;  (** receives the text of [#debug] as it is read *)
+}
+
+val default_options : width:int -> height:int -> options
+(** [default_options ~width ~height] has clock 0, no library paths, and [#debug] text on stderr. *)
 
 val load_string : options -> file:string -> string -> Scene.t * Error.t list
 (** [load_string opts ~file text] interprets [text] (named [file] in locations) and returns the scene

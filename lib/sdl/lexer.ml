@@ -241,3 +241,38 @@ let tokenize ~file text =
   let lx = create ~file text in
   let rec all acc = match next lx with { kind = Eof; _ } as t -> List.rev (t :: acc) | t -> all (t :: acc) in
   Array.of_list (all [])
+
+(* Positions to come back to: a #while loop re-reads its condition, a macro body starts where it was
+   written. A mark is taken between tokens. *)
+type mark = { m_pos : int; m_line : int; m_bol : int }
+
+let mark lx = { m_pos = lx.pos; m_line = lx.line; m_bol = lx.bol }
+let reset lx m = lx.pos <- m.m_pos; lx.line <- m.m_line; lx.bol <- m.m_bol
+let file lx = lx.file
+let text lx = lx.text
+
+(* A second reader of the same text, starting at [m] (a macro body). *)
+let at lx m = { lx with pos = m.m_pos; line = m.m_line; bol = m.m_bol }
+
+(* The next character that is not blank or inside a comment, without moving: whether an argument
+   that is a bare identifier ends there (',' or ')'). *)
+let next_char lx =
+  let text = lx.text and len = lx.len in
+  let rec go p =
+    if p >= len then None
+    else
+      match text.[p] with
+      | ' ' | '\t' | '\r' | '\n' | '\012' | '\011' -> go (p + 1)
+      | '/' when p + 1 < len && text.[p + 1] = '/' ->
+          (match String.index_from_opt text p '\n' with Some q -> go q | None -> None)
+      | '/' when p + 1 < len && text.[p + 1] = '*' ->
+          let rec close p depth =
+            if p + 1 >= len then len
+            else if text.[p] = '*' && text.[p + 1] = '/' then (if depth = 1 then p + 2 else close (p + 2) (depth - 1))
+            else if text.[p] = '/' && text.[p + 1] = '*' then close (p + 2) (depth + 1)
+            else close (p + 1) depth
+          in
+          go (close (p + 2) 1)
+      | c -> Some c
+  in
+  go lx.pos

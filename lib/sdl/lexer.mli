@@ -20,3 +20,24 @@ val scan_vector3 : t -> float array -> bool
 
 val tokenize : file:string -> string -> Token.t array
 (** [tokenize ~file text] is every token of [text] followed by [Eof] (for tests and tools). *)
+
+(** A position between two tokens. *)
+type mark
+
+val mark : t -> mark
+(** [mark lx] is the position [lx] reads from next. *)
+
+val reset : t -> mark -> unit
+(** [reset lx m] makes [lx] read from [m] again (a [#while] re-reading its condition). *)
+
+val at : t -> mark -> t
+(** [at lx m] is a new reader of [lx]'s text starting at [m] (a macro body). *)
+
+val file : t -> string
+(** [file lx] is the file name the locations of [lx] carry. *)
+
+val text : t -> string
+(** [text lx] is the whole text [lx] reads. *)
+
+val next_char : t -> char option
+(** [next_char lx] is the next character that is neither blank nor in a comment, without moving. *)

@@ -1,10 +1,33 @@
 type obj = {
-  shape : Scene.shape;
+  shape : shape;
   texture : Scene.texture option;
   interior : Scene.interior option;
   no_shadow : bool;
   oloc : Loc.t;
 }
+
+(** A primitive, or a union whose members are dissolved into the scene (POVRAY-3.7 §16.4). *)
+and shape = Prim of Scene.shape | Union of member list
+
+and member = Member_obj of obj | Member_light of Scene.light
+
+(** The camera as written; the rules of §1.3 are applied when the scene is finished. *)
+type camera_spec = {
+  c_location : Vec.t option;
+  c_direction : Vec.t option;
+  c_up : Vec.t option;
+  c_right : Vec.t option;
+  c_sky : Vec.t option;
+  c_look_at : (Vec.t * Loc.t) option;
+  c_angle : (float * Loc.t) option;
+  c_translate : Vec.t;
+}
+
+(** A macro: its parameters and where its body starts in the text that defines it. *)
+type macro = { mname : string; params : string list; source : Lexer.t; body : Lexer.mark; mloc : Loc.t }
+
+(** A random stream made by [seed(n)] (§11.2). *)
+type stream = { mutable state : int }
 
 type t =
   | Float of float
@@ -16,6 +39,16 @@ type t =
   | Texture of Scene.texture
   | Interior of Scene.interior
   | Object of obj
+  | Light of Scene.light
+  | Camera of camera_spec
+  | Array of array_v
+  | Macro of macro
+  | Stream of stream
+  | Unsupported of { what : string; at : Loc.t }
+      (** a declaration that uses a feature povml cannot render yet: an error only where it is used *)
+
+(** An array: its dimensions and its elements in row-major order, [None] until assigned. *)
+and array_v = { dims : int array; cells : t option array }
 
 let kind_name = function
   | Float _ -> "a float"
@@ -27,18 +60,24 @@ let kind_name = function
   | Texture _ -> "a texture"
   | Interior _ -> "an interior"
   | Object _ -> "an object"
+  | Light _ -> "a light_source"
+  | Camera _ -> "a camera"
+  | Array a -> Printf.sprintf "an array of %s" (String.concat "×" (List.map string_of_int (Array.to_list a.dims)))
+  | Macro _ -> "a macro"
+  | Stream _ -> "a random stream"
+  | Unsupported u -> Printf.sprintf "a value that uses %s" u.what
 
 let terms = function
   | Float _ -> 1
   | Vector a | Colour a -> Array.length a
-  | String _ | Pigment _ | Finish _ | Texture _ | Interior _ | Object _ -> 0
+  | String _ | Pigment _ | Finish _ | Texture _ | Interior _ | Object _ | Light _ | Camera _ | Array _ | Macro _ | Stream _ | Unsupported _ -> 0
 
 (* POVRAY-3.7 §11.2: a float is replicated into every term, a shorter vector is padded with zeros. *)
 let promote v n =
   match v with
   | Float f -> Array.make n f
   | Vector a | Colour a -> Array.init n (fun i -> if i < Array.length a then a.(i) else 0.)
-  | String _ | Pigment _ | Finish _ | Texture _ | Interior _ | Object _ -> invalid_arg "Value.promote"
+  | String _ | Pigment _ | Finish _ | Texture _ | Interior _ | Object _ | Light _ | Camera _ | Array _ | Macro _ | Stream _ | Unsupported _ -> invalid_arg "Value.promote"
 
 let numeric v = terms v > 0
 
@@ -57,4 +96,4 @@ let map f = function
   | Float x -> Some (Float (f x))
   | Vector a -> Some (Vector (Array.map f a))
   | Colour a -> Some (Colour (Array.map f a))
-  | String _ | Pigment _ | Finish _ | Texture _ | Interior _ | Object _ -> None
+  | String _ | Pigment _ | Finish _ | Texture _ | Interior _ | Object _ | Light _ | Camera _ | Array _ | Macro _ | Stream _ | Unsupported _ -> None

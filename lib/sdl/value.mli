@@ -2,12 +2,35 @@
 
 (** An object as declared: its texture and interior are filled in only when it enters the scene. *)
 type obj = {
-  shape : Scene.shape;
+  shape : shape;
   texture : Scene.texture option;
   interior : Scene.interior option;
   no_shadow : bool;
   oloc : Loc.t;
 }
+
+(** A primitive, or a union whose members are dissolved into the scene (POVRAY-3.7 §16.4). *)
+and shape = Prim of Scene.shape | Union of member list
+
+and member = Member_obj of obj | Member_light of Scene.light
+
+(** The camera as written; the rules of §1.3 are applied when the scene is finished. *)
+type camera_spec = {
+  c_location : Vec.t option;
+  c_direction : Vec.t option;
+  c_up : Vec.t option;
+  c_right : Vec.t option;
+  c_sky : Vec.t option;
+  c_look_at : (Vec.t * Loc.t) option;
+  c_angle : (float * Loc.t) option;
+  c_translate : Vec.t;
+}
+
+(** A macro: its parameters and where its body starts in the text that defines it. *)
+type macro = { mname : string; params : string list; source : Lexer.t; body : Lexer.mark; mloc : Loc.t }
+
+(** A random stream made by [seed(n)] (§11.2). *)
+type stream = { mutable state : int }
 
 type t =
   | Float of float
@@ -19,6 +42,16 @@ type t =
   | Texture of Scene.texture
   | Interior of Scene.interior
   | Object of obj
+  | Light of Scene.light
+  | Camera of camera_spec
+  | Array of array_v
+  | Macro of macro
+  | Stream of stream
+  | Unsupported of { what : string; at : Loc.t }
+      (** a declaration that uses a feature povml cannot render yet: an error only where it is used *)
+
+(** An array: its dimensions and its elements in row-major order, [None] until assigned. *)
+and array_v = { dims : int array; cells : t option array }
 
 val kind_name : t -> string
 (** [kind_name v] names the type for messages, e.g. "a float" or "a pigment". *)

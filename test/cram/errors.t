@@ -81,7 +81,7 @@ Warnings are printed and rendering continues (POV-Ray renders a sphere of radius
 
   $ printf '#version 3.7;\nglobal_settings { assumed_gamma 1 }\n#declare A = 1/0;\nsphere { 0, -1 }\n' > warn.pov
   $ povml warn.pov +W10 +H10 -D 2>&1 | grep -E 'warning|Wrote'
-  warn.pov:3:15: warning: division by zero; the result is 1e17
+  warn.pov:3:15: warning: divide by zero; the result is infinity
   warn.pov:4:13: warning: sphere radius -1 is not positive
   Wrote warn.png (10x10)
 

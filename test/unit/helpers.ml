@@ -2,7 +2,7 @@
 
 open Povml
 
-let opts = { Interp.width = 160; height = 120 }
+let opts = Interp.default_options ~width:160 ~height:120
 
 (* [load text] interprets [text] as the file "t.pov". *)
 let load text = Interp.load_string opts ~file:"t.pov" text
