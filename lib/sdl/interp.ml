@@ -48,6 +48,7 @@ type st = {
   mutable have : bool;
   mutable cur_elem : (V.array_v * int) option;  (* the current token is this array element *)
   mutable no_expand : bool;
+  mutable defer : bool;  (* reading past a complete value: a directive is kept, not run *)
   mutable streams : V.stream array;  (* the random streams made by seed() *)  (* reading the argument of defined(): a macro name is not called *)
   mutable depth : int;  (* '{' minus '}' consumed: how a declaration that fails is skipped *)
   opts : options;
@@ -136,8 +137,11 @@ let rec fill st =
   match t.kind with
   | Eof -> end_of_frame st f t
   | Directive d ->
-      st.directive st d t.loc;
-      if not st.have then fill st
+      if st.defer then begin st.cur <- t; st.have <- true; st.cur_elem <- None end
+      else begin
+        st.directive st d t.loc;
+        if not st.have then fill st
+      end
   | Ident s -> (
       match lookup st s with
       | Some (V.Macro m) when not st.no_expand ->
@@ -171,7 +175,29 @@ and end_of_frame st f t =
       fill st
   | Macro_body (name, _) -> Error.raise_at t.loc "the body of macro '%s' ends without #end" name
 
-let peek st = if not st.have then fill st; st.cur.kind
+(* A directive read while looking past a complete value was kept for later (see [peek_follow]);
+   it runs as soon as the parser asks for the next token. *)
+let rec run_pending st =
+  match st.cur.kind with
+  | Directive d when st.have ->
+      st.have <- false;
+      st.directive st d st.cur.loc;
+      if not st.have then fill st;
+      run_pending st
+  | _ -> ()
+
+let peek st = if not st.have then fill st else run_pending st; st.cur.kind
+
+(* The token after a complete value, read to see whether the value goes on ('+', '.x', another
+   texture layer …). A directive found there is not run yet: it runs after the value has been
+   used, so "#declare A = 1 #declare B = A;" and a #declare just before #end see the new A. *)
+let peek_follow st =
+  if not st.have then begin
+    st.defer <- true;
+    (try fill st with e -> st.defer <- false; raise e);
+    st.defer <- false
+  end;
+  st.cur.kind
 
 (* The value of the identifier [name] that is the current token (an array element if subscripted). *)
 let cur_value st name =
@@ -181,10 +207,10 @@ let cur_value st name =
       | Some v -> Some v
       | None -> Error.raise_at st.cur.loc "element %d of the array '%s' has not been assigned a value" i name)
   | None -> lookup st name
-let peek_loc st = if not st.have then fill st; st.cur.loc
+let peek_loc st = if not st.have then fill st else run_pending st; st.cur.loc
 
 let advance st =
-  if not st.have then fill st;
+  if not st.have then fill st else run_pending st;
   (match st.cur.kind with LBrace -> st.depth <- st.depth + 1 | RBrace -> st.depth <- st.depth - 1 | _ -> ());
   if st.cur.kind != Eof then st.have <- false
 
@@ -274,7 +300,7 @@ let rec parse_expr st =
   expr_rest st (parse_term st)
 
 and expr_rest st lhs =
-  match peek st with
+  match peek_follow st with
   | Plus -> let loc = peek_loc st in advance st; expr_rest st (binop st loc ( +. ) lhs (parse_term st))
   | Minus -> let loc = peek_loc st in advance st; expr_rest st (binop st loc ( -. ) lhs (parse_term st))
   | _ -> lhs
@@ -282,7 +308,7 @@ and expr_rest st lhs =
 and parse_term st = term_rest st (parse_unary st)
 
 and term_rest st lhs =
-  match peek st with
+  match peek_follow st with
   | Star -> let loc = peek_loc st in advance st; term_rest st (binop st loc ( *. ) lhs (parse_unary st))
   | Slash ->
       let loc = peek_loc st in
@@ -316,7 +342,7 @@ and parse_postfix st = postfix_rest st (parse_primary st)
 
 (* Component selectors after a value: .x .y .z .t .u .v .red … .gray (§11.1). *)
 and postfix_rest st v =
-  if peek st != Dot then v
+  if peek_follow st != Dot then v
   else begin
     let loc = peek_loc st in
     advance st;
@@ -343,7 +369,7 @@ and postfix_rest st v =
 and parse_full st =
   (* inside parentheses: ?:, & |, relational (§11.2) *)
   let c = parse_logical st in
-  if peek st == Quest then begin
+  if peek_follow st == Quest then begin
     let loc = peek_loc st in
     advance st;
     let a = parse_full st in
@@ -358,7 +384,7 @@ and parse_full st =
 and parse_logical st =
   let lhs = parse_relational st in
   let rec loop lhs =
-    match peek st with
+    match peek_follow st with
     | Amp -> let loc = peek_loc st in advance st; let r = parse_relational st in loop (logic loc (fun a b -> truth a && truth b) lhs r)
     | Bar -> let loc = peek_loc st in advance st; let r = parse_relational st in loop (logic loc (fun a b -> truth a || truth b) lhs r)
     | _ -> lhs
@@ -380,7 +406,7 @@ and parse_relational st =
       let rhs = parse_expr st in
       loop (logic loc f lhs rhs)
     in
-    match peek st with
+    match peek_follow st with
     | Lt -> rel (fun a b -> a < b)
     | Le -> rel (fun a b -> a < b || Float.abs (a -. b) < eps)
     | Gt -> rel (fun a b -> a > b)
@@ -658,7 +684,7 @@ and parse_float st =
   match peek st with
   | Num f -> (
       advance st;
-      match peek st with
+      match peek_follow st with
       | Comma | Gt | RBrace | Semi | RParen -> f
       | _ -> continue (V.Float f))
   | Minus -> (
@@ -666,7 +692,7 @@ and parse_float st =
       match peek st with
       | Num f -> (
           advance st;
-          match peek st with
+          match peek_follow st with
           | Comma | Gt | RBrace | Semi | RParen -> -.f
           | Dot -> as_float (expr_rest st (term_rest st (numeric_map loc (fun x -> -.x) (postfix_rest st (V.Float f)))))
           | _ -> as_float (expr_rest st (term_rest st (V.Float (-.f)))))
@@ -1585,7 +1611,11 @@ let rec parse_rvalue st : V.t * bool =
   | Ident s when List.mem s object_keywords -> (V.Object (parse_object st), false)
   | Ident "pigment" -> advance st; (V.Pigment (parse_pigment st (Scene.Solid Colour.black)), false)
   | Ident "finish" -> advance st; (V.Finish (parse_finish st Defaults.finish), false)
-  | Ident "texture" -> advance st; (V.Texture (parse_texture st st.default_texture), false)
+  | Ident "texture" ->
+      advance st;
+      let t = parse_texture st st.default_texture in
+      if (match peek_follow st with Ident "texture" -> true | _ -> false) then not_supported (peek_loc st) "layered textures";
+      (V.Texture t, false)
   | Ident "interior" -> advance st; (V.Interior (parse_interior st Defaults.interior), false)
   | Ident "camera" -> advance st; (V.Camera (parse_camera st), false)
   | Ident "array" -> (parse_array st, false)
@@ -1676,20 +1706,31 @@ let assign st ~local name value =
    the blocks it opened, or at its own level up to a ';' or through its first block. *)
 let skip_declaration st d0 =
   let rec close () = if st.depth > d0 && peek st != Eof then (advance st; close ()) in
-  if st.depth > d0 then close ()
-  else
-    let rec scan () =
-      match peek st with
-      | Semi | RBrace | Eof -> ()
-      | LBrace -> advance st; close ()
-      | _ -> advance st; scan ()
-    in
-    scan ()
+  let rec scan () =
+    match peek st with
+    | Semi | RBrace | Eof -> ()
+    | LBrace -> advance st; close ()
+    | _ -> advance st; scan ()
+  in
+  if st.depth > d0 then close () else scan ();
+  (* the further layers of a layered texture: texture {…} texture {…} *)
+  while (match peek_follow st with Ident "texture" -> true | _ -> false) do advance st; scan () done
 
 let parse_declare st ~local dloc =
   let nloc = peek_loc st in
   st.no_expand <- true;
   let k = Fun.protect ~finally:(fun () -> st.no_expand <- false) (fun () -> peek st) in
+  let k =
+    (* #declare deprecated [once] "message" Id = … (3.7): the message is for users of Id *)
+    match k with
+    | Ident "deprecated" ->
+        advance st;
+        ignore (accept_ident st "once");
+        (match peek st with Str _ -> advance st | _ -> unexpected st "the deprecation message");
+        st.no_expand <- true;
+        Fun.protect ~finally:(fun () -> st.no_expand <- false) (fun () -> peek st)
+    | k -> k
+  in
   let target =
     match k with
     | Ident s when is_keyword s -> Error.raise_at nloc "'%s' is a keyword and cannot be declared" s
@@ -1702,13 +1743,14 @@ let parse_declare st ~local dloc =
   let name = match target with `Name s | `Element (s, _, _) -> s in
   expect st Eq (Printf.sprintf "'=' after '%s'" name);
   let d0 = st.depth in
+  let in_main = List.length st.frames = 1 in
   let value, needs_semi =
     try parse_rvalue st
     with Unsupported (l, what, _) ->
       (* a declaration povml cannot make yet is no error until it is used (issue: include files
          declare much more than a scene uses) *)
       skip_declaration st d0;
-      if List.length st.frames = 1 then warn st dloc "'%s' uses %s, which povml does not support yet; using it will be an error" name what;
+      if in_main then warn st dloc "'%s' uses %s, which povml does not support yet; using it will be an error" name what;
       (V.Unsupported { what; at = l }, false)
   in
   (* the value is stored before anything after it is read: the next token may be a directive *)
@@ -2082,7 +2124,7 @@ let load_string opts ~file text =
   let st =
     {
       frames = [ { lx = lexer; kind = Main; conds = [] } ];
-      cur = { Token.kind = Eof; loc = Loc.none }; have = false; cur_elem = None; no_expand = false; streams = [||];
+      cur = { Token.kind = Eof; loc = Loc.none }; have = false; cur_elem = None; no_expand = false; defer = false; streams = [||];
       depth = 0; opts; global; tables = [ global ]; includes = 0; macro_depth = 0;
       version = 370; version_set = false; warnings = [];
       objects = []; lights = []; camera = None; background = None; sky = None;
