@@ -660,13 +660,7 @@ let parse_interior st (base : Scene.interior) : Scene.interior =
 (* ---------------------------------------------------------------------------------------------- *)
 (* Objects *)
 
-let translate_shape (s : Scene.shape) (v : Vec.t) : Scene.shape =
-  match s with
-  | Sphere { centre; radius } -> Sphere { centre = Vec.add centre v; radius }
-  | Plane { normal; offset } -> Plane { normal; offset = offset +. Vec.dot normal v }
-  | Triangle { p1; p2; p3 } -> Triangle { p1 = Vec.add p1 v; p2 = Vec.add p2 v; p3 = Vec.add p3 v }
-  | Smooth_triangle t -> Smooth_triangle { t with p1 = Vec.add t.p1 v; p2 = Vec.add t.p2 v; p3 = Vec.add t.p3 v }
-  | Mesh m -> Mesh { m with offset = Vec.add m.offset v }
+let translate_shape (s : Scene.shape) (v : Vec.t) : Scene.shape = Place.shape s (Translate v)
 
 let parse_object_mods st (o : V.obj) what : V.obj =
   let tex o = match o.V.texture with Some t -> t | None -> Defaults.texture in
@@ -887,7 +881,7 @@ let rec parse_object st : V.obj =
       let rloc = peek_loc st in
       let radius = parse_float st in
       if radius <= 0. then warn st rloc "sphere radius %g is not positive" radius;
-      parse_object_mods st (new_obj (Sphere { centre; radius }) loc) "sphere"
+      parse_object_mods st (new_obj (Sphere { centre; radius; trans = None }) loc) "sphere"
   | Ident "plane" ->
       advance st;
       open_block st "plane";
@@ -897,7 +891,7 @@ let rec parse_object st : V.obj =
       let d = parse_float st in
       (* §2.3: the normal is normalised, the distance is NOT divided by |n| *)
       if Vec.length n = 0. then Error.raise_at nloc "degenerate plane normal <0,0,0>";
-      parse_object_mods st (new_obj (Plane { normal = Vec.normalize n; offset = d }) loc) "plane"
+      parse_object_mods st (new_obj (Plane { normal = Vec.normalize n; offset = d; trans = None }) loc) "plane"
   | Ident "object" ->
       advance st;
       open_block st "object";
@@ -970,7 +964,7 @@ and parse_mesh st loc =
       ~fn:(Grow.to_array fn) ~ftex:(Grow.to_array ftex) ~corners:(Some (Grow.to_array corners)) ~inside_vector:!inside
   in
   if mesh.faces = 0 then warn st loc "the mesh has no triangles with an area";
-  let shape = Scene.Mesh { mesh; offset = Vec.zero; textures = Array.of_list (List.rev !textures) } in
+  let shape = Scene.Mesh { mesh; trans = None; textures = Array.of_list (List.rev !textures) } in
   parse_object_mods st (new_obj shape loc) "mesh"
 
 (* mesh2 { vertex_vectors normal_vectors texture_list face_indices normal_indices inside_vector … } *)
@@ -1077,7 +1071,7 @@ and parse_mesh2 st loc =
           Error.raise_at fl "normal_vectors has %d entries and vertex_vectors %d: without normal_indices they must be as many" nn nv
   in
   let mesh = Mesh.build ~vertices:vs ~vertex_normals:ns ~fv ~fn ~ftex ~corners:None ~inside_vector:!inside in
-  let shape = Scene.Mesh { mesh; offset = Vec.zero; textures = !textures } in
+  let shape = Scene.Mesh { mesh; trans = None; textures = !textures } in
   parse_object_mods st (new_obj shape loc) "mesh2"
 
 (* §2.7: every object gets a texture and an interior; a legacy finish ior goes into the interior. *)
