@@ -180,11 +180,6 @@ let[@inline] normal t (n : Vec.t) =
 
 let is_identity t = t = identity
 
-let is_translation t =
-  let only_row3 a = List.for_all (fun k -> a.(k) = (ident ()).(k)) [ 0; 1; 2; 3; 4; 5; 6; 7; 8; 9; 10; 11; 15 ] in
-  let m = mat t and i = inv t in
-  only_row3 m && only_row3 i && i.(12) = -.m.(12) && i.(13) = -.m.(13) && i.(14) = -.m.(14)
-
 (* VNormalize: VLength, then VInverseScale, which multiplies by 1/length. *)
 let[@inline] normalize (v : Vec.t) =
   let k = 1. /. sqrt ((v.x *. v.x) +. (v.y *. v.y) +. (v.z *. v.z)) in

@@ -64,10 +64,6 @@ val normal : t -> Vec.t -> Vec.t
 val is_identity : t -> bool
 (** [is_identity t] tells whether both matrices are exactly the identity. *)
 
-val is_translation : t -> bool
-(** [is_translation t] tells whether both matrices are exactly a translation and its negation
-    (identity 3×3 parts, column 3 exactly (0,0,0,1)). *)
-
 val normalize : Vec.t -> Vec.t
 (** [normalize v] is POV-Ray's [VNormalize]: [v] times the reciprocal of its length (which can
     differ in the last bit from dividing by the length). *)
