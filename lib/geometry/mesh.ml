@@ -158,20 +158,22 @@ let any_hit m stack (o : Vec.t) (d : Vec.t) lo hi =
         if t >= lo && t < hi then (found := true; neg_infinity) else hi);
   !found
 
-(* §2.6 Inside: an odd number of faces hit along the inside vector. *)
-let inside m stack (p : Vec.t) =
+(* §2.6 Inside: an odd number of faces hit from [p] along [d]. *)
+let inside_along m stack (p : Vec.t) (d : Vec.t) =
   match m.inside_vector with
   | None -> false
-  | Some d ->
+  | Some _ ->
       let count = ref 0 in
       Bvh.walk m.bvh stack p.x p.y p.z d.x d.y d.z infinity (fun k ->
           if face_depth m k p.x p.y p.z d.x d.y d.z < infinity then incr count;
           infinity);
       !count land 1 = 1
 
-(* The normal of face [k] at the mesh-space point [p]: the interpolated vertex normal of a smooth
-   face (normalised), or the stored single-precision face normal. *)
-let normal m k (p : Vec.t) =
+let inside m stack p = match m.inside_vector with None -> false | Some d -> inside_along m stack p d
+
+(* The normal of face [k] at the mesh-space point [p], not normalised: the interpolated vertex
+   normal of a smooth face (Smooth_Mesh_Normal), or the stored single-precision face normal. *)
+let raw_normal m k (p : Vec.t) =
   let o = 7 * k and g = 6 * k in
   let n i = let j = 3 * i in Vec.make (fget m.vnormals j) (fget m.vnormals (j + 1)) (fget m.vnormals (j + 2)) in
   if iget m.fidx (o + 3) < 0 then Vec.make (fget m.fgeom g) (fget m.fgeom (g + 1)) (fget m.fgeom (g + 2))
@@ -181,7 +183,7 @@ let normal m k (p : Vec.t) =
     let dx = p.x -. fget v i1 and dy = p.y -. fget v (i1 + 1) and dz = p.z -. fget v (i1 + 2) in
     let u = (dx *. fget m.fgeom (g + 3)) +. (dy *. fget m.fgeom (g + 4)) +. (dz *. fget m.fgeom (g + 5)) in
     let n1 = n (iget m.fidx (o + 3)) in
-    if u < 1e-10 then Vec.normalize n1
+    if u < 1e-10 then n1
     else
       let va = (iget m.fidx (o + 6) lsr 2) land 3 in
       let pa = match va with 0 -> dx | 1 -> dy | _ -> dz in
@@ -189,7 +191,13 @@ let normal m k (p : Vec.t) =
       let vv = ((pa /. u) +. k1 -. k2) /. (k3 -. k2) in
       let n2 = n (iget m.fidx (o + 4)) and n3 = n (iget m.fidx (o + 5)) in
       let f a1 a2 a3 = a1 +. (u *. (a2 -. a1 +. (vv *. (a3 -. a2)))) in
-      Vec.normalize (Vec.make (f n1.x n2.x n3.x) (f n1.y n2.y n3.y) (f n1.z n2.z n3.z))
+      Vec.make (f n1.x n2.x n3.x) (f n1.y n2.y n3.y) (f n1.z n2.z n3.z)
+
+let is_smooth m k = iget m.fidx ((7 * k) + 3) >= 0
+
+(* The normal of face [k] at the mesh-space point [p]: the interpolated vertex normal of a smooth
+   face (normalised), or the stored single-precision face normal. *)
+let normal m k (p : Vec.t) = if is_smooth m k then Vec.normalize (raw_normal m k p) else raw_normal m k p
 
 let texture m k = (iget m.fidx ((7 * k) + 6) lsr 4) - 1
 

@@ -42,6 +42,14 @@ val any_hit : t -> float array -> Vec.t -> Vec.t -> float -> float -> bool
 val inside : t -> float array -> Vec.t -> bool
 (** [inside m stack p]: an odd number of faces along the inside vector; false without one. *)
 
+val inside_along : t -> float array -> Vec.t -> Vec.t -> bool
+(** [inside_along m stack p d]: an odd number of faces hit from [p] along the unit direction [d]
+    (the inside vector brought into mesh space); false when the mesh has no inside vector. *)
+
+val raw_normal : t -> int -> Vec.t -> Vec.t
+(** [raw_normal m k p] is face [k]'s normal at the mesh-space point [p] before normalisation: the
+    interpolated vertex normal of a smooth face, the stored face normal of a flat one. *)
+
 val normal : t -> int -> Vec.t -> Vec.t
 (** [normal m k p] is face [k]'s normal at the mesh-space point [p]. *)
 

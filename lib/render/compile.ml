@@ -5,33 +5,55 @@ let epsilon = 1e-10
 (* A shape ready to trace; None for a triangle that POV-Ray never hits (no area, or a standalone
    smooth triangle whose vertex normals straddle its face). *)
 let shape_of (s : Scene.shape) =
+  let sphere (c : Vec.t) r = { cx = c.x; cy = c.y; cz = c.z; radius = r; r2 = r *. r } in
+  let plane (n : Vec.t) offset = { nx = n.x; ny = n.y; nz = n.z; dist = -.offset } in
   match s with
-  | Sphere { centre; radius } -> Some (Sphere { cx = centre.x; cy = centre.y; cz = centre.z; radius; r2 = radius *. radius })
-  | Plane { normal; offset } -> Some (Plane { nx = normal.x; ny = normal.y; nz = normal.z; dist = -.offset })
+  | Sphere { centre; radius; trans = None } -> Some (Sphere (sphere centre radius))
+  | Sphere { centre; radius; trans = Some etr } -> Some (Ellipsoid { sp = sphere centre radius; etr })
+  | Plane { normal; offset; trans = None } -> Some (Plane (plane normal offset))
+  | Plane { normal; offset; trans = Some ptr } -> Some (Plane_trans { pl = plane normal offset; ptr })
   | Triangle { p1; p2; p3 } -> Option.map (fun t -> Triangle t) (Triangle.flat p1 p2 p3)
   | Smooth_triangle { p1; n1; p2; n2; p3; n3 } -> (
       match Triangle.smooth p1 n1 p2 n2 p3 n3 with Some (Ok t) -> Some (Smooth_triangle t) | None | Some (Error ()) -> None)
-  | Mesh { mesh; offset; _ } -> Some (Mesh { mesh; offset; moved = offset <> Vec.zero })
+  | Mesh { mesh; trans = None; _ } -> Some (Mesh { mesh; tr = Transform.identity; moved = false })
+  | Mesh { mesh; trans = Some tr; _ } -> Some (Mesh { mesh; tr; moved = true })
 
 let inside stack shape (p : Vec.t) =
   match shape with
   | Sphere s ->
       let dx = p.x -. s.cx and dy = p.y -. s.cy and dz = p.z -. s.cz in
       (dx *. dx) +. (dy *. dy) +. (dz *. dz) < s.r2
+  | Ellipsoid { sp = s; etr } ->
+      (* Sphere::Inside in object space: (C − P')² < r² *)
+      let q = Transform.inv_point etr p in
+      let dx = s.cx -. q.x and dy = s.cy -. q.y and dz = s.cz -. q.z in
+      (dx *. dx) +. (dy *. dy) +. (dz *. dz) < s.r2
   | Plane pl -> (p.x *. pl.nx) +. (p.y *. pl.ny) +. (p.z *. pl.nz) +. pl.dist < epsilon
+  | Plane_trans { pl; ptr } ->
+      let q = Transform.inv_point ptr p in
+      (q.x *. pl.nx) +. (q.y *. pl.ny) +. (q.z *. pl.nz) +. pl.dist < epsilon
   | Triangle _ | Smooth_triangle _ -> false
-  | Mesh m -> Mesh.inside m.mesh stack (Vec.sub p m.offset)
+  | Mesh m ->
+      (* Mesh::Inside: the ray from P along the inside vector, both brought into mesh space and
+         the direction renormalised *)
+      if not m.moved then Mesh.inside m.mesh stack p
+      else (
+        match m.mesh.inside_vector with
+        | None -> false
+        | Some d -> Mesh.inside_along m.mesh stack (Transform.inv_point m.tr p) (Transform.normalize (Transform.inv_direction m.tr d)))
 
-(* The box of a bounded shape; None for an unbounded one. *)
+(* The box of a bounded shape; None for an unbounded one. A transformed shape's box is its
+   object-space box with the corners mapped (Recompute_BBox, §15.8). *)
 let bounds = function
   | Sphere s ->
       let r = Float.abs s.radius in
       Some [| s.cx -. r; s.cy -. r; s.cz -. r; s.cx +. r; s.cy +. r; s.cz +. r |]
-  | Plane _ -> None
+  | Ellipsoid { sp = s; etr } ->
+      let r = Float.abs s.radius in
+      Some (Transform.bounds etr [| s.cx -. r; s.cy -. r; s.cz -. r; s.cx +. r; s.cy +. r; s.cz +. r |])
+  | Plane _ | Plane_trans _ -> None
   | Triangle t | Smooth_triangle t -> Some (Triangle.bounds t)
-  | Mesh m ->
-      let b = Mesh.bounds m.mesh and o = m.offset in
-      Some [| b.(0) +. o.x; b.(1) +. o.y; b.(2) +. o.z; b.(3) +. o.x; b.(4) +. o.y; b.(5) +. o.z |]
+  | Mesh m -> if m.moved then Some (Transform.bounds m.tr (Mesh.bounds m.mesh)) else Some (Mesh.bounds m.mesh)
 
 let group objs =
   let unbounded = List.filter (fun o -> bounds o.shape = None) objs in
@@ -46,7 +68,7 @@ let group objs =
     (fun i o ->
       match o.shape with
       | Sphere s -> spheres.(4 * i) <- s.cx; spheres.((4 * i) + 1) <- s.cy; spheres.((4 * i) + 2) <- s.cz; spheres.((4 * i) + 3) <- s.r2
-      | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ -> ())
+      | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ -> ())
     bounded;
   { unbounded = Array.of_list unbounded; bounded; bvh; spheres }
 

@@ -7,12 +7,16 @@ type sphere = { cx : float; cy : float; cz : float; radius : float; r2 : float }
 (** A plane (§2.3): unit normal and POV-Ray's [Distance] = −d. *)
 type plane = { nx : float; ny : float; nz : float; dist : float }
 
-(** A mesh placed in the scene: shared data, moved by a translation (POV-Ray keeps a transform). *)
-type mesh_inst = { mesh : Mesh.t; offset : Vec.t; moved : bool }
+(** A mesh placed in the scene: shared data, and its transform when it has one ([moved]); an
+    unmoved mesh is searched in world space as it is, like POV-Ray's mesh without a Trans (§2.6). *)
+type mesh_inst = { mesh : Mesh.t; tr : Transform.t; moved : bool }
 
 type shape =
   | Sphere of sphere
+  | Ellipsoid of { sp : sphere; etr : Transform.t }
+      (** §2.2, §14.5 (b): the object-space sphere [sp] mapped by [etr] *)
   | Plane of plane
+  | Plane_trans of { pl : plane; ptr : Transform.t }  (** §2.3, §14.5 (a): [pl] mapped by [ptr] *)
   | Triangle of Triangle.t
   | Smooth_triangle of Triangle.t
   | Mesh of mesh_inst

@@ -52,10 +52,61 @@ let[@inline] sphere_depth (stats : Stats.t) cx cy cz r2 (o : Vec.t) (d : Vec.t) 
         else infinity
     end
 
+(* §2.2, §14.5 (b): the ellipsoid [s] mapped by [t]: the ray is brought into object space with
+   its direction renormalised; the roots are limited in object units and divided by the length
+   of the object-space direction. Everything stays in unboxed floats. *)
+let ellipsoid_depth (stats : Stats.t) (s : sphere) (t : Transform.t) (o : Vec.t) (d : Vec.t) lo =
+  stats.sphere_tests <- stats.sphere_tests + 1;
+  let px = (o.x *. t.i00) +. (o.y *. t.i10) +. (o.z *. t.i20) +. t.i30 in
+  let py = (o.x *. t.i01) +. (o.y *. t.i11) +. (o.z *. t.i21) +. t.i31 in
+  let pz = (o.x *. t.i02) +. (o.y *. t.i12) +. (o.z *. t.i22) +. t.i32 in
+  let vx = (d.x *. t.i00) +. (d.y *. t.i10) +. (d.z *. t.i20) in
+  let vy = (d.x *. t.i01) +. (d.y *. t.i11) +. (d.z *. t.i21) in
+  let vz = (d.x *. t.i02) +. (d.y *. t.i12) +. (d.z *. t.i22) in
+  let len = sqrt ((vx *. vx) +. (vy *. vy) +. (vz *. vz)) in
+  (* VInverseScaleEq: times the reciprocal *)
+  let k = 1. /. len in
+  let vx = vx *. k and vy = vy *. k and vz = vz *. k in
+  let ocx = s.cx -. px and ocy = s.cy -. py and ocz = s.cz -. pz in
+  let ocs = (ocx *. ocx) +. (ocy *. ocy) +. (ocz *. ocz) in
+  let tca = (ocx *. vx) +. (ocy *. vy) +. (ocz *. vz) in
+  if ocs >= s.r2 && tca < epsilon then infinity
+  else
+    let h2 = s.r2 -. ocs +. (tca *. tca) in
+    if h2 <= epsilon then infinity
+    else begin
+      let h = sqrt h2 in
+      let t1 = tca -. h in
+      if t1 > depth_tolerance && t1 < max_distance && t1 /. len >= lo then (stats.sphere_hits <- stats.sphere_hits + 1; t1 /. len)
+      else
+        let t2 = tca +. h in
+        if t2 > depth_tolerance && t2 < max_distance && t2 /. len >= lo then (stats.sphere_hits <- stats.sphere_hits + 1; t2 /. len)
+        else infinity
+    end
+
+(* §2.3, §14.5 (a): the plane [p] mapped by [t]: the ray in object space, direction NOT
+   renormalised, so the depth is the world depth and the limits apply to it. *)
+let plane_trans_depth (stats : Stats.t) (p : plane) (t : Transform.t) (o : Vec.t) (d : Vec.t) lo =
+  stats.plane_tests <- stats.plane_tests + 1;
+  let vx = (d.x *. t.i00) +. (d.y *. t.i10) +. (d.z *. t.i20) in
+  let vy = (d.x *. t.i01) +. (d.y *. t.i11) +. (d.z *. t.i21) in
+  let vz = (d.x *. t.i02) +. (d.y *. t.i12) +. (d.z *. t.i22) in
+  let ndd = (p.nx *. vx) +. (p.ny *. vy) +. (p.nz *. vz) in
+  if Float.abs ndd < epsilon then infinity
+  else
+    let px = (o.x *. t.i00) +. (o.y *. t.i10) +. (o.z *. t.i20) +. t.i30 in
+    let py = (o.x *. t.i01) +. (o.y *. t.i11) +. (o.z *. t.i21) +. t.i31 in
+    let pz = (o.x *. t.i02) +. (o.y *. t.i12) +. (o.z *. t.i22) +. t.i32 in
+    let ndo = (p.nx *. px) +. (p.ny *. py) +. (p.nz *. pz) in
+    let t = -.(ndo +. p.dist) /. ndd in
+    if t >= depth_tolerance && t <= max_distance && t >= lo then (stats.plane_hits <- stats.plane_hits + 1; t)
+    else infinity
+
 let hit_shape ctx shape (o : Vec.t) (d : Vec.t) lo =
   let stats = ctx.stats in
   match shape with
   | Sphere s -> sphere_depth stats s.cx s.cy s.cz s.r2 o d lo
+  | Ellipsoid { sp; etr } -> ellipsoid_depth stats sp etr o d lo
   | Plane p ->
       (* §2.3 *)
       stats.plane_tests <- stats.plane_tests + 1;
@@ -66,22 +117,24 @@ let hit_shape ctx shape (o : Vec.t) (d : Vec.t) lo =
         let t = -.(ndo +. p.dist) /. ndd in
         if t >= depth_tolerance && t <= max_distance && t >= lo then (stats.plane_hits <- stats.plane_hits + 1; t)
         else infinity
+  | Plane_trans { pl; ptr } -> plane_trans_depth stats pl ptr o d lo
   | Triangle t | Smooth_triangle t ->
       (* §2.4 *)
       stats.triangle_tests <- stats.triangle_tests + 1;
       let depth = Triangle.intersect t o d in
       if depth >= lo && depth < infinity then (stats.triangle_hits <- stats.triangle_hits + 1; depth) else infinity
   | Mesh m ->
-      (* §2.6: a moved mesh is searched in its own space with the direction renormalised, and the
-         depth is divided by that length *)
+      (* §2.6, Mesh::Intersect: a moved mesh is searched in its own space with the direction
+         renormalised (times the reciprocal length), and the depth is divided by that length *)
       stats.mesh_tests <- stats.mesh_tests + 1;
       let k, depth =
         if not m.moved then
           let k = Mesh.nearest m.mesh ctx.mstack o d lo ctx.depth in
           (k, ctx.depth.(0))
         else
-          let len = Vec.length d in
-          let k = Mesh.nearest m.mesh ctx.mstack (Vec.sub o m.offset) (Vec.scale (1. /. len) d) (lo *. len) ctx.depth in
+          let v = Transform.inv_direction m.tr d in
+          let len = Vec.length v in
+          let k = Mesh.nearest m.mesh ctx.mstack (Transform.inv_point m.tr o) (Vec.scale (1. /. len) v) (lo *. len) ctx.depth in
           (k, ctx.depth.(0) /. len)
       in
       if k >= 0 && depth >= lo then begin
@@ -148,16 +201,24 @@ let surface_of obj sub =
   | Mesh m when sub >= 0 ->
       let t = Mesh.texture m.mesh sub in
       if t >= 0 then obj.face_surfs.(t) else obj.surf
-  | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ -> obj.surf
+  | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ -> obj.surf
 
 let normal obj sub (p : Vec.t) : Vec.t =
   match obj.shape with
   | Sphere s -> Vec.make ((p.x -. s.cx) /. s.radius) ((p.y -. s.cy) /. s.radius) ((p.z -. s.cz) /. s.radius)
+  | Ellipsoid { sp = s; etr } ->
+      (* Sphere::Normal: P' − C in object space, by the inverse transpose, normalised (§14.6) *)
+      let q = Transform.inv_point etr p in
+      Transform.normalize (Transform.normal etr (Vec.make (q.x -. s.cx) (q.y -. s.cy) (q.z -. s.cz)))
   | Plane pl -> Vec.make pl.nx pl.ny pl.nz
+  | Plane_trans { pl; ptr } -> Transform.normalize (Transform.normal ptr (Vec.make pl.nx pl.ny pl.nz))
   | Triangle t -> Vec.make t.nx t.ny t.nz
   | Smooth_triangle t -> Triangle.smooth_normal t p
   | Mesh m ->
-      if m.moved then Vec.normalize (Mesh.normal m.mesh sub (Vec.sub p m.offset)) else Mesh.normal m.mesh sub p
+      (* Mesh::Normal: with a transform, the unnormalised mesh-space normal by the inverse
+         transpose, normalised once (§2.6, §14.6) *)
+      if m.moved then Transform.normalize (Transform.normal m.tr (Mesh.raw_normal m.mesh sub (Transform.inv_point m.tr p)))
+      else Mesh.normal m.mesh sub p
 
 (* ---------------------------------------------------------------------------------------------- *)
 (* Shadows (§4) *)

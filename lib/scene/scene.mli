@@ -37,15 +37,22 @@ type texture = { pigment : pigment; finish : finish }
 (** An interior (§6, §10.1). *)
 type interior = { ior : float; fade_distance : float; fade_power : float; fade_colour : Rgb.t }
 
-(** Geometry. A plane is the set of points P with [normal]·P = [offset], [normal] unit length (§2.3). *)
+(** Geometry. A plane is the set of points P with [normal]·P = [offset], [normal] unit length (§2.3).
+    Transforms (§14.4) are baked into a shape's parameters while it has no [trans]; a shape that
+    got one (an ellipsoid, a plane under a matrix, any moved mesh) is the object-space shape mapped
+    by it. Build moved shapes with [Place.shape], not by hand. *)
 type shape =
-  | Sphere of { centre : Vec.t; radius : float }
-  | Plane of { normal : Vec.t; offset : float }
-  | Triangle of { p1 : Vec.t; p2 : Vec.t; p3 : Vec.t }  (** §2.4, corners as written and moved *)
+  | Sphere of { centre : Vec.t; radius : float; trans : Transform.t option }
+      (** §2.2: with [trans], an ellipsoid: the object-space sphere mapped by it *)
+  | Plane of { normal : Vec.t; offset : float; trans : Transform.t option }
+      (** §2.3: with [trans], the object-space plane mapped by it (§14.5) *)
+  | Triangle of { p1 : Vec.t; p2 : Vec.t; p3 : Vec.t }
+      (** §2.4: corners as POV-Ray holds them before its last set-up (P1 and P2 may be swapped by
+          an earlier one) *)
   | Smooth_triangle of { p1 : Vec.t; n1 : Vec.t; p2 : Vec.t; n2 : Vec.t; p3 : Vec.t; n3 : Vec.t }
-      (** §2.5, unit vertex normals *)
-  | Mesh of { mesh : Mesh.t; offset : Vec.t; textures : texture array }
-      (** §2.6: shared mesh data, moved by [offset]; faces with a texture index use [textures] *)
+      (** §2.5, vertex normals unit length as parsed, moved by [MTransNormal] since *)
+  | Mesh of { mesh : Mesh.t; trans : Transform.t option; textures : texture array }
+      (** §2.6: shared mesh data, placed by [trans]; faces with a texture index use [textures] *)
 
 (** A finished object: textured, with an interior (§2.7). *)
 type obj = {

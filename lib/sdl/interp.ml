@@ -20,7 +20,7 @@ type camera_spec = V.camera_spec = {
   c_sky : Vec.t option;
   c_look_at : (Vec.t * Loc.t) option;
   c_angle : (float * Loc.t) option;
-  c_translate : Vec.t;
+  c_trans : Transform.t option;  (* the camera's transforms, applied last (§1.3) *)
 }
 
 (* A feature povml does not render yet. Inside a declaration it makes the declared value
@@ -601,10 +601,10 @@ and parse_function st loc name =
       else of_vec (Vec.normalize a)
   | "vdot" -> arity 2; V.Float (Vec.dot (vec_arg (arg 0)) (vec_arg (arg 1)))
   | "vcross" -> arity 2; of_vec (Vec.cross (vec_arg (arg 0)) (vec_arg (arg 1)))
-  | "vrotate" -> arity 2; of_vec (Xform.point (Xform.rotate (vec_arg (arg 1))) (vec_arg (arg 0)))
+  | "vrotate" -> arity 2; of_vec (Transform.point (Transform.rotate (vec_arg (arg 1))) (vec_arg (arg 0)))
   | "vaxis_rotate" ->
       arity 3;
-      of_vec (Xform.point (Xform.axis_rotate (vec_arg (arg 1)) (float_arg (arg 2))) (vec_arg (arg 0)))
+      of_vec (Transform.point (Transform.axis_rotate (vec_arg (arg 1)) (float_arg (arg 2))) (vec_arg (arg 0)))
   | "select" ->
       if n <> 3 && n <> 4 then Error.raise_at loc "'select' takes 3 or 4 arguments";
       let c = float_arg (arg 0) in
@@ -938,27 +938,69 @@ let parse_interior st (base : Scene.interior) : Scene.interior =
 (* ---------------------------------------------------------------------------------------------- *)
 (* Objects *)
 
-(* §14.4: a modifier moves the shape, the lights of a union, and (later) attached textures. *)
-let translate_shape (s : Scene.shape) (v : Vec.t) : Scene.shape =
-  match s with
-  | Sphere { centre; radius } -> Sphere { centre = Vec.add centre v; radius }
-  | Plane { normal; offset } -> Plane { normal; offset = offset +. Vec.dot normal v }
-  | Triangle { p1; p2; p3 } -> Triangle { p1 = Vec.add p1 v; p2 = Vec.add p2 v; p3 = Vec.add p3 v }
-  | Smooth_triangle t -> Smooth_triangle { t with p1 = Vec.add t.p1 v; p2 = Vec.add t.p2 v; p3 = Vec.add t.p3 v }
-  | Mesh m -> Mesh { m with offset = Vec.add m.offset v }
 
-type op = Translate of Vec.t
+(* A scale vector: a zero component is replaced by 1 with POV-Ray's warning (§14.2). *)
+let scale_vector st loc (v : Vec.t) =
+  let fix axis c = if c = 0. then (warn st loc "illegal value: scale %s by 0.0; changed to 1.0" axis; 1.) else c in
+  Vec.make (fix "x" v.x) (fix "y" v.y) (fix "z" v.z)
 
-let parse_op st : op =
+(* translate / rotate / scale / matrix / transform, as one modifier (§14.2, §14.3). *)
+let rec parse_op st : Place.op =
   let loc = peek_loc st in
   match peek st with
   | Ident "translate" -> advance st; Translate (parse_vector st)
-  | Ident ("rotate" | "scale" | "matrix" | "transform" as k) -> not_supported loc (Printf.sprintf "'%s'" k)
-  | _ -> unexpected st "a transformation"
+  | Ident "rotate" -> advance st; Rotate (parse_vector st)
+  | Ident "scale" -> advance st; let l = peek_loc st in Scale (scale_vector st l (parse_vector st))
+  | Ident "matrix" -> advance st; Transform (parse_matrix st)
+  | Ident "transform" -> advance st; Transform (parse_transform st)
+  | _ -> ignore loc; unexpected st "a transformation"
 
-let move_shape op s = match op with Translate v -> translate_shape s v
+and parse_matrix st =
+  let loc = peek_loc st in
+  expect st Lt "'<' starting the 12 numbers of a matrix";
+  let a = Array.make 12 0. in
+  for k = 0 to 11 do
+    if k > 0 then expect st Comma (Printf.sprintf "',' after number %d of the matrix (it has 12)" k);
+    a.(k) <- parse_float st
+  done;
+  expect st Gt "'>' after the 12 numbers of a matrix";
+  match Transform.matrix a with
+  | Ok (t, warnings) -> List.iter (fun w -> warn st loc "%s" w) warnings; t
+  | Error msg -> Error.raise_at loc "%s" msg
 
-let move_light op (l : Scene.light) = match op with Translate v -> { l with position = Vec.add l.position v }
+(* transform { items [inverse] } or transform Id: the block starts from the identity and composes
+   its items in order; inverse inverts the whole block wherever it stands (§14.3). *)
+and parse_transform st =
+  let ident () =
+    match peek st with
+    | Ident s -> (
+        match cur_value st s with
+        | Some (V.Transform t) -> advance st; Some t
+        | Some (V.Unsupported u) -> unsupported_use (peek_loc st) s u.what u.at
+        | _ -> None)
+    | _ -> None
+  in
+  match ident () with
+  | Some t -> t
+  | None ->
+      open_block st "transform";
+      let rec loop t inv =
+        match peek st with
+        | RBrace -> advance st; if inv then Transform.inverse t else t
+        | Ident "inverse" -> advance st; loop t true
+        | Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") ->
+            loop (Transform.compose t (Place.op_transform (parse_op st))) inv
+        | _ -> (
+            match ident () with
+            | Some t' -> loop (Transform.compose t t') inv
+            | None -> unexpected st "a transformation, 'inverse' or '}' in a transform block")
+      in
+      loop Transform.identity false
+
+let move_shape op s = Place.shape s op
+
+(* §14.8: a light's position moves as a point *)
+let move_light op (l : Scene.light) = { l with position = Transform.point (Place.op_transform op) l.position }
 
 let rec move_obj op (o : V.obj) =
   match o.shape with
@@ -1220,7 +1262,7 @@ let rec parse_object st : V.obj =
       let rloc = peek_loc st in
       let radius = parse_float st in
       if radius <= 0. then warn st rloc "sphere radius %g is not positive" radius;
-      parse_object_mods st (new_obj (Sphere { centre; radius }) loc) "sphere"
+      parse_object_mods st (new_obj (Sphere { centre; radius; trans = None }) loc) "sphere"
   | Ident "plane" ->
       advance st;
       open_block st "plane";
@@ -1230,7 +1272,7 @@ let rec parse_object st : V.obj =
       let d = parse_float st in
       (* §2.3: the normal is normalised, the distance is NOT divided by |n| *)
       if Vec.length n = 0. then Error.raise_at nloc "degenerate plane normal <0,0,0>";
-      parse_object_mods st (new_obj (Plane { normal = Vec.normalize n; offset = d }) loc) "plane"
+      parse_object_mods st (new_obj (Plane { normal = Vec.normalize n; offset = d; trans = None }) loc) "plane"
   | Ident "object" ->
       advance st;
       open_block st "object";
@@ -1330,7 +1372,7 @@ and parse_mesh st loc =
       ~fn:(Grow.to_array fn) ~ftex:(Grow.to_array ftex) ~corners:(Some (Grow.to_array corners)) ~inside_vector:!inside
   in
   if mesh.faces = 0 then warn st loc "the mesh has no triangles with an area";
-  let shape = Scene.Mesh { mesh; offset = Vec.zero; textures = Array.of_list (List.rev !textures) } in
+  let shape = Scene.Mesh { mesh; trans = None; textures = Array.of_list (List.rev !textures) } in
   parse_object_mods st (new_obj shape loc) "mesh"
 
 (* mesh2 { vertex_vectors normal_vectors texture_list face_indices normal_indices inside_vector … } *)
@@ -1436,7 +1478,7 @@ and parse_mesh2 st loc =
           Error.raise_at fl "normal_vectors has %d entries and vertex_vectors %d: without normal_indices they must be as many" nn nv
   in
   let mesh = Mesh.build ~vertices:vs ~vertex_normals:ns ~fv ~fn ~ftex ~corners:None ~inside_vector:!inside in
-  let shape = Scene.Mesh { mesh; offset = Vec.zero; textures = !textures } in
+  let shape = Scene.Mesh { mesh; trans = None; textures = !textures } in
   parse_object_mods st (new_obj shape loc) "mesh2"
 
 (* §2.7: every object gets a texture and an interior; a legacy finish ior goes into the interior. *)
@@ -1470,7 +1512,7 @@ let rec add_object st (o : V.obj) =
 (* Camera, lights, settings *)
 
 let empty_camera =
-  { c_location = None; c_direction = None; c_up = None; c_right = None; c_sky = None; c_look_at = None; c_angle = None; c_translate = Vec.zero }
+  { c_location = None; c_direction = None; c_up = None; c_right = None; c_sky = None; c_look_at = None; c_angle = None; c_trans = None }
 
 let parse_camera st =
   open_block st "camera";
@@ -1491,7 +1533,9 @@ let parse_camera st =
     | Ident "sky" -> advance st; loop { c with c_sky = Some (parse_vector st) }
     | Ident "look_at" -> advance st; let l = peek_loc st in loop { c with c_look_at = Some (parse_vector st, l) }
     | Ident "angle" -> advance st; let l = peek_loc st in loop { c with c_angle = Some (parse_float st, l) }
-    | Ident "translate" -> advance st; loop { c with c_translate = Vec.add c.c_translate (parse_vector st) }
+    | Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") ->
+        let t = Place.op_transform (parse_op st) in
+        loop { c with c_trans = Some (match c.c_trans with None -> t | Some t0 -> Transform.compose t0 t) }
     | Ident s when List.mem s unsupported -> not_supported loc (Printf.sprintf "'%s' in a camera" s)
     | _ -> unexpected st "a camera keyword or '}'"
   in
@@ -1533,7 +1577,16 @@ let build_camera st (c : camera_spec) : Scene.camera =
         let u = Vec.cross d r in
         (Vec.scale dl d, Vec.scale (if handedness > 0. then rl else -.rl) r, Vec.scale ul u)
   in
-  { Scene.location = Vec.add location c.c_translate; direction; up; right }
+  match c.c_trans with
+  | None -> { Scene.location; direction; up; right }
+  | Some t ->
+      (* §14.8: the location as a point, the other vectors as directions *)
+      {
+        Scene.location = Transform.point t location;
+        direction = Transform.direction t direction;
+        up = Transform.direction t up;
+        right = Transform.direction t right;
+      }
 
 let parse_global_settings st =
   open_block st "global_settings";
@@ -1618,12 +1671,13 @@ let rec parse_rvalue st : V.t * bool =
       (V.Texture t, false)
   | Ident "interior" -> advance st; (V.Interior (parse_interior st Defaults.interior), false)
   | Ident "camera" -> advance st; (V.Camera (parse_camera st), false)
+  | Ident "transform" -> advance st; (V.Transform (parse_transform st), false)
   | Ident "array" -> (parse_array st, false)
   | Ident s when List.mem s unsupported_objects || List.mem s unsupported_rvalues -> not_supported loc (Printf.sprintf "'%s'" s)
   | Ident s -> (
       match cur_value st s with
       | Some (V.Object o) -> advance st; (V.Object { o with oloc = loc }, false)
-      | Some ((V.Pigment _ | V.Finish _ | V.Texture _ | V.Interior _ | V.Light _ | V.Camera _ | V.Stream _ | V.Unsupported _) as v) ->
+      | Some ((V.Pigment _ | V.Finish _ | V.Texture _ | V.Interior _ | V.Light _ | V.Camera _ | V.Stream _ | V.Transform _ | V.Unsupported _) as v) ->
           advance st; (v, false)
       | Some (V.Array a) -> advance st; (V.Array { a with cells = Array.copy a.cells }, false)
       | _ -> (parse_expr st, true))
@@ -1632,7 +1686,7 @@ let rec parse_rvalue st : V.t * bool =
 (* Values povml cannot make yet; a declaration of one is kept as [V.Unsupported]. *)
 and unsupported_rvalues =
   [ "material"; "normal"; "color_map"; "colour_map"; "pigment_map"; "normal_map"; "texture_map"; "slope_map";
-    "function"; "spline"; "media"; "density"; "fog"; "rainbow"; "sky_sphere"; "transform"; "isosurface" ]
+    "function"; "spline"; "media"; "density"; "fog"; "rainbow"; "sky_sphere"; "isosurface" ]
 
 (* array[d1][d2]… [{ initialisers }] (§11.2). *)
 and parse_array st =

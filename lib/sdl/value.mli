@@ -23,7 +23,7 @@ type camera_spec = {
   c_sky : Vec.t option;
   c_look_at : (Vec.t * Loc.t) option;
   c_angle : (float * Loc.t) option;
-  c_translate : Vec.t;
+  c_trans : Transform.t option;
 }
 
 (** A macro: its parameters and where its body starts in the text that defines it. *)
@@ -47,6 +47,7 @@ type t =
   | Array of array_v
   | Macro of macro
   | Stream of stream
+  | Transform of Transform.t
   | Unsupported of { what : string; at : Loc.t }
       (** a declaration that uses a feature povml cannot render yet: an error only where it is used *)
 

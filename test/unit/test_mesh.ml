@@ -13,10 +13,12 @@ let flat_array l = Array.concat (List.map (fun (p : Vec.t) -> [| p.x; p.y; p.z |
 let build ?(normals = []) ?(fn = [||]) ?(ftex = [||]) ?inside verts fv =
   Mesh.build ~vertices:(flat_array verts) ~vertex_normals:(flat_array normals) ~fv ~fn ~ftex ~corners:None ~inside_vector:inside
 
-(* The mesh of a scene with one mesh object: the shared data, the offset and the texture list. *)
+(* The mesh of a scene with one mesh object: the shared data, the placement (the point the
+   transform takes the origin to) and the texture list. *)
 let mesh_of text =
   match (the_object (scene text)).shape with
-  | Mesh { mesh; offset; textures } -> (mesh, offset, textures)
+  | Mesh { mesh; trans; textures } ->
+      (mesh, (match trans with None -> Vec.zero | Some t -> Transform.point t Vec.zero), textures)
   | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ -> Alcotest.fail "expected a mesh"
 
 (* The triangle of Test_triangle, in the plane z = 2 with face normal <0,0,-1>. *)
@@ -254,7 +256,7 @@ let test_textures () =
   float_eq "mesh {}: second is R" 1. (red_of textures.(1))
 
 let test_translate () =
-  (* translate moves the instance, not the shared data: offsets add up *)
+  (* translate moves the instance, not the shared data: translations compose *)
   let m, offset, _ =
     mesh_of "mesh { triangle { <0,0,0>, <1,0,0>, <0,1,0> } translate <1,2,3> translate <0,0,1> }"
   in

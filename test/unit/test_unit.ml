@@ -16,6 +16,7 @@ let () =
       ("Triangle", Test_triangle.tests);
       ("Mesh", Test_mesh.tests @ Test_mesh.trace_tests);
       ("Bvh", Test_bvh.tests);
+      ("Transform", Test_transform.tests);
       ("Compile", Test_compile.tests);
       ("Trace", Test_trace.tests);
       ("Render", Test_render.tests);

@@ -1,0 +1,100 @@
+(* What one object modifier does to a shape (POVRAY-3.7 §14.4), following the shapes' Translate,
+   Rotate, Scale and Transform methods in POV-Ray (shape/spheres.cpp, planes.cpp, triangle.cpp,
+   mesh.cpp) down to the operation order, since a baked parameter is only bit-exact if it is
+   computed the same way. *)
+
+type op = Translate of Vec.t | Rotate of Vec.t | Scale of Vec.t | Transform of Transform.t
+
+let op_transform = function
+  | Translate v -> Transform.translate v
+  | Rotate a -> Transform.rotate a
+  | Scale s -> Transform.scale s
+  | Transform t -> t
+
+(* Create_Transform() then Compose_Transforms: a shape's first transform is composed onto the
+   identity, exactly as POV-Ray does it. *)
+let attach trans op =
+  match trans with
+  | None -> Transform.compose Transform.identity (op_transform op)
+  | Some t -> Transform.compose t (op_transform op)
+
+(* Triangle::Compute_Triangle on the current corners, as POV-Ray runs it after parsing and after
+   every modifier: None when the triangle has no area (it is then flagged DEGENERATE and ignores
+   all later modifiers), else the unit normal and whether P1 and P2 are swapped. The normal is
+   scaled by the reciprocal of its length (VInverseScaleEq). *)
+let settle (p1 : Vec.t) (p2 : Vec.t) (p3 : Vec.t) =
+  let n = Vec.cross (Vec.sub p1 p2) (Vec.sub p3 p2) in
+  let len = Vec.length n in
+  if len = 0. then None
+  else
+    let k = 1. /. len in
+    let n = Vec.make (n.x *. k) (n.y *. k) (n.z *. k) in
+    let axis = Triangle.max3_coordinate (Float.abs n.x) (Float.abs n.y) (Float.abs n.z) in
+    Some (n, Triangle.needs_swap axis p1 p2 p3)
+
+(* SmoothTriangle::Scale: normals divided by the scale and renormalised (VScaleEq by 1/length). *)
+let scale_normal (n : Vec.t) (s : Vec.t) =
+  let n = Vec.make (n.x /. s.x) (n.y /. s.y) (n.z /. s.z) in
+  let k = 1. /. Vec.length n in
+  Vec.make (n.x *. k) (n.y *. k) (n.z *. k)
+
+let move_point op (p : Vec.t) =
+  match op with
+  | Translate v -> Vec.add p v
+  | Scale s -> Vec.mul p s
+  | Rotate _ | Transform _ -> Transform.point (op_transform op) p
+
+let shape (s : Scene.shape) op : Scene.shape =
+  match s with
+  | Sphere { centre; radius; trans = None } -> (
+      (* §2.2, Sphere::Translate/Rotate/Scale/Transform *)
+      match op with
+      | Translate v -> Sphere { centre = Vec.add centre v; radius; trans = None }
+      | Rotate _ -> Sphere { centre = Transform.point (op_transform op) centre; radius; trans = None }
+      | Scale v when v.x = v.y && v.x = v.z ->
+          Sphere { centre = Vec.scale v.x centre; radius = radius *. Float.abs v.x; trans = None }
+      | Scale _ | Transform _ ->
+          (* an ellipsoid: the sphere as it stands, in object space, mapped by a new transform *)
+          Sphere { centre; radius; trans = Some (attach None op) })
+  | Sphere { centre; radius; trans = Some _ as trans } -> Sphere { centre; radius; trans = Some (attach trans op) }
+  | Plane { normal; offset; trans = None } -> (
+      (* §2.3, Plane::Translate/Rotate/Scale; offset is −Distance *)
+      match op with
+      | Translate v -> Plane { normal; offset = offset +. Vec.dot normal v; trans = None }
+      | Rotate _ -> Plane { normal = Transform.direction (op_transform op) normal; offset; trans = None }
+      | Scale v ->
+          let n = Vec.make (normal.x /. v.x) (normal.y /. v.y) (normal.z /. v.z) in
+          let len = Vec.length n in
+          let k = 1. /. len in
+          Plane { normal = Vec.make (n.x *. k) (n.y *. k) (n.z *. k); offset = offset /. len; trans = None }
+      | Transform _ -> Plane { normal; offset; trans = Some (attach None op) })
+  | Plane { normal; offset; trans = Some _ as trans } -> Plane { normal; offset; trans = Some (attach trans op) }
+  | Triangle { p1; p2; p3 } -> (
+      (* §2.4, Triangle::Translate/Rotate/Scale/Transform: the corners move, then the set-up runs
+         again; the swap of the previous set-up is applied first *)
+      match settle p1 p2 p3 with
+      | None -> s
+      | Some (_, swap) ->
+          let p1, p2 = if swap then (p2, p1) else (p1, p2) in
+          Triangle { p1 = move_point op p1; p2 = move_point op p2; p3 = move_point op p3 })
+  | Smooth_triangle { p1; n1; p2; n2; p3; n3 } -> (
+      (* §2.5, SmoothTriangle::…: normals by MTransNormal (not renormalised) except under scale;
+         a triangle whose vertex normals straddle its face is DEGENERATE and stays as it is *)
+      match settle p1 p2 p3 with
+      | None -> s
+      | Some (n, swap) ->
+          let a = Vec.dot n n1 and b = Vec.dot n n2 and c = Vec.dot n n3 in
+          if not ((a < 0. && b < 0. && c < 0.) || (a > 0. && b > 0. && c > 0.)) then s
+          else
+            let p1, p2, n1, n2 = if swap then (p2, p1, n2, n1) else (p1, p2, n1, n2) in
+            let mp = move_point op in
+            let mn (n : Vec.t) =
+              match op with
+              | Translate _ -> n
+              | Scale v -> scale_normal n v
+              | Rotate _ | Transform _ -> Transform.normal (op_transform op) n
+            in
+            Smooth_triangle { p1 = mp p1; n1 = mn n1; p2 = mp p2; n2 = mn n2; p3 = mp p3; n3 = mn n3 })
+  | Mesh { mesh; trans; textures } ->
+      (* §2.6, Mesh::Translate/Rotate/Scale all call Transform *)
+      Mesh { mesh; trans = Some (attach trans op); textures }

@@ -1,0 +1,15 @@
+(** Moving shapes: what one [translate], [rotate], [scale], [matrix] or [transform] modifier does
+    to a shape (POVRAY-3.7 §14.4), shape by shape as POV-Ray's [Translate], [Rotate], [Scale] and
+    [Transform] methods do it. Apply the modifiers one by one in text order. *)
+
+(** One object modifier. [Scale] vectors arrive with zero components already replaced by 1
+    (§14.2); [Transform] carries a matrix or a whole [transform {…}] (inverse already applied). *)
+type op = Translate of Vec.t | Rotate of Vec.t | Scale of Vec.t | Transform of Transform.t
+
+val op_transform : op -> Transform.t
+(** [op_transform op] is the transform [op] stands for (rotations in degrees, §14.2). *)
+
+val shape : Scene.shape -> op -> Scene.shape
+(** [shape s op] is [s] after [op]: baked into a sphere, plane or triangle while it has no
+    transform of its own, composed into its transform otherwise (§14.4). A degenerate triangle
+    (or a standalone smooth triangle POV-Ray hides) is left as it is. *)
