@@ -40,6 +40,7 @@ let translate_switch arg =
     else if starts "H" && up <> "H" then valued "height" "H"
     else if starts "R" then valued "aa-depth" "R"
     else if starts "L" then valued "library-path" "L"
+    else if starts "K" && up <> "K" then valued "clock" "K"
     else if arg = "-h" then `Keep arg
     else `Bad
 
@@ -81,6 +82,9 @@ let print_stats (r : Pipeline.result) (o : Render.options) =
   Printf.eprintf "Reflected Rays:            %11d\n" s.reflected_rays;
   Printf.eprintf "Refracted Rays:            %11d\n" s.refracted_rays;
   Printf.eprintf "%s\n" line;
+  if r.includes <> [] then
+    Printf.eprintf "Include files: %s\n"
+      (String.concat ", " (List.map (fun (p, dt) -> Printf.sprintf "%s %.3f s" (Filename.basename p) dt) r.includes));
   Printf.eprintf "Parse Time:    %s\nBounding Time: %s\nRender Time:   %s\n              using %d process(es)\n"
     (hms r.parse_seconds) (hms r.build_seconds) (hms r.render_seconds) o.workers
 
@@ -107,13 +111,23 @@ let area_bound size v ~is_end =
 
 let usage_error msg = `Error (false, msg)
 
+let dump_scene iopts input =
+  match Interp.load_file iopts input with
+  | exception Error.Scene_error e -> print_error e; `Ok 1
+  | scene, warnings ->
+      List.iter print_warning warnings;
+      print_string (Dump.scene scene);
+      `Ok 0
+
 let run input positional output width height antialias no_aa method_ depth jitter no_jitter aa_gamma
-    _libs threads sr er sc ec block_size format _display _verbose =
+    libs threads sr er sc ec block_size format _display _verbose clock dump =
   let input = match (input, positional) with Some i, _ -> Some i | None, Some p -> Some p | None, None -> None in
   match input with
   | None -> usage_error "no scene file given: use +I<file> or give the file name"
   | Some input ->
+      let iopts = { (Interp.default_options ~width ~height) with clock; library_paths = libs } in
       if width < 1 || height < 1 then usage_error "width and height must be at least 1"
+      else if dump then dump_scene iopts input
       else if method_ <> 1 then usage_error (Printf.sprintf "sampling method %d is not supported yet (only +AM1)" method_)
       else
         let fmt = match format with `Png -> Png_fmt | `Ppm -> Ppm_fmt in
@@ -149,7 +163,7 @@ let run input positional output width height antialias no_aa method_ depth jitte
               progress = Unix.isatty Unix.stderr;
             }
           in
-          match Pipeline.run opts input with
+          match Pipeline.run ~interp:iopts opts input with
           | exception Error.Scene_error e -> print_error e; `Ok 1
           | exception Pool.Worker_failed msg -> Printf.eprintf "povml: error: %s; no image was written\n" msg; `Ok 1
           | r -> (
@@ -175,7 +189,7 @@ let cmd =
           the PNG it writes equals POV-Ray's.";
       `P "POV-Ray's own switches are accepted as they are and mean the same: $(b,+I)file, $(b,+O)file, \
           $(b,+W)n, $(b,+H)n, $(b,+A)[threshold], $(b,-A), $(b,+AM1), $(b,+R)n, $(b,+J)[amount], $(b,-J), \
-          $(b,+L)dir, $(b,+WT)n, $(b,+SR)/$(b,+ER)/$(b,+SC)/$(b,+EC) (partial render: full-size file, \
+          $(b,+L)dir, $(b,+K)v, $(b,+WT)n, $(b,+SR)/$(b,+ER)/$(b,+SC)/$(b,+EC) (partial render: full-size file, \
           unrendered pixels black), $(b,+FN) (PNG), $(b,+FP) (PPM), $(b,+D)/$(b,-D), $(b,+V)/$(b,-V). \
           Each is shown below with its long form.";
       `S sw;
@@ -216,8 +230,14 @@ let cmd =
   in
   let display = Arg.(value & vflag false [ (true, info [ "display" ] ~docs ~doc:"+D: accepted; povml has no preview window."); (false, info [ "no-display" ] ~docs ~doc:"-D: no preview window.") ]) in
   let verbose = Arg.(value & vflag false [ (true, info [ "verbose" ] ~docs ~doc:"+V: accepted."); (false, info [ "no-verbose" ] ~docs ~doc:"-V: accepted.") ]) in
+  let clock = Arg.(value & opt float 0. & info [ "clock" ] ~docv:"V" ~docs ~doc:"+K: the value of $(b,clock) in the scene (default 0).") in
+  let dump =
+    Arg.(value & flag & info [ "dump" ]
+           ~doc:"Print the evaluated scene instead of rendering it: every object after all directives, macros and \
+                 loops, with its final shape, transform, texture and interior, and where it was written.")
+  in
   let term =
-    Term.(ret (const run $ input $ positional $ output $ width $ height $ antialias $ no_aa $ method_ $ depth $ jitter $ no_jitter $ aa_gamma $ libs $ threads $ sr $ er $ sc $ ec $ block_size $ format $ display $ verbose))
+    Term.(ret (const run $ input $ positional $ output $ width $ height $ antialias $ no_aa $ method_ $ depth $ jitter $ no_jitter $ aa_gamma $ libs $ threads $ sr $ er $ sc $ ec $ block_size $ format $ display $ verbose $ clock $ dump))
   in
   Cmd.v (Cmd.info "povml" ~version:"0.1.0" ~doc ~man ~exits:[]) term
 

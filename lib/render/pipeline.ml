@@ -3,6 +3,7 @@ type result = {
   stats : Stats.t;
   warnings : Error.t list;
   scene : Scene.t;
+  includes : (string * float) list;
   parse_seconds : float;
   build_seconds : float;
   render_seconds : float;
@@ -11,11 +12,13 @@ type result = {
 let run ?interp (opts : Render.options) path =
   let t0 = Unix.gettimeofday () in
   let iopts = match interp with Some i -> i | None -> Interp.default_options ~width:opts.width ~height:opts.height in
-  let scene, warnings = Interp.load_file { iopts with width = opts.width; height = opts.height } path in
+  let includes = ref [] in
+  let included p ~depth dt = iopts.included p ~depth dt; if depth = 1 then includes := (p, dt) :: !includes in
+  let scene, warnings = Interp.load_file { iopts with width = opts.width; height = opts.height; included } path in
   let t1 = Unix.gettimeofday () in
   let compiled = Compile.scene scene in
   let t2 = Unix.gettimeofday () in
   let img, stats = Render.render opts compiled scene.gamma in
   let image = Encode.image scene.gamma img in
   let t3 = Unix.gettimeofday () in
-  { image; stats; warnings; scene; parse_seconds = t1 -. t0; build_seconds = t2 -. t1; render_seconds = t3 -. t2 }
+  { image; stats; warnings; scene; includes = List.rev !includes; parse_seconds = t1 -. t0; build_seconds = t2 -. t1; render_seconds = t3 -. t2 }

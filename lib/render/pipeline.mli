@@ -5,6 +5,7 @@ type result = {
   stats : Stats.t;
   warnings : Error.t list;
   scene : Scene.t;
+  includes : (string * float) list;  (** the files the scene included, with the seconds each took *)
   parse_seconds : float;  (** reading the scene, meshes and their hierarchies included *)
   build_seconds : float;  (** the compile step: the scene's hierarchy, the surfaces *)
   render_seconds : float;  (** tracing and encoding *)

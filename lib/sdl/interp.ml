@@ -10,6 +10,7 @@ type options = {
   clock : float;  (** +K *)
   library_paths : string list;  (** +L, searched in order after the including file's directory *)
   debug : string -> unit;  (** where #debug text goes *)
+  included : string -> depth:int -> float -> unit;  (** an include file was read: path, nesting, seconds *)
 }
 
 type camera_spec = V.camera_spec = {
@@ -33,7 +34,7 @@ type frame = { lx : Lexer.t; kind : frame_kind; mutable conds : cond list }
 
 and frame_kind =
   | Main
-  | Included of Loc.t  (* where the #include was *)
+  | Included of Loc.t * float  (* where the #include was, and when reading it began *)
   | Macro_body of string * Loc.t  (* the macro and where it was called *)
 
 and cond =
@@ -168,7 +169,8 @@ and end_of_frame st f t =
       Error.raise_at loc "%s has no matching #end before the end of the file" what);
   match f.kind with
   | Main -> st.cur <- t; st.have <- true; st.cur_elem <- None
-  | Included _ ->
+  | Included (_, t0) ->
+      st.opts.included (Lexer.file f.lx) ~depth:st.includes (Unix.gettimeofday () -. t0);
       st.frames <- List.tl st.frames;
       st.tables <- List.tl st.tables;
       st.includes <- st.includes - 1;
@@ -1944,7 +1946,7 @@ let directive st d loc =
           Error.raise_at loc "cannot find the include file \"%s\" (searched %s)" name (String.concat ", " (include_dirs st))
       | Some path ->
           let text = read_file path in
-          st.frames <- { lx = Lexer.create ~file:path text; kind = Included loc; conds = [] } :: st.frames;
+          st.frames <- { lx = Lexer.create ~file:path text; kind = Included (loc, Unix.gettimeofday ()); conds = [] } :: st.frames;
           st.tables <- Hashtbl.create 16 :: st.tables;
           st.includes <- st.includes + 1)
   | "if" -> run_if st (truth (cond_value st "if")) loc
@@ -2168,7 +2170,7 @@ let chain st =
     (fun f ->
       match f.kind with
       | Main -> None
-      | Included l -> Some (l, "in the file included from here")
+      | Included (l, _) -> Some (l, "in the file included from here")
       | Macro_body (name, l) -> Some (l, Printf.sprintf "in macro '%s' called from here" name))
     st.frames
 
@@ -2198,6 +2200,13 @@ let load_string opts ~file text =
   (scene, List.rev st.warnings)
 
 let default_options ~width ~height =
-  { width; height; clock = 0.; library_paths = []; debug = (fun s -> prerr_string s; flush stderr) }
+  {
+    width;
+    height;
+    clock = 0.;
+    library_paths = [];
+    debug = (fun s -> prerr_string s; flush stderr);
+    included = (fun _ ~depth:_ _ -> ());
+  }
 
 let load_file opts path = load_string opts ~file:path (read_file path)

@@ -7,10 +7,14 @@ type options = {
   clock : float;  (** [clock], from +K *)
   library_paths : string list;  (** +L directories, searched for include files after the scene's *)
   debug : string -> unit;  (** receives the text of [#debug] as it is read *)
+  included : string -> depth:int -> float -> unit;
+      (** told of each include file when it has been read: its path, its nesting (1 for a file the
+          scene includes) and the seconds it took, nested includes included *)
 }
 
 val default_options : width:int -> height:int -> options
-(** [default_options ~width ~height] has clock 0, no library paths, and [#debug] text on stderr. *)
+(** [default_options ~width ~height] has clock 0, no library paths, [#debug] text on stderr and no
+    include report. *)
 
 val load_string : options -> file:string -> string -> Scene.t * Error.t list
 (** [load_string opts ~file text] interprets [text] (named [file] in locations) and returns the scene

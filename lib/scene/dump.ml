@@ -1,0 +1,110 @@
+(* The evaluated scene as text (povml --dump): what the interpreter made of the scene after every
+   directive, macro and loop, in a POV-Ray-like notation. Numbers are printed with up to 10
+   significant digits, so the output is stable across runs and readable in tests. *)
+
+open Scene
+
+let num x =
+  let x = if x = 0. then 0. else x (* no "-0" *) in
+  if Float.is_integer x && Float.abs x < 1e15 then Printf.sprintf "%.0f" x
+  else if Float.is_nan x then "nan"
+  else if x = Float.infinity then "inf"
+  else if x = Float.neg_infinity then "-inf"
+  else Printf.sprintf "%.10g" x
+
+let vec (v : Vec.t) = Printf.sprintf "<%s, %s, %s>" (num v.x) (num v.y) (num v.z)
+let rgb (c : Rgb.t) = Printf.sprintf "rgb <%s, %s, %s>" (num c.r) (num c.g) (num c.b)
+
+let colour (c : Colour.t) =
+  if c.filter = 0. && c.transmit = 0. then Printf.sprintf "rgb <%s, %s, %s>" (num c.red) (num c.green) (num c.blue)
+  else Printf.sprintf "rgbft <%s, %s, %s, %s, %s>" (num c.red) (num c.green) (num c.blue) (num c.filter) (num c.transmit)
+
+let matrix (t : Transform.t) =
+  Printf.sprintf "matrix <%s>"
+    (String.concat ", "
+       (List.map num [ t.m00; t.m01; t.m02; t.m10; t.m11; t.m12; t.m20; t.m21; t.m22; t.m30; t.m31; t.m32 ]))
+
+(* Only what differs from the default finish (POVRAY-3.7 §10.1) is shown. *)
+let finish (f : finish) =
+  let d = Defaults.finish in
+  let items = ref [] in
+  let add cond s = if cond then items := s :: !items in
+  add (f.ambient <> d.ambient) ("ambient " ^ rgb f.ambient);
+  add (f.emission <> d.emission) ("emission " ^ rgb f.emission);
+  add (f.diffuse <> d.diffuse) ("diffuse " ^ num f.diffuse);
+  add (f.brilliance <> d.brilliance) ("brilliance " ^ num f.brilliance);
+  add (f.phong <> d.phong) ("phong " ^ num f.phong);
+  add (f.phong_size <> d.phong_size) ("phong_size " ^ num f.phong_size);
+  add (f.specular <> d.specular) ("specular " ^ num f.specular);
+  add (f.roughness <> d.roughness) ("roughness " ^ num f.roughness);
+  add (f.metallic <> d.metallic) ("metallic " ^ num f.metallic);
+  let r = f.reflection in
+  if r <> d.reflection then
+    add true
+      (Printf.sprintf "reflection { %s, %s%s falloff %s exponent %s metallic %s }" (rgb r.rmin) (rgb r.rmax)
+         (if r.fresnel then " fresnel" else "") (num r.falloff) (num r.exponent) (num r.refl_metallic));
+  add f.conserve_energy "conserve_energy";
+  add (f.refraction <> d.refraction) ("refraction " ^ num f.refraction);
+  (match f.legacy_ior with Some i -> add true ("ior " ^ num i) | None -> ());
+  String.concat " " (List.rev !items)
+
+let texture (t : texture) =
+  let (Solid c) = t.pigment in
+  let f = finish t.finish in
+  Printf.sprintf "texture { pigment { %s }%s }" (colour c) (if f = "" then "" else Printf.sprintf " finish { %s }" f)
+
+let interior (i : interior) =
+  if i = Defaults.interior then ""
+  else
+    Printf.sprintf "\n  interior { ior %s%s }" (num i.ior)
+      (if i.fade_distance <> 0. || i.fade_power <> 0. then
+         Printf.sprintf " fade_distance %s fade_power %s fade_color %s" (num i.fade_distance) (num i.fade_power) (rgb i.fade_colour)
+       else "")
+
+let trans = function None -> "" | Some t -> "\n  " ^ matrix t
+
+let shape = function
+  | Sphere { centre; radius; trans = t } -> Printf.sprintf "sphere { %s, %s%s" (vec centre) (num radius) (trans t)
+  | Plane { normal; offset; trans = t } -> Printf.sprintf "plane { %s, %s%s" (vec normal) (num offset) (trans t)
+  | Triangle { p1; p2; p3 } -> Printf.sprintf "triangle { %s, %s, %s" (vec p1) (vec p2) (vec p3)
+  | Smooth_triangle { p1; n1; p2; n2; p3; n3 } ->
+      Printf.sprintf "smooth_triangle { %s, %s, %s, %s, %s, %s" (vec p1) (vec n1) (vec p2) (vec n2) (vec p3) (vec n3)
+  | Mesh { mesh; trans = t; textures } ->
+      let b = Mesh.bounds mesh in
+      Printf.sprintf "mesh { // %d triangles within <%s, %s, %s> … <%s, %s, %s>%s%s" mesh.faces (num b.(0)) (num b.(1))
+        (num b.(2)) (num b.(3)) (num b.(4)) (num b.(5))
+        (if Array.length textures > 0 then Printf.sprintf ", %d face textures" (Array.length textures) else "")
+        (trans t)
+
+let obj (o : obj) =
+  Printf.sprintf "%s\n  %s%s%s\n} // %s\n" (shape o.shape) (texture o.texture) (interior o.interior)
+    (if o.no_shadow then "\n  no_shadow" else "")
+    (Loc.to_string o.loc)
+
+let light (l : light) =
+  Printf.sprintf "light_source { %s, %s%s%s }\n" (vec l.position) (rgb l.colour) (if l.shadowless then " shadowless" else "")
+    (if l.fade_distance <> 0. || l.fade_power <> 0. then
+       Printf.sprintf " fade_distance %s fade_power %s" (num l.fade_distance) (num l.fade_power)
+     else "")
+
+let scene (s : t) =
+  let b = Buffer.create 4096 in
+  let add = Buffer.add_string b in
+  add (Printf.sprintf "// version %s, %s\n" (num (float_of_int s.version /. 100.))
+         (match s.gamma with Gamma_off -> "no gamma correction" | Working g -> "assumed_gamma " ^ num g));
+  add (Printf.sprintf "global_settings { max_trace_level %d adc_bailout %s ambient_light %s }\n" s.max_trace_level
+         (num s.adc_bailout) (rgb s.ambient_light));
+  let c = s.camera in
+  add (Printf.sprintf "camera { location %s direction %s up %s right %s }\n" (vec c.location) (vec c.direction) (vec c.up) (vec c.right));
+  add (Printf.sprintf "background { %s }\n" (colour s.background));
+  (match s.sky with
+  | None -> ()
+  | Some sk ->
+      add
+        (Printf.sprintf "sky_sphere { %s emission %s }\n"
+           (String.concat " " (List.map (fun (Solid c) -> Printf.sprintf "pigment { %s }" (colour c)) sk.sky_pigments))
+           (rgb sk.sky_emission)));
+  List.iter (fun l -> add (light l)) s.lights;
+  List.iter (fun o -> add (obj o)) s.objects;
+  add (Printf.sprintf "// %d objects, %d lights\n" (List.length s.objects) (List.length s.lights));
+  Buffer.contents b
