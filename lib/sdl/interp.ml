@@ -406,7 +406,11 @@ and parse_relational st =
       let loc = peek_loc st in
       advance st;
       let rhs = parse_expr st in
-      loop (logic loc f lhs rhs)
+      match (lhs, rhs) with
+      | V.String a, V.String b ->
+          (* strings compare as strcmp does, against 0 *)
+          loop (V.Float (if f (float_of_int (Strfmt.compare a b)) 0. then 1. else 0.))
+      | _ -> loop (logic loc f lhs rhs)
     in
     match peek_follow st with
     | Lt -> rel (fun a b -> a < b)

@@ -24,4 +24,11 @@ let value s =
   done;
   !best
 
-let compare a b = compare a b
+(* strcmp(A, B): the difference of the first differing bytes, as POV-Ray prints it ("A" vs "a" is −32) *)
+let compare a b =
+  let la = String.length a and lb = String.length b in
+  let rec go i =
+    let ca = if i < la then Char.code a.[i] else 0 and cb = if i < lb then Char.code b.[i] else 0 in
+    if ca <> cb || i >= la then ca - cb else go (i + 1)
+  in
+  go 0

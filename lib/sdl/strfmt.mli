@@ -11,4 +11,4 @@ val value : string -> float
 (** [value s] is [val(s)]: the number at the start of [s], 0 when there is none. *)
 
 val compare : string -> string -> int
-(** [compare a b] is [strcmp(a, b)]: negative, zero or positive. *)
+(** [compare a b] is [strcmp(a, b)]: the difference of the first differing bytes, 0 when equal. *)
