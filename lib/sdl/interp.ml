@@ -4,6 +4,14 @@
 open Token
 module V = Value
 
+(* Tables keyed by names: the symbol tables and the keyword sets, searched for every identifier. *)
+module Names = Hashtbl.Make (struct
+  type t = string
+
+  let equal = String.equal
+  let hash = Hashtbl.hash
+end)
+
 type options = {
   width : int;
   height : int;
@@ -53,8 +61,8 @@ type st = {
   mutable streams : V.stream array;  (* the random streams made by seed() *)  (* reading the argument of defined(): a macro name is not called *)
   mutable depth : int;  (* '{' minus '}' consumed: how a declaration that fails is skipped *)
   opts : options;
-  global : (string, V.t ref) Hashtbl.t;
-  mutable tables : (string, V.t ref) Hashtbl.t list;  (* innermost first; the global table is last *)
+  global : V.t ref Names.t;
+  mutable tables : V.t ref Names.t list;  (* innermost first; the global table is last *)
   mutable includes : int;  (* open include files *)
   mutable macro_depth : int;
   mutable version : int;  (* languageVersion × 100 *)
@@ -112,7 +120,15 @@ let unsupported =
     "interior_texture"; "light_group"; "no_radiosity"; "split_union"; "cutaway_textures"; "sturm";
     "open"; "phong_albedo"; "metallic_albedo"; "translucency" ]
 
-let is_keyword s = List.mem s keywords || List.mem s unsupported
+let set_of l =
+  let h = Names.create 64 in
+  List.iter (fun s -> Names.replace h s ()) l;
+  h
+
+let keyword_set = set_of (keywords @ unsupported)
+let unsupported_set = set_of unsupported
+let is_keyword s = Names.mem keyword_set s
+let is_unsupported s = Names.mem unsupported_set s
 
 (* ---------------------------------------------------------------------------------------------- *)
 (* Token access
@@ -126,7 +142,7 @@ let top st = List.hd st.frames
 let lookup_cell st name =
   let rec go = function
     | [] -> None
-    | t :: rest -> ( match Hashtbl.find_opt t name with Some c -> Some c | None -> go rest)
+    | t :: rest -> ( match Names.find_opt t name with Some c -> Some c | None -> go rest)
   in
   go st.tables
 
@@ -223,7 +239,7 @@ let not_supported loc what = raise (Unsupported (loc, what, []))
 (* Using a declared value that needed an unsupported feature. *)
 let unsupported_use loc name what at = raise (Unsupported (loc, Printf.sprintf "%s (used through '%s')" what name, [ (at, Printf.sprintf "'%s' was declared here" name) ]))
 
-let all_names st = List.concat_map (fun t -> Hashtbl.fold (fun k _ acc -> k :: acc) t []) st.tables
+let all_names st = List.concat_map (fun t -> Names.fold (fun k _ acc -> k :: acc) t []) st.tables
 
 let unknown_identifier st loc name =
   let candidates = all_names st @ keywords in
@@ -234,7 +250,7 @@ let unknown_identifier st loc name =
 let unexpected st what =
   let k = peek st in
   match k with
-  | Ident s when List.mem s unsupported -> not_supported (peek_loc st) (Printf.sprintf "'%s'" s)
+  | Ident s when is_unsupported s -> not_supported (peek_loc st) (Printf.sprintf "'%s'" s)
   | Ident s when (not (is_keyword s)) && cur_value st s = None -> (
       let candidates = all_names st @ keywords in
       match Suggest.nearest s candidates with
@@ -285,12 +301,25 @@ let component_index = function
   | _ -> None
 
 let colour_keywords = [ "color"; "colour"; "rgb"; "rgbf"; "rgbt"; "rgbft"; "red"; "green"; "blue"; "filter"; "transmit" ]
+let colour_set = set_of colour_keywords
 
 let is_colour_start st =
   match peek st with
-  | Ident s when List.mem s colour_keywords -> true
+  | Ident s when Names.mem colour_set s -> true
   | Ident s -> ( match cur_value st s with Some (V.Colour _) -> true | _ -> false)
   | _ -> false
+
+let function_names =
+  [ "abs"; "sqrt"; "sin"; "cos"; "tan"; "asin"; "acos"; "atan"; "atan2"; "pow"; "exp"; "ln"; "log"; "min";
+    "max"; "int"; "floor"; "ceil"; "mod"; "div"; "radians"; "degrees"; "vlength"; "vnormalize"; "vdot"; "vcross";
+    "select"; "sinh"; "cosh"; "tanh"; "asinh"; "acosh"; "atanh"; "defined"; "dimensions"; "dimension_size";
+    "seed"; "rand"; "bitwise_and"; "bitwise_or"; "bitwise_xor"; "vrotate"; "vaxis_rotate"; "str"; "vstr";
+    "concat"; "substr"; "chr"; "asc"; "strlen"; "strupr"; "strlwr"; "val"; "strcmp"; "file_exists" ]
+
+let unsupported_functions = [ "inside"; "trace"; "min_extent"; "max_extent"; "vturbulence"; "datetime"; "function" ]
+
+let function_set = set_of function_names
+let object_set = set_of [ "sphere"; "plane"; "object"; "triangle"; "smooth_triangle"; "mesh"; "mesh2"; "union" ]
 
 let truth x = Float.abs x > 1e-10
 
@@ -475,27 +504,18 @@ and parse_ident_value st loc name =
       (* days since 2000-01-01 00:00 UTC *)
       V.Float ((Unix.gettimeofday () -. 946684800.) /. 86400.)
   | "input_file_name" -> advance st; V.String (Lexer.file (List.nth st.frames (List.length st.frames - 1)).lx)
-  | _ when List.mem name colour_keywords -> V.Colour (colour_array (parse_colour st))
-  | _ when List.mem name function_names -> parse_function st loc name
+  | _ when Names.mem colour_set name -> V.Colour (colour_array (parse_colour st))
+  | _ when Names.mem function_set name -> parse_function st loc name
   | _ -> (
       match cur_value st name with
       | Some ((V.Float _ | V.Vector _ | V.Colour _ | V.String _) as v) -> advance st; v
       | Some (V.Unsupported u) -> unsupported_use loc name u.what u.at
       | Some v -> Error.raise_at loc "expected a numeric expression but '%s' is %s" name (V.kind_name v)
       | None ->
-          if List.mem name unsupported then not_supported loc (Printf.sprintf "'%s'" name)
+          if is_unsupported name then not_supported loc (Printf.sprintf "'%s'" name)
           else if List.mem name unsupported_functions then not_supported loc (Printf.sprintf "the function '%s'" name)
           else if is_keyword name then Error.raise_at loc "expected a numeric expression but found '%s'" name
           else unknown_identifier st loc name)
-
-and function_names =
-  [ "abs"; "sqrt"; "sin"; "cos"; "tan"; "asin"; "acos"; "atan"; "atan2"; "pow"; "exp"; "ln"; "log"; "min";
-    "max"; "int"; "floor"; "ceil"; "mod"; "div"; "radians"; "degrees"; "vlength"; "vnormalize"; "vdot"; "vcross";
-    "select"; "sinh"; "cosh"; "tanh"; "asinh"; "acosh"; "atanh"; "defined"; "dimensions"; "dimension_size";
-    "seed"; "rand"; "bitwise_and"; "bitwise_or"; "bitwise_xor"; "vrotate"; "vaxis_rotate"; "str"; "vstr";
-    "concat"; "substr"; "chr"; "asc"; "strlen"; "strupr"; "strlwr"; "val"; "strcmp"; "file_exists" ]
-
-and unsupported_functions = [ "inside"; "trace"; "min_extent"; "max_extent"; "vturbulence"; "datetime"; "function" ]
 
 (* The argument of defined(…) and #ifdef: an identifier (or array element) that is not evaluated. *)
 and parse_defined_arg st =
@@ -756,9 +776,9 @@ and parse_colour st : Colour.t =
       advance st;
       keyword_seen := true;
       (match peek st with
-      | Ident s when List.mem s colour_keywords -> ()
+      | Ident s when Names.mem colour_set s -> ()
       | _ -> let loc = peek_loc st in ignore (set_terms loc 5 (parse_expr st)))
-  | Ident s when not (List.mem s colour_keywords) -> (
+  | Ident s when not (Names.mem colour_set s) -> (
       match cur_value st s with
       | Some (V.Colour _) -> let loc = peek_loc st in ignore (set_terms loc 5 (parse_expr st)); keyword_seen := true
       | _ -> ())
@@ -787,7 +807,7 @@ let parse_rgb st what =
 let float_follows st =
   match peek st with
   | Num _ | LParen | Minus | Plus -> true
-  | Ident s -> ( match cur_value st s with Some (V.Float _) -> true | _ -> List.mem s function_names || List.mem s [ "pi"; "true"; "false"; "yes"; "no"; "on"; "off"; "clock"; "version"; "image_width"; "image_height" ])
+  | Ident s -> ( match cur_value st s with Some (V.Float _) -> true | _ -> Names.mem function_set s || List.mem s [ "pi"; "true"; "false"; "yes"; "no"; "on"; "off"; "clock"; "version"; "image_width"; "image_height" ])
   | _ -> false
 
 let parse_bool_opt st = if float_follows st then truth (parse_float st) else true
@@ -818,7 +838,7 @@ let parse_pigment st (base : Scene.pigment) : Scene.pigment =
     | Ident s when is_colour_start st -> ignore s; loop (Scene.Solid (parse_colour st))
     | Ident "translate" -> advance st; ignore (parse_vector st); loop p (* a plain colour is the same everywhere *)
     | Ident ("quick_color" | "quick_colour") -> advance st; ignore (parse_colour st); loop p
-    | Ident s when List.mem s unsupported -> not_supported loc (Printf.sprintf "'%s' in a pigment" s)
+    | Ident s when is_unsupported s -> not_supported loc (Printf.sprintf "'%s' in a pigment" s)
     | _ -> unexpected st "a colour or '}' in a pigment"
   in
   loop p
@@ -841,7 +861,7 @@ let parse_reflection_block st (r : Scene.reflection) : Scene.reflection =
     | Ident "falloff" -> advance st; loop { r with falloff = parse_float st }
     | Ident "exponent" -> advance st; loop { r with exponent = parse_float st }
     | Ident "metallic" -> advance st; loop { r with refl_metallic = (if float_follows st then parse_float st else 1.) }
-    | Ident s when List.mem s unsupported -> not_supported loc (Printf.sprintf "'%s' in reflection" s)
+    | Ident s when is_unsupported s -> not_supported loc (Printf.sprintf "'%s' in reflection" s)
     | _ -> unexpected st "'fresnel', 'falloff', 'exponent', 'metallic' or '}' in reflection"
   in
   let r = loop r in
@@ -895,7 +915,7 @@ let parse_finish st (base : Scene.finish) : Scene.finish =
         advance st;
         warn st loc "index of refraction value should be specified in 'interior{...}' statement";
         loop { f with legacy_ior = Some (parse_float st) }
-    | Ident s when List.mem s unsupported -> not_supported loc (Printf.sprintf "'%s' in a finish" s)
+    | Ident s when is_unsupported s -> not_supported loc (Printf.sprintf "'%s' in a finish" s)
     | _ -> unexpected st "a finish keyword or '}'"
   in
   let f = loop f in
@@ -920,7 +940,7 @@ let parse_texture st (base : Scene.texture) : Scene.texture =
     | Ident "pigment" -> advance st; loop { t with pigment = parse_pigment st t.pigment }
     | Ident "finish" -> advance st; loop { t with finish = parse_finish st t.finish }
     | Ident "translate" -> advance st; ignore (parse_vector st); loop t
-    | Ident s when List.mem s unsupported -> not_supported loc (Printf.sprintf "'%s' in a texture" s)
+    | Ident s when is_unsupported s -> not_supported loc (Printf.sprintf "'%s' in a texture" s)
     | _ -> unexpected st "'pigment', 'finish' or '}' in a texture"
   in
   loop t
@@ -936,7 +956,7 @@ let parse_interior st (base : Scene.interior) : Scene.interior =
     | Ident "fade_distance" -> advance st; loop { i with fade_distance = parse_float st }
     | Ident "fade_power" -> advance st; loop { i with fade_power = parse_float st }
     | Ident ("fade_color" | "fade_colour") -> advance st; loop { i with fade_colour = parse_rgb st "fade_color" }
-    | Ident s when List.mem s unsupported -> not_supported loc (Printf.sprintf "'%s' in an interior" s)
+    | Ident s when is_unsupported s -> not_supported loc (Printf.sprintf "'%s' in an interior" s)
     | _ -> unexpected st "'ior', 'fade_distance', 'fade_power', 'fade_color' or '}' in an interior"
   in
   loop i
@@ -1036,7 +1056,7 @@ let parse_object_mods st (o : V.obj) what : V.obj =
     | Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") -> loop (move_obj (parse_op st) o)
     | Ident "no_shadow" -> advance st; loop { o with no_shadow = true }
     | Ident "hollow" -> advance st; ignore (parse_bool_opt st); loop o
-    | Ident s when List.mem s unsupported -> not_supported loc (Printf.sprintf "'%s'" s)
+    | Ident s when is_unsupported s -> not_supported loc (Printf.sprintf "'%s'" s)
     | _ -> unexpected st (Printf.sprintf "an object modifier or '}' closing '%s'" what)
   in
   loop o
@@ -1044,7 +1064,6 @@ let parse_object_mods st (o : V.obj) what : V.obj =
 let new_obj_of shape loc = { V.shape; texture = None; interior = None; no_shadow = false; oloc = loc }
 let new_obj shape loc = new_obj_of (V.Prim shape) loc
 
-let object_keywords = [ "sphere"; "plane"; "object"; "triangle"; "smooth_triangle"; "mesh"; "mesh2"; "union" ]
 
 (* Objects povml does not render yet: inside a union they are reported as "not supported yet". *)
 let unsupported_objects =
@@ -1070,7 +1089,7 @@ let parse_light st =
     | Ident "fade_power" -> advance st; loop { l with fade_power = parse_float st }
     | Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") -> loop (move_light (parse_op st) l)
     | Ident ("color" | "colour" | "rgb") -> loop { l with colour = parse_rgb st "a light colour" }
-    | Ident s when List.mem s unsupported -> not_supported loc (Printf.sprintf "'%s' in a light_source" s)
+    | Ident s when is_unsupported s -> not_supported loc (Printf.sprintf "'%s' in a light_source" s)
     | _ -> unexpected st "a light_source keyword or '}'"
   in
   loop { Scene.position; colour; shadowless = false; fade_distance = 0.; fade_power = 0. }
@@ -1238,6 +1257,15 @@ let parse_texture_in_block st =
   advance st;
   parse_texture st st.default_texture
 
+(* Values povml cannot make yet; a declaration of one is kept as [V.Unsupported]. *)
+let unsupported_rvalues =
+  [ "material"; "normal"; "color_map"; "colour_map"; "pigment_map"; "normal_map"; "texture_map"; "slope_map";
+    "function"; "spline"; "media"; "density"; "fog"; "rainbow"; "sky_sphere"; "isosurface" ]
+
+let unsupported_rvalue_set = set_of (unsupported_objects @ unsupported_rvalues)
+
+let unsupported_object_set = set_of unsupported_objects
+
 let rec parse_object st : V.obj =
   let loc = peek_loc st in
   match peek st with
@@ -1285,7 +1313,7 @@ let rec parse_object st : V.obj =
       let iloc = peek_loc st in
       let o =
         match peek st with
-        | Ident s when List.mem s object_keywords -> parse_object st
+        | Ident s when Names.mem object_set s -> parse_object st
         | Ident s -> (
             match cur_value st s with
             | Some (V.Object o) -> advance st; { o with oloc = loc }
@@ -1322,8 +1350,8 @@ let rec parse_object st : V.obj =
 (* Does an object (a keyword or an identifier of one) come next? *)
 and object_follows st =
   match peek st with
-  | Ident s when List.mem s object_keywords -> true
-  | Ident s -> ( match cur_value st s with Some (V.Object _ | V.Light _) -> true | Some (V.Unsupported _) -> true | _ -> List.mem s unsupported_objects)
+  | Ident s when Names.mem object_set s -> true
+  | Ident s -> ( match cur_value st s with Some (V.Object _ | V.Light _) -> true | Some (V.Unsupported _) -> true | _ -> Names.mem unsupported_object_set s)
   | _ -> false
 
 (* mesh { triangle {…} smooth_triangle {…} … [inside_vector V] modifiers } (§2.6). Vertices are kept
@@ -1542,7 +1570,7 @@ let parse_camera st =
     | Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") ->
         let t = Place.op_transform (parse_op st) in
         loop { c with c_trans = Some (match c.c_trans with None -> t | Some t0 -> Transform.compose t0 t) }
-    | Ident s when List.mem s unsupported -> not_supported loc (Printf.sprintf "'%s' in a camera" s)
+    | Ident s when is_unsupported s -> not_supported loc (Printf.sprintf "'%s' in a camera" s)
     | _ -> unexpected st "a camera keyword or '}'"
   in
   loop base
@@ -1618,7 +1646,7 @@ let parse_global_settings st =
     | Ident ("number_of_waves" | "noise_generator") -> advance st; ignore (parse_float st); loop ()
     | Ident "irid_wavelength" -> advance st; ignore (parse_rgb st "irid_wavelength"); loop ()
     | Ident "charset" -> advance st; (match peek st with Ident _ -> advance st | _ -> unexpected st "a charset name"); loop ()
-    | Ident s when List.mem s unsupported -> not_supported loc (Printf.sprintf "'%s' in global_settings" s)
+    | Ident s when is_unsupported s -> not_supported loc (Printf.sprintf "'%s' in global_settings" s)
     | _ -> unexpected st "a global_settings keyword or '}'"
   in
   loop ()
@@ -1638,7 +1666,7 @@ let parse_sky_sphere st =
     | Ident "pigment" -> advance st; loop (parse_pigment st (Scene.Solid Colour.black) :: pigs) emission
     | Ident "emission" -> advance st; loop pigs (parse_rgb st "sky_sphere emission")
     | Ident "translate" -> advance st; ignore (parse_vector st); loop pigs emission
-    | Ident s when List.mem s unsupported -> not_supported l (Printf.sprintf "'%s' in a sky_sphere" s)
+    | Ident s when is_unsupported s -> not_supported l (Printf.sprintf "'%s' in a sky_sphere" s)
     | _ -> unexpected st "'pigment' or '}' in a sky_sphere"
   in
   st.sky <- Some (loop [] Rgb.white)
@@ -1667,7 +1695,7 @@ let rec parse_rvalue st : V.t * bool =
   let loc = peek_loc st in
   match peek st with
   | Ident "light_source" -> (V.Light (parse_light st), false)
-  | Ident s when List.mem s object_keywords -> (V.Object (parse_object st), false)
+  | Ident s when Names.mem object_set s -> (V.Object (parse_object st), false)
   | Ident "pigment" -> advance st; (V.Pigment (parse_pigment st (Scene.Solid Colour.black)), false)
   | Ident "finish" -> advance st; (V.Finish (parse_finish st Defaults.finish), false)
   | Ident "texture" ->
@@ -1679,7 +1707,7 @@ let rec parse_rvalue st : V.t * bool =
   | Ident "camera" -> advance st; (V.Camera (parse_camera st), false)
   | Ident "transform" -> advance st; (V.Transform (parse_transform st), false)
   | Ident "array" -> (parse_array st, false)
-  | Ident s when List.mem s unsupported_objects || List.mem s unsupported_rvalues -> not_supported loc (Printf.sprintf "'%s'" s)
+  | Ident s when Names.mem unsupported_rvalue_set s -> not_supported loc (Printf.sprintf "'%s'" s)
   | Ident s -> (
       match cur_value st s with
       | Some (V.Object o) -> advance st; (V.Object { o with oloc = loc }, false)
@@ -1688,11 +1716,6 @@ let rec parse_rvalue st : V.t * bool =
       | Some (V.Array a) -> advance st; (V.Array { a with cells = Array.copy a.cells }, false)
       | _ -> (parse_expr st, true))
   | _ -> (parse_expr st, true)
-
-(* Values povml cannot make yet; a declaration of one is kept as [V.Unsupported]. *)
-and unsupported_rvalues =
-  [ "material"; "normal"; "color_map"; "colour_map"; "pigment_map"; "normal_map"; "texture_map"; "slope_map";
-    "function"; "spline"; "media"; "density"; "fog"; "rainbow"; "sky_sphere"; "isosurface" ]
 
 (* array[d1][d2]… [{ initialisers }] (§11.2). *)
 and parse_array st =
@@ -1758,9 +1781,9 @@ let assign st ~local name value =
   let current = List.hd st.tables in
   match (local, lookup_cell st name) with
   | true, _ -> (
-      match Hashtbl.find_opt current name with Some c -> c := value | None -> Hashtbl.replace current name (ref value))
+      match Names.find_opt current name with Some c -> c := value | None -> Names.replace current name (ref value))
   | false, Some c -> c := value
-  | false, None -> Hashtbl.replace st.global name (ref value)
+  | false, None -> Names.replace st.global name (ref value)
 
 (* After an unsupported feature inside a declaration: skip the rest of the declared value, that is
    the blocks it opened, or at its own level up to a ';' or through its first block. *)
@@ -1932,8 +1955,8 @@ let directive st d loc =
       match k with
       | Ident s ->
           advance st;
-          (match List.find_opt (fun t -> Hashtbl.mem t s) st.tables with
-          | Some t -> Hashtbl.remove t s
+          (match List.find_opt (fun t -> Names.mem t s) st.tables with
+          | Some t -> Names.remove t s
           | None -> warn st loc "attempt to #undef the unknown identifier '%s'" s)
       | _ -> unexpected st "an identifier after '#undef'")
   | "version" ->
@@ -1951,7 +1974,7 @@ let directive st d loc =
       | Some path ->
           let text = read_file path in
           st.frames <- { lx = Lexer.create ~file:path text; kind = Included (loc, Unix.gettimeofday ()); conds = [] } :: st.frames;
-          st.tables <- Hashtbl.create 16 :: st.tables;
+          st.tables <- Names.create 16 :: st.tables;
           st.includes <- st.includes + 1)
   | "if" -> run_if st (truth (cond_value st "if")) loc
   | "ifdef" | "ifndef" ->
@@ -2054,7 +2077,7 @@ let directive st d loc =
       let params = params [] in
       let m = { V.mname = name; params; source = f.lx; body = Lexer.mark f.lx; mloc = loc } in
       skip_to_end st loc (Printf.sprintf "#macro %s" name);
-      Hashtbl.replace st.global name (ref (V.Macro m))
+      Names.replace st.global name (ref (V.Macro m))
   | "debug" -> st.opts.debug (string_arg st "debug")
   | "warning" -> let s = string_arg st "warning" in warn st loc "%s" s
   | "error" -> let s = string_arg st "error" in Error.raise_at loc "#error: %s" s
@@ -2084,7 +2107,7 @@ let invoke st (m : V.macro) loc =
   if st.macro_depth >= max_macro_depth then
     Error.raise_at loc "macro calls are nested more than %d deep (does '%s' call itself without end?)" max_macro_depth m.mname;
   expect st LParen (Printf.sprintf "'(' after the macro name '%s'" m.mname);
-  let table = Hashtbl.create 8 in
+  let table = Names.create 8 in
   let nparams = List.length m.params in
   List.iteri
     (fun i p ->
@@ -2102,7 +2125,7 @@ let invoke st (m : V.macro) loc =
         | _ -> None
       in
       let cell = match by_ref with Some c -> c | None -> ref (fst (parse_rvalue st)) in
-      Hashtbl.replace table p cell)
+      Names.replace table p cell)
     m.params;
   if peek st != RParen then
     raise
@@ -2180,7 +2203,7 @@ let chain st =
 
 let load_string opts ~file text =
   let lexer = Lexer.create ~file text in
-  let global = Hashtbl.create 256 in
+  let global = Names.create 256 in
   let st =
     {
       frames = [ { lx = lexer; kind = Main; conds = [] } ];
