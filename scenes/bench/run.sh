@@ -32,6 +32,7 @@ CASES=(
   "$OUT/spheres_1000.pov|+W640 +H480 -A"
   "$OUT/spheres_10000.pov|+W640 +H480 -A"
   "$OUT/spheres_100000.pov|+W640 +H480 -A"
+  "scenes/bench/while_spheres.pov|+W640 +H480 -A"
 )
 
 median() { sort -g | awk '{a[NR]=$1} END {if (NR%2) print a[(NR+1)/2]; else printf "%.4f\n", (a[NR/2]+a[NR/2+1])/2}'; }
