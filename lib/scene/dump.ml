@@ -91,7 +91,7 @@ let scene (s : t) =
   let b = Buffer.create 4096 in
   let add = Buffer.add_string b in
   add (Printf.sprintf "// version %s, %s\n" (num (float_of_int s.version /. 100.))
-         (match s.gamma with Gamma_off -> "no gamma correction" | Working g -> "assumed_gamma " ^ num g));
+         (match s.gamma with Gamma_off -> "no gamma correction" | Working g -> "working gamma " ^ num g));
   add (Printf.sprintf "global_settings { max_trace_level %d adc_bailout %s ambient_light %s }\n" s.max_trace_level
          (num s.adc_bailout) (rgb s.ambient_light));
   let c = s.camera in

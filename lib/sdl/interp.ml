@@ -284,7 +284,8 @@ let include_dirs st =
 
 let find_file st name =
   let candidates =
-    if Filename.is_relative name then List.concat_map (fun d -> [ Filename.concat d name; Filename.concat d (name ^ ".inc") ]) (include_dirs st)
+    let join d n = if d = Filename.current_dir_name then n else Filename.concat d n in
+    if Filename.is_relative name then List.concat_map (fun d -> [ join d name; join d (name ^ ".inc") ]) (include_dirs st)
     else [ name; name ^ ".inc" ]
   in
   List.find_opt (fun p -> Sys.file_exists p && not (Sys.is_directory p)) candidates
