@@ -148,13 +148,21 @@ let lookup_cell st name =
 
 let lookup st name = match lookup_cell st name with Some c -> Some !c | None -> None
 
+(* While looking past a value, directives wait (see [peek_follow]), except those that only end a
+   branch or a macro body: they change no value, and a macro's value is often followed by its #end. *)
+let closes_branch f d =
+  match d with
+  | "else" | "elseif" -> true
+  | "end" -> ( match f.conds with [] -> (match f.kind with Macro_body _ -> true | Main | Included _ -> false) | (If_branch _ | Switch_case _) :: _ -> true | (While_loop _ | For_loop _) :: _ -> false)
+  | _ -> false
+
 let rec fill st =
   let f = top st in
   let t = Lexer.next f.lx in
   match t.kind with
   | Eof -> end_of_frame st f t
   | Directive d ->
-      if st.defer then begin st.cur <- t; st.have <- true; st.cur_elem <- None end
+      if st.defer && not (closes_branch f d) then begin st.cur <- t; st.have <- true; st.cur_elem <- None end
       else begin
         st.directive st d t.loc;
         if not st.have then fill st
@@ -2194,13 +2202,22 @@ let finish_scene st : Scene.t =
 
 (* Where the reading was when an error arose: the include and macro-call chain, innermost first. *)
 let chain st =
-  List.filter_map
-    (fun f ->
-      match f.kind with
-      | Main -> None
-      | Included (l, _) -> Some (l, "in the file included from here")
-      | Macro_body (name, l) -> Some (l, Printf.sprintf "in macro '%s' called from here" name))
-    st.frames
+  let notes =
+    List.filter_map
+      (fun f ->
+        match f.kind with
+        | Main -> None
+        | Included (l, _) -> Some (l, "in the file included from here")
+        | Macro_body (name, l) -> Some (l, Printf.sprintf "in macro '%s' called from here" name))
+      st.frames
+  in
+  (* a deep recursion is shown by its innermost calls and the outermost ones *)
+  let n = List.length notes in
+  if n <= 8 then notes
+  else
+    List.filteri (fun i _ -> i < 5) notes
+    @ [ (Loc.none, Printf.sprintf "… %d more calls and includes …" (n - 7)) ]
+    @ List.filteri (fun i _ -> i >= n - 2) notes
 
 let load_string opts ~file text =
   let lexer = Lexer.create ~file text in
