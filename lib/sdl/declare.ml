@@ -1,0 +1,169 @@
+(* Declarations (POVRAY-3.7 §11.3): the value of a #declare or a macro argument, arrays, and where
+   the value is stored. *)
+
+open Token
+module V = Value
+open Reader
+open Expr
+open Materials
+open Objects
+open Settings
+
+
+(* The value of a #declare or of a macro argument (the parser's "rvalue"), and whether a ';' should
+   follow it (§11.3: after floats, vectors, colours and strings). *)
+let rec parse_rvalue st : V.t * bool =
+  let loc = peek_loc st in
+  match peek st with
+  | Ident "light_source" -> (V.Light (parse_light st), false)
+  | Ident s when Names.mem object_set s -> (V.Object (parse_object st), false)
+  | Ident "pigment" -> advance st; (V.Pigment (parse_pigment st (Scene.Solid Colour.black)), false)
+  | Ident "finish" -> advance st; (V.Finish (parse_finish st Defaults.finish), false)
+  | Ident "texture" ->
+      advance st;
+      let t = parse_texture st st.default_texture in
+      if (match peek_follow st with Ident "texture" -> true | _ -> false) then not_supported (peek_loc st) "layered textures";
+      (V.Texture t, false)
+  | Ident "interior" -> advance st; (V.Interior (parse_interior st Defaults.interior), false)
+  | Ident "camera" -> advance st; (V.Camera (parse_camera st), false)
+  | Ident "transform" -> advance st; (V.Transform (parse_transform st), false)
+  | Ident "array" -> (parse_array st, false)
+  | Ident s when Names.mem unsupported_rvalue_set s -> not_supported loc (Printf.sprintf "'%s'" s)
+  | Ident s -> (
+      match cur_value st s with
+      | Some (V.Object o) -> advance st; (V.Object { o with oloc = loc }, false)
+      | Some ((V.Pigment _ | V.Finish _ | V.Texture _ | V.Interior _ | V.Light _ | V.Camera _ | V.Stream _ | V.Transform _ | V.Unsupported _) as v) ->
+          advance st; (v, false)
+      | Some (V.Array a) -> advance st; (V.Array { a with cells = Array.copy a.cells }, false)
+      | _ -> (parse_expr st, true))
+  | _ -> (parse_expr st, true)
+
+(* array[d1][d2]… [{ initialisers }] (§11.2). *)
+and parse_array st =
+  let loc = peek_loc st in
+  advance st;
+  let rec dims acc =
+    if peek st == LBracket then begin
+      advance st;
+      let l = peek_loc st in
+      let n = parse_float st in
+      if n < 1. || Float.of_int (int_of_float n) <> n then Error.raise_at l "an array dimension must be a whole number of at least 1, not %g" n;
+      expect st RBracket "']' after an array dimension";
+      dims (int_of_float n :: acc)
+    end
+    else List.rev acc
+  in
+  let dims = Array.of_list (dims []) in
+  if Array.length dims = 0 then Error.raise_at loc "'array' needs a size: array[N]";
+  let total = Array.fold_left ( * ) 1 dims in
+  if total > 50_000_000 then Error.raise_at loc "this array would have %d elements; the limit is 50,000,000" total;
+  let cells = Array.make total None in
+  if peek st == LBrace then begin
+    (* nested braces, one level per dimension *)
+    let rec fill_level d offset =
+      let bl = peek_loc st in
+      expect st LBrace "'{' of an array initialiser";
+      let stride = Array.fold_left ( * ) 1 (Array.sub dims (d + 1) (Array.length dims - d - 1)) in
+      for i = 0 to dims.(d) - 1 do
+        if i > 0 then expect st Comma "',' between array elements";
+        if peek st == RBrace then Error.raise_at bl "this initialiser has %d elements; the array dimension is %d" i dims.(d);
+        if d = Array.length dims - 1 then cells.(offset + i) <- Some (fst (parse_rvalue st))
+        else fill_level (d + 1) (offset + (i * stride))
+      done;
+      ignore (accept st Comma);
+      if peek st != RBrace then Error.raise_at (peek_loc st) "too many elements in an array initialiser: the dimension is %d" dims.(d);
+      advance st
+    in
+    fill_level 0 0
+  end;
+  V.Array { dims; cells }
+
+(* The subscripts [i][j]… of an element of [a], as a row-major index. *)
+let parse_index st (a : V.array_v) =
+  let n = Array.length a.dims in
+  let rec go d acc =
+    if d = n then acc
+    else begin
+      expect st LBracket "'[' of an array subscript";
+      let l = peek_loc st in
+      let i = parse_float st in
+      let i = int_of_float i in
+      if i < 0 || i >= a.dims.(d) then Error.raise_at l "array subscript %d is out of range 0 … %d" i (a.dims.(d) - 1);
+      expect st RBracket "']' closing an array subscript";
+      go (d + 1) ((acc * a.dims.(d)) + i)
+    end
+  in
+  go 0 0
+
+(* Where #declare and #local write (§11.3): an existing identifier is changed where it is found (the
+   innermost table that has it), a new one goes to the global table for #declare and to the current
+   table (file or macro) for #local. *)
+let assign st ~local name value =
+  let current = List.hd st.tables in
+  match (local, lookup_cell st name) with
+  | true, _ -> (
+      match Names.find_opt current name with Some c -> c := value | None -> Names.replace current name (ref value))
+  | false, Some c -> c := value
+  | false, None -> Names.replace st.global name (ref value)
+
+(* After an unsupported feature inside a declaration: skip the rest of the declared value, that is
+   the blocks it opened, or at its own level up to a ';' or through its first block. *)
+let skip_declaration st d0 =
+  let rec close () = if st.depth > d0 && peek st != Eof then (advance st; close ()) in
+  let rec scan () =
+    match peek st with
+    | Semi | RBrace | Eof -> ()
+    | LBrace -> advance st; close ()
+    | _ -> advance st; scan ()
+  in
+  if st.depth > d0 then close () else scan ();
+  (* the further layers of a layered texture: texture {…} texture {…} *)
+  while (match peek_follow st with Ident "texture" -> true | _ -> false) do advance st; scan () done
+
+let parse_declare st ~local dloc =
+  let nloc = peek_loc st in
+  st.no_expand <- true;
+  let k = Fun.protect ~finally:(fun () -> st.no_expand <- false) (fun () -> peek st) in
+  let k =
+    (* #declare deprecated [once] "message" Id = … (3.7): the message is for users of Id *)
+    match k with
+    | Ident "deprecated" ->
+        advance st;
+        ignore (accept_ident st "once");
+        (match peek st with Str _ -> advance st | _ -> unexpected st "the deprecation message");
+        st.no_expand <- true;
+        Fun.protect ~finally:(fun () -> st.no_expand <- false) (fun () -> peek st)
+    | k -> k
+  in
+  let target =
+    match k with
+    | Ident s when is_keyword s -> Error.raise_at nloc "'%s' is a keyword and cannot be declared" s
+    | Ident s -> (
+        match st.cur_elem with
+        | Some (a, i) -> advance st; `Element (s, a, i)
+        | None -> advance st; `Name s)
+    | _ -> unexpected st (Printf.sprintf "an identifier after '#%s'" (if local then "local" else "declare"))
+  in
+  let name = match target with `Name s | `Element (s, _, _) -> s in
+  expect st Eq (Printf.sprintf "'=' after '%s'" name);
+  let d0 = st.depth in
+  let in_main = List.length st.frames = 1 in
+  let value, needs_semi =
+    try parse_rvalue st
+    with Unsupported (l, what, _) ->
+      (* a declaration povml cannot make yet is no error until it is used (issue: include files
+         declare much more than a scene uses) *)
+      skip_declaration st d0;
+      if in_main then warn st dloc "'%s' uses %s, which povml does not support yet; using it will be an error" name what;
+      (V.Unsupported { what; at = l }, false)
+  in
+  (* the value is stored before anything after it is read: the next token may be a directive *)
+  (match target with
+  | `Name s -> assign st ~local s value
+  | `Element (_, a, i) -> a.cells.(i) <- Some value);
+  if needs_semi && not (accept st Semi) then begin
+    if st.version >= 350 then
+      warn st (peek_loc st) "all #declares of float, vector, and color require semicolon ';' at end if the language version is 3.5 or higher"
+  end
+  else if not needs_semi then ignore (accept st Semi)
+

@@ -1,0 +1,587 @@
+(* Objects: transforms, the primitives, meshes, unions and light sources (POVRAY-3.7 §2, §14, §16.4). *)
+
+open Token
+module V = Value
+open Reader
+open Expr
+open Materials
+
+
+
+(* A scale vector: a zero component is replaced by 1 with POV-Ray's warning (§14.2). *)
+let scale_vector st loc (v : Vec.t) =
+  let fix axis c = if c = 0. then (warn st loc "illegal value: scale %s by 0.0; changed to 1.0" axis; 1.) else c in
+  Vec.make (fix "x" v.x) (fix "y" v.y) (fix "z" v.z)
+
+(* translate / rotate / scale / matrix / transform, as one modifier (§14.2, §14.3). *)
+let rec parse_op st : Place.op =
+  let loc = peek_loc st in
+  match peek st with
+  | Ident "translate" -> advance st; Translate (parse_vector st)
+  | Ident "rotate" -> advance st; Rotate (parse_vector st)
+  | Ident "scale" -> advance st; let l = peek_loc st in Scale (scale_vector st l (parse_vector st))
+  | Ident "matrix" -> advance st; Transform (parse_matrix st)
+  | Ident "transform" -> advance st; Transform (parse_transform st)
+  | _ -> ignore loc; unexpected st "a transformation"
+
+and parse_matrix st =
+  let loc = peek_loc st in
+  expect st Lt "'<' starting the 12 numbers of a matrix";
+  let a = Array.make 12 0. in
+  for k = 0 to 11 do
+    if k > 0 then expect st Comma (Printf.sprintf "',' after number %d of the matrix (it has 12)" k);
+    a.(k) <- parse_float st
+  done;
+  expect st Gt "'>' after the 12 numbers of a matrix";
+  match Transform.matrix a with
+  | Ok (t, warnings) -> List.iter (fun w -> warn st loc "%s" w) warnings; t
+  | Error msg -> Error.raise_at loc "%s" msg
+
+(* transform { items [inverse] } or transform Id: the block starts from the identity and composes
+   its items in order; inverse inverts the whole block wherever it stands (§14.3). *)
+and parse_transform st =
+  let ident () =
+    match peek st with
+    | Ident s -> (
+        match cur_value st s with
+        | Some (V.Transform t) -> advance st; Some t
+        | Some (V.Unsupported u) -> unsupported_use (peek_loc st) s u.what u.at
+        | _ -> None)
+    | _ -> None
+  in
+  match ident () with
+  | Some t -> t
+  | None ->
+      open_block st "transform";
+      let rec loop t inv =
+        match peek st with
+        | RBrace -> advance st; if inv then Transform.inverse t else t
+        | Ident "inverse" -> advance st; loop t true
+        | Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") ->
+            loop (Transform.compose t (Place.op_transform (parse_op st))) inv
+        | _ -> (
+            match ident () with
+            | Some t' -> loop (Transform.compose t t') inv
+            | None -> unexpected st "a transformation, 'inverse' or '}' in a transform block")
+      in
+      loop Transform.identity false
+
+let move_shape op s = Place.shape s op
+
+(* §14.8: a light's position moves as a point *)
+let move_light op (l : Scene.light) = { l with position = Transform.point (Place.op_transform op) l.position }
+
+let rec move_obj op (o : V.obj) =
+  match o.shape with
+  | Prim s -> { o with shape = Prim (move_shape op s) }
+  | Union ms -> { o with shape = Union (List.map (move_member op) ms) }
+
+and move_member op = function
+  | V.Member_obj o -> V.Member_obj (move_obj op o)
+  | V.Member_light l -> V.Member_light (move_light op l)
+
+let parse_object_mods st (o : V.obj) what : V.obj =
+  let tex o = match o.V.texture with Some t -> t | None -> st.default_texture in
+  let rec loop (o : V.obj) =
+    let loc = peek_loc st in
+    match peek st with
+    | RBrace -> advance st; o
+    | Ident "pigment" -> advance st; let t = tex o in loop { o with texture = Some { t with pigment = parse_pigment st t.pigment } }
+    | Ident "finish" -> advance st; let t = tex o in loop { o with texture = Some { t with finish = parse_finish st t.finish } }
+    | Ident "texture" ->
+        advance st;
+        if o.texture <> None then not_supported loc "layered textures (a texture added to an object that has one)";
+        loop { o with texture = Some (parse_texture st st.default_texture) }
+    | Ident "interior" ->
+        advance st;
+        let base = match o.interior with Some i -> i | None -> Defaults.interior in
+        loop { o with interior = Some (parse_interior st base) }
+    | Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") -> loop (move_obj (parse_op st) o)
+    | Ident "no_shadow" -> advance st; loop { o with no_shadow = true }
+    | Ident "hollow" -> advance st; ignore (parse_bool_opt st); loop o
+    | Ident s when is_unsupported s -> not_supported loc (Printf.sprintf "'%s'" s)
+    | _ -> unexpected st (Printf.sprintf "an object modifier or '}' closing '%s'" what)
+  in
+  loop o
+
+let new_obj_of shape loc = { V.shape; texture = None; interior = None; no_shadow = false; oloc = loc }
+let new_obj shape loc = new_obj_of (V.Prim shape) loc
+
+
+(* Objects povml does not render yet: inside a union they are reported as "not supported yet". *)
+let unsupported_objects =
+  [ "box"; "cylinder"; "cone"; "disc"; "torus"; "polygon"; "prism"; "lathe"; "sor"; "blob"; "text"; "height_field";
+    "isosurface"; "superellipsoid"; "julia_fractal"; "parametric"; "bicubic_patch"; "ovus"; "quadric"; "cubic";
+    "quartic"; "poly"; "intersection"; "difference"; "merge"; "sphere_sweep"; "lemon" ]
+
+let parse_light st =
+  let loc = peek_loc st in
+  advance st;
+  open_block st "light_source";
+  let position = parse_vector st in
+  ignore (accept st Comma);
+  (* §10.2: the colour after the position; without one the light is black *)
+  let colour = if peek st == RBrace || (match peek st with Ident s -> List.mem s [ "shadowless"; "fade_distance"; "fade_power"; "translate" ] | _ -> false) then Rgb.black else parse_rgb st "a light colour" in
+  ignore loc;
+  let rec loop (l : Scene.light) =
+    let loc = peek_loc st in
+    match peek st with
+    | RBrace -> advance st; l
+    | Ident "shadowless" -> advance st; loop { l with shadowless = true }
+    | Ident "fade_distance" -> advance st; loop { l with fade_distance = parse_float st }
+    | Ident "fade_power" -> advance st; loop { l with fade_power = parse_float st }
+    | Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") -> loop (move_light (parse_op st) l)
+    | Ident ("color" | "colour" | "rgb") -> loop { l with colour = parse_rgb st "a light colour" }
+    | Ident s when is_unsupported s -> not_supported loc (Printf.sprintf "'%s' in a light_source" s)
+    | _ -> unexpected st "a light_source keyword or '}'"
+  in
+  loop { Scene.position; colour; shadowless = false; fade_distance = 0.; fade_power = 0. }
+
+let f32 x = Int32.float_of_bits (Int32.bits_of_float x)
+
+(* Vertex normals: normalised; a zero normal becomes <1,0,0> with a warning (§2.6). *)
+let unit_normal st loc (n : Vec.t) =
+  if Vec.length n = 0. then begin
+    warn st loc "zero-length normal replaced by <1,0,0>";
+    Vec.make 1. 0. 0.
+  end
+  else Vec.normalize n
+
+let comma st = ignore (accept st Comma)
+
+(* A vector written as plain numbers, read without tokens (Lexer.scan_vector3) into [out]: true
+   when that worked, and the parser then stands after the '>'. *)
+let fast_vector3 st out =
+  (* the '<' was read from the current frame, so the numbers are in the same text *)
+  peek st == Lt && Lexer.scan_vector3 (top st).lx out && begin st.have <- false; true end
+
+(* A vector of a mesh: by the fast path when it is written as plain numbers. *)
+let mesh_vector st =
+  let buf = [| 0.; 0.; 0. |] in
+  if fast_vector3 st buf then Vec.make buf.(0) buf.(1) buf.(2) else parse_vector st
+
+(* triangle { P1, P2, P3 } and smooth_triangle { P1, N1, P2, N2, P3, N3 } (§2.4, §2.5). *)
+let parse_triangle_corners st ~smooth =
+  let p1 = mesh_vector st in
+  comma st;
+  if smooth then begin
+    let l1 = peek_loc st in
+    let n1 = mesh_vector st in
+    comma st;
+    let p2 = mesh_vector st in
+    comma st;
+    let l2 = peek_loc st in
+    let n2 = mesh_vector st in
+    comma st;
+    let p3 = mesh_vector st in
+    comma st;
+    let l3 = peek_loc st in
+    let n3 = mesh_vector st in
+    (p1, p2, p3, Some (unit_normal st l1 n1, unit_normal st l2 n2, unit_normal st l3 n3))
+  end
+  else begin
+    let p2 = mesh_vector st in
+    comma st;
+    let p3 = mesh_vector st in
+    (p1, p2, p3, None)
+  end
+
+(* Growable arrays for the lists of a mesh. With a capacity given (mesh2 announces its counts) the
+   array is made once at that size and handed over as it is; otherwise the values go into chunks
+   and [to_array] copies them once, so growing never holds more than the values and one copy. *)
+module Grow = struct
+  (* [chunks.(0)] has the first size (the capacity, or 1024), every later chunk [chunk] values *)
+  type 'a t = { fill : 'a; mutable chunks : 'a array array; mutable n : int; mutable len : int }
+
+  let chunk = 65536
+
+  let create ?capacity x =
+    let first = match capacity with Some c -> max 16 c | None -> 1024 in
+    { fill = x; chunks = [| Array.make first x |]; n = 1; len = 0 }
+
+  let first g = Array.length g.chunks.(0)
+
+  let push g x =
+    let f = first g in
+    let c, i = if g.len < f then (0, g.len) else (1 + ((g.len - f) / chunk), (g.len - f) mod chunk) in
+    if c = g.n then begin
+      if g.n = Array.length g.chunks then g.chunks <- Array.append g.chunks (Array.make g.n [||]);
+      g.chunks.(c) <- Array.make chunk g.fill;
+      g.n <- g.n + 1
+    end;
+    Array.unsafe_set g.chunks.(c) i x;
+    g.len <- g.len + 1
+
+  let get g i =
+    let f = first g in
+    if i < f then g.chunks.(0).(i) else g.chunks.(1 + ((i - f) / chunk)).((i - f) mod chunk)
+
+  let to_array g =
+    if g.n = 1 && g.len = first g then g.chunks.(0)
+    else begin
+      let a = Array.make g.len g.fill in
+      let at = ref 0 in
+      for c = 0 to g.n - 1 do
+        let k = min (Array.length g.chunks.(c)) (g.len - !at) in
+        Array.blit g.chunks.(c) 0 a !at k;
+        at := !at + k
+      done;
+      a
+    end
+end
+
+(* Vertices (or normals) of a mesh { } merged when equal, as POV-Ray merges them: an open
+   addressing table over the stored single-precision triples. *)
+module Vertex_table = struct
+  type t = { store : float Grow.t; mutable slots : int array; mutable count : int }
+
+  let create () = { store = Grow.create 0.; slots = Array.make 1024 (-1); count = 0 }
+
+  let hash x y z = Hashtbl.hash (Int64.bits_of_float x, Int64.bits_of_float y, Int64.bits_of_float z)
+
+  let coord t i = Grow.get t.store i
+
+  let rec insert t x y z =
+    let mask = Array.length t.slots - 1 in
+    let rec probe h =
+      let k = t.slots.(h) in
+      if k < 0 then begin
+        t.slots.(h) <- t.count;
+        Grow.push t.store x; Grow.push t.store y; Grow.push t.store z;
+        t.count <- t.count + 1;
+        t.count - 1
+      end
+      else if coord t (3 * k) = x && coord t ((3 * k) + 1) = y && coord t ((3 * k) + 2) = z then k
+      else probe ((h + 1) land mask)
+    in
+    if 2 * (t.count + 1) > Array.length t.slots then begin
+      let n = 2 * Array.length t.slots in
+      let slots = Array.make n (-1) in
+      for k = 0 to t.count - 1 do
+        let rec place h = if slots.(h) < 0 then slots.(h) <- k else place ((h + 1) land (n - 1)) in
+        place (hash (coord t (3 * k)) (coord t ((3 * k) + 1)) (coord t ((3 * k) + 2)) land (n - 1))
+      done;
+      t.slots <- slots;
+      insert t x y z
+    end
+    else probe (hash x y z land mask)
+
+  let to_array t = Grow.to_array t.store
+end
+
+(* A block "{ n, item, item … }" of a mesh2: [item] is called for each entry (with its location),
+   and the number of entries must be n. *)
+let parse_counted_block ?(start = fun (_ : int) -> ()) st what item =
+  let loc = peek_loc st in
+  open_block st what;
+  let nloc = peek_loc st in
+  let n = parse_float st in
+  if n < 0. || Float.of_int (int_of_float n) <> n then Error.raise_at nloc "the count of %s must be a whole number, not %g" what n;
+  let n = int_of_float n in
+  (* room for the announced entries, within reason: a wrong count is reported after the block *)
+  start (min n 50_000_000);
+  let count = ref 0 in
+  while peek st != RBrace do
+    if peek st == Eof then close_block st what;
+    comma st;
+    if peek st != RBrace then begin
+      item (peek_loc st);
+      incr count
+    end
+  done;
+  advance st;
+  if !count <> n then Error.raise_at loc "%s says %d entries but lists %d" what n !count;
+  n
+
+let f32_vec (v : Vec.t) = Vec.make (f32 v.x) (f32 v.y) (f32 v.z)
+
+let parse_texture_in_block st =
+  (* texture { … } or a texture identifier inside a mesh triangle *)
+  advance st;
+  parse_texture st st.default_texture
+
+(* Values povml cannot make yet; a declaration of one is kept as [V.Unsupported]. *)
+let unsupported_rvalues =
+  [ "material"; "normal"; "color_map"; "colour_map"; "pigment_map"; "normal_map"; "texture_map"; "slope_map";
+    "function"; "spline"; "media"; "density"; "fog"; "rainbow"; "sky_sphere"; "isosurface" ]
+
+let unsupported_rvalue_set = set_of (unsupported_objects @ unsupported_rvalues)
+
+let unsupported_object_set = set_of unsupported_objects
+
+let rec parse_object st : V.obj =
+  let loc = peek_loc st in
+  match peek st with
+  | Ident ("triangle" | "smooth_triangle" as kw) ->
+      advance st;
+      open_block st kw;
+      let smooth = kw = "smooth_triangle" in
+      let p1, p2, p3, ns = parse_triangle_corners st ~smooth in
+      let shape : Scene.shape =
+        match ns with
+        | None ->
+            if Triangle.flat p1 p2 p3 = None then warn st loc "degenerate triangle; please remove it";
+            Triangle { p1; p2; p3 }
+        | Some (n1, n2, n3) ->
+            (match Triangle.smooth p1 n1 p2 n2 p3 n3 with
+            | None | Some (Error ()) -> warn st loc "degenerate triangle; please remove it"
+            | Some (Ok _) -> ());
+            Smooth_triangle { p1; n1; p2; n2; p3; n3 }
+      in
+      parse_object_mods st (new_obj shape loc) kw
+  | Ident "mesh" -> advance st; parse_mesh st loc
+  | Ident "mesh2" -> advance st; parse_mesh2 st loc
+  | Ident "sphere" ->
+      advance st;
+      open_block st "sphere";
+      let centre = parse_vector st in
+      ignore (accept st Comma) (* POV-Ray accepts the comma as optional *);
+      let rloc = peek_loc st in
+      let radius = parse_float st in
+      if radius <= 0. then warn st rloc "sphere radius %g is not positive" radius;
+      parse_object_mods st (new_obj (Sphere { centre; radius; trans = None }) loc) "sphere"
+  | Ident "plane" ->
+      advance st;
+      open_block st "plane";
+      let nloc = peek_loc st in
+      let n = parse_vector st in
+      ignore (accept st Comma);
+      let d = parse_float st in
+      (* §2.3: the normal is normalised, the distance is NOT divided by |n| *)
+      if Vec.length n = 0. then Error.raise_at nloc "degenerate plane normal <0,0,0>";
+      parse_object_mods st (new_obj (Plane { normal = Vec.normalize n; offset = d; trans = None }) loc) "plane"
+  | Ident "object" ->
+      advance st;
+      open_block st "object";
+      let iloc = peek_loc st in
+      let o =
+        match peek st with
+        | Ident s when Names.mem object_set s -> parse_object st
+        | Ident s -> (
+            match cur_value st s with
+            | Some (V.Object o) -> advance st; { o with oloc = loc }
+            | Some (V.Light l) -> advance st; { (new_obj_of (V.Union [ V.Member_light l ]) loc) with oloc = loc }
+            | Some (V.Unsupported u) -> unsupported_use iloc s u.what u.at
+            | Some v -> Error.raise_at iloc "'%s' is %s, not an object" s (V.kind_name v)
+            | None -> if is_keyword s then unexpected st "an object identifier" else unknown_identifier st iloc s)
+        | _ -> unexpected st "an object identifier"
+      in
+      parse_object_mods st o "object"
+  | Ident "union" ->
+      (* §16.4: a union is dissolved into its members when it enters the scene; its texture,
+         interior and flags go to the members that have none *)
+      advance st;
+      open_block st "union";
+      let rec members acc =
+        match peek st with
+        | Ident "light_source" -> members (V.Member_light (parse_light st) :: acc)
+        | _ when object_follows st -> members (V.Member_obj (parse_object st) :: acc)
+        | _ -> List.rev acc
+      in
+      let ms = members [] in
+      if List.length ms < 2 then warn st loc "a union should have at least two members";
+      parse_object_mods st (new_obj_of (V.Union ms) loc) "union"
+  | Ident "light_source" -> new_obj_of (V.Union [ V.Member_light (parse_light st) ]) loc
+  | Ident s -> (
+      match cur_value st s with
+      | Some (V.Object o) -> advance st; { o with oloc = loc }
+      | Some (V.Light l) -> advance st; new_obj_of (V.Union [ V.Member_light l ]) loc
+      | Some (V.Unsupported u) -> unsupported_use loc s u.what u.at
+      | _ -> unexpected st "an object")
+  | _ -> unexpected st "an object"
+
+(* Does an object (a keyword or an identifier of one) come next? *)
+and object_follows st =
+  match peek st with
+  | Ident s when Names.mem object_set s -> true
+  | Ident s -> ( match cur_value st s with Some (V.Object _ | V.Light _) -> true | Some (V.Unsupported _) -> true | _ -> Names.mem unsupported_object_set s)
+  | _ -> false
+
+(* mesh { triangle {…} smooth_triangle {…} … [inside_vector V] modifiers } (§2.6). Vertices are kept
+   in single precision; each face is set up from the values as parsed. *)
+and parse_mesh st loc =
+  open_block st "mesh";
+  let verts = Vertex_table.create () and norms = Vertex_table.create () and corners = Grow.create 0. in
+  let fv = Grow.create 0 and fn = Grow.create 0 and ftex = Grow.create 0 in
+  let textures = ref [] and ntex = ref 0 in
+  let inside = ref None in
+  let push3 g (v : Vec.t) = Grow.push g v.x; Grow.push g v.y; Grow.push g v.z in
+  let add_vertex (v : Vec.t) = Grow.push fv (Vertex_table.insert verts (f32 v.x) (f32 v.y) (f32 v.z)) in
+  let add_normal (n : Vec.t) = Grow.push fn (Vertex_table.insert norms (f32 n.x) (f32 n.y) (f32 n.z)) in
+  let rec items () =
+    match peek st with
+    | Ident ("triangle" | "smooth_triangle" as kw) ->
+        advance st;
+        open_block st kw;
+        let p1, p2, p3, ns = parse_triangle_corners st ~smooth:(kw = "smooth_triangle") in
+        let tex =
+          if is_ident st "texture" then begin
+            (* POV-Ray takes only a texture identifier here: texture { T } *)
+            advance st;
+            open_block st "texture";
+            let tl = peek_loc st in
+            let t =
+              match ident_of_kind st (function V.Texture t -> Some t | _ -> None) with
+              | Some t -> t
+              | None -> Error.raise_at tl "expected a texture identifier: a mesh triangle takes texture { Identifier }"
+            in
+            close_block st "texture";
+            textures := t :: !textures;
+            incr ntex;
+            !ntex - 1
+          end
+          else -1
+        in
+        close_block st kw;
+        add_vertex p1; add_vertex p2; add_vertex p3;
+        push3 corners p1; push3 corners p2; push3 corners p3;
+        (match ns with
+        | Some (a, b, c) -> add_normal a; add_normal b; add_normal c
+        | None -> Grow.push fn (-1); Grow.push fn (-1); Grow.push fn (-1));
+        Grow.push ftex tex;
+        items ()
+    | Ident "inside_vector" -> advance st; inside := Some (parse_vector st); items ()
+    | _ -> ()
+  in
+  items ();
+  let mesh =
+    Mesh.build ~vertices:(Vertex_table.to_array verts) ~vertex_normals:(Vertex_table.to_array norms) ~fv:(Grow.to_array fv)
+      ~fn:(Grow.to_array fn) ~ftex:(Grow.to_array ftex) ~corners:(Some (Grow.to_array corners)) ~inside_vector:!inside
+  in
+  if mesh.faces = 0 then warn st loc "the mesh has no triangles with an area";
+  let shape = Scene.Mesh { mesh; trans = None; textures = Array.of_list (List.rev !textures) } in
+  parse_object_mods st (new_obj shape loc) "mesh"
+
+(* mesh2 { vertex_vectors normal_vectors texture_list face_indices normal_indices inside_vector … } *)
+and parse_mesh2 st loc =
+  open_block st "mesh2";
+  let vertices = ref None and normals = ref None and textures = ref [||] in
+  let faces = ref None and nidx = ref None and inside = ref None in
+  let vectors what ~unit =
+    let g = ref (Grow.create 0.) in
+    let n =
+      parse_counted_block st what ~start:(fun n -> g := Grow.create ~capacity:(3 * n) 0.) (fun l ->
+          let g = !g in
+          let v = mesh_vector st in
+          let v = f32_vec (if unit then unit_normal st l v else v) in
+          Grow.push g v.x; Grow.push g v.y; Grow.push g v.z)
+    in
+    (n, Grow.to_array !g)
+  in
+  let indices st l limit what g =
+    let v = mesh_vector st in
+    let check x =
+      if Float.of_int (int_of_float x) <> x || x < 0. || int_of_float x >= limit then
+        Error.raise_at l "%s index %g is out of range: there are %d" what x limit;
+      Grow.push g (int_of_float x)
+    in
+    check v.x; check v.y; check v.z
+  in
+  let rec sections () =
+    let l = peek_loc st in
+    match peek st with
+    | Ident "vertex_vectors" -> advance st; vertices := Some (vectors "vertex_vectors" ~unit:false); sections ()
+    | Ident "normal_vectors" -> advance st; normals := Some (vectors "normal_vectors" ~unit:true); sections ()
+    | Ident "uv_vectors" -> not_supported l "'uv_vectors'"
+    | Ident "texture_list" ->
+        advance st;
+        let g = ref [] in
+        ignore
+          (parse_counted_block st "texture_list" (fun l ->
+               if is_ident st "texture" then g := parse_texture_in_block st :: !g
+               else Error.raise_at l "expected a texture in texture_list"));
+        textures := Array.of_list (List.rev !g);
+        sections ()
+    | Ident "face_indices" ->
+        advance st;
+        let nv = match !vertices with Some (n, _) -> n | None -> Error.raise_at l "face_indices before vertex_vectors" in
+        let ntex = Array.length !textures in
+        let fv = ref (Grow.create 0) and ftex = ref (Grow.create 0) in
+        let n =
+          parse_counted_block st "face_indices"
+            ~start:(fun n ->
+              fv := Grow.create ~capacity:(3 * n) 0;
+              (* per-face texture indices only when there is a texture list *)
+              if ntex > 0 then ftex := Grow.create ~capacity:n 0)
+            (fun l ->
+              let fv = !fv and ftex = !ftex in
+              indices st l nv "vertex" fv;
+              (* an optional texture index (three would interpolate, which is not read yet) *)
+              let tex =
+                let index_follows () = accept st Comma && (match peek st with Lt | RBrace -> false | _ -> true) in
+                if index_follows () then begin
+                  let tl = peek_loc st in
+                  let t = parse_float st in
+                  if index_follows () then not_supported tl "three texture indices per face (interpolated textures)";
+                  if Float.of_int (int_of_float t) <> t || t < 0. || int_of_float t >= ntex then
+                    Error.raise_at tl "texture index %g is out of range: the texture_list has %d" t ntex;
+                  int_of_float t
+                end
+                else -1
+              in
+              if ntex > 0 then Grow.push ftex tex)
+        in
+        faces := Some (l, n, Grow.to_array !fv, if ntex > 0 then Grow.to_array !ftex else [||]);
+        sections ()
+    | Ident "normal_indices" ->
+        advance st;
+        let nn = match !normals with Some (n, _) -> n | None -> Error.raise_at l "normal_indices before normal_vectors" in
+        let g = ref (Grow.create 0) in
+        let n =
+          parse_counted_block st "normal_indices" ~start:(fun n -> g := Grow.create ~capacity:(3 * n) 0) (fun l ->
+              indices st l nn "normal" !g)
+        in
+        nidx := Some (l, n, Grow.to_array !g);
+        sections ()
+    | Ident "uv_indices" -> not_supported l "'uv_indices'"
+    | Ident "inside_vector" -> advance st; inside := Some (parse_vector st); sections ()
+    | _ -> ()
+  in
+  sections ();
+  let nv, vs = match !vertices with Some v -> v | None -> Error.raise_at loc "mesh2 needs vertex_vectors" in
+  let fl, nf, fv, ftex = match !faces with Some f -> f | None -> Error.raise_at loc "mesh2 needs face_indices" in
+  let nn, ns = match !normals with Some n -> n | None -> (0, [||]) in
+  (* §2.6: without normal_indices the face indices serve when there are as many normals as vertices;
+     only the first faces, as many as there are normal indices, can be smooth *)
+  let fn =
+    match !nidx with
+    | Some (nl, n, ni) ->
+        if n > nf then Error.raise_at nl "normal_indices has %d entries but there are only %d faces" n nf;
+        Array.init (3 * nf) (fun i -> if i < 3 * n then ni.(i) else -1)
+    | None ->
+        if nn = 0 then [||]
+        else if nn = nv then fv
+        else
+          Error.raise_at fl "normal_vectors has %d entries and vertex_vectors %d: without normal_indices they must be as many" nn nv
+  in
+  let mesh = Mesh.build ~vertices:vs ~vertex_normals:ns ~fv ~fn ~ftex ~corners:None ~inside_vector:!inside in
+  let shape = Scene.Mesh { mesh; trans = None; textures = !textures } in
+  parse_object_mods st (new_obj shape loc) "mesh2"
+
+(* §2.7: every object gets a texture and an interior; a legacy finish ior goes into the interior. *)
+let finish_prim st (o : V.obj) shape : Scene.obj =
+  let texture = match o.texture with Some t -> t | None -> st.default_texture in
+  let interior = match o.interior with Some i -> i | None -> Defaults.interior in
+  let interior = match texture.finish.legacy_ior with Some ior -> { interior with ior } | None -> interior in
+  let interior = if interior.ior = 0. then { interior with ior = 1. } else interior in
+  { Scene.shape; texture; interior; no_shadow = o.no_shadow; loc = o.oloc }
+
+(* An object entering the scene (§16.4, §16.5): a union is dissolved, its members without a texture
+   or interior take the union's, and its no_shadow goes to every member; its lights join the scene's. *)
+let rec add_object st (o : V.obj) =
+  match o.shape with
+  | Prim shape -> st.objects <- finish_prim st o shape :: st.objects
+  | Union ms ->
+      List.iter
+        (function
+          | V.Member_light l -> st.lights <- l :: st.lights
+          | V.Member_obj c ->
+              add_object st
+                {
+                  c with
+                  texture = (match c.texture with Some _ -> c.texture | None -> o.texture);
+                  interior = (match c.interior with Some _ -> c.interior | None -> o.interior);
+                  no_shadow = c.no_shadow || o.no_shadow;
+                })
+        ms
+

@@ -1,0 +1,320 @@
+(* The reader of the scene language: the parser state, the token stream with its frames (scene
+   file, included files, macro bodies) and their open conditionals, the symbol tables, and the
+   helpers every part of the interpreter uses to look at tokens and report errors. *)
+
+open Token
+module V = Value
+
+(* Tables keyed by names: the symbol tables and the keyword sets, searched for every identifier. *)
+module Names = Hashtbl.Make (struct
+  type t = string
+
+  let equal = String.equal
+  let hash = Hashtbl.hash
+end)
+
+type options = {
+  width : int;
+  height : int;
+  clock : float;  (** +K *)
+  library_paths : string list;  (** +L, searched in order after the including file's directory *)
+  debug : string -> unit;  (** where #debug text goes *)
+  included : string -> depth:int -> float -> unit;  (** an include file was read: path, nesting, seconds *)
+}
+
+type camera_spec = V.camera_spec = {
+  c_location : Vec.t option;
+  c_direction : Vec.t option;
+  c_up : Vec.t option;
+  c_right : Vec.t option;
+  c_sky : Vec.t option;
+  c_look_at : (Vec.t * Loc.t) option;
+  c_angle : (float * Loc.t) option;
+  c_trans : Transform.t option;  (* the camera's transforms, applied last (§1.3) *)
+}
+
+(* A feature povml does not render yet. Inside a declaration it makes the declared value
+   [V.Unsupported] (an error only where it is used); anywhere else it is a located error. *)
+exception Unsupported of Loc.t * string * (Loc.t * string) list
+
+(* Where tokens come from: the scene file, an included file, or a macro body (§11.3). Each frame
+   has its own stack of open conditionals and loops. *)
+type frame = { lx : Lexer.t; kind : frame_kind; mutable conds : cond list }
+
+and frame_kind =
+  | Main
+  | Included of Loc.t * float  (* where the #include was, and when reading it began *)
+  | Macro_body of string * Loc.t  (* the macro and where it was called *)
+
+and cond =
+  | If_branch of Loc.t  (* inside the branch of an #if/#ifdef that is taken *)
+  | While_loop of Lexer.mark * Loc.t  (* the mark is just before the condition *)
+  | For_loop of { var : V.t ref; stop : float; step : float; body : Lexer.mark; floc : Loc.t }
+  | Switch_case of { value : float; mutable running : bool; sloc : Loc.t }
+
+type st = {
+  mutable frames : frame list;  (* innermost first; never empty *)
+  mutable cur : Token.t;  (* the current token, valid when [have] *)
+  mutable have : bool;
+  mutable cur_elem : (V.array_v * int) option;  (* the current token is this array element *)
+  mutable no_expand : bool;
+  mutable defer : bool;  (* reading past a complete value: a directive is kept, not run *)
+  mutable streams : V.stream array;  (* the random streams made by seed() *)  (* reading the argument of defined(): a macro name is not called *)
+  mutable depth : int;  (* '{' minus '}' consumed: how a declaration that fails is skipped *)
+  opts : options;
+  global : V.t ref Names.t;
+  mutable tables : V.t ref Names.t list;  (* innermost first; the global table is last *)
+  mutable includes : int;  (* open include files *)
+  mutable macro_depth : int;
+  mutable version : int;  (* languageVersion × 100 *)
+  mutable version_set : bool;
+  mutable warnings : Error.t list;  (* newest first *)
+  mutable objects : Scene.obj list;  (* newest first *)
+  mutable lights : Scene.light list;  (* newest first *)
+  mutable camera : camera_spec option;
+  mutable background : Colour.t option;
+  mutable sky : Scene.sky option;
+  mutable assumed_gamma : float option;
+  mutable max_trace_level : int;
+  mutable adc_bailout : float;
+  mutable ambient_light : Rgb.t;
+  mutable default_texture : Scene.texture;
+  mutable directive : st -> string -> Loc.t -> unit;  (* the directive reader, tied below *)
+  mutable invoke : st -> V.macro -> Loc.t -> unit;  (* the macro caller, tied below *)
+  mutable index : st -> V.array_v -> int;  (* reads the subscripts of an array element, tied below *)
+}
+
+(* ---------------------------------------------------------------------------------------------- *)
+(* Keywords *)
+
+(* Keywords this interpreter reads. *)
+let keywords =
+  [ "adc_bailout"; "ambient"; "ambient_light"; "angle"; "assumed_gamma"; "background"; "blue"; "brilliance";
+    "camera"; "clock"; "color"; "colour"; "conserve_energy"; "diffuse"; "direction"; "emission"; "exponent";
+    "fade_color"; "fade_colour"; "fade_distance"; "fade_power"; "falloff"; "false"; "filter"; "finish"; "fresnel";
+    "global_settings"; "gray"; "grey"; "green"; "hollow"; "image_height"; "image_width"; "interior"; "ior";
+    "light_source"; "location"; "look_at"; "max_trace_level"; "metallic"; "no"; "no_shadow"; "object"; "off";
+    "on"; "perspective"; "phong"; "phong_size"; "pi"; "pigment"; "plane"; "red"; "reflection";
+    "reflection_exponent"; "refraction"; "rgb"; "rgbf"; "rgbft"; "rgbt"; "right"; "roughness"; "shadowless";
+    "sky"; "sky_sphere"; "specular"; "sphere"; "t"; "texture"; "translate"; "transmit"; "true"; "u"; "up"; "v";
+    "version"; "x"; "y"; "yes"; "z"; "albedo"; "charset"; "number_of_waves"; "noise_generator";
+    "irid_wavelength"; "quick_color"; "quick_colour"; "abs"; "sqrt"; "sqr"; "sin"; "cos"; "tan"; "asin"; "acos";
+    "atan"; "atan2"; "pow"; "exp"; "ln"; "log"; "min"; "max"; "int"; "floor"; "ceil"; "mod"; "div"; "radians";
+    "degrees"; "vlength"; "vnormalize"; "vdot"; "vcross"; "select"; "triangle"; "smooth_triangle"; "mesh";
+    "mesh2"; "vertex_vectors"; "normal_vectors"; "uv_vectors"; "texture_list"; "face_indices"; "normal_indices";
+    "uv_indices"; "inside_vector" ]
+
+(* POV-Ray keywords that a later povml will read; meeting one is a located "not supported yet". *)
+let unsupported =
+  [ "box"; "cylinder"; "cone"; "disc"; "torus"; "polygon";
+    "prism"; "lathe"; "sor"; "blob"; "text"; "height_field"; "isosurface"; "superellipsoid"; "julia_fractal";
+    "parametric"; "bicubic_patch"; "ovus"; "quadric"; "cubic"; "quartic"; "poly"; "intersection";
+    "difference"; "merge"; "rotate"; "scale"; "matrix"; "transform"; "inverse"; "no_image"; "no_reflection";
+    "double_illuminate"; "normal"; "material"; "checker"; "gradient"; "hexagon"; "brick"; "image_map";
+    "bozo"; "marble"; "wood"; "agate"; "granite"; "spotted"; "leopard"; "onion"; "radial"; "spiral1";
+    "spiral2"; "ripples"; "waves"; "wrinkles"; "bumps"; "dents"; "crackle"; "color_map"; "colour_map";
+    "pigment_map"; "texture_map"; "spotlight"; "parallel"; "area_light"; "cylinder"; "looks_like";
+    "projected_through"; "orthographic"; "fisheye"; "panoramic"; "ultra_wide_angle"; "omnimax";
+    "cylindrical"; "spherical"; "aperture"; "focal_point"; "blur_samples"; "radiosity"; "photons";
+    "media"; "fog"; "rainbow"; "irid"; "crand"; "dispersion"; "dispersion_samples"; "caustics";
+    "bounded_by"; "clipped_by"; "uv_mapping"; "srgb"; "srgbf"; "srgbt"; "srgbft"; "subsurface";
+    "interior_texture"; "light_group"; "no_radiosity"; "split_union"; "cutaway_textures"; "sturm";
+    "open"; "phong_albedo"; "metallic_albedo"; "translucency" ]
+
+let set_of l =
+  let h = Names.create 64 in
+  List.iter (fun s -> Names.replace h s ()) l;
+  h
+
+let keyword_set = set_of (keywords @ unsupported)
+let unsupported_set = set_of unsupported
+let is_keyword s = Names.mem keyword_set s
+let is_unsupported s = Names.mem unsupported_set s
+
+(* ---------------------------------------------------------------------------------------------- *)
+(* Token access
+
+   The parser sees one token at a time, as POV-Ray's does: [peek] reads the next token only when it is
+   asked for, and reading is where directives run and macros are called (§11.3). So a directive is
+   executed when the parser first looks past it, and [advance] never reads ahead. *)
+
+let top st = List.hd st.frames
+
+let lookup_cell st name =
+  let rec go = function
+    | [] -> None
+    | t :: rest -> ( match Names.find_opt t name with Some c -> Some c | None -> go rest)
+  in
+  go st.tables
+
+let lookup st name = match lookup_cell st name with Some c -> Some !c | None -> None
+
+(* While looking past a value, directives wait (see [peek_follow]), except those that only end a
+   branch or a macro body: they change no value, and a macro's value is often followed by its #end. *)
+let closes_branch f d =
+  match d with
+  | "else" | "elseif" -> true
+  | "end" -> ( match f.conds with [] -> (match f.kind with Macro_body _ -> true | Main | Included _ -> false) | (If_branch _ | Switch_case _) :: _ -> true | (While_loop _ | For_loop _) :: _ -> false)
+  | _ -> false
+
+let rec fill st =
+  let f = top st in
+  let t = Lexer.next f.lx in
+  match t.kind with
+  | Eof -> end_of_frame st f t
+  | Directive d ->
+      if st.defer && not (closes_branch f d) then begin st.cur <- t; st.have <- true; st.cur_elem <- None end
+      else begin
+        st.directive st d t.loc;
+        if not st.have then fill st
+      end
+  | Ident s -> (
+      match lookup st s with
+      | Some (V.Macro m) when not st.no_expand ->
+          st.invoke st m t.loc;
+          if not st.have then fill st
+      | Some (V.Array a) when Lexer.next_char f.lx = Some '[' ->
+          (* an array element is resolved as it is read, so every context sees its value (§11.2) *)
+          let i = st.index st a in
+          st.cur <- t; st.have <- true; st.cur_elem <- Some (a, i)
+      | _ -> st.cur <- t; st.have <- true; st.cur_elem <- None)
+  | _ -> st.cur <- t; st.have <- true; st.cur_elem <- None
+
+and end_of_frame st f t =
+  (match f.conds with
+  | [] -> ()
+  | c :: _ ->
+      let loc, what =
+        match c with
+        | If_branch l -> (l, "#if")
+        | While_loop (_, l) -> (l, "#while")
+        | For_loop { floc; _ } -> (floc, "#for")
+        | Switch_case { sloc; _ } -> (sloc, "#switch")
+      in
+      Error.raise_at loc "%s has no matching #end before the end of the file" what);
+  match f.kind with
+  | Main -> st.cur <- t; st.have <- true; st.cur_elem <- None
+  | Included (_, t0) ->
+      st.opts.included (Lexer.file f.lx) ~depth:st.includes (Unix.gettimeofday () -. t0);
+      st.frames <- List.tl st.frames;
+      st.tables <- List.tl st.tables;
+      st.includes <- st.includes - 1;
+      fill st
+  | Macro_body (name, _) -> Error.raise_at t.loc "the body of macro '%s' ends without #end" name
+
+(* A directive read while looking past a complete value was kept for later (see [peek_follow]);
+   it runs as soon as the parser asks for the next token. *)
+let rec run_pending st =
+  match st.cur.kind with
+  | Directive d when st.have ->
+      st.have <- false;
+      st.directive st d st.cur.loc;
+      if not st.have then fill st;
+      run_pending st
+  | _ -> ()
+
+let peek st = if not st.have then fill st else run_pending st; st.cur.kind
+
+(* The token after a complete value, read to see whether the value goes on ('+', '.x', another
+   texture layer …). A directive found there is not run yet: it runs after the value has been
+   used, so "#declare A = 1 #declare B = A;" and a #declare just before #end see the new A. *)
+let peek_follow st =
+  if not st.have then begin
+    st.defer <- true;
+    (try fill st with e -> st.defer <- false; raise e);
+    st.defer <- false
+  end;
+  st.cur.kind
+
+(* The value of the identifier [name] that is the current token (an array element if subscripted). *)
+let cur_value st name =
+  match st.cur_elem with
+  | Some (a, i) -> (
+      match a.cells.(i) with
+      | Some v -> Some v
+      | None -> Error.raise_at st.cur.loc "element %d of the array '%s' has not been assigned a value" i name)
+  | None -> lookup st name
+let peek_loc st = if not st.have then fill st else run_pending st; st.cur.loc
+
+let advance st =
+  if not st.have then fill st else run_pending st;
+  (match st.cur.kind with LBrace -> st.depth <- st.depth + 1 | RBrace -> st.depth <- st.depth - 1 | _ -> ());
+  if st.cur.kind != Eof then st.have <- false
+
+let warn st loc fmt = Printf.ksprintf (fun msg -> st.warnings <- { Error.loc; msg; notes = [] } :: st.warnings) fmt
+
+let not_supported loc what = raise (Unsupported (loc, what, []))
+
+(* Using a declared value that needed an unsupported feature. *)
+let unsupported_use loc name what at = raise (Unsupported (loc, Printf.sprintf "%s (used through '%s')" what name, [ (at, Printf.sprintf "'%s' was declared here" name) ]))
+
+let all_names st = List.concat_map (fun t -> Names.fold (fun k _ acc -> k :: acc) t []) st.tables
+
+let unknown_identifier st loc name =
+  let candidates = all_names st @ keywords in
+  match Suggest.nearest name candidates with
+  | [] -> Error.raise_at loc "unknown identifier '%s'" name
+  | s -> Error.raise_at loc "unknown identifier '%s'; did you mean %s?" name (String.concat " or " (List.map (Printf.sprintf "'%s'") s))
+
+let unexpected st what =
+  let k = peek st in
+  match k with
+  | Ident s when is_unsupported s -> not_supported (peek_loc st) (Printf.sprintf "'%s'" s)
+  | Ident s when (not (is_keyword s)) && cur_value st s = None -> (
+      let candidates = all_names st @ keywords in
+      match Suggest.nearest s candidates with
+      | [] -> Error.raise_at (peek_loc st) "expected %s but found %s" what (describe k)
+      | sug ->
+          Error.raise_at (peek_loc st) "expected %s but found %s; did you mean %s?" what (describe k)
+            (String.concat " or " (List.map (Printf.sprintf "'%s'") sug)))
+  | Ident s -> (
+      match cur_value st s with
+      | Some (V.Unsupported u) -> unsupported_use (peek_loc st) s u.what u.at
+      | Some v -> Error.raise_at (peek_loc st) "expected %s but found '%s', which is %s" what s (V.kind_name v)
+      | None -> Error.raise_at (peek_loc st) "expected %s but found %s" what (describe k))
+  | _ -> Error.raise_at (peek_loc st) "expected %s but found %s" what (describe k)
+
+(* [k] is always a constant constructor here, so physical equality is the cheap, exact test *)
+let expect st k what = if peek st == k then advance st else unexpected st what
+let accept st k = if peek st == k then (advance st; true) else false
+let is_ident st s = match peek st with Ident i -> String.equal i s | _ -> false
+
+let accept_ident st s =
+  if is_ident st s then (advance st; true) else false
+
+let include_dirs st =
+  let here = Filename.dirname (Lexer.file (top st).lx) in
+  let main = Filename.dirname (Lexer.file (List.nth st.frames (List.length st.frames - 1)).lx) in
+  let debian = "/usr/share/povray-3.7/include" in
+  ignore here;
+  (* the scene's directory (POV-Ray searches the working directory, usually the scene's), then +L *)
+  let dirs = [ main; Filename.current_dir_name ] @ st.opts.library_paths @ (if Sys.file_exists debian then [ debian ] else []) in
+  List.fold_left (fun acc d -> if List.mem d acc then acc else acc @ [ d ]) [] dirs
+
+let find_file st name =
+  let candidates =
+    let join d n = if d = Filename.current_dir_name then n else Filename.concat d n in
+    if Filename.is_relative name then List.concat_map (fun d -> [ join d name; join d (name ^ ".inc") ]) (include_dirs st)
+    else [ name; name ^ ".inc" ]
+  in
+  List.find_opt (fun p -> Sys.file_exists p && not (Sys.is_directory p)) candidates
+
+
+let read_file path =
+  let at = { Loc.none with file = path } in
+  let reason msg =
+    (* Sys_error reads "path: reason"; the path is already in the location *)
+    let p = path ^ ": " in
+    if String.length msg > String.length p && String.sub msg 0 (String.length p) = p then
+      String.sub msg (String.length p) (String.length msg - String.length p)
+    else msg
+  in
+  if Sys.file_exists path && Sys.is_directory path then Error.raise_at at "this is a directory, not a scene file";
+  match open_in_bin path with
+  | exception Sys_error msg -> Error.raise_at at "cannot open the scene file: %s" (reason msg)
+  | ic ->
+      Fun.protect ~finally:(fun () -> close_in_noerr ic) (fun () ->
+          match really_input_string ic (in_channel_length ic) with
+          | s -> s
+          | exception Sys_error msg -> Error.raise_at at "cannot read the scene file: %s" (reason msg))
+

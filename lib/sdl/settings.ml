@@ -1,0 +1,151 @@
+(* Camera, global settings, sky_sphere and background (POVRAY-3.7 §1, §7, §8). *)
+
+open Token
+module V = Value
+open Reader
+open Expr
+open Materials
+open Objects
+
+
+let empty_camera =
+  { c_location = None; c_direction = None; c_up = None; c_right = None; c_sky = None; c_look_at = None; c_angle = None; c_trans = None }
+
+let parse_camera st =
+  open_block st "camera";
+  let base =
+    match peek st with
+    | Ident s -> ( match cur_value st s with Some (V.Camera c) -> advance st; c | _ -> empty_camera)
+    | _ -> empty_camera
+  in
+  let rec loop c =
+    let loc = peek_loc st in
+    match peek st with
+    | RBrace -> advance st; c
+    | Ident "perspective" -> advance st; loop c
+    | Ident "location" -> advance st; loop { c with c_location = Some (parse_vector st) }
+    | Ident "direction" -> advance st; loop { c with c_direction = Some (parse_vector st) }
+    | Ident "up" -> advance st; loop { c with c_up = Some (parse_vector st) }
+    | Ident "right" -> advance st; loop { c with c_right = Some (parse_vector st) }
+    | Ident "sky" -> advance st; loop { c with c_sky = Some (parse_vector st) }
+    | Ident "look_at" -> advance st; let l = peek_loc st in loop { c with c_look_at = Some (parse_vector st, l) }
+    | Ident "angle" -> advance st; let l = peek_loc st in loop { c with c_angle = Some (parse_float st, l) }
+    | Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") ->
+        let t = Place.op_transform (parse_op st) in
+        loop { c with c_trans = Some (match c.c_trans with None -> t | Some t0 -> Transform.compose t0 t) }
+    | Ident s when is_unsupported s -> not_supported loc (Printf.sprintf "'%s' in a camera" s)
+    | _ -> unexpected st "a camera keyword or '}'"
+  in
+  loop base
+
+(* §1.3: the camera modifiers are applied in a fixed order, whatever order they were written in. *)
+let build_camera st (c : camera_spec) : Scene.camera =
+  let location = Option.value c.c_location ~default:Vec.zero in
+  let direction = Option.value c.c_direction ~default:(Vec.make 0. 0. 1.) in
+  let up = Option.value c.c_up ~default:(Vec.make 0. 1. 0.) in
+  let right = Option.value c.c_right ~default:(Vec.make 1.33 0. 0.) in
+  let sky = Option.value c.c_sky ~default:(Vec.make 0. 1. 0.) in
+  let direction =
+    match c.c_angle with
+    | None -> direction
+    | Some (a, loc) ->
+        if a >= 180. then Error.raise_at loc "camera angle must be less than 180 degrees, not %g" a;
+        if a <= 0. then Error.raise_at loc "camera angle must be greater than 0 degrees, not %g" a;
+        Vec.scale (Vec.length right /. tan (a *. Float.pi /. 360.) /. 2.) (Vec.normalize direction)
+  in
+  let direction, right, up =
+    match c.c_look_at with
+    | None -> (direction, right, up)
+    | Some (p, loc) ->
+        let dl = Vec.length direction and ul = Vec.length up and rl = Vec.length right in
+        let handedness = Vec.dot (Vec.cross up direction) right in
+        let dv = Vec.sub p location in
+        if Vec.length2 dv < 1e-10 then Error.raise_at loc "camera look_at point is the same as the location";
+        let d = Vec.normalize dv in
+        let r = Vec.cross sky d in
+        let r =
+          if Float.abs r.x < 1e-10 && Float.abs r.y < 1e-10 && Float.abs r.z < 1e-10 then begin
+            warn st loc "camera location and look_at are in line with the sky vector; the old right vector is kept";
+            right
+          end
+          else r
+        in
+        let r = Vec.normalize r in
+        let u = Vec.cross d r in
+        (Vec.scale dl d, Vec.scale (if handedness > 0. then rl else -.rl) r, Vec.scale ul u)
+  in
+  match c.c_trans with
+  | None -> { Scene.location; direction; up; right }
+  | Some t ->
+      (* §14.8: the location as a point, the other vectors as directions *)
+      {
+        Scene.location = Transform.point t location;
+        direction = Transform.direction t direction;
+        up = Transform.direction t up;
+        right = Transform.direction t right;
+      }
+
+let parse_global_settings st =
+  open_block st "global_settings";
+  let rec loop () =
+    let loc = peek_loc st in
+    match peek st with
+    | RBrace -> advance st
+    | Ident "assumed_gamma" ->
+        advance st;
+        let g = parse_float st in
+        if g <= 0. then Error.raise_at loc "assumed_gamma must be positive, not %g" g;
+        if st.assumed_gamma = None then st.assumed_gamma <- Some g
+        else warn st loc "new instance of assumed_gamma ignored";
+        loop ()
+    | Ident "max_trace_level" ->
+        advance st;
+        (* §7: clipped to 1 … 256 *)
+        let n = int_of_float (parse_float st) in
+        st.max_trace_level <- max 1 (min 256 n);
+        loop ()
+    | Ident "adc_bailout" -> advance st; st.adc_bailout <- parse_float st; loop ()
+    | Ident "ambient_light" -> advance st; st.ambient_light <- parse_rgb st "ambient_light"; loop ()
+    | Ident ("number_of_waves" | "noise_generator") -> advance st; ignore (parse_float st); loop ()
+    | Ident "irid_wavelength" -> advance st; ignore (parse_rgb st "irid_wavelength"); loop ()
+    | Ident "charset" -> advance st; (match peek st with Ident _ -> advance st | _ -> unexpected st "a charset name"); loop ()
+    | Ident s when is_unsupported s -> not_supported loc (Printf.sprintf "'%s' in global_settings" s)
+    | _ -> unexpected st "a global_settings keyword or '}'"
+  in
+  loop ()
+
+let parse_sky_sphere st =
+  let loc = peek_loc st in
+  advance st;
+  open_block st "sky_sphere";
+  if st.sky <> None then warn st loc "a second sky_sphere replaces the first";
+  let rec loop pigs emission =
+    let l = peek_loc st in
+    match peek st with
+    | RBrace ->
+        advance st;
+        if pigs = [] then Error.raise_at loc "a sky_sphere needs at least one pigment";
+        { Scene.sky_pigments = List.rev pigs; sky_emission = emission }
+    | Ident "pigment" -> advance st; loop (parse_pigment st (Scene.Solid Colour.black) :: pigs) emission
+    | Ident "emission" -> advance st; loop pigs (parse_rgb st "sky_sphere emission")
+    | Ident "translate" -> advance st; ignore (parse_vector st); loop pigs emission
+    | Ident s when is_unsupported s -> not_supported l (Printf.sprintf "'%s' in a sky_sphere" s)
+    | _ -> unexpected st "'pigment' or '}' in a sky_sphere"
+  in
+  st.sky <- Some (loop [] Rgb.white)
+
+(* §8.1: the version POV-Ray's renderer sees so far: 3.62 until a #version has been read. *)
+let effective_version st = if st.version_set then st.version else 362
+
+let parse_background st =
+  advance st;
+  open_block st "background";
+  let c = parse_colour st in
+  close_block st "background";
+  (* §8.4: from 3.70 the transmit is folded into rgb; before, filter and transmit become 0 *)
+  st.background <-
+    Some
+      (if effective_version st >= 370 then
+         { Colour.red = c.red *. (1. -. c.transmit); green = c.green *. (1. -. c.transmit); blue = c.blue *. (1. -. c.transmit); filter = 0.; transmit = 0. }
+       else { c with filter = 0.; transmit = 0. })
+
