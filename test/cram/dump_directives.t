@@ -211,7 +211,7 @@ Not checked here: directives between '#switch' and its first '#case' run in POV-
   K=2
   after: K=3
   break: K=5
-  // version 3.7, assumed_gamma 1
+  // version 3.7, working gamma 1
   global_settings { max_trace_level 5 adc_bailout 0.003921568627 ambient_light rgb <1, 1, 1> }
   camera { location <0, 0, 0> direction <0, 0, 1> up <0, 1, 0> right <1.33, 0, 0> }
   background { rgb <0, 0, 0> }
@@ -268,7 +268,7 @@ body stick. A loop whose start is past its end never runs and leaves I at the st
    1 2 break: I=3
   in the macro: I=4
   global I=100
-  // version 3.7, assumed_gamma 1
+  // version 3.7, working gamma 1
   global_settings { max_trace_level 5 adc_bailout 0.003921568627 ambient_light rgb <1, 1, 1> }
   camera { location <0, 0, 0> direction <0, 0, 1> up <0, 1, 0> right <1.33, 0, 0> }
   background { rgb <0, 0, 0> }
@@ -335,7 +335,7 @@ a macro defined by running another one, 90 nested calls, and objects and object 
   Inner not defined yet
   Inner called
   depth reached
-  // version 3.7, assumed_gamma 1
+  // version 3.7, working gamma 1
   global_settings { max_trace_level 5 adc_bailout 0.003921568627 ambient_light rgb <1, 1, 1> }
   camera { location <0, 0, 0> direction <0, 0, 1> up <0, 1, 0> right <1.33, 0, 0> }
   background { rgb <0, 0, 0> }
@@ -409,16 +409,16 @@ any string expression; macros defined in an include can be called later.
   l.inc read
   l.inc read
   file_exists: 11
-  // version 3.7, assumed_gamma 1
+  // version 3.7, working gamma 1
   global_settings { max_trace_level 5 adc_bailout 0.003921568627 ambient_light rgb <1, 1, 1> }
   camera { location <0, 0, 0> direction <0, 0, 1> up <0, 1, 0> right <1.33, 0, 0> }
   background { rgb <0, 0, 0> }
   sphere { <0, 2, 0>, 2
     texture { pigment { rgb <0, 0, 0> } }
-  } // ./a.inc:10:1
+  } // a.inc:10:1
   sphere { <0, 1, 0>, 0.5
     texture { pigment { rgb <0, 0, 0> } }
-  } // ./a.inc:8:19
+  } // a.inc:8:19
   // 2 objects, 0 lights
 
 Not checked here: file_exists("l") is 0 in POV-Ray (no extension is appended); povml says 1 when l.inc
@@ -462,7 +462,7 @@ arrays of strings and objects.
   trailing comma: 2
   abc
   sum of B[1]=15
-  // version 3.7, assumed_gamma 1
+  // version 3.7, working gamma 1
   global_settings { max_trace_level 5 adc_bailout 0.003921568627 ambient_light rgb <1, 1, 1> }
   camera { location <0, 0, 0> direction <0, 0, 1> up <0, 1, 0> right <1.33, 0, 0> }
   background { rgb <0, 0, 0> }
@@ -501,7 +501,7 @@ replaces the whole texture.
   > sphere { <5, 0, 0>, 1 }
   > POV
   $ povml --dump default.pov
-  // version 3.7, assumed_gamma 1
+  // version 3.7, working gamma 1
   global_settings { max_trace_level 5 adc_bailout 0.003921568627 ambient_light rgb <1, 1, 1> }
   camera { location <0, 0, 0> direction <0, 0, 1> up <0, 1, 0> right <1.33, 0, 0> }
   background { rgb <0, 0, 0> }

@@ -149,7 +149,7 @@ with zeros), vstr (no promotion, missing components are 0):
   u+v=1.000000,1.000000,0.000000
   vstr(2,<1,2,3>)=1.0,2.0 vstr(5,<1,2,3>)=1.0,2.0,3.0,0.0,0.0 vstr(1,5)=5.0,0.0
   vstr(4,<1,2,3,4,5>)=1.000000|2.000000|3.000000|4.000000
-  // version 3.7, assumed_gamma 1
+  // version 3.7, working gamma 1
   global_settings { max_trace_level 5 adc_bailout 0.003921568627 ambient_light rgb <1, 1, 1> }
   camera { location <0, 0, 0> direction <0, 0, 1> up <0, 1, 0> right <1.33, 0, 0> }
   background { rgb <0, 0, 0> }
@@ -218,7 +218,7 @@ seed() makes a new stream each time and returns its number; rand(S) draws from s
   S=0 0.723582911 0.329979260
   S2=1 0.723582911 rand(0)=0.755761670
   seed(-1): 0.578012874 rand(1.7)=0.329979260
-  // version 3.7, assumed_gamma 1
+  // version 3.7, working gamma 1
   global_settings { max_trace_level 5 adc_bailout 0.003921568627 ambient_light rgb <1, 1, 1> }
   camera { location <0, 0, 0> direction <0, 0, 1> up <0, 1, 0> right <1.33, 0, 0> }
   background { rgb <0, 0, 0> }

@@ -35,7 +35,7 @@ against POV-Ray's min_extent/max_extent of the same objects (rotations are not r
   > object { U translate x }
   > POV
   $ povml --dump tr.pov
-  // version 3.7, assumed_gamma 1
+  // version 3.7, working gamma 1
   global_settings { max_trace_level 5 adc_bailout 0.003921568627 ambient_light rgb <1, 1, 1> }
   camera { location <-4, 0, -3.061616998e-16> direction <1, 0, 6.123233996e-17> up <0, 1, 0> right <8.143901214e-17, 0, -1.33> }
   background { rgb <0, 0, 0> }

@@ -59,7 +59,7 @@ Unbalanced directives, in the main file and in an include file:
   > sphere { 0, 1 }
   > POV
   $ povml --dump ifinc.pov
-  ./ifnoend.inc:1:1: error: #if has no matching #end before the end of the file
+  ifnoend.inc:1:1: error: #if has no matching #end before the end of the file
       1 | #if (1)
         | ^
   ifinc.pov:1:1: note: in the file included from here
@@ -177,7 +177,7 @@ An error inside a macro body names each call; inside an included file, each incl
   > #include "bad.inc"
   > POV
   $ povml --dump incerr.pov
-  ./bad.inc:2:18: error: unknown identifier 'Nope'
+  bad.inc:2:18: error: unknown identifier 'Nope'
       2 | #declare B = A + Nope;
         |                  ^
   incerr.pov:1:1: note: in the file included from here
@@ -195,7 +195,7 @@ An error inside a macro body names each call; inside an included file, each incl
   > Ball(-4)
   > POV
   $ povml --dump chain.pov
-  ./lib.inc:2:15: error: sqrt of negative number -4.000000
+  lib.inc:2:15: error: sqrt of negative number -4.000000
       2 |   sphere { 0, sqrt(R) }
         |               ^
   chain.pov:2:1: note: in macro 'Ball' called from here
