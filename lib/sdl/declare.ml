@@ -47,7 +47,8 @@ and parse_array st =
       advance st;
       let l = peek_loc st in
       let n = parse_float st in
-      if n < 1. || Float.of_int (int_of_float n) <> n then Error.raise_at l "an array dimension must be a whole number of at least 1, not %g" n;
+      (* the size is truncated, as POV-Ray does: array[2.5] has 2 elements *)
+      if n < 1. then Error.raise_at l "an array dimension must be at least 1, not %g" n;
       expect st RBracket "']' after an array dimension";
       dims (int_of_float n :: acc)
     end

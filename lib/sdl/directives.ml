@@ -95,6 +95,10 @@ let directive st d loc =
       st.no_expand <- true;
       let k = Fun.protect ~finally:(fun () -> st.no_expand <- false) (fun () -> peek st) in
       match k with
+      | Ident _ when st.cur_elem <> None ->
+          (* #undef A[i] clears that element *)
+          (match st.cur_elem with Some (a, i) -> a.cells.(i) <- None | None -> ());
+          advance st
       | Ident s ->
           advance st;
           (match List.find_opt (fun t -> Names.mem t s) st.tables with
@@ -102,7 +106,9 @@ let directive st d loc =
           | None -> warn st loc "attempt to #undef the unknown identifier '%s'" s)
       | _ -> unexpected st "an identifier after '#undef'")
   | "version" ->
+      let l = peek_loc st in
       let v = parse_float st in
+      if v > 3.71 then Error.raise_at l "this scene requires POV-Ray version %g or later; povml reads the language of POV-Ray 3.7" v;
       ignore (accept st Semi);
       st.version <- int_of_float ((v *. 100.) +. 0.5);
       st.version_set <- true
@@ -157,7 +163,9 @@ let directive st d loc =
       expect st LParen "'(' after '#for'";
       st.no_expand <- true;
       let k = Fun.protect ~finally:(fun () -> st.no_expand <- false) (fun () -> peek st) in
-      let name = match k with Ident s when not (is_keyword s) -> advance st; s | _ -> unexpected st "the loop variable of '#for'" in
+      let name = match k with Ident s when not (is_keyword s) -> s | _ -> unexpected st "the loop variable of '#for'" in
+      if st.cur_elem <> None then Error.raise_at (peek_loc st) "the #for loop variable must not be an array element";
+      advance st;
       expect st Comma "',' after the #for variable";
       let start = parse_float st in
       expect st Comma "',' after the start value of '#for'";
@@ -257,7 +265,12 @@ let invoke st (m : V.macro) loc =
         raise
           (Error.Scene_error
              { loc = peek_loc st; msg = Printf.sprintf "macro '%s' takes %d argument%s, this call gives %d" m.mname nparams (if nparams = 1 then "" else "s") i; notes = [ (m.mloc, "the macro is defined here") ] });
-      if i > 0 then expect st Comma "',' between macro arguments";
+      (* the commas between arguments are optional, and one may follow the last *)
+      if i > 0 then ignore (accept st Comma);
+      if peek st == RParen then
+        raise
+          (Error.Scene_error
+             { loc = peek_loc st; msg = Printf.sprintf "macro '%s' takes %d argument%s, this call gives %d" m.mname nparams (if nparams = 1 then "" else "s") i; notes = [ (m.mloc, "the macro is defined here") ] });
       let by_ref =
         match peek st with
         | Ident s when st.cur_elem = None -> (
@@ -269,6 +282,7 @@ let invoke st (m : V.macro) loc =
       let cell = match by_ref with Some c -> c | None -> ref (fst (parse_rvalue st)) in
       Names.replace table p cell)
     m.params;
+  ignore (accept st Comma);
   if peek st != RParen then
     raise
       (Error.Scene_error

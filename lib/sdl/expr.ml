@@ -360,8 +360,8 @@ and parse_function st loc name =
       match args with
       | [ (_, V.Array a); d ] ->
           let d = int_arg d in
-          if d < 1 || d > Array.length a.dims then Error.raise_at loc "dimension %d is out of range: the array has %d" d (Array.length a.dims);
-          V.Float (float_of_int a.dims.(d - 1))
+          (* a dimension the array does not have has size 0 (checked with POV-Ray) *)
+          V.Float (if d < 1 || d > Array.length a.dims then 0. else float_of_int a.dims.(d - 1))
       | _ -> Error.raise_at loc "'dimension_size' takes an array and a dimension number")
   | "str" -> arity 3; V.String (Strfmt.str (float_arg (arg 0)) (int_arg (arg 1)) (int_arg (arg 2)))
   | "vstr" ->
@@ -396,7 +396,7 @@ and parse_function st loc name =
   | "strlwr" -> arity 1; V.String (String.lowercase_ascii (string_arg (arg 0)))
   | "val" -> arity 1; V.Float (Strfmt.value (string_arg (arg 0)))
   | "strcmp" -> arity 2; V.Float (float_of_int (Strfmt.compare (string_arg (arg 0)) (string_arg (arg 1))))
-  | "file_exists" -> arity 1; V.Float (if find_file st (string_arg (arg 0)) <> None then 1. else 0.)
+  | "file_exists" -> arity 1; V.Float (if find_file ~inc:false st (string_arg (arg 0)) <> None then 1. else 0.)
   | _ -> Error.raise_at loc "unknown function '%s'" name
 
 (* The arguments of dimensions() and dimension_size(): an array identifier, then floats. *)

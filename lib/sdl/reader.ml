@@ -291,11 +291,13 @@ let include_dirs st =
   let dirs = [ main; Filename.current_dir_name ] @ st.opts.library_paths @ (if Sys.file_exists debian then [ debian ] else []) in
   List.fold_left (fun acc d -> if List.mem d acc then acc else acc @ [ d ]) [] dirs
 
-let find_file st name =
+(* An include file: the name as written, then with ".inc" ([~inc:false] for file_exists, which
+   does not append it). *)
+let find_file ?(inc = true) st name =
   let candidates =
     let join d n = if d = Filename.current_dir_name then n else Filename.concat d n in
-    if Filename.is_relative name then List.concat_map (fun d -> [ join d name; join d (name ^ ".inc") ]) (include_dirs st)
-    else [ name; name ^ ".inc" ]
+    let names = if inc then [ name; name ^ ".inc" ] else [ name ] in
+    if Filename.is_relative name then List.concat_map (fun d -> List.map (join d) names) (include_dirs st) else names
   in
   List.find_opt (fun p -> Sys.file_exists p && not (Sys.is_directory p)) candidates
 

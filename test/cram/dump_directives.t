@@ -68,10 +68,11 @@ locals (dynamic scoping). A bare identifier argument is passed by reference; an 
   Fill(A): A[2]=9
   now a string
 
-Not checked here, because povml disagrees with POV-Ray:
-- SetP(A[1]) with an array element argument: POV-Ray passes the element by reference (A[1]=77), povml
+Not checked here, because povml still disagrees with POV-Ray:
+- SetP(A[1]) with an array element argument: POV-Ray passes the element by reference (A[1]=77);
+ povml passes a copy (A[1] stays 2).
 - '#local Rad = Rad * 2;' in a macro when Rad is only global: POV-Ray stops with "Cannot assign
-- '#local X = Two();' where the macro Two returns a value made with #local: the new X is put in the
+ uninitialized identifier" (the new local exists before its value is read); povml reads the global.
 
 #undef removes the entry where lookup finds it: a global from inside a macro, a local (so the
 global shows through), or only the alias of a by-reference parameter.
@@ -524,3 +525,37 @@ replaces the whole texture.
     texture { pigment { rgb <0, 0, 1> } finish { ambient rgb <0.5, 0.5, 0.5> } }
   } // default.pov:15:1
   // 6 objects, 0 lights
+
+Cases found to differ from POV-Ray and then fixed (values checked with POV-Ray 3.7.0.10): a #local
+whose value is a macro's #local, a recursive macro that returns through #local, an expression that
+goes on after a macro's value, macro arguments without commas and with a trailing comma, #undef of
+one array element, #ifdef of an element, string equality, dimension_size of a missing dimension,
+array[2.5], strcmp's difference of codes, file_exists without ".inc" appended:
+
+  $ touch l.inc
+  $ cat > fixed.pov <<'POV'
+  > #version 3.7;
+  > global_settings { assumed_gamma 1 }
+  > #macro Two() #local T = 2; T #end
+  > #local X = Two();
+  > #macro Fact(N) #if (N <= 1) #local R = 1; #else #local R = N * Fact(N - 1); #end R #end
+  > #macro Ret(X) X*2 #end
+  > #declare R3 = 1 + Ret(3) + 1;
+  > #macro M2(A, B) concat(str(A,0,0), str(B,0,0)) #end
+  > #declare A = array[2.5] { 1, 2 }
+  > #undef A[0]
+  > #ifndef (A[0]) #debug "A[0] undefined\n" #end
+  > #ifdef (A[1]) #debug "A[1] defined\n" #end
+  > #declare SS = "x";
+  > #if (SS = "x") #debug "SS equals x\n" #end
+  > #debug concat("X=", str(X,0,0), " Fact(5)=", str(Fact(5),0,0), " R3=", str(R3,0,0), " M2=", M2(1 2), M2(3,4,), "\n")
+  > #debug concat("dims=", str(dimension_size(A, 1),0,0), " ", str(dimension_size(A, 2),0,0), " ", str(dimension_size(A, 0),0,0), "\n")
+  > #debug concat("strcmp=", str(strcmp("abc","ab"),0,0), " ", str(strcmp("A","a"),0,0), " file_exists(l)=", str(file_exists("l"),0,0), " file_exists(l.inc)=", str(file_exists("l.inc"),0,0), "\n")
+  > POV
+  $ povml --dump fixed.pov > /dev/null
+  A[0] undefined
+  A[1] defined
+  SS equals x
+  X=2 Fact(5)=120 R3=8 M2=1234
+  dims=2 0 0
+  strcmp=99 -32 file_exists(l)=0 file_exists(l.inc)=1

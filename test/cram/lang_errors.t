@@ -136,9 +136,9 @@ Macro calls with too few or too many arguments point at the definition:
   > M2(1, 2, 3)
   > POV
   $ povml --dump args2.pov
-  args2.pov:4:8: error: too many arguments for macro 'M2', which takes 2
+  args2.pov:4:10: error: too many arguments for macro 'M2', which takes 2
       4 | M2(1, 2, 3)
-        |        ^
+        |          ^
   args2.pov:1:1: note: the macro is defined here
   [1]
   $ cat > macroundef.pov <<'POV'
@@ -391,3 +391,18 @@ Not checked here, because POV-Ray refuses them and povml does not (povml accepts
 - '#for (A[0], 1, 2) #end': POV-Ray says "#for loop variable must not be an array element".
 - 'array[2] {1, "a"}': POV-Ray says "Attempted to redefine float identifier as string identifier."
 - '#version 3.8;': POV-Ray says "Your scene file requires POV-Ray version 3.8 or later!".
+
+A #for loop variable cannot be an array element, and a scene for a later POV-Ray is refused:
+
+  $ printf '#version 3.7;\n#declare A = array[2];\n#for (A[0], 1, 2) #end\n' > forel.pov
+  $ povml --dump forel.pov
+  forel.pov:3:7: error: the #for loop variable must not be an array element
+      3 | #for (A[0], 1, 2) #end
+        |       ^
+  [1]
+  $ printf '#version 3.8;\nsphere { 0, 1 }\n' > v38.pov
+  $ povml --dump v38.pov
+  v38.pov:1:10: error: this scene requires POV-Ray version 3.8 or later; povml reads the language of POV-Ray 3.7
+      1 | #version 3.8;
+        |          ^
+  [1]
