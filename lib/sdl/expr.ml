@@ -525,3 +525,64 @@ let float_follows st =
 
 let parse_bool_opt st = if float_follows st then truth (parse_float st) else true
 
+(* ---------------------------------------------------------------------------------------------- *)
+(* Transformations (§14.2, §14.3) *)
+
+(* A scale vector: a zero component is replaced by 1 with POV-Ray's warning (§14.2). *)
+let scale_vector st loc (v : Vec.t) =
+  let fix axis c = if c = 0. then (warn st loc "illegal value: scale %s by 0.0; changed to 1.0" axis; 1.) else c in
+  Vec.make (fix "x" v.x) (fix "y" v.y) (fix "z" v.z)
+
+(* translate / rotate / scale / matrix / transform, as one modifier (§14.2, §14.3). *)
+let rec parse_op st : Place.op =
+  let loc = peek_loc st in
+  match peek st with
+  | Ident "translate" -> advance st; Translate (parse_vector st)
+  | Ident "rotate" -> advance st; Rotate (parse_vector st)
+  | Ident "scale" -> advance st; let l = peek_loc st in Scale (scale_vector st l (parse_vector st))
+  | Ident "matrix" -> advance st; Transform (parse_matrix st)
+  | Ident "transform" -> advance st; Transform (parse_transform st)
+  | _ -> ignore loc; unexpected st "a transformation"
+
+and parse_matrix st =
+  let loc = peek_loc st in
+  expect st Lt "'<' starting the 12 numbers of a matrix";
+  let a = Array.make 12 0. in
+  for k = 0 to 11 do
+    if k > 0 then expect st Comma (Printf.sprintf "',' after number %d of the matrix (it has 12)" k);
+    a.(k) <- parse_float st
+  done;
+  expect st Gt "'>' after the 12 numbers of a matrix";
+  match Transform.matrix a with
+  | Ok (t, warnings) -> List.iter (fun w -> warn st loc "%s" w) warnings; t
+  | Error msg -> Error.raise_at loc "%s" msg
+
+(* transform { items [inverse] } or transform Id: the block starts from the identity and composes
+   its items in order; inverse inverts the whole block wherever it stands (§14.3). *)
+and parse_transform st =
+  let ident () =
+    match peek st with
+    | Ident s -> (
+        match cur_value st s with
+        | Some (V.Transform t) -> advance st; Some t
+        | Some (V.Unsupported u) -> unsupported_use (peek_loc st) s u.what u.at
+        | _ -> None)
+    | _ -> None
+  in
+  match ident () with
+  | Some t -> t
+  | None ->
+      open_block st "transform";
+      let rec loop t inv =
+        match peek st with
+        | RBrace -> advance st; if inv then Transform.inverse t else t
+        | Ident "inverse" -> advance st; loop t true
+        | Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") ->
+            loop (Transform.compose t (Place.op_transform (parse_op st))) inv
+        | _ -> (
+            match ident () with
+            | Some t' -> loop (Transform.compose t t') inv
+            | None -> unexpected st "a transformation, 'inverse' or '}' in a transform block")
+      in
+      loop Transform.identity false
+

@@ -6,9 +6,6 @@ open Reader
 open Expr
 
 
-let open_block st what = expect st LBrace (Printf.sprintf "'{' after '%s'" what)
-
-let close_block st what = expect st RBrace (Printf.sprintf "'}' closing '%s' or one of its keywords" what)
 
 let ident_of_kind st f =
   match peek st with
@@ -27,7 +24,10 @@ let parse_pigment st (base : Scene.pigment) : Scene.pigment =
     match peek st with
     | RBrace -> advance st; p
     | Ident s when is_colour_start st -> ignore s; loop (Scene.Solid (parse_colour st))
-    | Ident "translate" -> advance st; ignore (parse_vector st); loop p (* a plain colour is the same everywhere *)
+    | Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") ->
+        (* a plain colour is the same everywhere: the pattern transform changes nothing yet *)
+        ignore (parse_op st);
+        loop p
     | Ident ("quick_color" | "quick_colour") -> advance st; ignore (parse_colour st); loop p
     | Ident s when is_unsupported s -> not_supported loc (Printf.sprintf "'%s' in a pigment" s)
     | _ -> unexpected st "a colour or '}' in a pigment"
@@ -130,7 +130,7 @@ let parse_texture st (base : Scene.texture) : Scene.texture =
     | RBrace -> advance st; t
     | Ident "pigment" -> advance st; loop { t with pigment = parse_pigment st t.pigment }
     | Ident "finish" -> advance st; loop { t with finish = parse_finish st t.finish }
-    | Ident "translate" -> advance st; ignore (parse_vector st); loop t
+    | Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") -> ignore (parse_op st); loop t
     | Ident s when is_unsupported s -> not_supported loc (Printf.sprintf "'%s' in a texture" s)
     | _ -> unexpected st "'pigment', 'finish' or '}' in a texture"
   in

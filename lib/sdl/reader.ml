@@ -276,6 +276,10 @@ let unexpected st what =
 
 (* [k] is always a constant constructor here, so physical equality is the cheap, exact test *)
 let expect st k what = if peek st == k then advance st else unexpected st what
+let open_block st what = expect st LBrace (Printf.sprintf "'{' after '%s'" what)
+
+let close_block st what = expect st RBrace (Printf.sprintf "'}' closing '%s' or one of its keywords" what)
+
 let accept st k = if peek st == k then (advance st; true) else false
 let is_ident st s = match peek st with Ident i -> String.equal i s | _ -> false
 

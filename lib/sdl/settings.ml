@@ -128,7 +128,7 @@ let parse_sky_sphere st =
         { Scene.sky_pigments = List.rev pigs; sky_emission = emission }
     | Ident "pigment" -> advance st; loop (parse_pigment st (Scene.Solid Colour.black) :: pigs) emission
     | Ident "emission" -> advance st; loop pigs (parse_rgb st "sky_sphere emission")
-    | Ident "translate" -> advance st; ignore (parse_vector st); loop pigs emission
+    | Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") -> ignore (parse_op st); loop pigs emission
     | Ident s when is_unsupported s -> not_supported l (Printf.sprintf "'%s' in a sky_sphere" s)
     | _ -> unexpected st "'pigment' or '}' in a sky_sphere"
   in
