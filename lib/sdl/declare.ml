@@ -123,8 +123,7 @@ let skip_declaration st d0 =
 
 let parse_declare st ~local dloc =
   let nloc = peek_loc st in
-  st.no_expand <- true;
-  let k = Fun.protect ~finally:(fun () -> st.no_expand <- false) (fun () -> peek st) in
+  let k = peek_name st in
   let k =
     (* #declare deprecated [once] "message" Id = … (3.7): the message is for users of Id *)
     match k with
@@ -132,8 +131,7 @@ let parse_declare st ~local dloc =
         advance st;
         ignore (accept_ident st "once");
         (match peek st with Str _ -> advance st | _ -> unexpected st "the deprecation message");
-        st.no_expand <- true;
-        Fun.protect ~finally:(fun () -> st.no_expand <- false) (fun () -> peek st)
+        peek_name st
     | k -> k
   in
   let target =

@@ -92,8 +92,7 @@ let directive st d loc =
   match d with
   | "declare" | "local" -> parse_declare st ~local:(d = "local") loc
   | "undef" -> (
-      st.no_expand <- true;
-      let k = Fun.protect ~finally:(fun () -> st.no_expand <- false) (fun () -> peek st) in
+      let k = peek_name st in
       match k with
       | Ident _ when st.cur_elem <> None ->
           (* #undef A[i] clears that element *)
@@ -161,8 +160,7 @@ let directive st d loc =
       if truth (cond_value st "while") then push_cond st (While_loop (m, loc)) else skip_to_end st loc "#while"
   | "for" ->
       expect st LParen "'(' after '#for'";
-      st.no_expand <- true;
-      let k = Fun.protect ~finally:(fun () -> st.no_expand <- false) (fun () -> peek st) in
+      let k = peek_name st in
       let name = match k with Ident s when not (is_keyword s) -> s | _ -> unexpected st "the loop variable of '#for'" in
       if st.cur_elem <> None then Error.raise_at (peek_loc st) "the #for loop variable must not be an array element";
       advance st;
@@ -209,13 +207,11 @@ let directive st d loc =
       in
       out f.conds 0)
   | "macro" ->
-      st.no_expand <- true;
-      let k = Fun.protect ~finally:(fun () -> st.no_expand <- false) (fun () -> peek st) in
+      let k = peek_name st in
       let name = match k with Ident s when not (is_keyword s) -> advance st; s | _ -> unexpected st "a macro name after '#macro'" in
       expect st LParen (Printf.sprintf "'(' after the macro name '%s'" name);
       let rec params acc =
-        st.no_expand <- true;
-        let k = Fun.protect ~finally:(fun () -> st.no_expand <- false) (fun () -> peek st) in
+        let k = peek_name st in
         match k with
         | RParen -> advance st; List.rev acc
         | Ident p when not (is_keyword p) ->

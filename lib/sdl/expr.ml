@@ -216,7 +216,7 @@ and parse_ident_value st loc name =
       advance st;
       (* days since 2000-01-01 00:00 UTC *)
       V.Float ((Unix.gettimeofday () -. 946684800.) /. 86400.)
-  | "input_file_name" -> advance st; V.String (Lexer.file (List.nth st.frames (List.length st.frames - 1)).lx)
+  | "input_file_name" -> advance st; V.String (main_file st)
   | _ when Names.mem colour_set name -> V.Colour (colour_array (parse_colour st))
   | _ when Names.mem function_set name -> parse_function st loc name
   | _ -> (
@@ -232,8 +232,7 @@ and parse_ident_value st loc name =
 
 (* The argument of defined(…) and #ifdef: an identifier (or array element) that is not evaluated. *)
 and parse_defined_arg st =
-  st.no_expand <- true;
-  let k = Fun.protect ~finally:(fun () -> st.no_expand <- false) (fun () -> peek st) in
+  let k = peek_name st in
   match k with
   | Ident s ->
       let d =

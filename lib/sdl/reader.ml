@@ -286,11 +286,18 @@ let is_ident st s = match peek st with Ident i -> String.equal i s | _ -> false
 let accept_ident st s =
   if is_ident st s then (advance st; true) else false
 
+(* The next token where a name is expected (#declare, #undef, #macro, #for, defined()): a macro
+   name there is a name, not a call. *)
+let peek_name st =
+  st.no_expand <- true;
+  Fun.protect ~finally:(fun () -> st.no_expand <- false) (fun () -> peek st)
+
+(* The scene file: the outermost frame. *)
+let main_file st = Lexer.file (List.nth st.frames (List.length st.frames - 1)).lx
+
 let include_dirs st =
-  let here = Filename.dirname (Lexer.file (top st).lx) in
-  let main = Filename.dirname (Lexer.file (List.nth st.frames (List.length st.frames - 1)).lx) in
+  let main = Filename.dirname (main_file st) in
   let debian = "/usr/share/povray-3.7/include" in
-  ignore here;
   (* the scene's directory (POV-Ray searches the working directory, usually the scene's), then +L *)
   let dirs = [ main; Filename.current_dir_name ] @ st.opts.library_paths @ (if Sys.file_exists debian then [ debian ] else []) in
   List.fold_left (fun acc d -> if List.mem d acc then acc else acc @ [ d ]) [] dirs
