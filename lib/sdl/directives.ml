@@ -8,7 +8,6 @@ open Expr
 open Materials
 open Declare
 
-
 let block_openers = [ "if"; "ifdef"; "ifndef"; "while"; "for"; "switch"; "macro" ]
 
 (* Skip raw tokens of the current frame (a branch not taken, a loop that ends, a macro definition)
