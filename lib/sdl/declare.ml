@@ -2,7 +2,6 @@
    the value is stored. *)
 
 open Token
-module V = Value
 open Reader
 open Expr
 open Materials

@@ -2,7 +2,6 @@
    includes, messages. *)
 
 open Token
-module V = Value
 open Reader
 open Expr
 open Materials

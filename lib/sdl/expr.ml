@@ -1,7 +1,6 @@
 (* Expressions (POVRAY-3.7 §11.2): floats, vectors, colours, strings and the built-in functions. *)
 
 open Token
-module V = Value
 open Reader
 
 

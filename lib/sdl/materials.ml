@@ -1,7 +1,6 @@
 (* Pigments, finishes, textures and interiors (POVRAY-3.7 §5, §10.1). *)
 
 open Token
-module V = Value
 open Reader
 open Expr
 

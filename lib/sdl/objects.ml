@@ -1,7 +1,6 @@
 (* Objects: transforms, the primitives, meshes, unions and light sources (POVRAY-3.7 §2, §14, §16.4). *)
 
 open Token
-module V = Value
 open Reader
 open Expr
 open Materials

@@ -1,11 +1,9 @@
 (* Camera, global settings, sky_sphere and background (POVRAY-3.7 §1, §7, §8). *)
 
 open Token
-module V = Value
 open Reader
 open Expr
 open Materials
-open Objects
 
 
 let empty_camera =

@@ -1,0 +1,14 @@
+(** Declarations (POVRAY-3.7 §11.3): the value of a #declare or a macro argument, arrays, and where
+    a value is stored. *)
+
+val parse_rvalue : Reader.st -> Value.t * bool
+(** [parse_rvalue st] reads a declarable value and whether a ';' should follow it. *)
+
+val parse_index : Reader.st -> Value.array_v -> int
+(** [parse_index st a] reads the subscripts of an element of [a] as a row-major index. *)
+
+val assign : Reader.st -> local:bool -> string -> Value.t -> unit
+(** [assign st ~local name v] stores [v] as #local or #declare do. *)
+
+val parse_declare : Reader.st -> local:bool -> Loc.t -> unit
+(** [parse_declare st ~local loc] reads and runs a #declare or #local. *)

@@ -1,0 +1,16 @@
+(** Pigments, finishes, textures and interiors (POVRAY-3.7 §5, §10.1). *)
+
+val ident_of_kind : Reader.st -> (Value.t -> 'a option) -> 'a option
+(** [ident_of_kind st f] consumes an identifier whose value [f] accepts, and returns [f]'s result. *)
+
+val parse_pigment : Reader.st -> Scene.pigment -> Scene.pigment
+(** [parse_pigment st base] reads a pigment block that modifies [base]. *)
+
+val parse_finish : Reader.st -> Scene.finish -> Scene.finish
+(** [parse_finish st base] reads a finish block that modifies [base]. *)
+
+val parse_texture : Reader.st -> Scene.texture -> Scene.texture
+(** [parse_texture st base] reads a texture block that modifies [base]. *)
+
+val parse_interior : Reader.st -> Scene.interior -> Scene.interior
+(** [parse_interior st base] reads an interior block that modifies [base]. *)

@@ -1,0 +1,171 @@
+(** The reader of the scene language: the parser state, the token stream with its frames (scene
+    file, included files, macro bodies), the symbol tables, and the helpers every part of the
+    interpreter uses to look at tokens and report errors (POVRAY-3.7 §11). *)
+
+module V = Value
+
+(** Hash tables keyed by names, compared with [String.equal]. *)
+module Names : Hashtbl.S with type key = string
+
+(** What the scene can see of the command line (see [Interp.options]). *)
+type options = {
+  width : int;
+  height : int;
+  clock : float;
+  library_paths : string list;
+  debug : string -> unit;
+  included : string -> depth:int -> float -> unit;
+}
+
+(** The camera as written. *)
+type camera_spec = V.camera_spec = {
+  c_location : Vec.t option;
+  c_direction : Vec.t option;
+  c_up : Vec.t option;
+  c_right : Vec.t option;
+  c_sky : Vec.t option;
+  c_look_at : (Vec.t * Loc.t) option;
+  c_angle : (float * Loc.t) option;
+  c_trans : Transform.t option;
+}
+
+(** A feature povml does not render yet: where, what, and notes. *)
+exception Unsupported of Loc.t * string * (Loc.t * string) list
+
+(** Where tokens come from, with the conditionals and loops open in it. *)
+type frame = { lx : Lexer.t; kind : frame_kind; mutable conds : cond list }
+
+and frame_kind =
+  | Main
+  | Included of Loc.t * float  (** where the #include was, and when reading it began *)
+  | Macro_body of string * Loc.t  (** the macro and where it was called *)
+
+(** An open conditional or loop. *)
+and cond =
+  | If_branch of Loc.t
+  | While_loop of Lexer.mark * Loc.t
+  | For_loop of { var : V.t ref; stop : float; step : float; body : Lexer.mark; floc : Loc.t }
+  | Switch_case of { value : float; mutable running : bool; sloc : Loc.t }
+
+(** The state of one interpretation. *)
+type st = {
+  mutable frames : frame list;
+  mutable cur : Token.t;
+  mutable have : bool;
+  mutable cur_elem : (V.array_v * int) option;
+  mutable no_expand : bool;
+  mutable defer : bool;
+  mutable streams : V.stream array;
+  mutable depth : int;
+  opts : options;
+  global : V.t ref Names.t;
+  mutable tables : V.t ref Names.t list;
+  mutable includes : int;
+  mutable macro_depth : int;
+  mutable version : int;
+  mutable version_set : bool;
+  mutable warnings : Error.t list;
+  mutable objects : Scene.obj list;
+  mutable lights : Scene.light list;
+  mutable camera : camera_spec option;
+  mutable background : Colour.t option;
+  mutable sky : Scene.sky option;
+  mutable assumed_gamma : float option;
+  mutable max_trace_level : int;
+  mutable adc_bailout : float;
+  mutable ambient_light : Rgb.t;
+  mutable default_texture : Scene.texture;
+  mutable directive : st -> string -> Loc.t -> unit;
+  mutable invoke : st -> V.macro -> Loc.t -> unit;
+  mutable index : st -> V.array_v -> int;
+}
+
+val keywords : string list
+(** [keywords] are the keywords povml reads. *)
+
+val unsupported : string list
+(** [unsupported] are POV-Ray keywords povml reports as "not supported yet". *)
+
+val set_of : string list -> unit Names.t
+(** [set_of l] is the set of the names in [l]. *)
+
+val is_keyword : string -> bool
+(** [is_keyword s] tells whether [s] is a keyword (read or not yet supported). *)
+
+val is_unsupported : string -> bool
+(** [is_unsupported s] tells whether [s] is a keyword povml does not read yet. *)
+
+val top : st -> frame
+(** [top st] is the frame tokens are read from. *)
+
+val lookup_cell : st -> string -> V.t ref option
+(** [lookup_cell st name] is the cell of [name] in the innermost table that has it. *)
+
+val lookup : st -> string -> V.t option
+(** [lookup st name] is the value of [name], innermost table first. *)
+
+val fill : st -> unit
+(** [fill st] reads the next token into [st.cur], running directives and calling macros on the way. *)
+
+val peek : st -> Token.kind
+(** [peek st] is the next token, read if needed (pending directives run first). *)
+
+val peek_follow : st -> Token.kind
+(** [peek_follow st] is the token after a complete value; a directive there waits until the value is used. *)
+
+val cur_value : st -> string -> V.t option
+(** [cur_value st name] is the value of the current identifier token (an array element if subscripted). *)
+
+val peek_loc : st -> Loc.t
+(** [peek_loc st] is the location of the next token. *)
+
+val advance : st -> unit
+(** [advance st] consumes the current token. *)
+
+val warn : st -> Loc.t -> ('a, unit, string, unit) format4 -> 'a
+(** [warn st loc fmt …] records a warning at [loc]. *)
+
+val not_supported : Loc.t -> string -> 'a
+(** [not_supported loc what] raises [Unsupported] for [what] at [loc]. *)
+
+val unsupported_use : Loc.t -> string -> string -> Loc.t -> 'a
+(** [unsupported_use loc name what at] raises [Unsupported] for using [name], declared at [at] with [what]. *)
+
+val unknown_identifier : st -> Loc.t -> string -> 'a
+(** [unknown_identifier st loc name] raises "unknown identifier" with the nearest names. *)
+
+val unexpected : st -> string -> 'a
+(** [unexpected st what] raises "expected [what] but found …" at the next token. *)
+
+val expect : st -> Token.kind -> string -> unit
+(** [expect st k what] consumes [k] or raises [unexpected]. *)
+
+val open_block : st -> string -> unit
+(** [open_block st what] consumes the '{' after [what]. *)
+
+val close_block : st -> string -> unit
+(** [close_block st what] consumes the '}' closing [what]. *)
+
+val accept : st -> Token.kind -> bool
+(** [accept st k] consumes [k] if it comes next. *)
+
+val is_ident : st -> string -> bool
+(** [is_ident st s] tells whether the next token is the identifier [s]. *)
+
+val accept_ident : st -> string -> bool
+(** [accept_ident st s] consumes the identifier [s] if it comes next. *)
+
+val peek_name : st -> Token.kind
+(** [peek_name st] is the next token where a name is expected: a macro name there is not called. *)
+
+val main_file : st -> string
+(** [main_file st] is the scene file's name. *)
+
+val include_dirs : st -> string list
+(** [include_dirs st] are the directories searched for include files, in order. *)
+
+val find_file : ?inc:bool -> st -> string -> string option
+(** [find_file ?inc st name] is the include file [name] ([name.inc] too unless [~inc:false]). *)
+
+val read_file : string -> string
+(** [read_file path] is the text of [path]; a located error if it cannot be read. *)

@@ -1,0 +1,19 @@
+(** Camera, global settings, sky_sphere and background (POVRAY-3.7 §1, §7, §8). *)
+
+val empty_camera : Reader.camera_spec
+(** [empty_camera] is a camera with nothing written. *)
+
+val parse_camera : Reader.st -> Reader.camera_spec
+(** [parse_camera st] reads a camera block (after the keyword). *)
+
+val build_camera : Reader.st -> Reader.camera_spec -> Scene.camera
+(** [build_camera st c] applies the rules of §1.3 and the camera's transforms. *)
+
+val parse_global_settings : Reader.st -> unit
+(** [parse_global_settings st] reads a global_settings block (after the keyword). *)
+
+val parse_sky_sphere : Reader.st -> unit
+(** [parse_sky_sphere st] reads a sky_sphere (the keyword is the next token). *)
+
+val parse_background : Reader.st -> unit
+(** [parse_background st] reads a background (the keyword is the next token). *)
