@@ -11,7 +11,10 @@ let shape_of (s : Scene.shape) =
   | Sphere { centre; radius; trans = None } -> Some (Sphere (sphere centre radius))
   | Sphere { centre; radius; trans = Some etr } -> Some (Ellipsoid { sp = sphere centre radius; etr })
   | Plane { normal; offset; trans = None } -> Some (Plane (plane normal offset))
-  | Plane { normal; offset; trans = Some ptr } -> Some (Plane_trans { pl = plane normal offset; ptr })
+  | Plane { normal; offset; trans = Some ptr } ->
+      (* the normal by the inverse transpose, normalised (§14.6): a constant of the object *)
+      let pnormal = Transform.normalize (Transform.normal ptr normal) in
+      Some (Plane_trans { pl = plane normal offset; ptr; pnormal })
   | Triangle { p1; p2; p3 } -> Option.map (fun t -> Triangle t) (Triangle.flat p1 p2 p3)
   | Smooth_triangle { p1; n1; p2; n2; p3; n3 } -> (
       match Triangle.smooth p1 n1 p2 n2 p3 n3 with Some (Ok t) -> Some (Smooth_triangle t) | None | Some (Error ()) -> None)

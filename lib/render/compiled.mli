@@ -16,7 +16,8 @@ type shape =
   | Ellipsoid of { sp : sphere; etr : Transform.t }
       (** §2.2, §14.5 (b): the object-space sphere [sp] mapped by [etr] *)
   | Plane of plane
-  | Plane_trans of { pl : plane; ptr : Transform.t }  (** §2.3, §14.5 (a): [pl] mapped by [ptr] *)
+  | Plane_trans of { pl : plane; ptr : Transform.t; pnormal : Vec.t }
+      (** §2.3, §14.5 (a): [pl] mapped by [ptr]; [pnormal] its world normal, the same at every point *)
   | Triangle of Triangle.t
   | Smooth_triangle of Triangle.t
   | Mesh of mesh_inst

@@ -117,7 +117,7 @@ let hit_shape ctx shape (o : Vec.t) (d : Vec.t) lo =
         let t = -.(ndo +. p.dist) /. ndd in
         if t >= depth_tolerance && t <= max_distance && t >= lo then (stats.plane_hits <- stats.plane_hits + 1; t)
         else infinity
-  | Plane_trans { pl; ptr } -> plane_trans_depth stats pl ptr o d lo
+  | Plane_trans { pl; ptr; _ } -> plane_trans_depth stats pl ptr o d lo
   | Triangle t | Smooth_triangle t ->
       (* §2.4 *)
       stats.triangle_tests <- stats.triangle_tests + 1;
@@ -211,7 +211,7 @@ let normal obj sub (p : Vec.t) : Vec.t =
       let q = Transform.inv_point etr p in
       Transform.normalize (Transform.normal etr (Vec.make (q.x -. s.cx) (q.y -. s.cy) (q.z -. s.cz)))
   | Plane pl -> Vec.make pl.nx pl.ny pl.nz
-  | Plane_trans { pl; ptr } -> Transform.normalize (Transform.normal ptr (Vec.make pl.nx pl.ny pl.nz))
+  | Plane_trans { pnormal; _ } -> pnormal
   | Triangle t -> Vec.make t.nx t.ny t.nz
   | Smooth_triangle t -> Triangle.smooth_normal t p
   | Mesh m ->

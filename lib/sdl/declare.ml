@@ -31,7 +31,7 @@ let rec parse_rvalue st : V.t * bool =
   | Ident s -> (
       match cur_value st s with
       | Some (V.Object o) -> advance st; (V.Object { o with oloc = loc }, false)
-      | Some ((V.Pigment _ | V.Finish _ | V.Texture _ | V.Interior _ | V.Light _ | V.Camera _ | V.Stream _ | V.Transform _ | V.Unsupported _) as v) ->
+      | Some ((V.Pigment _ | V.Finish _ | V.Texture _ | V.Interior _ | V.Light _ | V.Camera _ | V.Transform _ | V.Unsupported _) as v) ->
           advance st; (v, false)
       | Some (V.Array a) -> advance st; (V.Array { a with cells = Array.copy a.cells }, false)
       | _ -> (parse_expr st, true))

@@ -77,6 +77,12 @@ and range_args st =
   expect st RParen "')' closing '#range'";
   (lo, hi)
 
+(* The end of a macro body: back to the caller's frame and tables. *)
+let return_from_macro st =
+  st.frames <- List.tl st.frames;
+  st.tables <- List.tl st.tables;
+  st.macro_depth <- st.macro_depth - 1
+
 let max_include_depth = 64
 let max_macro_depth = 10_000
 
@@ -148,10 +154,7 @@ let directive st d loc =
           | v -> Error.raise_at r.floc "the #for variable was changed to %s inside the loop" (V.kind_name v))
       | [] -> (
           match f.kind with
-          | Macro_body _ ->
-              st.frames <- List.tl st.frames;
-              st.tables <- List.tl st.tables;
-              st.macro_depth <- st.macro_depth - 1
+          | Macro_body _ -> return_from_macro st
           | Main | Included _ -> Error.raise_at loc "'#end' without a matching #if, #while, #for, #switch or #macro"))
   | "while" ->
       let m = Lexer.mark f.lx in
@@ -198,9 +201,7 @@ let directive st d loc =
             match f.kind with
             | Macro_body _ ->
                 (* #break in a macro returns from it *)
-                st.frames <- List.tl st.frames;
-                st.tables <- List.tl st.tables;
-                st.macro_depth <- st.macro_depth - 1
+                return_from_macro st
             | Main | Included _ -> Error.raise_at loc "'#break' outside a #switch, #while, #for or macro")
       in
       out f.conds 0)
@@ -253,18 +254,13 @@ let invoke st (m : V.macro) loc =
   expect st LParen (Printf.sprintf "'(' after the macro name '%s'" m.mname);
   let table = Names.create 8 in
   let nparams = List.length m.params in
+  let wrong_count msg = raise (Error.Scene_error { loc = peek_loc st; msg; notes = [ (m.mloc, "the macro is defined here") ] }) in
   List.iteri
     (fun i p ->
-      if peek st == RParen then
-        raise
-          (Error.Scene_error
-             { loc = peek_loc st; msg = Printf.sprintf "macro '%s' takes %d argument%s, this call gives %d" m.mname nparams (if nparams = 1 then "" else "s") i; notes = [ (m.mloc, "the macro is defined here") ] });
       (* the commas between arguments are optional, and one may follow the last *)
       if i > 0 then ignore (accept st Comma);
       if peek st == RParen then
-        raise
-          (Error.Scene_error
-             { loc = peek_loc st; msg = Printf.sprintf "macro '%s' takes %d argument%s, this call gives %d" m.mname nparams (if nparams = 1 then "" else "s") i; notes = [ (m.mloc, "the macro is defined here") ] });
+        wrong_count (Printf.sprintf "macro '%s' takes %d argument%s, this call gives %d" m.mname nparams (if nparams = 1 then "" else "s") i);
       let by_ref =
         match peek st with
         | Ident s when st.cur_elem = None -> (
@@ -277,10 +273,7 @@ let invoke st (m : V.macro) loc =
       Names.replace table p cell)
     m.params;
   ignore (accept st Comma);
-  if peek st != RParen then
-    raise
-      (Error.Scene_error
-         { loc = peek_loc st; msg = Printf.sprintf "too many arguments for macro '%s', which takes %d" m.mname nparams; notes = [ (m.mloc, "the macro is defined here") ] });
+  if peek st != RParen then wrong_count (Printf.sprintf "too many arguments for macro '%s', which takes %d" m.mname nparams);
   advance st;
   st.tables <- table :: st.tables;
   st.frames <- { lx = Lexer.at m.source m.body; kind = Macro_body (m.mname, loc); conds = [] } :: st.frames;

@@ -249,7 +249,6 @@ type mark = { m_pos : int; m_line : int; m_bol : int }
 let mark lx = { m_pos = lx.pos; m_line = lx.line; m_bol = lx.bol }
 let reset lx m = lx.pos <- m.m_pos; lx.line <- m.m_line; lx.bol <- m.m_bol
 let file lx = lx.file
-let text lx = lx.text
 
 (* A second reader of the same text, starting at [m] (a macro body). *)
 let at lx m = { lx with pos = m.m_pos; line = m.m_line; bol = m.m_bol }

@@ -36,8 +36,5 @@ val at : t -> mark -> t
 val file : t -> string
 (** [file lx] is the file name the locations of [lx] carry. *)
 
-val text : t -> string
-(** [text lx] is the whole text [lx] reads. *)
-
 val next_char : t -> char option
 (** [next_char lx] is the next character that is neither blank nor in a comment, without moving. *)

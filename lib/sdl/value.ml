@@ -43,7 +43,6 @@ type t =
   | Camera of camera_spec
   | Array of array_v
   | Macro of macro
-  | Stream of stream
   | Transform of Transform.t
   | Unsupported of { what : string; at : Loc.t }
       (** a declaration that uses a feature povml cannot render yet: an error only where it is used *)
@@ -65,21 +64,20 @@ let kind_name = function
   | Camera _ -> "a camera"
   | Array a -> Printf.sprintf "an array of %s" (String.concat "×" (List.map string_of_int (Array.to_list a.dims)))
   | Macro _ -> "a macro"
-  | Stream _ -> "a random stream"
   | Transform _ -> "a transform"
   | Unsupported u -> Printf.sprintf "a value that uses %s" u.what
 
 let terms = function
   | Float _ -> 1
   | Vector a | Colour a -> Array.length a
-  | String _ | Pigment _ | Finish _ | Texture _ | Interior _ | Object _ | Light _ | Camera _ | Array _ | Macro _ | Stream _ | Transform _ | Unsupported _ -> 0
+  | String _ | Pigment _ | Finish _ | Texture _ | Interior _ | Object _ | Light _ | Camera _ | Array _ | Macro _ | Transform _ | Unsupported _ -> 0
 
 (* POVRAY-3.7 §11.2: a float is replicated into every term, a shorter vector is padded with zeros. *)
 let promote v n =
   match v with
   | Float f -> Array.make n f
   | Vector a | Colour a -> Array.init n (fun i -> if i < Array.length a then a.(i) else 0.)
-  | String _ | Pigment _ | Finish _ | Texture _ | Interior _ | Object _ | Light _ | Camera _ | Array _ | Macro _ | Stream _ | Transform _ | Unsupported _ -> invalid_arg "Value.promote"
+  | String _ | Pigment _ | Finish _ | Texture _ | Interior _ | Object _ | Light _ | Camera _ | Array _ | Macro _ | Transform _ | Unsupported _ -> invalid_arg "Value.promote"
 
 let numeric v = terms v > 0
 
@@ -98,4 +96,4 @@ let map f = function
   | Float x -> Some (Float (f x))
   | Vector a -> Some (Vector (Array.map f a))
   | Colour a -> Some (Colour (Array.map f a))
-  | String _ | Pigment _ | Finish _ | Texture _ | Interior _ | Object _ | Light _ | Camera _ | Array _ | Macro _ | Stream _ | Transform _ | Unsupported _ -> None
+  | String _ | Pigment _ | Finish _ | Texture _ | Interior _ | Object _ | Light _ | Camera _ | Array _ | Macro _ | Transform _ | Unsupported _ -> None

@@ -46,7 +46,6 @@ type t =
   | Camera of camera_spec
   | Array of array_v
   | Macro of macro
-  | Stream of stream
   | Transform of Transform.t
   | Unsupported of { what : string; at : Loc.t }
       (** a declaration that uses a feature povml cannot render yet: an error only where it is used *)
