@@ -161,6 +161,7 @@ let run input positional output width height antialias no_aa method_ depth jitte
               block_size = max 4 (min (max width height) block_size);
               workers = max 1 threads;
               progress = Unix.isatty Unix.stderr;
+              robust = false;
             }
           in
           match Pipeline.run ~interp:iopts opts input with

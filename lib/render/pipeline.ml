@@ -1,5 +1,6 @@
 type result = {
   image : Encode.t;
+  raw : Image.t;
   stats : Stats.t;
   warnings : Error.t list;
   scene : Scene.t;
@@ -21,4 +22,4 @@ let run ?interp (opts : Render.options) path =
   let img, stats = Render.render opts compiled scene.gamma in
   let image = Encode.image scene.gamma img in
   let t3 = Unix.gettimeofday () in
-  { image; stats; warnings; scene; includes = List.rev !includes; parse_seconds = t1 -. t0; build_seconds = t2 -. t1; render_seconds = t3 -. t2 }
+  { image; raw = img; stats; warnings; scene; includes = List.rev !includes; parse_seconds = t1 -. t0; build_seconds = t2 -. t1; render_seconds = t3 -. t2 }

@@ -2,6 +2,7 @@
 
 type result = {
   image : Encode.t;
+  raw : Image.t;  (** the float image the tracer produced, before encoding *)
   stats : Stats.t;
   warnings : Error.t list;
   scene : Scene.t;

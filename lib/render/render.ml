@@ -17,6 +17,7 @@ type options = {
   block_size : int;
   workers : int;
   progress : bool;
+  robust : bool;
 }
 
 let full_area w h = { left = 0; right = w - 1; top = 0; bottom = h - 1 }

@@ -14,6 +14,9 @@ type options = {
   block_size : int;  (** 32 in POV-Ray; the antialiasing result depends on it (§9.3) *)
   workers : int;  (** processes; the image does not depend on it *)
   progress : bool;  (** print a progress line on stderr *)
+  robust : bool;
+      (** robust mode: hit limits and secondary-ray origins from floating-point error bounds instead
+          of POV-Ray's fixed 1e-4 / 1e-3 (the default, [false], is exactly POV-Ray's) *)
 }
 
 val full_area : int -> int -> area

@@ -94,4 +94,5 @@ let render_opts w h =
     block_size = 32;
     workers = 1;
     progress = false;
+    robust = false;
   }
