@@ -120,7 +120,7 @@ let dump_scene iopts input =
       `Ok 0
 
 let run input positional output width height antialias no_aa method_ depth jitter no_jitter aa_gamma
-    libs threads sr er sc ec block_size format _display _verbose clock dump =
+    libs threads sr er sc ec block_size format _display _verbose clock dump robust scene_scale scene_translate =
   let input = match (input, positional) with Some i, _ -> Some i | None, Some p -> Some p | None, None -> None in
   match input with
   | None -> usage_error "no scene file given: use +I<file> or give the file name"
@@ -161,10 +161,15 @@ let run input positional output width height antialias no_aa method_ depth jitte
               block_size = max 4 (min (max width height) block_size);
               workers = max 1 threads;
               progress = Unix.isatty Unix.stderr;
-              robust = false;
+              robust;
             }
           in
-          match Pipeline.run ~interp:iopts opts input with
+          let move =
+            if scene_scale = 1. && scene_translate = Vec.zero then None else Some (scene_scale, scene_translate)
+          in
+          if not (scene_scale > 0. && Float.is_finite scene_scale) then usage_error "--scene-scale must be a positive number"
+          else
+          match Pipeline.run ~interp:iopts ?move opts input with
           | exception Error.Scene_error e -> print_error e; `Ok 1
           | exception Pool.Worker_failed msg -> Printf.eprintf "povml: error: %s; no image was written\n" msg; `Ok 1
           | r -> (
@@ -237,8 +242,32 @@ let cmd =
            ~doc:"Print the evaluated scene instead of rendering it: every object after all directives, macros and \
                  loops, with its final shape, transform, texture and interior, and where it was written.")
   in
+  let robust =
+    Arg.(value & flag & info [ "robust" ]
+           ~doc:"Robust mode: instead of POV-Ray's fixed intersection limits (hits nearer than 1e-4, shadow hits \
+                 within 1e-3, nothing beyond 1e7), secondary rays leave from the hit point moved off the surface by a \
+                 bound on its rounding error and accept every positive depth, so the picture does not depend on the \
+                 scene's size or distance from the origin. The default is exactly POV-Ray's.")
+  in
+  let scene_scale =
+    Arg.(value & opt float 1. & info [ "scene-scale" ] ~docv:"S"
+           ~doc:"Render the scene scaled by S about the origin: objects, lights, camera and fade distances (for \
+                 checking that a picture does not depend on the scene's size).")
+  in
+  let scene_translate =
+    let vec =
+      let parse s =
+        match List.map float_of_string_opt (String.split_on_char ',' s) with
+        | [ Some x; Some y; Some z ] -> Ok (Vec.make x y z)
+        | _ -> Error (`Msg (Printf.sprintf "'%s' is not a vector X,Y,Z" s))
+      in
+      Arg.conv (parse, fun f (v : Vec.t) -> Format.fprintf f "%g,%g,%g" v.x v.y v.z)
+    in
+    Arg.(value & opt vec Vec.zero & info [ "scene-translate" ] ~docv:"X,Y,Z"
+           ~doc:"Render the scene moved by X,Y,Z (after $(b,--scene-scale)): objects, lights and camera.")
+  in
   let term =
-    Term.(ret (const run $ input $ positional $ output $ width $ height $ antialias $ no_aa $ method_ $ depth $ jitter $ no_jitter $ aa_gamma $ libs $ threads $ sr $ er $ sc $ ec $ block_size $ format $ display $ verbose $ clock $ dump))
+    Term.(ret (const run $ input $ positional $ output $ width $ height $ antialias $ no_aa $ method_ $ depth $ jitter $ no_jitter $ aa_gamma $ libs $ threads $ sr $ er $ sc $ ec $ block_size $ format $ display $ verbose $ clock $ dump $ robust $ scene_scale $ scene_translate))
   in
   Cmd.v (Cmd.info "povml" ~version:"0.1.0" ~doc ~man ~exits:[]) term
 

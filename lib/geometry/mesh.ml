@@ -112,7 +112,7 @@ let build ~(vertices : float array) ~(vertex_normals : float array) ~(fv : int a
   }
 
 (* intersect_mesh_triangle: the depth of face [k], or infinity. *)
-let face_depth m k ox oy oz dx dy dz =
+let face_depth (lim : Limits.t) m k ox oy oz dx dy dz =
   let g = 6 * k in
   let nx = fget m.fgeom g and ny = fget m.fgeom (g + 1) and nz = fget m.fgeom (g + 2) in
   let ndd = (nx *. dx) +. (ny *. dy) +. (nz *. dz) in
@@ -120,7 +120,7 @@ let face_depth m k ox oy oz dx dy dz =
   else
     let ndo = (nx *. ox) +. (ny *. oy) +. (nz *. oz) in
     let depth = -.(Array.unsafe_get m.fdist k +. ndo) /. ndd in
-    if depth < 1e-6 || depth > 1e7 then infinity
+    if depth < lim.near || depth > lim.far then infinity
     else
       let v = m.vertices and o = 7 * k in
       let i1 = 3 * iget m.fidx o and i2 = 3 * iget m.fidx (o + 1) and i3 = 3 * iget m.fidx (o + 2) in
@@ -139,24 +139,28 @@ let face_depth m k ox oy oz dx dy dz =
 
 (* The nearest face hit with depth ≥ lo (mesh space, unit direction): its index, or −1; the depth is
    left in [hit.(0)]. Ties keep the first face found. *)
-let nearest m stack (o : Vec.t) (d : Vec.t) lo hit =
+let nearest_within lim m stack (o : Vec.t) (d : Vec.t) lo hit =
   let best = ref infinity and idx = ref (-1) in
   Bvh.walk m.bvh stack o.x o.y o.z d.x d.y d.z infinity (fun k ->
-      let t = face_depth m k o.x o.y o.z d.x d.y d.z in
+      let t = face_depth lim m k o.x o.y o.z d.x d.y d.z in
       if t >= lo && t < !best then begin best := t; idx := k end;
       !best);
   hit.(0) <- !best;
   !idx
 
+let nearest m stack o d lo hit = nearest_within Limits.pov m stack o d lo hit
+
 (* Whether some face is hit with lo ≤ depth < hi. *)
-let any_hit m stack (o : Vec.t) (d : Vec.t) lo hi =
+let any_hit_within lim m stack (o : Vec.t) (d : Vec.t) lo hi =
   let found = ref false in
   Bvh.walk m.bvh stack o.x o.y o.z d.x d.y d.z hi (fun k ->
       if !found then neg_infinity
       else
-        let t = face_depth m k o.x o.y o.z d.x d.y d.z in
+        let t = face_depth lim m k o.x o.y o.z d.x d.y d.z in
         if t >= lo && t < hi then (found := true; neg_infinity) else hi);
   !found
+
+let any_hit m stack o d lo hi = any_hit_within Limits.pov m stack o d lo hi
 
 (* §2.6 Inside: an odd number of faces hit from [p] along [d]. *)
 let inside_along m stack (p : Vec.t) (d : Vec.t) =
@@ -165,7 +169,7 @@ let inside_along m stack (p : Vec.t) (d : Vec.t) =
   | Some _ ->
       let count = ref 0 in
       Bvh.walk m.bvh stack p.x p.y p.z d.x d.y d.z infinity (fun k ->
-          if face_depth m k p.x p.y p.z d.x d.y d.z < infinity then incr count;
+          if face_depth Limits.pov m k p.x p.y p.z d.x d.y d.z < infinity then incr count;
           infinity);
       !count land 1 = 1
 
@@ -204,3 +208,7 @@ let texture m k = (iget m.fidx ((7 * k) + 6) lsr 4) - 1
 let bounds m =
   if m.faces = 0 then [| 0.; 0.; 0.; 0.; 0.; 0. |]
   else Array.init 6 (fun i -> if i < 3 then Bvh.box_min m.bvh i else Bvh.box_max m.bvh (i - 3))
+
+let face_normal m k =
+  let g = 6 * k in
+  Vec.make (fget m.fgeom g) (fget m.fgeom (g + 1)) (fget m.fgeom (g + 2))

@@ -36,6 +36,12 @@ val nearest : t -> float array -> Vec.t -> Vec.t -> float -> float array -> int
 (** [nearest m stack o d lo hit] is the nearest face hit at depth ≥ [lo] along the unit direction
     [d] (mesh space), or −1; the depth is stored in [hit.(0)]. *)
 
+val nearest_within : Limits.t -> t -> float array -> Vec.t -> Vec.t -> float -> float array -> int
+(** [nearest_within lim m stack o d lo hit] is [nearest] with the faces' depth limits [lim]. *)
+
+val any_hit_within : Limits.t -> t -> float array -> Vec.t -> Vec.t -> float -> float -> bool
+(** [any_hit_within lim m stack o d lo hi] is [any_hit] with the faces' depth limits [lim]. *)
+
 val any_hit : t -> float array -> Vec.t -> Vec.t -> float -> float -> bool
 (** [any_hit m stack o d lo hi] tells whether a face is hit at a depth in [lo, hi). *)
 
@@ -45,6 +51,9 @@ val inside : t -> float array -> Vec.t -> bool
 val inside_along : t -> float array -> Vec.t -> Vec.t -> bool
 (** [inside_along m stack p d]: an odd number of faces hit from [p] along the unit direction [d]
     (the inside vector brought into mesh space); false when the mesh has no inside vector. *)
+
+val face_normal : t -> int -> Vec.t
+(** [face_normal m k] is face [k]'s flat (geometric) unit normal in mesh space. *)
 
 val raw_normal : t -> int -> Vec.t -> Vec.t
 (** [raw_normal m k p] is face [k]'s normal at the mesh-space point [p] before normalisation: the

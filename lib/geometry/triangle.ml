@@ -82,14 +82,14 @@ let smooth p1 n1 p2 n2 p3 n3 =
       Some (Ok (make_record n dist p1 p2 p3 axis perp vaxis n1 n2 n3))
     else Some (Error ())
 
-(* §2.4: the depth of the hit, or infinity. *)
-let[@inline] intersect t (o : Vec.t) (d : Vec.t) =
+(* §2.4: the depth of the hit within [lim], or infinity. *)
+let[@inline] intersect_within (lim : Limits.t) t (o : Vec.t) (d : Vec.t) =
   let ndd = (t.nx *. d.x) +. (t.ny *. d.y) +. (t.nz *. d.z) in
   if Float.abs ndd < 1e-10 then infinity
   else
     let ndo = (t.nx *. o.x) +. (t.ny *. o.y) +. (t.nz *. o.z) in
     let depth = -.(t.dist +. ndo) /. ndd in
-    if depth < 1e-6 || depth > 1e7 then infinity
+    if depth < lim.near || depth > lim.far then infinity
     else
       let inside a1 b1 a2 b2 a3 b3 s u =
         not
@@ -103,6 +103,8 @@ let[@inline] intersect t (o : Vec.t) (d : Vec.t) =
         else inside t.x1 t.y1 t.x2 t.y2 t.x3 t.y3 (o.x +. (depth *. d.x)) (o.y +. (depth *. d.y))
       in
       if ok then depth else infinity
+
+let[@inline] intersect t o d = intersect_within Limits.pov t o d
 
 (* §2.5: the interpolated normal at [p] (normalised), from the vertex normals. *)
 let smooth_normal t (p : Vec.t) =

@@ -32,8 +32,12 @@ val smooth : Vec.t -> Vec.t -> Vec.t -> Vec.t -> Vec.t -> Vec.t -> (t, unit) res
 (** [smooth p1 n1 p2 n2 p3 n3] (unit vertex normals) is [None] without area, [Some (Error ())] when
     the vertex normals are not all on one side of the face (POV-Ray hides it), else the triangle. *)
 
+val intersect_within : Limits.t -> t -> Vec.t -> Vec.t -> float
+(** [intersect_within lim t o d] is the depth along the unit direction [d] within [lim.near] …
+    [lim.far], or infinity. *)
+
 val intersect : t -> Vec.t -> Vec.t -> float
-(** [intersect t o d] is the depth along the unit direction [d], within 1e-6 … 1e7, or infinity. *)
+(** [intersect t o d] is [intersect_within Limits.pov t o d]: within 1e-6 … 1e7. *)
 
 val smooth_normal : t -> Vec.t -> Vec.t
 (** [smooth_normal t p] is the interpolated unit normal at [p]. *)

@@ -58,6 +58,17 @@ let bounds = function
   | Triangle t | Smooth_triangle t -> Some (Triangle.bounds t)
   | Mesh m -> if m.moved then Some (Transform.bounds m.tr (Mesh.bounds m.mesh)) else Some (Mesh.bounds m.mesh)
 
+(* The largest coordinate magnitude of a shape: its box, or for a plane its point nearest the origin. *)
+let magnitude shape =
+  let max_abs a = Array.fold_left (fun m x -> Float.max m (Float.abs x)) 0. a in
+  match (bounds shape, shape) with
+  | Some b, _ -> max_abs b
+  | None, Plane p -> Float.abs p.dist
+  | None, Plane_trans { pl; ptr; _ } ->
+      let q = Transform.point ptr (Vec.make (-.pl.dist *. pl.nx) (-.pl.dist *. pl.ny) (-.pl.dist *. pl.nz)) in
+      max_abs [| q.x; q.y; q.z |]
+  | None, (Sphere _ | Ellipsoid _ | Triangle _ | Smooth_triangle _ | Mesh _) -> 0.
+
 let group objs =
   let unbounded = List.filter (fun o -> bounds o.shape = None) objs in
   let bounded = List.filter (fun o -> bounds o.shape <> None) objs in
@@ -181,6 +192,7 @@ let scene (s : Scene.t) : Compiled.t =
              fade_colour = rgb32 o.interior.fade_colour;
              old_refract = f32 o.texture.finish.refraction;
              opaque = (not surf.transparent) && Array.for_all (fun (f : surface) -> not f.transparent) face_surfs;
+             mag = magnitude shape;
            })
          visible)
   in

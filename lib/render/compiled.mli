@@ -55,6 +55,9 @@ type obj = {
   fade_colour : Rgb.t;
   old_refract : float;  (** legacy finish refraction: the transmitted-colour factor (§2.7, §6.3) *)
   opaque : bool;  (** every surface has filter = transmit = 0: stops a shadow ray at once (§2.7) *)
+  mag : float;
+      (** the largest coordinate magnitude the shape's intersection works with (its box, or a
+          plane's point nearest the origin): the scale of its rounding errors, for the robust mode *)
 }
 
 (** A point light with its attenuation settings. *)

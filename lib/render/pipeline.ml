@@ -10,12 +10,13 @@ type result = {
   render_seconds : float;
 }
 
-let run ?interp (opts : Render.options) path =
+let run ?interp ?move (opts : Render.options) path =
   let t0 = Unix.gettimeofday () in
   let iopts = match interp with Some i -> i | None -> Interp.default_options ~width:opts.width ~height:opts.height in
   let includes = ref [] in
   let included p ~depth dt = iopts.included p ~depth dt; if depth = 1 then includes := (p, dt) :: !includes in
   let scene, warnings = Interp.load_file { iopts with width = opts.width; height = opts.height; included } path in
+  let scene = match move with None -> scene | Some (scale, translate) -> Place.scene ~scale ~translate scene in
   let t1 = Unix.gettimeofday () in
   let compiled = Compile.scene scene in
   let t2 = Unix.gettimeofday () in

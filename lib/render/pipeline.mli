@@ -12,7 +12,8 @@ type result = {
   render_seconds : float;  (** tracing and encoding *)
 }
 
-val run : ?interp:Interp.options -> Render.options -> string -> result
-(** [run ?interp opts path] interprets (with [interp], whose size is replaced by [opts]'), compiles,
+val run : ?interp:Interp.options -> ?move:float * Vec.t -> Render.options -> string -> result
+(** [run ?interp ?move opts path] interprets (with [interp], whose size is replaced by [opts]'),
+    moves the whole scene when [move] = (scale, translation) is given ([Place.scene]), compiles,
     renders and encodes the scene file [path].
     Raises [Error.Scene_error] for errors in the scene. *)

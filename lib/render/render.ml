@@ -154,7 +154,7 @@ let render opts (sc : Compiled.t) (gamma : Scene.gamma) : Image.t * Stats.t =
   let total = List.length bl in
   let work (i, b) =
     let stats = Stats.create () in
-    let ctx = Trace.make_ctx sc stats in
+    let ctx = Trace.make_ctx ~robust:opts.robust sc stats in
     let px = render_block ctx opts enc b in
     (* blocks finish in about this order whichever worker renders them *)
     if opts.progress then Printf.eprintf "\rRendering block %d of %d %!" (i + 1) total;

@@ -5,8 +5,7 @@
 open Compiled
 
 let epsilon = 1e-10
-let depth_tolerance = 1e-6 (* §2.1: shapes reject roots at or below 1e-6 … *)
-let max_distance = 1e7 (* … and beyond 1e7 *)
+(* §2.1: shapes reject roots at or below 1e-6 and beyond 1e7: Limits.pov *)
 let min_isect_depth = 1e-4 (* §2.1: every ray ignores hits closer than 1e-4 *)
 let shadow_tolerance = 1e-3 (* §4: shadow hits count only from 1e-3 to the light minus 1e-3 *)
 
@@ -22,9 +21,23 @@ type ctx = {
   sub : int array;  (* scratch: the mesh face of the last hit *)
   stack : float array;  (* traversal room for the scene's hierarchy … *)
   mstack : float array;  (* … and for a mesh's *)
+  lim : Limits.t;  (* the depths shapes accept *)
+  min_depth : float;  (* the nearest depth any ray accepts *)
+  robust : bool;  (* secondary rays leave from points lifted off the surface *)
 }
 
-let make_ctx scene stats = { scene; stats; depth = [| 0. |]; sub = [| -1 |]; stack = Array.make 512 0.; mstack = Array.make 512 0. }
+let make_ctx ?(robust = false) scene stats =
+  {
+    scene;
+    stats;
+    depth = [| 0. |];
+    sub = [| -1 |];
+    stack = Array.make 512 0.;
+    mstack = Array.make 512 0.;
+    lim = (if robust then Limits.robust else Limits.pov);
+    min_depth = (if robust then 0. else min_isect_depth);
+    robust;
+  }
 let black = { r = 0.; g = 0.; b = 0.; tr = 0. }
 
 (* ---------------------------------------------------------------------------------------------- *)
@@ -33,29 +46,29 @@ let black = { r = 0.; g = 0.; b = 0.; tr = 0. }
 (* The nearest depth of [shape] along the ray that is inside the shape's own limits and at least
    [lo], or infinity; for a mesh the face is left in [ctx.sub.(0)]. *)
 (* §2.2: the nearer root of the sphere (cx, cy, cz, r²) within the limits, or infinity. *)
-let[@inline] sphere_depth (stats : Stats.t) cx cy cz r2 (o : Vec.t) (d : Vec.t) lo =
+let[@inline] sphere_depth (stats : Stats.t) (lim : Limits.t) cx cy cz r2 (o : Vec.t) (d : Vec.t) lo =
   stats.sphere_tests <- stats.sphere_tests + 1;
   let ocx = cx -. o.x and ocy = cy -. o.y and ocz = cz -. o.z in
   let ocs = (ocx *. ocx) +. (ocy *. ocy) +. (ocz *. ocz) in
   let tca = (ocx *. d.x) +. (ocy *. d.y) +. (ocz *. d.z) in
-  if ocs >= r2 && tca < epsilon then infinity
+  if ocs >= r2 && tca < lim.tangent then infinity
   else
     let h2 = r2 -. ocs +. (tca *. tca) in
-    if h2 <= epsilon then infinity
+    if h2 <= lim.tangent then infinity
     else begin
       let h = sqrt h2 in
       let t1 = tca -. h in
-      if t1 > depth_tolerance && t1 < max_distance && t1 >= lo then (stats.sphere_hits <- stats.sphere_hits + 1; t1)
+      if t1 > lim.near && t1 < lim.far && t1 >= lo then (stats.sphere_hits <- stats.sphere_hits + 1; t1)
       else
         let t2 = tca +. h in
-        if t2 > depth_tolerance && t2 < max_distance && t2 >= lo then (stats.sphere_hits <- stats.sphere_hits + 1; t2)
+        if t2 > lim.near && t2 < lim.far && t2 >= lo then (stats.sphere_hits <- stats.sphere_hits + 1; t2)
         else infinity
     end
 
 (* §2.2, §14.5 (b): the ellipsoid [s] mapped by [t]: the ray is brought into object space with
    its direction renormalised; the roots are limited in object units and divided by the length
    of the object-space direction. Everything stays in unboxed floats. *)
-let ellipsoid_depth (stats : Stats.t) (s : sphere) (t : Transform.t) (o : Vec.t) (d : Vec.t) lo =
+let ellipsoid_depth (stats : Stats.t) (lim : Limits.t) (s : sphere) (t : Transform.t) (o : Vec.t) (d : Vec.t) lo =
   stats.sphere_tests <- stats.sphere_tests + 1;
   let px = (o.x *. t.i00) +. (o.y *. t.i10) +. (o.z *. t.i20) +. t.i30 in
   let py = (o.x *. t.i01) +. (o.y *. t.i11) +. (o.z *. t.i21) +. t.i31 in
@@ -70,23 +83,23 @@ let ellipsoid_depth (stats : Stats.t) (s : sphere) (t : Transform.t) (o : Vec.t)
   let ocx = s.cx -. px and ocy = s.cy -. py and ocz = s.cz -. pz in
   let ocs = (ocx *. ocx) +. (ocy *. ocy) +. (ocz *. ocz) in
   let tca = (ocx *. vx) +. (ocy *. vy) +. (ocz *. vz) in
-  if ocs >= s.r2 && tca < epsilon then infinity
+  if ocs >= s.r2 && tca < lim.tangent then infinity
   else
     let h2 = s.r2 -. ocs +. (tca *. tca) in
-    if h2 <= epsilon then infinity
+    if h2 <= lim.tangent then infinity
     else begin
       let h = sqrt h2 in
       let t1 = tca -. h in
-      if t1 > depth_tolerance && t1 < max_distance && t1 /. len >= lo then (stats.sphere_hits <- stats.sphere_hits + 1; t1 /. len)
+      if t1 > lim.near && t1 < lim.far && t1 /. len >= lo then (stats.sphere_hits <- stats.sphere_hits + 1; t1 /. len)
       else
         let t2 = tca +. h in
-        if t2 > depth_tolerance && t2 < max_distance && t2 /. len >= lo then (stats.sphere_hits <- stats.sphere_hits + 1; t2 /. len)
+        if t2 > lim.near && t2 < lim.far && t2 /. len >= lo then (stats.sphere_hits <- stats.sphere_hits + 1; t2 /. len)
         else infinity
     end
 
 (* §2.3, §14.5 (a): the plane [p] mapped by [t]: the ray in object space, direction NOT
    renormalised, so the depth is the world depth and the limits apply to it. *)
-let plane_trans_depth (stats : Stats.t) (p : plane) (t : Transform.t) (o : Vec.t) (d : Vec.t) lo =
+let plane_trans_depth (stats : Stats.t) (lim : Limits.t) (p : plane) (t : Transform.t) (o : Vec.t) (d : Vec.t) lo =
   stats.plane_tests <- stats.plane_tests + 1;
   let vx = (d.x *. t.i00) +. (d.y *. t.i10) +. (d.z *. t.i20) in
   let vy = (d.x *. t.i01) +. (d.y *. t.i11) +. (d.z *. t.i21) in
@@ -99,14 +112,14 @@ let plane_trans_depth (stats : Stats.t) (p : plane) (t : Transform.t) (o : Vec.t
     let pz = (o.x *. t.i02) +. (o.y *. t.i12) +. (o.z *. t.i22) +. t.i32 in
     let ndo = (p.nx *. px) +. (p.ny *. py) +. (p.nz *. pz) in
     let t = -.(ndo +. p.dist) /. ndd in
-    if t >= depth_tolerance && t <= max_distance && t >= lo then (stats.plane_hits <- stats.plane_hits + 1; t)
+    if t >= lim.near && t <= lim.far && t >= lo then (stats.plane_hits <- stats.plane_hits + 1; t)
     else infinity
 
 let hit_shape ctx shape (o : Vec.t) (d : Vec.t) lo =
   let stats = ctx.stats in
   match shape with
-  | Sphere s -> sphere_depth stats s.cx s.cy s.cz s.r2 o d lo
-  | Ellipsoid { sp; etr } -> ellipsoid_depth stats sp etr o d lo
+  | Sphere s -> sphere_depth stats ctx.lim s.cx s.cy s.cz s.r2 o d lo
+  | Ellipsoid { sp; etr } -> ellipsoid_depth stats ctx.lim sp etr o d lo
   | Plane p ->
       (* §2.3 *)
       stats.plane_tests <- stats.plane_tests + 1;
@@ -115,13 +128,13 @@ let hit_shape ctx shape (o : Vec.t) (d : Vec.t) lo =
       else
         let ndo = (p.nx *. o.x) +. (p.ny *. o.y) +. (p.nz *. o.z) in
         let t = -.(ndo +. p.dist) /. ndd in
-        if t >= depth_tolerance && t <= max_distance && t >= lo then (stats.plane_hits <- stats.plane_hits + 1; t)
+        if t >= ctx.lim.near && t <= ctx.lim.far && t >= lo then (stats.plane_hits <- stats.plane_hits + 1; t)
         else infinity
-  | Plane_trans { pl; ptr; _ } -> plane_trans_depth stats pl ptr o d lo
+  | Plane_trans { pl; ptr; _ } -> plane_trans_depth stats ctx.lim pl ptr o d lo
   | Triangle t | Smooth_triangle t ->
       (* §2.4 *)
       stats.triangle_tests <- stats.triangle_tests + 1;
-      let depth = Triangle.intersect t o d in
+      let depth = Triangle.intersect_within ctx.lim t o d in
       if depth >= lo && depth < infinity then (stats.triangle_hits <- stats.triangle_hits + 1; depth) else infinity
   | Mesh m ->
       (* §2.6, Mesh::Intersect: a moved mesh is searched in its own space with the direction
@@ -129,12 +142,12 @@ let hit_shape ctx shape (o : Vec.t) (d : Vec.t) lo =
       stats.mesh_tests <- stats.mesh_tests + 1;
       let k, depth =
         if not m.moved then
-          let k = Mesh.nearest m.mesh ctx.mstack o d lo ctx.depth in
+          let k = Mesh.nearest_within ctx.lim m.mesh ctx.mstack o d lo ctx.depth in
           (k, ctx.depth.(0))
         else
           let v = Transform.inv_direction m.tr d in
           let len = Vec.length v in
-          let k = Mesh.nearest m.mesh ctx.mstack (Transform.inv_point m.tr o) (Vec.scale (1. /. len) v) (lo *. len) ctx.depth in
+          let k = Mesh.nearest_within ctx.lim m.mesh ctx.mstack (Transform.inv_point m.tr o) (Vec.scale (1. /. len) v) (lo *. len) ctx.depth in
           (k, ctx.depth.(0) /. len)
       in
       if k >= 0 && depth >= lo then begin
@@ -163,7 +176,7 @@ let nearest ctx (g : group) (o : Vec.t) (d : Vec.t) lo =
         let r2 = Array.unsafe_get sp ((4 * i) + 3) in
         if r2 = r2 then begin
           (* a sphere, straight from the flat array *)
-          let t = sphere_depth ctx.stats (Array.unsafe_get sp (4 * i)) (Array.unsafe_get sp ((4 * i) + 1)) (Array.unsafe_get sp ((4 * i) + 2)) r2 o d lo in
+          let t = sphere_depth ctx.stats ctx.lim (Array.unsafe_get sp (4 * i)) (Array.unsafe_get sp ((4 * i) + 1)) (Array.unsafe_get sp ((4 * i) + 2)) r2 o d lo in
           if t < !best then begin
             best := t;
             id := (Array.unsafe_get g.bounded i).id;
@@ -188,7 +201,7 @@ let any_hit ctx (g : group) (o : Vec.t) (d : Vec.t) lo hi =
         if not !found then begin
           let r2 = Array.unsafe_get sp ((4 * i) + 3) in
           if r2 = r2 then begin
-            if sphere_depth ctx.stats (Array.unsafe_get sp (4 * i)) (Array.unsafe_get sp ((4 * i) + 1)) (Array.unsafe_get sp ((4 * i) + 2)) r2 o d lo < hi then found := true
+            if sphere_depth ctx.stats ctx.lim (Array.unsafe_get sp (4 * i)) (Array.unsafe_get sp ((4 * i) + 1)) (Array.unsafe_get sp ((4 * i) + 2)) r2 o d lo < hi then found := true
           end
           else if hit g.bounded.(i) then found := true
         end;
@@ -221,6 +234,44 @@ let normal obj sub (p : Vec.t) : Vec.t =
       else Mesh.normal m.mesh sub p
 
 (* ---------------------------------------------------------------------------------------------- *)
+(* The robust mode's secondary-ray origins. A computed hit point is off the true surface by a few
+   rounding errors of the coordinates it was computed from; a secondary ray leaves from the point
+   moved off the surface, to the side the ray goes, by a bound on that error, and then accepts every
+   positive depth. Every length here is relative to the coordinates, so the decision is the same
+   whatever the size and position of the scene. *)
+
+(* The flat normal of the surface at [p] (for a smooth triangle or face: the face's own). *)
+let geometric_normal obj sub (p : Vec.t) =
+  match obj.shape with
+  | Smooth_triangle t -> Vec.make t.nx t.ny t.nz
+  | Mesh m -> if m.moved then Transform.normalize (Transform.normal m.tr (Mesh.face_normal m.mesh sub)) else Mesh.face_normal m.mesh sub
+  | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ -> normal obj sub p
+
+(* A hit point put back onto a sphere: o + t·d is off by rounding errors of the size of the ray's
+   length, a point projected from the centre by those of the centre and radius only. *)
+let refine obj (p : Vec.t) =
+  let onto cx cy cz r (q : Vec.t) =
+    let dx = q.x -. cx and dy = q.y -. cy and dz = q.z -. cz in
+    let len = sqrt ((dx *. dx) +. (dy *. dy) +. (dz *. dz)) in
+    if len = 0. then q else let k = Float.abs r /. len in Vec.make (cx +. (k *. dx)) (cy +. (k *. dy)) (cz +. (k *. dz))
+  in
+  match obj.shape with
+  | Sphere s -> onto s.cx s.cy s.cz s.radius p
+  | Ellipsoid { sp = s; etr } -> Transform.point etr (onto s.cx s.cy s.cz s.radius (Transform.inv_point etr p))
+  | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ -> p
+
+let norm_inf (v : Vec.t) = Float.max (Float.abs v.x) (Float.max (Float.abs v.y) (Float.abs v.z))
+
+(* A bound on the error of the hit point [p] of a ray from [o] on a shape whose coordinates reach
+   [mag]: 256 units in the last place of the largest coordinate involved. *)
+let error_bound (o : Vec.t) (p : Vec.t) mag = 0x1p-44 *. (norm_inf o +. norm_inf p +. mag)
+
+(* Where a ray in direction [dir] leaves the surface at [p]: [p] itself in POV-Ray's mode; in the
+   robust mode, [p] moved by [e] along the geometric normal [ng] to the side [dir] goes. *)
+let[@inline] origin ctx (p : Vec.t) (ng : Vec.t) e (dir : Vec.t) =
+  if not ctx.robust then p else if Vec.dot dir ng >= 0. then Vec.madd p e ng else Vec.madd p (-.e) ng
+
+(* ---------------------------------------------------------------------------------------------- *)
 (* Shadows (§4) *)
 
 let[@inline] fade_factor fade_colour fade_distance fade_power depth (c : Rgb.t) =
@@ -235,18 +286,24 @@ let[@inline] fade_factor fade_colour fade_distance fade_power depth (c : Rgb.t) 
 
 let rec remove id = function [] -> [] | x :: rest -> if x = id then rest else x :: remove id rest
 
-(* The light colour [lc] after the shadow ray from [p] towards the light at [dist]. *)
-let shadow ctx (p : Vec.t) (l : Vec.t) dist interiors (lc : Rgb.t) : Rgb.t =
+(* The light colour [lc] after the shadow ray from [p] (on a surface with geometric normal [ng] and
+   error bound [e]) towards the light at [dist]. POV-Ray counts hits from 1e-3 to the light
+   minus 1e-3; the robust mode counts every hit from the lifted origin to the light minus a
+   relative margin. *)
+let shadow ctx (p : Vec.t) (ng : Vec.t) e (l : Vec.t) dist interiors (lc : Rgb.t) : Rgb.t =
   let sc = ctx.scene in
   ctx.stats.shadow_rays <- ctx.stats.shadow_rays + 1;
+  let lo, margin =
+    if ctx.robust then (0., (1e-9 *. dist) +. error_bound p (Vec.madd p dist l) dist) else (shadow_tolerance, shadow_tolerance)
+  in
   match sc.shadow_mode with
   | No_occluders -> lc
-  | Any_hit -> if any_hit ctx sc.occluders p l shadow_tolerance (dist -. shadow_tolerance) then Rgb.black else lc
+  | Any_hit -> if any_hit ctx sc.occluders (origin ctx p ng e l) l lo (dist -. margin) then Rgb.black else lc
   | Filtered ->
       let rec walk (o : Vec.t) remaining interiors (lc : Rgb.t) =
-        let i = nearest ctx sc.occluders o l shadow_tolerance in
+        let i = nearest ctx sc.occluders o l lo in
         let t = ctx.depth.(0) in
-        if i < 0 || t >= remaining -. shadow_tolerance then lc
+        if i < 0 || t >= remaining -. margin then lc
         else
           let obj = sc.objects.(i) in
           if obj.opaque then Rgb.black
@@ -259,9 +316,17 @@ let shadow ctx (p : Vec.t) (l : Vec.t) dist interiors (lc : Rgb.t) : Rgb.t =
             in
             let lc = Rgb.make (f32 (lc.r *. f.r)) (f32 (lc.g *. f.g)) (f32 (lc.b *. f.b)) in
             let interiors = if List.mem obj.id interiors then remove obj.id interiors else obj.id :: interiors in
-            walk (Vec.madd o t l) (remaining -. t) interiors lc
+            let q = Vec.madd o t l in
+            let next =
+              if not ctx.robust then q
+              else
+                let sub = ctx.sub.(0) in
+                let q = refine obj q in
+                origin ctx q (geometric_normal obj sub q) (error_bound o q obj.mag) l
+            in
+            walk next (remaining -. t) interiors lc
       in
-      walk p dist interiors lc
+      walk (origin ctx p ng e l) dist interiors lc
 
 (* ---------------------------------------------------------------------------------------------- *)
 (* Local illumination (§3.3, §3.4) *)
@@ -277,7 +342,7 @@ let metallic_factor metallic cos_angle (c : Rgb.t) (lc : Rgb.t) =
 
 (* One light's diffuse, phong and specular terms, summed in single precision the way POV-Ray sums
    them: per light first, then into the surface colour. *)
-let light_terms ctx (s : surface) (p : Vec.t) (n : Vec.t) (d : Vec.t) interiors (lt : light) : Rgb.t =
+let light_terms ctx (s : surface) (p : Vec.t) (n : Vec.t) ng e (d : Vec.t) interiors (lt : light) : Rgb.t =
   let acc = Rgb.black in
   let lvx = lt.lx -. p.x and lvy = lt.ly -. p.y and lvz = lt.lz -. p.z in
   let dist = sqrt ((lvx *. lvx) +. (lvy *. lvy) +. (lvz *. lvz)) in
@@ -294,7 +359,7 @@ let light_terms ctx (s : surface) (p : Vec.t) (n : Vec.t) (d : Vec.t) interiors 
     let nl = Vec.dot n l in
     if nl < epsilon then Rgb.black
     else
-      let lc = if lt.shadowless then lc else shadow ctx p l dist interiors lc in
+      let lc = if lt.shadowless then lc else shadow ctx p ng e l dist interiors lc in
       if Float.abs lc.r <= epsilon && Float.abs lc.g <= epsilon && Float.abs lc.b <= epsilon then Rgb.black
       else
         let acc =
@@ -332,8 +397,8 @@ let light_terms ctx (s : surface) (p : Vec.t) (n : Vec.t) (d : Vec.t) interiors 
             else acc
           else acc
 
-let add_light ctx s p n d interiors (acc : Rgb.t) lt =
-  let t = light_terms ctx s p n d interiors lt in
+let add_light ctx s p n ng e d interiors (acc : Rgb.t) lt =
+  let t = light_terms ctx s p n ng e d interiors lt in
   Rgb.make (f32 (acc.r +. t.r)) (f32 (acc.g +. t.g)) (f32 (acc.b +. t.b))
 
 (* ---------------------------------------------------------------------------------------------- *)
@@ -414,7 +479,7 @@ let rec trace ctx ~level ~weight ~interiors ~continued (o : Vec.t) (d : Vec.t) :
   let sc = ctx.scene in
   if level >= sc.max_trace_level || weight < sc.adc_bailout then black
   else
-    let i = nearest ctx sc.all o d min_isect_depth in
+    let i = nearest ctx sc.all o d ctx.min_depth in
     if i < 0 then sky_colour sc
     else
       let level = if continued then level else level + 1 in
@@ -428,9 +493,13 @@ and shade ctx obj sub depth ~level ~weight ~interiors (o : Vec.t) (d : Vec.t) : 
   if not (1. > sc.adc_bailout) then black
   else
     let p = Vec.madd o depth d in
+    let p = if ctx.robust then refine obj p else p in
     let n = normal obj sub p in
     let n = if Vec.dot n d > 0. then Vec.neg n else n in
     (* §3.1 *)
+    (* where secondary rays leave from in the robust mode *)
+    let ng = if ctx.robust then geometric_normal obj sub p else n in
+    let e = if ctx.robust then error_bound o p obj.mag else 0. in
     let ci = -.Vec.dot d n in
     let refl = if s.reflects then reflectivity sc s obj interiors ci else Rgb.black in
     (* §5.2: the reflected ray's weight, taken before the metallic tint *)
@@ -438,7 +507,7 @@ and shade ctx obj sub depth ~level ~weight ~interiors (o : Vec.t) (d : Vec.t) : 
       f32 (if s.refl.fresnel then weight *. Rgb.max3 refl else weight *. Float.max (Rgb.max3 s.refl.rmax) (Rgb.max3 s.refl.rmin))
     in
     let refl = if s.reflects && s.refl.refl_metallic <> 0. then metallic_factor s.refl.refl_metallic ci s.colour refl else refl in
-    let local = if s.lit then Array.fold_left (add_light ctx s p n d interiors) s.emitted sc.lights else s.emitted in
+    let local = if s.lit then Array.fold_left (add_light ctx s p n ng e d interiors) s.emitted sc.lights else s.emitted in
     (* §6: transmitted ray *)
     let local, tr, tir =
       if not s.transparent then (local, 0., false)
@@ -453,7 +522,7 @@ and shade ctx obj sub depth ~level ~weight ~interiors (o : Vec.t) (d : Vec.t) : 
         if not (trans > sc.adc_bailout) then (local, 0., false)
         else
           let w = f32 (weight *. Float.max (Float.abs filcol.r) (Float.max (Float.abs filcol.g) (Float.abs filcol.b))) in
-          let ct, tir = refract ctx obj ~level ~weight:w ~interiors p d n in
+          let ct, tir = refract ctx obj ~level ~weight:w ~interiors p ng e d n in
           let att = Rgb.grey obj.old_refract in
           let att =
             if Float.abs obj.fade_distance > epsilon && List.mem obj.id interiors then
@@ -475,7 +544,7 @@ and shade ctx obj sub depth ~level ~weight ~interiors (o : Vec.t) (d : Vec.t) : 
     else
       let rd = Vec.normalize (Vec.madd d (-2. *. Vec.dot d n) n) in
       ctx.stats.reflected_rays <- ctx.stats.reflected_rays + 1;
-      let c = trace ctx ~level ~weight:w_refl ~interiors ~continued:false p rd in
+      let c = trace ctx ~level ~weight:w_refl ~interiors ~continued:false (origin ctx p ng e rd) rd in
       let e = s.refl.exponent in
       if e <> 1. then
         let ie = 1. /. e in
@@ -484,7 +553,7 @@ and shade ctx obj sub depth ~level ~weight ~interiors (o : Vec.t) (d : Vec.t) : 
       else { r = f32 (local.r +. f32 (refl.r *. c.r)); g = f32 (local.g +. f32 (refl.g *. c.g)); b = f32 (local.b +. f32 (refl.b *. c.b)); tr }
 
 (* §6.2: the transmitted ray; returns its colour and whether total internal reflection happened. *)
-and refract ctx obj ~level ~weight ~interiors p d n : result * bool =
+and refract ctx obj ~level ~weight ~interiors p ng e d n : result * bool =
   let sc = ctx.scene in
   let ior, inner =
     match interiors with
@@ -496,14 +565,14 @@ and refract ctx obj ~level ~weight ~interiors p d n : result * bool =
   ctx.stats.refracted_rays <- ctx.stats.refracted_rays + 1;
   if Float.abs (ior -. 1.) < epsilon then
     (* a continued ray: same direction, no new trace level *)
-    (trace ctx ~level ~weight ~interiors:inner ~continued:true p d, false)
+    (trace ctx ~level ~weight ~interiors:inner ~continued:true (origin ctx p ng e d) d, false)
   else
     let dn = Vec.dot d n in
     let nn, nl = if dn <= 0. then (-.dn, n) else (dn, Vec.neg n) in
     let t = 1. +. (ior *. ior *. ((nn *. nn) -. 1.)) in
     if t < 0. then
       let rd = Vec.normalize (Vec.madd d (-2. *. dn) n) in
-      (trace ctx ~level ~weight ~interiors ~continued:false p rd, true)
+      (trace ctx ~level ~weight ~interiors ~continued:false (origin ctx p ng e rd) rd, true)
     else
       let dir = Vec.add (Vec.scale ior d) (Vec.scale ((ior *. nn) -. sqrt t) nl) in
-      (trace ctx ~level ~weight ~interiors:inner ~continued:false p dir, false)
+      (trace ctx ~level ~weight ~interiors:inner ~continued:false (origin ctx p ng e dir) dir, false)

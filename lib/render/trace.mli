@@ -11,12 +11,18 @@ type ctx = {
   sub : int array;
   stack : float array;
   mstack : float array;
+  lim : Limits.t;
+  min_depth : float;
+  robust : bool;
 }
-(** What a trace reads: the compiled scene, the worker's statistics, and scratch space (the last
-    hit's depth and mesh face, traversal stacks) private to one worker. *)
+(** What a trace reads: the compiled scene, the worker's statistics, scratch space (the last
+    hit's depth and mesh face, traversal stacks) private to one worker, and the mode's limits:
+    the depths shapes accept, the nearest depth any ray accepts (1e-4, §2.1), and whether
+    secondary rays leave from points lifted off the surface (robust mode). *)
 
-val make_ctx : Compiled.t -> Stats.t -> ctx
-(** [make_ctx scene stats] is a context for one render worker. *)
+val make_ctx : ?robust:bool -> Compiled.t -> Stats.t -> ctx
+(** [make_ctx ?robust scene stats] is a context for one render worker; [robust] (default false)
+    selects the robust mode's limits instead of POV-Ray's. *)
 
 val hit_shape : ctx -> Compiled.shape -> Vec.t -> Vec.t -> float -> float
 (** [hit_shape ctx shape o d lo] is the nearest depth along the unit direction [d] at which the ray

@@ -98,3 +98,33 @@ let shape (s : Scene.shape) op : Scene.shape =
   | Mesh { mesh; trans; textures } ->
       (* §2.6, Mesh::Translate/Rotate/Scale all call Transform *)
       Mesh { mesh; trans = Some (attach trans op); textures }
+
+(* ---------------------------------------------------------------------------------------------- *)
+(* The whole scene moved: every object, light and the camera scaled by [scale] about the origin and
+   then translated, with the distances that are lengths (fade distances) scaled too, so the scene
+   is the same picture at another size and place (the metamorphic tests of the robust mode). *)
+
+let scene ~scale ~translate (s : Scene.t) : Scene.t =
+  let sv = Vec.make scale scale scale in
+  let obj (o : Scene.obj) =
+    (* a smooth triangle's Scale renormalises its vertex normals, which changes how they blend;
+       as a matrix the uniform scale only multiplies all three by the same factor *)
+    let scaling =
+      match o.shape with Smooth_triangle _ -> Transform (Transform.scale sv) | Sphere _ | Plane _ | Triangle _ | Mesh _ -> Scale sv
+    in
+    let sh = shape (shape o.shape scaling) (Translate translate) in
+    { o with shape = sh; interior = { o.interior with fade_distance = o.interior.fade_distance *. scale } }
+  in
+  let light (l : Scene.light) =
+    { l with position = Vec.add (Vec.scale scale l.position) translate; fade_distance = l.fade_distance *. scale }
+  in
+  let c = s.camera in
+  let camera =
+    {
+      Scene.location = Vec.add (Vec.scale scale c.location) translate;
+      direction = Vec.scale scale c.direction;
+      up = Vec.scale scale c.up;
+      right = Vec.scale scale c.right;
+    }
+  in
+  { s with objects = List.map obj s.objects; lights = List.map light s.lights; camera }

@@ -13,3 +13,8 @@ val shape : Scene.shape -> op -> Scene.shape
 (** [shape s op] is [s] after [op]: baked into a sphere, plane or triangle while it has no
     transform of its own, composed into its transform otherwise (§14.4). A degenerate triangle
     (or a standalone smooth triangle POV-Ray hides) is left as it is. *)
+
+val scene : scale:float -> translate:Vec.t -> Scene.t -> Scene.t
+(** [scene ~scale ~translate s] is [s] scaled by [scale] (> 0) about the origin and then moved by
+    [translate]: objects, lights and camera, with fade distances scaled, so that it shows the same
+    picture. *)

@@ -1,0 +1,8 @@
+(* The depths a shape accepts (POVRAY-3.7 §2.1). POV-Ray's are fixed lengths, which is why a
+   scene's look depends on its size; the robust mode drops them and relies on moving secondary-ray
+   origins off the surface by a bound on the hit point's floating-point error instead. *)
+
+type t = { near : float; far : float; tangent : float }
+
+let pov = { near = 1e-6; far = 1e7; tangent = 1e-10 }
+let robust = { near = 0.; far = infinity; tangent = 0. }
