@@ -128,7 +128,6 @@ let run input positional output width height antialias no_aa method_ depth jitte
       let iopts = { (Interp.default_options ~width ~height) with clock; library_paths = libs } in
       if width < 1 || height < 1 then usage_error "width and height must be at least 1"
       else if dump then dump_scene iopts input
-      else if method_ <> 1 then usage_error (Printf.sprintf "sampling method %d is not supported yet (only +AM1)" method_)
       else
         let fmt = match format with `Png -> Png_fmt | `Ppm -> Ppm_fmt in
         let output =
@@ -148,12 +147,14 @@ let run input positional output width height antialias no_aa method_ depth jitte
         in
         if area.left > area.right || area.top > area.bottom then usage_error "the partial render area is empty"
         else
-          let antialias = if no_aa then None else antialias in
+          (* POV-Ray clips the method to 0 … 2, and method 0 is no antialiasing *)
+          let antialias = if no_aa || method_ <= 0 then None else antialias in
           let opts =
             {
               Render.width;
               height;
               antialias = Option.map (fun t -> Float.min 1. (Float.max 0. t)) antialias;
+              aa_method = (if method_ >= 2 then Render.Adaptive else Render.Non_adaptive);
               aa_depth = max 1 (min 9 depth);
               jitter = (if no_jitter then 0. else Float.min 1. (Float.max 0. jitter));
               aa_gamma;
@@ -194,7 +195,7 @@ let cmd =
           Whitted ray tracer that follows POV-Ray 3.7.0.10's rules, so that on the features it supports \
           the PNG it writes equals POV-Ray's.";
       `P "POV-Ray's own switches are accepted as they are and mean the same: $(b,+I)file, $(b,+O)file, \
-          $(b,+W)n, $(b,+H)n, $(b,+A)[threshold], $(b,-A), $(b,+AM1), $(b,+R)n, $(b,+J)[amount], $(b,-J), \
+          $(b,+W)n, $(b,+H)n, $(b,+A)[threshold], $(b,-A), $(b,+AM)n, $(b,+R)n, $(b,+J)[amount], $(b,-J), \
           $(b,+L)dir, $(b,+K)v, $(b,+WT)n, $(b,+SR)/$(b,+ER)/$(b,+SC)/$(b,+EC) (partial render: full-size file, \
           unrendered pixels black), $(b,+FN) (PNG), $(b,+FP) (PPM), $(b,+D)/$(b,-D), $(b,+V)/$(b,-V). \
           Each is shown below with its long form.";
@@ -218,8 +219,8 @@ let cmd =
            ~doc:"+A[threshold]: antialias; a pixel is supersampled when it differs from a neighbour by at least THRESHOLD (default 0.3).")
   in
   let no_aa = Arg.(value & flag & info [ "no-antialias" ] ~docs ~doc:"-A: no antialiasing (the default).") in
-  let method_ = Arg.(value & opt int 1 & info [ "sampling-method" ] ~docv:"N" ~docs ~doc:"+AM: antialiasing method; 1 (non-adaptive, POV-Ray's default) is supported.") in
-  let depth = Arg.(value & opt int 3 & info [ "aa-depth" ] ~docv:"N" ~docs ~doc:"+R: supersampling depth, N×N samples per supersampled pixel (1 … 9, default 3).") in
+  let method_ = Arg.(value & opt int 1 & info [ "sampling-method" ] ~docv:"N" ~docs ~doc:"+AM: antialiasing method: 1 (non-adaptive, the default), 2 (adaptive, recursive); as in POV-Ray, 0 or less means no antialiasing and more than 2 means 2.") in
+  let depth = Arg.(value & opt int 3 & info [ "aa-depth" ] ~docv:"N" ~docs ~doc:"+R: supersampling depth (1 … 9, default 3): N×N samples per supersampled pixel with method 1, at most N−1 subdivisions of a pixel with method 2.") in
   let jitter = Arg.(value & opt ~vopt:1. float 1. & info [ "jitter" ] ~docv:"AMOUNT" ~docs ~doc:"+J[amount]: jitter antialiasing samples (on by default, amount 1; POV-Ray's deterministic jitter).") in
   let no_jitter = Arg.(value & flag & info [ "no-jitter" ] ~docs ~doc:"-J: no jitter.") in
   let aa_gamma = Arg.(value & opt float 2.5 & info [ "aa-gamma" ] ~docv:"G" ~docs ~doc:"+AG: gamma for the antialiasing colour comparison (default 2.5).") in

@@ -1,15 +1,18 @@
-(* The render loop: camera rays (§1.4), antialiasing method 1 in blocks (§9.3), and the split of
-   blocks over processes. Every block is computed independently from the scene alone, so the image
-   is the same for any number of workers. *)
+(* The render loop: camera rays (§1.4), antialiasing methods 1 (§9.3) and 2 (§9.4) in blocks, and
+   the split of blocks over processes. Every block is computed independently from the scene alone,
+   so the image is the same for any number of workers. *)
 
 open Compiled
 
 type area = { left : int; right : int; top : int; bottom : int }
 
+type aa_method = Non_adaptive | Adaptive
+
 type options = {
   width : int;
   height : int;
   antialias : float option;
+  aa_method : aa_method;
   aa_depth : int;
   jitter : float;
   aa_gamma : float;
@@ -74,63 +77,146 @@ let supersample ctx opts (c : Trace.result) x y : Trace.result =
 
 type block = { bx0 : int; by0 : int; bx1 : int; by1 : int }
 
+(* No antialiasing: one sample at each pixel centre. *)
+let plain_block ctx opts (b : block) store =
+  for y = b.by0 to b.by1 do
+    for x = b.bx0 to b.bx1 do
+      store x y (sample ctx opts (float_of_int x) (float_of_int y))
+    done
+  done
+
+(* §9.3, method 1. *)
+let non_adaptive_block ctx opts enc thr (b : block) store =
+  let bw = b.bx1 - b.bx0 + 1 and bh = b.by1 - b.by0 + 1 in
+  (* A (bw+1)×(bh+1) grid whose row 0 and column 0 are the re-traced row above and column left
+     of the block; those are never supersampled (§9.3). *)
+  let gw = bw + 1 in
+  let px = Array.make (gw * (bh + 1)) Trace.black in
+  let done_ = Array.make (gw * (bh + 1)) false in
+  let at x y = ((y - b.by0 + 1) * gw) + (x - b.bx0 + 1) in
+  let tr x y = sample ctx opts (float_of_int x) (float_of_int y) in
+  for x = b.bx0 to b.bx1 do
+    px.(at x (b.by0 - 1)) <- tr x (b.by0 - 1);
+    done_.(at x (b.by0 - 1)) <- true
+  done;
+  for y = b.by0 to b.by1 do
+    px.(at (b.bx0 - 1) y) <- tr (b.bx0 - 1) y;
+    done_.(at (b.bx0 - 1) y) <- true;
+    for x = b.bx0 to b.bx1 do
+      let c = tr x y in
+      px.(at x y) <- c;
+      let ld = aa_distance enc px.(at (x - 1) y) c >= thr in
+      let td = aa_distance enc px.(at x (y - 1)) c >= thr in
+      let sl = (not done_.(at (x - 1) y)) && ld in
+      let st = (not done_.(at x (y - 1))) && td in
+      if sl then begin
+        px.(at (x - 1) y) <- supersample ctx opts px.(at (x - 1) y) (x - 1) y;
+        done_.(at (x - 1) y) <- true
+      end;
+      if st then begin
+        px.(at x (y - 1)) <- supersample ctx opts px.(at x (y - 1)) x (y - 1);
+        done_.(at x (y - 1)) <- true
+      end;
+      if ld || td then begin
+        px.(at x y) <- supersample ctx opts c x y;
+        done_.(at x y) <- true
+      end
+    done
+  done;
+  for y = b.by0 to b.by1 do
+    for x = b.bx0 to b.bx1 do
+      store x y px.(at x y)
+    done
+  done
+
+(* The mean of four colours, summed in this order in single precision as POV-Ray does. *)
+let mean4 (a : Trace.result) (b : Trace.result) (c : Trace.result) (d : Trace.result) : Trace.result =
+  let m a b c d = Trace.f32 (Trace.f32 (Trace.f32 (Trace.f32 (a +. b) +. c) +. d) /. 4.) in
+  { r = m a.r b.r c.r d.r; g = m a.g b.g c.g d.g; b = m a.b b.b c.b d.b; tr = m a.tr b.tr c.tr d.tr }
+
+(* §9.4, method 2. The block's pixel corners are traced first, without jitter; then each pixel is
+   subdivided recursively on an (S+1)×(S+1) lattice of sub-sample positions, S = 2^depth, of which
+   only the four corners are shared with neighbouring pixels. As in POV-Ray a pixel is split at most
+   depth−1 times (so every other lattice line stays unused, and depth 1 is the mean of the corners),
+   and the jitter is scaled by 1/(S+1). Corners are re-traced by each block at the same positions,
+   so unlike method 1 the image does not depend on the block size. *)
+let adaptive_block ctx opts enc thr (b : block) store =
+  let bw = b.bx1 - b.bx0 + 1 and bh = b.by1 - b.by0 + 1 in
+  (* corners.(i + j·cw) is the top-left corner of pixel (bx0 + i, by0 + j) *)
+  let cw = bw + 1 in
+  let corners = Array.make (cw * (bh + 1)) Trace.black in
+  for j = 0 to bh do
+    for i = 0 to bw do
+      corners.(i + (j * cw)) <- sample ctx opts (float_of_int (b.bx0 + i) -. 0.5) (float_of_int (b.by0 + j) -. 0.5)
+    done
+  done;
+  let s = 1 lsl opts.aa_depth in
+  let js = opts.jitter /. float_of_int (s + 1) in
+  (* The lattice of the current pixel: a point holds a sample when its stamp is the pixel's number,
+     so nothing needs clearing between pixels. *)
+  let n = s + 1 in
+  let lattice = Array.make (n * n) Trace.black and stamp = Array.make (n * n) 0 and pixel = ref 0 in
+  let put i j c =
+    lattice.(i + (j * n)) <- c;
+    stamp.(i + (j * n)) <- !pixel
+  in
+  let get i j = lattice.(i + (j * n)) in
+  (* lattice point (i, j) at image position (x, y), traced unless this pixel already has it *)
+  let take i j x y =
+    if stamp.(i + (j * n)) <> !pixel then begin
+      let c =
+        if js > 0. then sample ctx opts (x +. (Jitter.jx x y *. js)) (y +. (Jitter.jy x y *. js)) else sample ctx opts x y
+      in
+      ctx.stats.samples <- ctx.stats.samples + 1;
+      put i j c
+    end
+  in
+  let far a b = aa_distance enc a b >= thr in
+  (* The square of side [step] whose top-left lattice point is (i, j) and whose centre is at image
+     position (x, y), [d] from its edges; [level] more subdivisions are allowed. *)
+  let rec sub x y d i j step level =
+    let c00 = get i j and c01 = get i (j + step) and c10 = get (i + step) j and c11 = get (i + step) (j + step) in
+    if level > 0 && (far c00 c01 || far c00 c10 || far c00 c11 || far c01 c10 || far c01 c11 || far c10 c11) then begin
+      let h = step / 2 and d2 = d *. 0.5 in
+      take i (j + h) (x -. d) y;
+      take (i + h) j x (y -. d);
+      take (i + step) (j + h) (x +. d) y;
+      take (i + h) (j + step) x (y +. d);
+      take (i + h) (j + h) x y;
+      let q00 = sub (x -. d2) (y -. d2) d2 i j h (level - 1) in
+      let q01 = sub (x -. d2) (y +. d2) d2 i (j + h) h (level - 1) in
+      let q10 = sub (x +. d2) (y -. d2) d2 (i + h) j h (level - 1) in
+      let q11 = sub (x +. d2) (y +. d2) d2 (i + h) (j + h) h (level - 1) in
+      mean4 q00 q01 q10 q11
+    end
+    else mean4 c00 c01 c10 c11
+  in
+  for y = b.by0 to b.by1 do
+    for x = b.bx0 to b.bx1 do
+      incr pixel;
+      let i = x - b.bx0 and j = y - b.by0 in
+      put 0 0 corners.(i + (j * cw));
+      put 0 s corners.(i + ((j + 1) * cw));
+      put s 0 corners.(i + 1 + (j * cw));
+      put s s corners.(i + 1 + ((j + 1) * cw));
+      store x y (sub (float_of_int x) (float_of_int y) 0.5 0 0 s (opts.aa_depth - 1))
+    done
+  done
+
 (* One block: its pixels as r g b triples, row-major. *)
 let render_block ctx opts enc (b : block) =
   let bw = b.bx1 - b.bx0 + 1 and bh = b.by1 - b.by0 + 1 in
   let out = Float.Array.make (3 * bw * bh) 0. in
-  let store i (c : Trace.result) =
-    Float.Array.set out (3 * i) c.r;
-    Float.Array.set out ((3 * i) + 1) c.g;
-    Float.Array.set out ((3 * i) + 2) c.b
+  let store x y (c : Trace.result) =
+    let i = 3 * (((y - b.by0) * bw) + (x - b.bx0)) in
+    Float.Array.set out i c.r;
+    Float.Array.set out (i + 1) c.g;
+    Float.Array.set out (i + 2) c.b
   in
-  (match opts.antialias with
-  | None ->
-      for y = b.by0 to b.by1 do
-        for x = b.bx0 to b.bx1 do
-          store (((y - b.by0) * bw) + (x - b.bx0)) (sample ctx opts (float_of_int x) (float_of_int y))
-        done
-      done
-  | Some thr ->
-      (* A (bw+1)×(bh+1) grid whose row 0 and column 0 are the re-traced row above and column left
-         of the block; those are never supersampled (§9.3). *)
-      let gw = bw + 1 in
-      let px = Array.make (gw * (bh + 1)) Trace.black in
-      let done_ = Array.make (gw * (bh + 1)) false in
-      let at x y = ((y - b.by0 + 1) * gw) + (x - b.bx0 + 1) in
-      let tr x y = sample ctx opts (float_of_int x) (float_of_int y) in
-      for x = b.bx0 to b.bx1 do
-        px.(at x (b.by0 - 1)) <- tr x (b.by0 - 1);
-        done_.(at x (b.by0 - 1)) <- true
-      done;
-      for y = b.by0 to b.by1 do
-        px.(at (b.bx0 - 1) y) <- tr (b.bx0 - 1) y;
-        done_.(at (b.bx0 - 1) y) <- true;
-        for x = b.bx0 to b.bx1 do
-          let c = tr x y in
-          px.(at x y) <- c;
-          let ld = aa_distance enc px.(at (x - 1) y) c >= thr in
-          let td = aa_distance enc px.(at x (y - 1)) c >= thr in
-          let sl = (not done_.(at (x - 1) y)) && ld in
-          let st = (not done_.(at x (y - 1))) && td in
-          if sl then begin
-            px.(at (x - 1) y) <- supersample ctx opts px.(at (x - 1) y) (x - 1) y;
-            done_.(at (x - 1) y) <- true
-          end;
-          if st then begin
-            px.(at x (y - 1)) <- supersample ctx opts px.(at x (y - 1)) x (y - 1);
-            done_.(at x (y - 1)) <- true
-          end;
-          if ld || td then begin
-            px.(at x y) <- supersample ctx opts c x y;
-            done_.(at x y) <- true
-          end
-        done
-      done;
-      for y = b.by0 to b.by1 do
-        for x = b.bx0 to b.bx1 do
-          store (((y - b.by0) * bw) + (x - b.bx0)) px.(at x y)
-        done
-      done);
+  (match (opts.antialias, opts.aa_method) with
+  | None, _ -> plain_block ctx opts b store
+  | Some thr, Non_adaptive -> non_adaptive_block ctx opts enc thr b store
+  | Some thr, Adaptive -> adaptive_block ctx opts enc thr b store);
   out
 
 let blocks opts =

@@ -1,13 +1,18 @@
-(** The render loop: camera rays, antialiasing method 1 in blocks, and the split over processes. *)
+(** The render loop: camera rays, antialiasing methods 1 and 2 in blocks, and the split over processes. *)
 
 type area = { left : int; right : int; top : int; bottom : int }
 (** The pixels to render, 0-based and inclusive (a partial render, §10.3); the rest stays black. *)
+
+type aa_method =
+  | Non_adaptive  (** +AM1: a pixel differing from a neighbour gets a fixed depth×depth grid (§9.3) *)
+  | Adaptive  (** +AM2: the four pixel corners, the pixel split in four where they differ, up to depth−1 times (§9.4) *)
 
 type options = {
   width : int;
   height : int;
   antialias : float option;  (** threshold, or [None] for no antialiasing *)
-  aa_depth : int;  (** +R: samples per side when supersampling, 1 … 9 *)
+  aa_method : aa_method;  (** used when [antialias] is set *)
+  aa_depth : int;  (** +R, 1 … 9: samples per side (method 1); at most depth−1 subdivisions (method 2) *)
   jitter : float;  (** jitter amount, 0 without jitter *)
   aa_gamma : float;  (** colours are compared after x ↦ x^(1/aa_gamma) *)
   area : area;

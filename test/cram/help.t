@@ -28,3 +28,12 @@ A partial render writes a full-size file (unrendered pixels black):
 
   $ povml +Is.pov +W32 +H24 +SR0.5 +ER1.0 -D +Op.ppm +FP 2>/dev/null && head -c 12 p.ppm | od -c | head -1
   0000000   P   6  \n   3   2       2   4  \n   2   5   5
+
++AM2 is antialiasing method 2; as in POV-Ray, +AM0 means no antialiasing and +AM3 means method 2:
+
+  $ povml +Is.pov +W32 +H24 -D +A0.3 +AM2 +Om2.png 2>/dev/null && povml +Is.pov +W32 +H24 -D +A0.3 +AM3 +Om3.png 2>/dev/null && cmp m2.png m3.png && echo same
+  same
+  $ povml +Is.pov +W32 +H24 -D +A0.3 +AM0 +Om0.png 2>/dev/null && cmp m0.png a.png && echo same
+  same
+  $ cmp -s m2.png a.png || echo differs
+  differs

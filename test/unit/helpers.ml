@@ -87,6 +87,7 @@ let render_opts w h =
     Render.width = w;
     height = h;
     antialias = None;
+    aa_method = Render.Non_adaptive;
     aa_depth = 3;
     jitter = 0.;
     aa_gamma = 2.5;

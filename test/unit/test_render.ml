@@ -88,6 +88,38 @@ let test_antialias () =
   Alcotest.(check bool) "samples taken" true (stats.samples > 0);
   Alcotest.(check int) "samples are multiples of 9" 0 (stats.samples mod 9)
 
+let test_adaptive () =
+  let a2 o = { o with Render.antialias = Some 0.3; aa_method = Render.Adaptive } in
+  (* a uniform image: only the (w+1)×(h+1) pixel corners of each block are traced, never a sub-sample *)
+  let bg = compile "#version 3.7;\nglobal_settings { assumed_gamma 1 }\nbackground { rgb 0.5 }" in
+  let img, stats = Render.render (a2 (opts 4 3)) bg (Scene.Working 1.) in
+  Alcotest.(check int) "no samples" 0 stats.samples;
+  Alcotest.(check int) "one ray per corner" 20 stats.camera_rays;
+  check_pixel "uniform" (0.5, 0.5, 0.5) img 3 2;
+  (* blocks of 2×2, 2×2, 2×1 and 2×1 pixels each trace their own corners: 9 + 9 + 6 + 6 *)
+  let _, stats = Render.render { (a2 (opts 4 3)) with block_size = 2 } bg (Scene.Working 1.) in
+  Alcotest.(check int) "corners per block" 30 stats.camera_rays;
+  (* depth 1: no subdivision, each pixel is the mean of its four corners *)
+  let sph = compile sphere_scene in
+  let _, stats = Render.render { (a2 (opts 3 3)) with aa_depth = 1 } sph (Scene.Working 1.) in
+  Alcotest.(check int) "depth 1: no samples" 0 stats.samples;
+  Alcotest.(check int) "depth 1: corners only" 16 stats.camera_rays;
+  (* an edge is subdivided (at depth 2 once, so at most 5 sub-samples per pixel); every camera ray
+     is a corner or a sub-sample *)
+  List.iter
+    (fun depth ->
+      let _, stats = Render.render { (a2 (opts 9 9)) with aa_depth = depth } sph (Scene.Working 1.) in
+      Alcotest.(check bool) (Printf.sprintf "depth %d: samples taken" depth) true (stats.samples > 0);
+      Alcotest.(check int) (Printf.sprintf "depth %d: rays = corners + samples" depth) (100 + stats.samples) stats.camera_rays;
+      if depth = 2 then Alcotest.(check bool) "depth 2: at most 5 per pixel" true (stats.samples <= 81 * 5))
+    [ 2; 3; 4 ];
+  (* unlike method 1, the image does not depend on the block size *)
+  let a, sa = Render.render { (a2 (opts 9 7)) with jitter = 1. } sph (Scene.Working 1.) in
+  let b, sb = Render.render { (a2 (opts 9 7)) with jitter = 1.; block_size = 3; workers = 2 } sph (Scene.Working 1.) in
+  Alcotest.(check bool) "subdivided" true (sa.samples > 0);
+  Alcotest.(check int) "same samples" sa.samples sb.samples;
+  Alcotest.(check bool) "same image for any block size" true (Float.Array.to_list a.data = Float.Array.to_list b.data)
+
 (* Pool: results in task order whatever the worker count; a worker that raises is reported. *)
 let test_pool () =
   let xs = List.init 97 Fun.id in
@@ -109,4 +141,5 @@ let tests =
     Alcotest.test_case "render" `Quick test_render;
     Alcotest.test_case "blocks and workers" `Quick test_blocks_and_workers;
     Alcotest.test_case "antialias" `Quick test_antialias;
+    Alcotest.test_case "antialias method 2" `Quick test_adaptive;
   ]
