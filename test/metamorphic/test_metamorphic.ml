@@ -1,0 +1,83 @@
+(* Metamorphic tests of the robust mode: every scene in scenes/stiff/ and a set of fidelity scenes,
+   rendered scaled by 1e-3 and by 1e3 about the origin and moved by 1e5 along every axis, must show
+   the picture it shows as written: PSNR at least 50 dB against it, in the robust mode. The same
+   comparisons in POV-Ray's mode are printed for the record (POV-Ray's fixed 1e-4 / 1e-3 / 1e7
+   limits make its pictures depend on the scene's size), not asserted. *)
+
+open Povml
+
+let min_psnr = 50.
+
+let fidelity =
+  [
+    "scenes/fidelity/hard_shadow.pov";
+    "scenes/fidelity/filtered_shadow.pov";
+    "scenes/fidelity/refraction_glass.pov";
+    "scenes/fidelity/tir_nested.pov";
+    "scenes/fidelity/interior_fade.pov";
+    "scenes/fidelity/light_fade.pov";
+    "scenes/fidelity/reflection_mirrors.pov";
+    "scenes/fidelity/transform_triangles.pov";
+    "scenes/fidelity/transform_ellipsoid.pov";
+    "scenes/fidelity/mesh_glass_octahedron.pov";
+    "scenes/fidelity/camera_under_plane.pov";
+    "scenes/course/10_everything_together.pov";
+  ]
+
+let stiff () =
+  let dir = "scenes/stiff" in
+  if not (Sys.file_exists dir) then []
+  else
+    Sys.readdir dir |> Array.to_list
+    |> List.filter (fun f -> Filename.check_suffix f ".pov")
+    |> List.sort compare
+    |> List.map (Filename.concat dir)
+
+let moves = [ ("scale 1e-3", (1e-3, Vec.zero)); ("scale 1e3", (1e3, Vec.zero)); ("translate 1e5", (1., Vec.make 1e5 1e5 1e5)) ]
+
+let opts robust =
+  {
+    Render.width = 160;
+    height = 120;
+    antialias = None;
+    aa_method = Render.Non_adaptive;
+    aa_depth = 3;
+    jitter = 0.;
+    aa_gamma = 2.5;
+    area = Render.full_area 160 120;
+    block_size = 32;
+    workers = 2;
+    progress = false;
+    robust;
+  }
+
+let render ?move robust path = (Pipeline.run ?move (opts robust) path).image
+
+let psnr a b = match Compare.images a b with Ok c -> Compare.psnr c | Error e -> Alcotest.fail e
+let show p = if p = infinity then "exact" else Printf.sprintf "%.1f dB" p
+let table = ref []
+
+let case path () =
+  let name = Filename.remove_extension (Filename.basename path) in
+  let base_robust = render true path and base_pov = render false path in
+  let row =
+    List.map
+      (fun (label, move) ->
+        let robust = psnr base_robust (render ~move true path) in
+        let pov = psnr base_pov (render ~move false path) in
+        if robust < min_psnr then Alcotest.failf "%s, %s, robust mode: PSNR %.2f dB < %.0f dB" name label robust min_psnr;
+        Printf.sprintf "%s %s / %s" label (show robust) (show pov))
+      moves
+  in
+  table := Printf.sprintf "%-32s %s" name (String.concat "   " row) :: !table
+
+let () =
+  Sys.chdir "../..";
+  let scenes = stiff () @ fidelity in
+  let result =
+    Alcotest.run ~and_exit:false ~argv:[| "test_metamorphic" |] "metamorphic"
+      [ ("robust mode", List.map (fun p -> Alcotest.test_case (Filename.basename p) `Quick (case p)) scenes) ]
+  in
+  print_endline "PSNR against the scene as written (robust mode / POV-Ray's mode):";
+  List.iter print_endline (List.rev !table);
+  result
