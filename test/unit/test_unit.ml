@@ -27,6 +27,7 @@ let () =
       ("Compare", Test_compare.tests);
       ("Output", Test_misc.tests_output);
       ("Pipeline", Test_misc.tests_pipeline);
+      ("Robust mode", Test_robust.tests);
       ("Language properties (qcheck)", Test_lang_props.tests);
       ("POV-Ray source rules (Lexer)", Test_lexer.source_rules);
       ("POV-Ray source rules (Interp)", Test_interp.source_rules);
