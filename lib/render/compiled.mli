@@ -72,7 +72,7 @@ type light = {
 (** How a shadow ray is answered, chosen once for the scene (§4). *)
 type shadow_mode =
   | No_occluders  (** nothing casts shadows *)
-  | Any_hit  (** every occluder is opaque: a yes/no test *)
+  | Any_hit  (** every occluder is opaque: the first surface met decides *)
   | Filtered  (** some occluder is transparent: walk every crossing *)
 
 (** Objects as the tracer searches them: unbounded ones (planes) one by one, the others through a

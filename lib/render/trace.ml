@@ -22,9 +22,14 @@ type ctx = {
   sub : int array;  (* scratch: the mesh face of the last hit *)
   stack : float array;  (* traversal room for the scene's hierarchy … *)
   mstack : float array;  (* … and for a mesh's *)
+  shadow_cache : int array;  (* §4: per light, the opaque object that last blocked it, or −1 *)
 }
 
-let make_ctx scene stats = { scene; stats; depth = [| 0. |]; sub = [| -1 |]; stack = Array.make 512 0.; mstack = Array.make 512 0. }
+(* POV-Ray keeps two cache slots per light: one for the shadow tests made while shading a hit at
+   trace level 2 (lightSourceLevel1ShadowCache) and one for every other level. *)
+let make_ctx scene stats =
+  let slots = 2 * max 1 (Array.length scene.lights) in
+  { scene; stats; depth = [| 0. |]; sub = [| -1 |]; stack = Array.make 512 0.; mstack = Array.make 512 0.; shadow_cache = Array.make slots (-1) }
 let black = { r = 0.; g = 0.; b = 0.; tr = 0. }
 
 (* ---------------------------------------------------------------------------------------------- *)
@@ -144,10 +149,10 @@ let hit_shape ctx shape (o : Vec.t) (d : Vec.t) lo =
       end
       else infinity
 
-(* The nearest object of [g] hit at depth ≥ [lo]: its id, or −1. Its depth is left in
+(* The nearest object of [g] hit at a depth in [lo, hi): its id, or −1. Its depth is left in
    [ctx.depth.(0)] and, for a mesh, its face in [ctx.sub.(0)]. Ties keep the first found. *)
-let nearest ctx (g : group) (o : Vec.t) (d : Vec.t) lo =
-  let best = ref infinity and id = ref (-1) and sub = ref (-1) in
+let nearest ?(hi = infinity) ctx (g : group) (o : Vec.t) (d : Vec.t) lo =
+  let best = ref hi and id = ref (-1) and sub = ref (-1) in
   let try_obj ob =
     let t = hit_shape ctx ob.shape o d lo in
     if t < !best then begin
@@ -159,7 +164,7 @@ let nearest ctx (g : group) (o : Vec.t) (d : Vec.t) lo =
   Array.iter try_obj g.unbounded;
   let sp = g.spheres in
   if g.bvh.nodes > 0 then
-    Bvh.walk g.bvh ctx.stack o.x o.y o.z d.x d.y d.z infinity (fun i ->
+    Bvh.walk g.bvh ctx.stack o.x o.y o.z d.x d.y d.z hi (fun i ->
         let r2 = Array.unsafe_get sp ((4 * i) + 3) in
         if r2 = r2 then begin
           (* a sphere, straight from the flat array *)
@@ -175,25 +180,6 @@ let nearest ctx (g : group) (o : Vec.t) (d : Vec.t) lo =
   ctx.depth.(0) <- !best;
   ctx.sub.(0) <- !sub;
   !id
-
-(* Whether some object of [g] is hit at a depth in [lo, hi). *)
-let any_hit ctx (g : group) (o : Vec.t) (d : Vec.t) lo hi =
-  let hit ob = hit_shape ctx ob.shape o d lo < hi in
-  Array.exists hit g.unbounded
-  ||
-  let found = ref false in
-  let sp = g.spheres in
-  if g.bvh.nodes > 0 then
-    Bvh.walk g.bvh ctx.stack o.x o.y o.z d.x d.y d.z hi (fun i ->
-        if not !found then begin
-          let r2 = Array.unsafe_get sp ((4 * i) + 3) in
-          if r2 = r2 then begin
-            if sphere_depth ctx.stats (Array.unsafe_get sp (4 * i)) (Array.unsafe_get sp ((4 * i) + 1)) (Array.unsafe_get sp ((4 * i) + 2)) r2 o d lo < hi then found := true
-          end
-          else if hit g.bounded.(i) then found := true
-        end;
-        if !found then neg_infinity else hi);
-  !found
 
 (* The surface at a hit: a mesh face may carry its own texture. *)
 let surface_of obj sub =
@@ -235,21 +221,33 @@ let[@inline] fade_factor fade_colour fade_distance fade_power depth (c : Rgb.t) 
 
 let rec remove id = function [] -> [] | x :: rest -> if x = id then rest else x :: remove id rest
 
-(* The light colour [lc] after the shadow ray from [p] towards the light at [dist]. *)
-let shadow ctx (p : Vec.t) (l : Vec.t) dist interiors (lc : Rgb.t) : Rgb.t =
+(* The light colour [lc] after the shadow ray from [p] towards the light at [dist]; [slot] is the
+   light's shadow-cache slot.
+   §4, TracePointLightShadowRay: the opaque object that last blocked this light (in this worker, at
+   this kind of level) is tested first, for a hit from MIN_ISECT_DEPTH (1e-4) to the light itself,
+   not from 1e-3 to the light minus 1e-3; a hit there is a full shadow. Otherwise the nearest
+   blocker is searched for as usual, and if the first surface met is opaque it becomes the cached
+   object. The cache is what makes a blocker closer than 1e-3 (but beyond 1e-4) shadow a point
+   right after a neighbouring point was shadowed by it. *)
+let shadow ctx ~slot (p : Vec.t) (l : Vec.t) dist interiors (lc : Rgb.t) : Rgb.t =
   let sc = ctx.scene in
   ctx.stats.shadow_rays <- ctx.stats.shadow_rays + 1;
   match sc.shadow_mode with
   | No_occluders -> lc
-  | Any_hit -> if any_hit ctx sc.occluders p l shadow_tolerance (dist -. shadow_tolerance) then Rgb.black else lc
-  | Filtered ->
-      let rec walk (o : Vec.t) remaining interiors (lc : Rgb.t) =
-        let i = nearest ctx sc.occluders o l shadow_tolerance in
+  | Any_hit | Filtered ->
+      let cached = ctx.shadow_cache.(slot) in
+      if cached >= 0 && hit_shape ctx sc.objects.(cached).shape p l min_isect_depth < dist then Rgb.black
+      else
+      let rec walk first (o : Vec.t) remaining interiors (lc : Rgb.t) =
+        let i = nearest ~hi:remaining ctx sc.occluders o l shadow_tolerance in
         let t = ctx.depth.(0) in
         if i < 0 || t >= remaining -. shadow_tolerance then lc
         else
           let obj = sc.objects.(i) in
-          if obj.opaque then Rgb.black
+          if obj.opaque then begin
+            if first then ctx.shadow_cache.(slot) <- i;
+            Rgb.black
+          end
           else
             let f = (surface_of obj ctx.sub.(0)).filcol in
             let f =
@@ -259,9 +257,9 @@ let shadow ctx (p : Vec.t) (l : Vec.t) dist interiors (lc : Rgb.t) : Rgb.t =
             in
             let lc = Rgb.make (f32 (lc.r *. f.r)) (f32 (lc.g *. f.g)) (f32 (lc.b *. f.b)) in
             let interiors = if List.mem obj.id interiors then remove obj.id interiors else obj.id :: interiors in
-            walk (Vec.madd o t l) (remaining -. t) interiors lc
+            walk false (Vec.madd o t l) (remaining -. t) interiors lc
       in
-      walk p dist interiors lc
+      walk true p dist interiors lc
 
 (* ---------------------------------------------------------------------------------------------- *)
 (* Local illumination (§3.3, §3.4) *)
@@ -277,7 +275,7 @@ let metallic_factor metallic cos_angle (c : Rgb.t) (lc : Rgb.t) =
 
 (* One light's diffuse, phong and specular terms, summed in single precision the way POV-Ray sums
    them: per light first, then into the surface colour. *)
-let light_terms ctx (s : surface) (p : Vec.t) (n : Vec.t) (d : Vec.t) interiors (lt : light) : Rgb.t =
+let light_terms ctx ~slot (s : surface) (p : Vec.t) (n : Vec.t) (d : Vec.t) interiors (lt : light) : Rgb.t =
   let acc = Rgb.black in
   let lvx = lt.lx -. p.x and lvy = lt.ly -. p.y and lvz = lt.lz -. p.z in
   let dist = sqrt ((lvx *. lvx) +. (lvy *. lvy) +. (lvz *. lvz)) in
@@ -294,7 +292,7 @@ let light_terms ctx (s : surface) (p : Vec.t) (n : Vec.t) (d : Vec.t) interiors 
     let nl = Vec.dot n l in
     if nl < epsilon then Rgb.black
     else
-      let lc = if lt.shadowless then lc else shadow ctx p l dist interiors lc in
+      let lc = if lt.shadowless then lc else shadow ctx ~slot p l dist interiors lc in
       if Float.abs lc.r <= epsilon && Float.abs lc.g <= epsilon && Float.abs lc.b <= epsilon then Rgb.black
       else
         let acc =
@@ -332,9 +330,16 @@ let light_terms ctx (s : surface) (p : Vec.t) (n : Vec.t) (d : Vec.t) interiors 
             else acc
           else acc
 
-let add_light ctx s p n d interiors (acc : Rgb.t) lt =
-  let t = light_terms ctx s p n d interiors lt in
-  Rgb.make (f32 (acc.r +. t.r)) (f32 (acc.g +. t.g)) (f32 (acc.b +. t.b))
+let add_lights ctx ~level s p n d interiors (acc : Rgb.t) =
+  let lights = ctx.scene.lights in
+  let acc = ref acc in
+  for k = 0 to Array.length lights - 1 do
+    let slot = (2 * k) + if level = 2 then 0 else 1 in
+    let t = light_terms ctx ~slot s p n d interiors lights.(k) in
+    let a = !acc in
+    acc := Rgb.make (f32 (a.r +. t.r)) (f32 (a.g +. t.g)) (f32 (a.b +. t.b))
+  done;
+  !acc
 
 (* ---------------------------------------------------------------------------------------------- *)
 (* Reflectivity (§5.2) *)
@@ -438,7 +443,7 @@ and shade ctx obj sub depth ~level ~weight ~interiors (o : Vec.t) (d : Vec.t) : 
       f32 (if s.refl.fresnel then weight *. Rgb.max3 refl else weight *. Float.max (Rgb.max3 s.refl.rmax) (Rgb.max3 s.refl.rmin))
     in
     let refl = if s.reflects && s.refl.refl_metallic <> 0. then metallic_factor s.refl.refl_metallic ci s.colour refl else refl in
-    let local = if s.lit then Array.fold_left (add_light ctx s p n d interiors) s.emitted sc.lights else s.emitted in
+    let local = if s.lit then add_lights ctx ~level s p n d interiors s.emitted else s.emitted in
     (* §6: transmitted ray *)
     let local, tr, tir =
       if not s.transparent then (local, 0., false)

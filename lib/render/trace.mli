@@ -11,12 +11,16 @@ type ctx = {
   sub : int array;
   stack : float array;
   mstack : float array;
+  shadow_cache : int array;
 }
-(** What a trace reads: the compiled scene, the worker's statistics, and scratch space (the last
-    hit's depth and mesh face, traversal stacks) private to one worker. *)
+(** What a trace reads: the compiled scene, the worker's statistics, scratch space (the last
+    hit's depth and mesh face, traversal stacks) and POV-Ray's shadow cache (§4: per light, the
+    opaque object that last blocked it), all private to one worker. *)
 
 val make_ctx : Compiled.t -> Stats.t -> ctx
-(** [make_ctx scene stats] is a context for one render worker. *)
+(** [make_ctx scene stats] is a context for one render worker, with an empty shadow cache (as at
+    the start of a POV-Ray render thread). The render loop makes one per block, so the image does
+    not depend on which worker renders which blocks. *)
 
 val hit_shape : ctx -> Compiled.shape -> Vec.t -> Vec.t -> float -> float
 (** [hit_shape ctx shape o d lo] is the nearest depth along the unit direction [d] at which the ray
