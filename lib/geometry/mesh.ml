@@ -52,7 +52,7 @@ let build ~(vertices : float array) ~(vertex_normals : float array) ~(fv : int a
     let len = Vec.length s in
     if len > 0. then begin
       (* degenerate faces are dropped (§2.6) *)
-      let s = Vec.make (s.x /. len) (s.y /. len) (s.z /. len) in
+      let s = Vec.scale (1. /. len) s in
       let dist = -.Vec.dot s p1 in
       let axis = Triangle.max3_coordinate (Float.abs s.x) (Float.abs s.y) (Float.abs s.z) in
       let a = fv.(3 * f) and b = fv.((3 * f) + 1) and c = fv.((3 * f) + 2) in
@@ -203,6 +203,19 @@ let is_smooth m k = iget m.fidx ((7 * k) + 3) >= 0
 let normal m k (p : Vec.t) = if is_smooth m k then Vec.normalize (raw_normal m k p) else raw_normal m k p
 
 let texture m k = (iget m.fidx ((7 * k) + 6) lsr 4) - 1
+
+(* Compute_Mesh_BBox: the extent of the (single-precision) corners of the faces. *)
+let extent m =
+  let lo = [| infinity; infinity; infinity |] and hi = [| neg_infinity; neg_infinity; neg_infinity |] in
+  for k = 0 to (3 * m.faces) - 1 do
+    let i = 3 * iget m.fidx (((k / 3) * 7) + (k mod 3)) in
+    for a = 0 to 2 do
+      let x = fget m.vertices (i + a) in
+      if x < lo.(a) then lo.(a) <- x;
+      if x > hi.(a) then hi.(a) <- x
+    done
+  done;
+  if m.faces = 0 then [| 0.; 0.; 0.; 0.; 0.; 0. |] else Array.append lo hi
 
 let bounds m =
   if m.faces = 0 then [| 0.; 0.; 0.; 0.; 0.; 0. |]

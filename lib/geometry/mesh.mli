@@ -56,5 +56,9 @@ val normal : t -> int -> Vec.t -> Vec.t
 val texture : t -> int -> int
 (** [texture m k] is face [k]'s texture index, −1 for the mesh's own. *)
 
+val extent : t -> float array
+(** [extent m] is the exact extent of the faces' corners (min x, y, z, max x, y, z), as POV-Ray
+    computes a mesh's bounding box. *)
+
 val bounds : t -> float array
 (** [bounds m] is the mesh's box: min x, y, z, max x, y, z. *)

@@ -55,6 +55,10 @@ type obj = {
   fade_colour : Rgb.t;
   old_refract : float;  (** legacy finish refraction: the transmitted-colour factor (§2.7, §6.3) *)
   opaque : bool;  (** every surface has filter = transmit = 0: stops a shadow ray at once (§2.7) *)
+  pbox : float array;
+      (** POV-Ray's bounding box of the object, as it stores it: lower corner and lengths, each
+          rounded to single precision ([||] for a plane). Only used to break exact depth ties the
+          way POV-Ray's bounding order does (§2.1). *)
 }
 
 (** A point light with its attenuation settings. *)
@@ -99,4 +103,8 @@ type t = {
   legacy : bool;  (** effective version < 3.70 *)
   camera : Scene.camera;
   start_interiors : int list;  (** interiors containing the camera, last entered first (§6.4) *)
+  bounding : bool;
+      (** POV-Ray builds its bounding hierarchy: the scene has at least 3 top-level objects, light
+          sources and degenerate triangles included (Bounding_Threshold). Without it objects are
+          tested in scene order, which decides exact depth ties. *)
 }

@@ -149,13 +149,68 @@ let hit_shape ctx shape (o : Vec.t) (d : Vec.t) lo =
       end
       else infinity
 
+(* Where the ray enters POV-Ray's box [b] of an object (Check_And_Enqueue, with the ray as Rayinfo
+   holds it: origin and reciprocal direction in single precision, and the slab arithmetic in single
+   precision too), or infinity when it misses the box. *)
+let pov_entry (b : float array) (o : Vec.t) (d : Vec.t) =
+  let bound_huge = 2e10 in
+  let exception Miss in
+  let slab ll len on dn =
+    (* the interval of the slab along the ray, or None for a direction parallel to it *)
+    if dn <> 0. then begin
+      let sd = f32 (1. /. dn) in
+      let near = f32 (f32 (ll -. f32 on) *. sd) in
+      let span = f32 (len *. sd) in
+      Some (if dn > 0. then (near, near +. span) else (near +. span, near))
+    end
+    else
+      let sn = f32 on in
+      if sn < ll || sn > f32 (len +. ll) then raise Miss else None
+  in
+  try
+    let dmin, dmax =
+      match slab b.(0) b.(3) o.x d.x with
+      | Some (lo, hi) -> if hi < epsilon || lo > hi then raise Miss else (lo, hi)
+      | None -> (-.bound_huge, bound_huge)
+    in
+    let narrow ~last (dmin, dmax) = function
+      | None -> (dmin, dmax)
+      | Some (tmin, tmax) ->
+          if tmax < dmax then begin
+            if tmax < epsilon then raise Miss;
+            let dmin =
+              if tmin > dmin then (if tmin > tmax then raise Miss; tmin) else if dmin > tmax then raise Miss else dmin
+            in
+            (* the Z step does not lower dmax: it is not used afterwards *)
+            (dmin, if last then dmax else tmax)
+          end
+          else if tmin > dmin then (if tmin > dmax then raise Miss; (tmin, dmax))
+          else (dmin, dmax)
+    in
+    let r = narrow ~last:false (dmin, dmax) (slab b.(1) b.(4) o.y d.y) in
+    fst (narrow ~last:true r (slab b.(2) b.(5) o.z d.z))
+  with Miss -> infinity
+
+(* Whether [ob], hit at exactly the depth of the current best [cur], replaces it: POV-Ray keeps the
+   first of equal depths it meets. Without its bounding hierarchy it tests the objects in scene
+   order. With it, it tests planes first, then bounded objects in the order the ray enters their
+   boxes; so of two bounded objects the one whose box is entered first wins. (Among planes, the
+   order of its priority queue is not modelled: the first found is kept.) *)
+let wins_tie ctx ob cur (o : Vec.t) (d : Vec.t) =
+  if not ctx.scene.bounding then ob.id < cur
+  else
+    let pb = ctx.scene.objects.(cur).pbox in
+    if Array.length pb = 0 then false
+    else Array.length ob.pbox = 0 || pov_entry ob.pbox o d < pov_entry pb o d
+
 (* The nearest object of [g] hit at a depth in [lo, hi): its id, or −1. Its depth is left in
-   [ctx.depth.(0)] and, for a mesh, its face in [ctx.sub.(0)]. Ties keep the first found. *)
+   [ctx.depth.(0)] and, for a mesh, its face in [ctx.sub.(0)]. Of equal depths the one POV-Ray
+   meets first wins ([wins_tie]). *)
 let nearest ?(hi = infinity) ctx (g : group) (o : Vec.t) (d : Vec.t) lo =
   let best = ref hi and id = ref (-1) and sub = ref (-1) in
   let try_obj ob =
     let t = hit_shape ctx ob.shape o d lo in
-    if t < !best then begin
+    if t < !best || (t = !best && !id >= 0 && wins_tie ctx ob !id o d) then begin
       best := t;
       id := ob.id;
       sub := ctx.sub.(0)
@@ -169,7 +224,7 @@ let nearest ?(hi = infinity) ctx (g : group) (o : Vec.t) (d : Vec.t) lo =
         if r2 = r2 then begin
           (* a sphere, straight from the flat array *)
           let t = sphere_depth ctx.stats (Array.unsafe_get sp (4 * i)) (Array.unsafe_get sp ((4 * i) + 1)) (Array.unsafe_get sp ((4 * i) + 2)) r2 o d lo in
-          if t < !best then begin
+          if t < !best || (t = !best && !id >= 0 && wins_tie ctx (Array.unsafe_get g.bounded i) !id o d) then begin
             best := t;
             id := (Array.unsafe_get g.bounded i).id;
             sub := -1

@@ -190,6 +190,24 @@ let test_shadow_cache () =
   lit "platform shaded at level 2" (shoot ~level:1 ctx platform);
   dark "platform shaded at level 1" (shoot ctx platform)
 
+(* §2.1, §13.22: of equal depths the object POV-Ray meets first wins. A = P1 P2 P3 and
+   B = P1 P2 Q with Q − P2 = 2(P3 − P2) lie in the plane z = 2 + x with bit-identical normals and
+   distances (the cross product exactly doubles), so every ray meets them at exactly the same
+   depth. With fewer than 3 top-level objects (Bounding_Threshold) POV-Ray has no bounding
+   hierarchy and tests them in scene order: the first declared wins. With 3 (here a black light
+   source is the third) it tests them in the order the ray enters their boxes: B's box reaches
+   further up in x and z, so a ray coming down from there meets B first, whatever the order. *)
+let test_depth_ties () =
+  let a = "triangle { <0,1,2>, <0,0,2>, <1,0,3> pigment { rgb <1,0,0> } finish { ambient 1 diffuse 0 } }\n" in
+  let b = "triangle { <0,1,2>, <0,0,2>, <2,0,4> pigment { rgb <0,1,0> } finish { ambient 1 diffuse 0 } }\n" in
+  let light = "light_source { <0,10,0>, rgb 0 }\n" in
+  let o = v 3. 0.3 6. and d = v (-2.7) 0. (-3.7) in
+  let shoot text = trace_text ~interiors:[] (v37 ^ text) o d in
+  result_eq "no hierarchy, A first: A" (1., 0., 0.) (shoot (a ^ b));
+  result_eq "no hierarchy, B first: B" (0., 1., 0.) (shoot (b ^ a));
+  result_eq "hierarchy, A first: B's box first" (0., 1., 0.) (shoot (light ^ a ^ b));
+  result_eq "hierarchy, B first: B's box first" (0., 1., 0.) (shoot (light ^ b ^ a))
+
 let test_shadowless () =
   (* a small sphere on the way to the light at <√3,1,0>, off the camera ray *)
   let blocker = "sphere { <sqrt(3)/2, 0.5, 0>, 0.1 }\n" in
@@ -429,6 +447,7 @@ let tests =
     Alcotest.test_case "shadows" `Quick test_shadows;
     Alcotest.test_case "shadow with interior fade" `Quick test_shadow_fade;
     Alcotest.test_case "shadow cache" `Quick test_shadow_cache;
+    Alcotest.test_case "equal depths" `Quick test_depth_ties;
     Alcotest.test_case "shadowless light" `Quick test_shadowless;
     Alcotest.test_case "miss" `Quick test_miss;
     Alcotest.test_case "reflection" `Quick test_reflection;
