@@ -1,5 +1,6 @@
 (* Triangle meshes as POV-Ray stores them (POVRAY-3.7 §2.6): single-precision vertices and normals,
-   each face with its plane (the normal rounded to single precision, the distance kept in double),
+   each face with its plane (normal and distance computed in double, both stored in single
+   precision: MESH_TRIANGLE's Distance is an SNGL),
    its dominant axis and swap, and a BVH over the faces. Built once; instances share it. The
    single-precision data is stored in single precision, which also halves its memory. *)
 
@@ -12,7 +13,7 @@ type t = {
   vertices : f32s;  (* x y z per vertex *)
   vnormals : f32s;  (* x y z per vertex normal *)
   fgeom : f32s;  (* 6 per face: face normal x y z, Perp x y z *)
-  fdist : float array;  (* 1 per face: plane distance *)
+  fdist : float array;  (* 1 per face: plane distance, a single-precision value *)
   fidx : i32s;  (* 7 per face: v1 v2 v3, n1 n2 n3 (−1: flat), axis + 4·vaxis + 16·(texture + 1) *)
   faces : int;
   bvh : Bvh.t;
@@ -51,7 +52,7 @@ let build ~(vertices : float array) ~(vertex_normals : float array) ~(fv : int a
     let len = Vec.length s in
     if len > 0. then begin
       (* degenerate faces are dropped (§2.6) *)
-      let s = Vec.make (s.x /. len) (s.y /. len) (s.z /. len) in
+      let s = Vec.scale (1. /. len) s in
       let dist = -.Vec.dot s p1 in
       let axis = Triangle.max3_coordinate (Float.abs s.x) (Float.abs s.y) (Float.abs s.z) in
       let a = fv.(3 * f) and b = fv.((3 * f) + 1) and c = fv.((3 * f) + 2) in
@@ -70,7 +71,9 @@ let build ~(vertices : float array) ~(vertex_normals : float array) ~(fv : int a
       in
       let perp, vaxis = Triangle.smooth_setup ~round:round_vec p1 p2 p3 in
       let k = !n in
-      fdist.(k) <- dist;
+      (* SNGL Distance: far from the origin this rounding moves the plane by up to half a float
+         step of the coordinates (4e-3 at 1e5) *)
+      fdist.(k) <- f32 dist;
       let g = 6 * k in
       Array1.unsafe_set fgeom g s.x;
       Array1.unsafe_set fgeom (g + 1) s.y;
@@ -204,6 +207,19 @@ let is_smooth m k = iget m.fidx ((7 * k) + 3) >= 0
 let normal m k (p : Vec.t) = if is_smooth m k then Vec.normalize (raw_normal m k p) else raw_normal m k p
 
 let texture m k = (iget m.fidx ((7 * k) + 6) lsr 4) - 1
+
+(* Compute_Mesh_BBox: the extent of the (single-precision) corners of the faces. *)
+let extent m =
+  let lo = [| infinity; infinity; infinity |] and hi = [| neg_infinity; neg_infinity; neg_infinity |] in
+  for k = 0 to (3 * m.faces) - 1 do
+    let i = 3 * iget m.fidx (((k / 3) * 7) + (k mod 3)) in
+    for a = 0 to 2 do
+      let x = fget m.vertices (i + a) in
+      if x < lo.(a) then lo.(a) <- x;
+      if x > hi.(a) then hi.(a) <- x
+    done
+  done;
+  if m.faces = 0 then [| 0.; 0.; 0.; 0.; 0.; 0. |] else Array.append lo hi
 
 let bounds m =
   if m.faces = 0 then [| 0.; 0.; 0.; 0.; 0.; 0. |]

@@ -8,7 +8,7 @@ type t = private {
   vertices : f32s;  (** x y z per vertex *)
   vnormals : f32s;  (** x y z per vertex normal *)
   fgeom : f32s;  (** 6 per face: face normal x y z, Perp x y z *)
-  fdist : float array;  (** 1 per face: the plane distance, in double precision *)
+  fdist : float array;  (** 1 per face: the plane distance, computed in double precision and rounded to single *)
   fidx : i32s;  (** 7 per face: v1 v2 v3, n1 n2 n3 (−1 when flat), axis + 4·vaxis + 16·(texture + 1) *)
   faces : int;
   bvh : Bvh.t;
@@ -64,6 +64,10 @@ val normal : t -> int -> Vec.t -> Vec.t
 
 val texture : t -> int -> int
 (** [texture m k] is face [k]'s texture index, −1 for the mesh's own. *)
+
+val extent : t -> float array
+(** [extent m] is the exact extent of the faces' corners (min x, y, z, max x, y, z), as POV-Ray
+    computes a mesh's bounding box. *)
 
 val bounds : t -> float array
 (** [bounds m] is the mesh's box: min x, y, z, max x, y, z. *)

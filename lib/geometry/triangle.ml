@@ -40,7 +40,8 @@ let smooth_setup ~round (p1 : Vec.t) (p2 : Vec.t) (p3 : Vec.t) =
   let t1 = Vec.scale proj t1 in
   let perp = round (Vec.normalize (Vec.sub t1 t2)) in
   let uden = -.Vec.dot t2 perp in
-  (round (Vec.make (perp.x /. uden) (perp.y /. uden) (perp.z /. uden)), vaxis)
+  (* VInverseScaleEq: times the reciprocal *)
+  (round (Vec.scale (1. /. uden) perp), vaxis)
 
 let zero = Vec.zero
 
@@ -59,7 +60,7 @@ let flat p1 p2 p3 =
   let len = Vec.length n in
   if len = 0. then None
   else
-    let n = Vec.make (n.x /. len) (n.y /. len) (n.z /. len) in
+    let n = Vec.scale (1. /. len) n in
     let dist = -.Vec.dot n p1 in
     let axis = max3_coordinate (Float.abs n.x) (Float.abs n.y) (Float.abs n.z) in
     let p1, p2 = if needs_swap axis p1 p2 p3 then (p2, p1) else (p1, p2) in
@@ -72,7 +73,7 @@ let smooth p1 n1 p2 n2 p3 n3 =
   let len = Vec.length n in
   if len = 0. then None
   else
-    let n = Vec.make (n.x /. len) (n.y /. len) (n.z /. len) in
+    let n = Vec.scale (1. /. len) n in
     let dist = -.Vec.dot n p1 in
     let axis = max3_coordinate (Float.abs n.x) (Float.abs n.y) (Float.abs n.z) in
     let p1, p2, n1, n2 = if needs_swap axis p1 p2 p3 then (p2, p1, n2, n1) else (p1, p2, n1, n2) in

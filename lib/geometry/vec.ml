@@ -19,9 +19,14 @@ let[@inline] cross a b =
 let[@inline] length2 a = dot a a
 let[@inline] length a = sqrt (dot a a)
 
+(* VNormalize: times the reciprocal of the length, as POV-Ray does (not a division, which can
+   differ in the last bit) *)
 let[@inline] normalize a =
   let l = length a in
-  if l = 0. then a else { x = a.x /. l; y = a.y /. l; z = a.z /. l }
+  if l = 0. then a
+  else
+    let k = 1. /. l in
+    { x = a.x *. k; y = a.y *. k; z = a.z *. k }
 
 let[@inline] madd a s b = { x = a.x +. (s *. b.x); y = a.y +. (s *. b.y); z = a.z +. (s *. b.z) }
 let to_string a = Printf.sprintf "<%g, %g, %g>" a.x a.y a.z

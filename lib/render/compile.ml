@@ -1,6 +1,7 @@
 open Compiled
 
 let epsilon = 1e-10
+let f32 x = Int32.float_of_bits (Int32.bits_of_float x)
 
 (* A shape ready to trace; None for a triangle that POV-Ray never hits (no area, or a standalone
    smooth triangle whose vertex normals straddle its face). *)
@@ -69,6 +70,35 @@ let magnitude shape =
       max_abs [| q.x; q.y; q.z |]
   | None, (Sphere _ | Ellipsoid _ | Triangle _ | Smooth_triangle _ | Mesh _) -> 0.
 
+(* POV-Ray's box of a bounded shape (Compute_BBox, then Make_BBox or Make_BBox_from_min_max, which
+   round the lower corner and the lengths to single precision): [| llx; lly; llz; lx; ly; lz |].
+   A sphere's is its centre minus the radius and twice the radius; a triangle's its corners' extent
+   widened by EPSILON; a mesh's its single-precision vertices' extent; a transformed sphere or
+   mesh's the box of its untransformed box's mapped corners (Recompute_BBox; POV-Ray does that once
+   per transformation, here once for their composition). *)
+let pov_box shape =
+  let of_min_max (lo : float array) (hi : float array) = Array.init 6 (fun i -> if i < 3 then f32 lo.(i) else f32 (hi.(i - 3) -. lo.(i - 3))) in
+  let corners (b : float array) = ([| b.(0); b.(1); b.(2) |], [| b.(0) +. b.(3); b.(1) +. b.(4); b.(2) +. b.(5) |]) in
+  let mapped tr b =
+    let lo, hi = corners b in
+    let m = Transform.bounds tr (Array.append lo hi) in
+    of_min_max (Array.sub m 0 3) (Array.sub m 3 3)
+  in
+  let sphere_box (s : sphere) =
+    let r = s.radius in
+    [| f32 (s.cx -. r); f32 (s.cy -. r); f32 (s.cz -. r); f32 (2. *. r); f32 (2. *. r); f32 (2. *. r) |]
+  in
+  match shape with
+  | Sphere s -> sphere_box s
+  | Ellipsoid { sp; etr } -> mapped etr (sphere_box sp)
+  | Plane _ | Plane_trans _ -> [||]
+  | Triangle t | Smooth_triangle t ->
+      let mn a b c = Float.min a (Float.min b c) -. epsilon and mx a b c = Float.max a (Float.max b c) +. epsilon in
+      of_min_max [| mn t.x1 t.x2 t.x3; mn t.y1 t.y2 t.y3; mn t.z1 t.z2 t.z3 |] [| mx t.x1 t.x2 t.x3; mx t.y1 t.y2 t.y3; mx t.z1 t.z2 t.z3 |]
+  | Mesh m ->
+      let b = of_min_max (Array.sub (Mesh.extent m.mesh) 0 3) (Array.sub (Mesh.extent m.mesh) 3 3) in
+      if m.moved then mapped m.tr b else b
+
 let group objs =
   let unbounded = List.filter (fun o -> bounds o.shape = None) objs in
   let bounded = List.filter (fun o -> bounds o.shape <> None) objs in
@@ -88,7 +118,6 @@ let group objs =
 
 (* POV-Ray stores colours in single precision (§8.3); rounding the stored values the same way keeps
    results on the same side of the 8-bit rounding boundaries. *)
-let f32 x = Int32.float_of_bits (Int32.bits_of_float x)
 let rgb32 (c : Rgb.t) = Rgb.make (f32 c.r) (f32 c.g) (f32 c.b)
 
 let colour32 (c : Colour.t) =
@@ -193,6 +222,8 @@ let scene (s : Scene.t) : Compiled.t =
              old_refract = f32 o.texture.finish.refraction;
              opaque = (not surf.transparent) && Array.for_all (fun (f : surface) -> not f.transparent) face_surfs;
              mag = magnitude shape;
+
+             pbox = pov_box shape;
            })
          visible)
   in
@@ -239,4 +270,5 @@ let scene (s : Scene.t) : Compiled.t =
     legacy;
     camera = s.camera;
     start_interiors;
+    bounding = List.length s.objects + List.length s.lights >= 3;
   }

@@ -58,6 +58,10 @@ type obj = {
   mag : float;
       (** the largest coordinate magnitude the shape's intersection works with (its box, or a
           plane's point nearest the origin): the scale of its rounding errors, for the robust mode *)
+  pbox : float array;
+      (** POV-Ray's bounding box of the object, as it stores it: lower corner and lengths, each
+          rounded to single precision ([||] for a plane). Only used to break exact depth ties the
+          way POV-Ray's bounding order does (§2.1). *)
 }
 
 (** A point light with its attenuation settings. *)
@@ -75,7 +79,7 @@ type light = {
 (** How a shadow ray is answered, chosen once for the scene (§4). *)
 type shadow_mode =
   | No_occluders  (** nothing casts shadows *)
-  | Any_hit  (** every occluder is opaque: a yes/no test *)
+  | Any_hit  (** every occluder is opaque: the first surface met decides *)
   | Filtered  (** some occluder is transparent: walk every crossing *)
 
 (** Objects as the tracer searches them: unbounded ones (planes) one by one, the others through a
@@ -102,4 +106,8 @@ type t = {
   legacy : bool;  (** effective version < 3.70 *)
   camera : Scene.camera;
   start_interiors : int list;  (** interiors containing the camera, last entered first (§6.4) *)
+  bounding : bool;
+      (** POV-Ray builds its bounding hierarchy: the scene has at least 3 top-level objects, light
+          sources and degenerate triangles included (Bounding_Threshold). Without it objects are
+          tested in scene order, which decides exact depth ties. *)
 }

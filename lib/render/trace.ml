@@ -24,9 +24,13 @@ type ctx = {
   lim : Limits.t;  (* the depths shapes accept *)
   min_depth : float;  (* the nearest depth any ray accepts *)
   robust : bool;  (* secondary rays leave from points lifted off the surface *)
+  shadow_cache : int array;  (* §4: per light, the opaque object that last blocked it, or −1 *)
 }
 
+(* POV-Ray keeps two cache slots per light: one for the shadow tests made while shading a hit at
+   trace level 2 (lightSourceLevel1ShadowCache) and one for every other level. *)
 let make_ctx ?(robust = false) scene stats =
+  let slots = 2 * max 1 (Array.length scene.lights) in
   {
     scene;
     stats;
@@ -37,6 +41,7 @@ let make_ctx ?(robust = false) scene stats =
     lim = (if robust then Limits.robust else Limits.pov);
     min_depth = (if robust then 0. else min_isect_depth);
     robust;
+    shadow_cache = Array.make slots (-1);
   }
 let black = { r = 0.; g = 0.; b = 0.; tr = 0. }
 
@@ -157,13 +162,68 @@ let hit_shape ctx shape (o : Vec.t) (d : Vec.t) lo =
       end
       else infinity
 
-(* The nearest object of [g] hit at depth ≥ [lo]: its id, or −1. Its depth is left in
-   [ctx.depth.(0)] and, for a mesh, its face in [ctx.sub.(0)]. Ties keep the first found. *)
-let nearest ctx (g : group) (o : Vec.t) (d : Vec.t) lo =
-  let best = ref infinity and id = ref (-1) and sub = ref (-1) in
+(* Where the ray enters POV-Ray's box [b] of an object (Check_And_Enqueue, with the ray as Rayinfo
+   holds it: origin and reciprocal direction in single precision, and the slab arithmetic in single
+   precision too), or infinity when it misses the box. *)
+let pov_entry (b : float array) (o : Vec.t) (d : Vec.t) =
+  let bound_huge = 2e10 in
+  let exception Miss in
+  let slab ll len on dn =
+    (* the interval of the slab along the ray, or None for a direction parallel to it *)
+    if dn <> 0. then begin
+      let sd = f32 (1. /. dn) in
+      let near = f32 (f32 (ll -. f32 on) *. sd) in
+      let span = f32 (len *. sd) in
+      Some (if dn > 0. then (near, near +. span) else (near +. span, near))
+    end
+    else
+      let sn = f32 on in
+      if sn < ll || sn > f32 (len +. ll) then raise Miss else None
+  in
+  try
+    let dmin, dmax =
+      match slab b.(0) b.(3) o.x d.x with
+      | Some (lo, hi) -> if hi < epsilon || lo > hi then raise Miss else (lo, hi)
+      | None -> (-.bound_huge, bound_huge)
+    in
+    let narrow ~last (dmin, dmax) = function
+      | None -> (dmin, dmax)
+      | Some (tmin, tmax) ->
+          if tmax < dmax then begin
+            if tmax < epsilon then raise Miss;
+            let dmin =
+              if tmin > dmin then (if tmin > tmax then raise Miss; tmin) else if dmin > tmax then raise Miss else dmin
+            in
+            (* the Z step does not lower dmax: it is not used afterwards *)
+            (dmin, if last then dmax else tmax)
+          end
+          else if tmin > dmin then (if tmin > dmax then raise Miss; (tmin, dmax))
+          else (dmin, dmax)
+    in
+    let r = narrow ~last:false (dmin, dmax) (slab b.(1) b.(4) o.y d.y) in
+    fst (narrow ~last:true r (slab b.(2) b.(5) o.z d.z))
+  with Miss -> infinity
+
+(* Whether [ob], hit at exactly the depth of the current best [cur], replaces it: POV-Ray keeps the
+   first of equal depths it meets. Without its bounding hierarchy it tests the objects in scene
+   order. With it, it tests planes first, then bounded objects in the order the ray enters their
+   boxes; so of two bounded objects the one whose box is entered first wins. (Among planes, the
+   order of its priority queue is not modelled: the first found is kept.) *)
+let wins_tie ctx ob cur (o : Vec.t) (d : Vec.t) =
+  if not ctx.scene.bounding then ob.id < cur
+  else
+    let pb = ctx.scene.objects.(cur).pbox in
+    if Array.length pb = 0 then false
+    else Array.length ob.pbox = 0 || pov_entry ob.pbox o d < pov_entry pb o d
+
+(* The nearest object of [g] hit at a depth in [lo, hi): its id, or −1. Its depth is left in
+   [ctx.depth.(0)] and, for a mesh, its face in [ctx.sub.(0)]. Of equal depths the one POV-Ray
+   meets first wins ([wins_tie]). *)
+let nearest ?(hi = infinity) ctx (g : group) (o : Vec.t) (d : Vec.t) lo =
+  let best = ref hi and id = ref (-1) and sub = ref (-1) in
   let try_obj ob =
     let t = hit_shape ctx ob.shape o d lo in
-    if t < !best then begin
+    if t < !best || (t = !best && !id >= 0 && wins_tie ctx ob !id o d) then begin
       best := t;
       id := ob.id;
       sub := ctx.sub.(0)
@@ -172,12 +232,12 @@ let nearest ctx (g : group) (o : Vec.t) (d : Vec.t) lo =
   Array.iter try_obj g.unbounded;
   let sp = g.spheres in
   if g.bvh.nodes > 0 then
-    Bvh.walk g.bvh ctx.stack o.x o.y o.z d.x d.y d.z infinity (fun i ->
+    Bvh.walk g.bvh ctx.stack o.x o.y o.z d.x d.y d.z hi (fun i ->
         let r2 = Array.unsafe_get sp ((4 * i) + 3) in
         if r2 = r2 then begin
           (* a sphere, straight from the flat array *)
           let t = sphere_depth ctx.stats ctx.lim (Array.unsafe_get sp (4 * i)) (Array.unsafe_get sp ((4 * i) + 1)) (Array.unsafe_get sp ((4 * i) + 2)) r2 o d lo in
-          if t < !best then begin
+          if t < !best || (t = !best && !id >= 0 && wins_tie ctx (Array.unsafe_get g.bounded i) !id o d) then begin
             best := t;
             id := (Array.unsafe_get g.bounded i).id;
             sub := -1
@@ -188,25 +248,6 @@ let nearest ctx (g : group) (o : Vec.t) (d : Vec.t) lo =
   ctx.depth.(0) <- !best;
   ctx.sub.(0) <- !sub;
   !id
-
-(* Whether some object of [g] is hit at a depth in [lo, hi). *)
-let any_hit ctx (g : group) (o : Vec.t) (d : Vec.t) lo hi =
-  let hit ob = hit_shape ctx ob.shape o d lo < hi in
-  Array.exists hit g.unbounded
-  ||
-  let found = ref false in
-  let sp = g.spheres in
-  if g.bvh.nodes > 0 then
-    Bvh.walk g.bvh ctx.stack o.x o.y o.z d.x d.y d.z hi (fun i ->
-        if not !found then begin
-          let r2 = Array.unsafe_get sp ((4 * i) + 3) in
-          if r2 = r2 then begin
-            if sphere_depth ctx.stats ctx.lim (Array.unsafe_get sp (4 * i)) (Array.unsafe_get sp ((4 * i) + 1)) (Array.unsafe_get sp ((4 * i) + 2)) r2 o d lo < hi then found := true
-          end
-          else if hit g.bounded.(i) then found := true
-        end;
-        if !found then neg_infinity else hi);
-  !found
 
 (* The surface at a hit: a mesh face may carry its own texture. *)
 let surface_of obj sub =
@@ -287,26 +328,44 @@ let[@inline] fade_factor fade_colour fade_distance fade_power depth (c : Rgb.t) 
 let rec remove id = function [] -> [] | x :: rest -> if x = id then rest else x :: remove id rest
 
 (* The light colour [lc] after the shadow ray from [p] (on a surface with geometric normal [ng] and
-   error bound [e]) towards the light at [dist]. POV-Ray counts hits from 1e-3 to the light
-   minus 1e-3; the robust mode counts every hit from the lifted origin to the light minus a
-   relative margin. *)
-let shadow ctx (p : Vec.t) (ng : Vec.t) e (l : Vec.t) dist interiors (lc : Rgb.t) : Rgb.t =
+   error bound [e], for the robust mode) towards the light at [dist]; [slot] is the light's
+   shadow-cache slot.
+   §4, TracePointLightShadowRay: the opaque object that last blocked this light (in this worker, at
+   this kind of level) is tested first, for a hit from MIN_ISECT_DEPTH (1e-4) to the light itself,
+   not from 1e-3 to the light minus 1e-3; a hit there is a full shadow. Otherwise the nearest
+   blocker is searched for as usual, and if the first surface met is opaque it becomes the cached
+   object. The cache is what makes a blocker closer than 1e-3 (but beyond 1e-4) shadow a point
+   right after a neighbouring point was shadowed by it.
+   The robust mode counts every hit from the lifted origin to the light minus a relative margin,
+   the cached object's too. *)
+let shadow ctx ~slot (p : Vec.t) (ng : Vec.t) e (l : Vec.t) dist interiors (lc : Rgb.t) : Rgb.t =
   let sc = ctx.scene in
   ctx.stats.shadow_rays <- ctx.stats.shadow_rays + 1;
-  let lo, margin =
-    if ctx.robust then (0., (1e-9 *. dist) +. error_bound p (Vec.madd p dist l) dist) else (shadow_tolerance, shadow_tolerance)
-  in
+  let lo = if ctx.robust then 0. else shadow_tolerance in
+  let margin = if ctx.robust then (1e-9 *. dist) +. error_bound p (Vec.madd p dist l) dist else shadow_tolerance in
   match sc.shadow_mode with
   | No_occluders -> lc
-  | Any_hit -> if any_hit ctx sc.occluders (origin ctx p ng e l) l lo (dist -. margin) then Rgb.black else lc
-  | Filtered ->
-      let rec walk (o : Vec.t) remaining interiors (lc : Rgb.t) =
-        let i = nearest ctx sc.occluders o l lo in
+  | Any_hit | Filtered ->
+      let o = origin ctx p ng e l in
+      let cached = ctx.shadow_cache.(slot) in
+      let in_cache =
+        cached >= 0
+        &&
+        if ctx.robust then hit_shape ctx sc.objects.(cached).shape o l lo < dist -. margin
+        else hit_shape ctx sc.objects.(cached).shape p l min_isect_depth < dist
+      in
+      if in_cache then Rgb.black
+      else
+      let rec walk first (o : Vec.t) remaining interiors (lc : Rgb.t) =
+        let i = nearest ~hi:remaining ctx sc.occluders o l lo in
         let t = ctx.depth.(0) in
         if i < 0 || t >= remaining -. margin then lc
         else
           let obj = sc.objects.(i) in
-          if obj.opaque then Rgb.black
+          if obj.opaque then begin
+            if first then ctx.shadow_cache.(slot) <- i;
+            Rgb.black
+          end
           else
             let f = (surface_of obj ctx.sub.(0)).filcol in
             let f =
@@ -324,9 +383,9 @@ let shadow ctx (p : Vec.t) (ng : Vec.t) e (l : Vec.t) dist interiors (lc : Rgb.t
                 let q = refine obj q in
                 origin ctx q (geometric_normal obj sub q) (error_bound o q obj.mag) l
             in
-            walk next (remaining -. t) interiors lc
+            walk false next (remaining -. t) interiors lc
       in
-      walk (origin ctx p ng e l) dist interiors lc
+      walk true o dist interiors lc
 
 (* ---------------------------------------------------------------------------------------------- *)
 (* Local illumination (§3.3, §3.4) *)
@@ -342,7 +401,7 @@ let metallic_factor metallic cos_angle (c : Rgb.t) (lc : Rgb.t) =
 
 (* One light's diffuse, phong and specular terms, summed in single precision the way POV-Ray sums
    them: per light first, then into the surface colour. *)
-let light_terms ctx (s : surface) (p : Vec.t) (n : Vec.t) ng e (d : Vec.t) interiors (lt : light) : Rgb.t =
+let light_terms ctx ~slot (s : surface) (p : Vec.t) (n : Vec.t) ng e (d : Vec.t) interiors (lt : light) : Rgb.t =
   let acc = Rgb.black in
   let lvx = lt.lx -. p.x and lvy = lt.ly -. p.y and lvz = lt.lz -. p.z in
   let dist = sqrt ((lvx *. lvx) +. (lvy *. lvy) +. (lvz *. lvz)) in
@@ -359,7 +418,7 @@ let light_terms ctx (s : surface) (p : Vec.t) (n : Vec.t) ng e (d : Vec.t) inter
     let nl = Vec.dot n l in
     if nl < epsilon then Rgb.black
     else
-      let lc = if lt.shadowless then lc else shadow ctx p ng e l dist interiors lc in
+      let lc = if lt.shadowless then lc else shadow ctx ~slot p ng e l dist interiors lc in
       if Float.abs lc.r <= epsilon && Float.abs lc.g <= epsilon && Float.abs lc.b <= epsilon then Rgb.black
       else
         let acc =
@@ -397,9 +456,16 @@ let light_terms ctx (s : surface) (p : Vec.t) (n : Vec.t) ng e (d : Vec.t) inter
             else acc
           else acc
 
-let add_light ctx s p n ng e d interiors (acc : Rgb.t) lt =
-  let t = light_terms ctx s p n ng e d interiors lt in
-  Rgb.make (f32 (acc.r +. t.r)) (f32 (acc.g +. t.g)) (f32 (acc.b +. t.b))
+let add_lights ctx ~level s p n ng e d interiors (acc : Rgb.t) =
+  let lights = ctx.scene.lights in
+  let acc = ref acc in
+  for k = 0 to Array.length lights - 1 do
+    let slot = (2 * k) + if level = 2 then 0 else 1 in
+    let t = light_terms ctx ~slot s p n ng e d interiors lights.(k) in
+    let a = !acc in
+    acc := Rgb.make (f32 (a.r +. t.r)) (f32 (a.g +. t.g)) (f32 (a.b +. t.b))
+  done;
+  !acc
 
 (* ---------------------------------------------------------------------------------------------- *)
 (* Reflectivity (§5.2) *)
@@ -507,7 +573,7 @@ and shade ctx obj sub depth ~level ~weight ~interiors (o : Vec.t) (d : Vec.t) : 
       f32 (if s.refl.fresnel then weight *. Rgb.max3 refl else weight *. Float.max (Rgb.max3 s.refl.rmax) (Rgb.max3 s.refl.rmin))
     in
     let refl = if s.reflects && s.refl.refl_metallic <> 0. then metallic_factor s.refl.refl_metallic ci s.colour refl else refl in
-    let local = if s.lit then Array.fold_left (add_light ctx s p n ng e d interiors) s.emitted sc.lights else s.emitted in
+    let local = if s.lit then add_lights ctx ~level s p n ng e d interiors s.emitted else s.emitted in
     (* §6: transmitted ray *)
     let local, tr, tir =
       if not s.transparent then (local, 0., false)

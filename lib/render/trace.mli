@@ -14,15 +14,19 @@ type ctx = {
   lim : Limits.t;
   min_depth : float;
   robust : bool;
+  shadow_cache : int array;
 }
 (** What a trace reads: the compiled scene, the worker's statistics, scratch space (the last
-    hit's depth and mesh face, traversal stacks) private to one worker, and the mode's limits:
-    the depths shapes accept, the nearest depth any ray accepts (1e-4, §2.1), and whether
-    secondary rays leave from points lifted off the surface (robust mode). *)
+    hit's depth and mesh face, traversal stacks) and POV-Ray's shadow cache (§4: per light, the
+    opaque object that last blocked it), all private to one worker; and the mode's limits: the
+    depths shapes accept, the nearest depth any ray accepts (1e-4, §2.1), and whether secondary
+    rays leave from points lifted off the surface (robust mode). *)
 
 val make_ctx : ?robust:bool -> Compiled.t -> Stats.t -> ctx
-(** [make_ctx ?robust scene stats] is a context for one render worker; [robust] (default false)
-    selects the robust mode's limits instead of POV-Ray's. *)
+(** [make_ctx ?robust scene stats] is a context for one render worker, with an empty shadow cache
+    (as at the start of a POV-Ray render thread); [robust] (default false) selects the robust
+    mode's limits instead of POV-Ray's. The render loop makes one per block, so the image does not
+    depend on which worker renders which blocks. *)
 
 val hit_shape : ctx -> Compiled.shape -> Vec.t -> Vec.t -> float -> float
 (** [hit_shape ctx shape o d lo] is the nearest depth along the unit direction [d] at which the ray

@@ -98,8 +98,9 @@ let parse_global_settings st =
         loop ()
     | Ident "max_trace_level" ->
         advance st;
-        (* §7: clipped to 1 … 256 *)
+        (* §7: clipped to 1 … 256; POV-Ray warns above 256 (not below 1) *)
         let n = int_of_float (parse_float st) in
+        if n > 256 then warn st loc "Maximum max_trace_level is 256 but %d was specified. Going to use max_trace_level 256." n;
         st.max_trace_level <- max 1 (min 256 n);
         loop ()
     | Ident "adc_bailout" -> advance st; st.adc_bailout <- parse_float st; loop ()

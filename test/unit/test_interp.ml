@@ -322,7 +322,17 @@ let test_global_settings () =
   rgb_eq "ambient_light" (Rgb.make 0.5 1. 1.) s.ambient_light;
   (* §7: clipped to 1 … 256 *)
   Alcotest.(check int) "max_trace_level 0 → 1" 1 (scene "global_settings { max_trace_level 0 }").max_trace_level;
-  Alcotest.(check int) "max_trace_level 300 → 256" 256 (scene "global_settings { max_trace_level 300 }").max_trace_level
+  Alcotest.(check int) "max_trace_level 300 → 256" 256 (scene "global_settings { max_trace_level 300 }").max_trace_level;
+  (* POV-Ray warns above 256 (its wording), not at 256 and not below 1 *)
+  let one_warning text =
+    match warnings text with
+    | [ w ] -> w.Error.msg
+    | l -> Alcotest.failf "expected one warning, got %d" (List.length l)
+  in
+  check_contains "above 256" ~sub:"Maximum max_trace_level is 256 but 300 was specified. Going to use max_trace_level 256."
+    (one_warning "#version 3.7;\nglobal_settings { assumed_gamma 1 max_trace_level 300 }");
+  Alcotest.(check int) "256: no warning" 0 (List.length (warnings "#version 3.7;\nglobal_settings { assumed_gamma 1 max_trace_level 256 }"));
+  Alcotest.(check int) "0: no warning" 0 (List.length (warnings "#version 3.7;\nglobal_settings { assumed_gamma 1 max_trace_level 0 }"))
 
 (* ---- finishes (§5.1, §10.1) ---- *)
 

@@ -44,13 +44,20 @@ let test_single_precision () =
   let hit = [| 0. |] in
   Alcotest.(check int) "mesh2 hit" 0 (Mesh.nearest m (stack ()) (v 0.2 0.2 0.) plus_z 0. hit);
   float_eq ~eps:1e-15 "mesh2 depth" (f32 0.1) hit.(0);
-  (* mesh: the vertices are floats too, but Distance comes from the parsed doubles: exactly 0.1 *)
+  (* mesh: the vertices are floats too; Distance is computed from the parsed doubles, and like
+     mesh2's it is stored in single precision (MESH_TRIANGLE's SNGL Distance) *)
   let m, _, _ = mesh_of "mesh { triangle { <0.1,0,0.1>, <1,0,0.1>, <0,1,0.1> } }" in
   float_eq ~eps:0. "mesh x" (f32 0.1) m.vertices.{0};
   float_eq ~eps:0. "mesh z" (f32 0.1) m.vertices.{2};
-  float_eq ~eps:0. "mesh distance from doubles" 0.1 m.fdist.(0);
+  float_eq ~eps:0. "mesh distance, single precision" (f32 0.1) m.fdist.(0);
   Alcotest.(check int) "mesh hit" 0 (Mesh.nearest m (stack ()) (v 0.2 0.2 0.) plus_z 0. hit);
-  float_eq ~eps:1e-15 "mesh depth" 0.1 hit.(0);
+  float_eq ~eps:1e-15 "mesh depth" (f32 0.1) hit.(0);
+  (* far from the origin the rounding shows: the plane z = 100000.3 is stored at the nearest
+     float, 100000.296875 (floats are 1/128 apart there), and is hit there *)
+  let m, _, _ = mesh_of "mesh { triangle { <1e5,0,100000.3>, <100001,0,100000.3>, <1e5,1,100000.3> } }" in
+  float_eq ~eps:0. "far distance" 100000.296875 m.fdist.(0);
+  Alcotest.(check int) "far hit" 0 (Mesh.nearest m (stack ()) (v 100000.2 0.2 0.) plus_z 0. hit);
+  float_eq ~eps:0. "far depth" 100000.296875 hit.(0);
   (* normal_vectors are normalised, then stored as floats: <0,3,4>/5 = <0,0.6,0.8> *)
   let m, _, _ =
     mesh_of

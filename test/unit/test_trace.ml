@@ -157,6 +157,57 @@ let test_shadow_fade () =
   result_eq "no fade in shadow without fade_power" (1.2, 1.2, 1.2)
     (shadow_ray "sphere { <0,5,0>, 1 pigment { rgbt <1,1,1,1> } interior { fade_distance 1 } }")
 
+(* §4, TracePointLightShadowRay: the opaque object that last blocked a light is tested first, with
+   hits from 1e-4 (not 1e-3) counting. A sheet 5e-4 above a platform does not shadow it (closer
+   than the 1e-3 shadow tolerance) — unless the previous shadow test of that light, at the same
+   kind of trace level, was blocked by the sheet. *)
+let test_shadow_cache () =
+  let c =
+    compile
+      (v37
+     ^ "light_source { <0,10,0>, rgb 1 }\n\
+        #declare White = texture { pigment { rgb 1 } finish { ambient 0 diffuse 1 } }\n\
+        triangle { <-2,0.0005,-2>, <2,0.0005,-2>, <0,0.0005,3> }\n\
+        triangle { <-0.2,0,-0.2>, <0.2,0,-0.2>, <0,0,0.3> texture { White } }\n\
+        plane { y, -1 texture { White } }")
+  in
+  (* camera rays grazing in from z = −1: to the platform at (0,0,0), under the sheet, and to the
+     floor at (0.5,−1,0), whose shadow ray crosses the sheet 1 unit up *)
+  let platform = v 0. 0.0003 (-1.) and floor = v 0.5 (-0.9997) (-1.) in
+  let dir = Vec.normalize (v 0. (-0.0003) 1.) in
+  let shoot ?(level = 0) ctx o = Trace.trace ctx ~level ~weight:1. ~interiors:[] ~continued:false o dir in
+  let lit msg (r : Trace.result) = Alcotest.(check bool) (msg ^ ": lit") true (r.r > 0.9) in
+  let dark msg (r : Trace.result) = Alcotest.(check bool) (msg ^ ": in shadow") true (r.r = 0.) in
+  let fresh () = Trace.make_ctx c (Stats.create ()) in
+  lit "platform, empty cache" (shoot (fresh ()) platform);
+  dark "floor, under the sheet" (shoot (fresh ()) floor);
+  let ctx = fresh () in
+  dark "floor first" (shoot ctx floor);
+  dark "then the platform: the cached sheet is hit at 5e-4" (shoot ctx platform);
+  (* the slot for hits shaded at trace level 2 is separate from the one for level 1 *)
+  let ctx = fresh () in
+  dark "floor, level 1" (shoot ctx floor);
+  lit "platform shaded at level 2" (shoot ~level:1 ctx platform);
+  dark "platform shaded at level 1" (shoot ctx platform)
+
+(* §2.1, §13.22: of equal depths the object POV-Ray meets first wins. A = P1 P2 P3 and
+   B = P1 P2 Q with Q − P2 = 2(P3 − P2) lie in the plane z = 2 + x with bit-identical normals and
+   distances (the cross product exactly doubles), so every ray meets them at exactly the same
+   depth. With fewer than 3 top-level objects (Bounding_Threshold) POV-Ray has no bounding
+   hierarchy and tests them in scene order: the first declared wins. With 3 (here a black light
+   source is the third) it tests them in the order the ray enters their boxes: B's box reaches
+   further up in x and z, so a ray coming down from there meets B first, whatever the order. *)
+let test_depth_ties () =
+  let a = "triangle { <0,1,2>, <0,0,2>, <1,0,3> pigment { rgb <1,0,0> } finish { ambient 1 diffuse 0 } }\n" in
+  let b = "triangle { <0,1,2>, <0,0,2>, <2,0,4> pigment { rgb <0,1,0> } finish { ambient 1 diffuse 0 } }\n" in
+  let light = "light_source { <0,10,0>, rgb 0 }\n" in
+  let o = v 3. 0.3 6. and d = v (-2.7) 0. (-3.7) in
+  let shoot text = trace_text ~interiors:[] (v37 ^ text) o d in
+  result_eq "no hierarchy, A first: A" (1., 0., 0.) (shoot (a ^ b));
+  result_eq "no hierarchy, B first: B" (0., 1., 0.) (shoot (b ^ a));
+  result_eq "hierarchy, A first: B's box first" (0., 1., 0.) (shoot (light ^ a ^ b));
+  result_eq "hierarchy, B first: B's box first" (0., 1., 0.) (shoot (light ^ b ^ a))
+
 let test_shadowless () =
   (* a small sphere on the way to the light at <√3,1,0>, off the camera ray *)
   let blocker = "sphere { <sqrt(3)/2, 0.5, 0>, 0.1 }\n" in
@@ -395,6 +446,8 @@ let tests =
     Alcotest.test_case "light fade" `Quick test_light_fade;
     Alcotest.test_case "shadows" `Quick test_shadows;
     Alcotest.test_case "shadow with interior fade" `Quick test_shadow_fade;
+    Alcotest.test_case "shadow cache" `Quick test_shadow_cache;
+    Alcotest.test_case "equal depths" `Quick test_depth_ties;
     Alcotest.test_case "shadowless light" `Quick test_shadowless;
     Alcotest.test_case "miss" `Quick test_miss;
     Alcotest.test_case "reflection" `Quick test_reflection;
