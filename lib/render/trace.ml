@@ -216,14 +216,28 @@ let wins_tie ctx ob cur (o : Vec.t) (d : Vec.t) =
     if Array.length pb = 0 then false
     else Array.length ob.pbox = 0 || pov_entry ob.pbox o d < pov_entry pb o d
 
+(* The robust mode's ties: depths this close (relative to the ray's origin and length) differ only
+   by rounding, as on coplanar surfaces, and the object written first wins, whatever the scene's
+   size or place. *)
+let tie_tolerance (o : Vec.t) t = 0x1p-36 *. (Float.max (Float.abs o.x) (Float.max (Float.abs o.y) (Float.abs o.z)) +. t)
+
+(* Whether [ob], hit at depth [t], replaces the current best [cur] at depth [best]. *)
+let[@inline] replaces ctx ob t best cur (o : Vec.t) (d : Vec.t) =
+  if not ctx.robust then t < best || (t = best && cur >= 0 && wins_tie ctx ob cur o d)
+  else if cur < 0 then t < best
+  else
+    let tol = tie_tolerance o best in
+    t < best -. tol || (t <= best +. tol && ob.id < cur)
+
 (* The nearest object of [g] hit at a depth in [lo, hi): its id, or −1. Its depth is left in
    [ctx.depth.(0)] and, for a mesh, its face in [ctx.sub.(0)]. Of equal depths the one POV-Ray
-   meets first wins ([wins_tie]). *)
+   meets first wins ([wins_tie]); in the robust mode, of depths within rounding of each other the
+   one written first. *)
 let nearest ?(hi = infinity) ctx (g : group) (o : Vec.t) (d : Vec.t) lo =
   let best = ref hi and id = ref (-1) and sub = ref (-1) in
   let try_obj ob =
     let t = hit_shape ctx ob.shape o d lo in
-    if t < !best || (t = !best && !id >= 0 && wins_tie ctx ob !id o d) then begin
+    if replaces ctx ob t !best !id o d then begin
       best := t;
       id := ob.id;
       sub := ctx.sub.(0)
@@ -237,14 +251,15 @@ let nearest ?(hi = infinity) ctx (g : group) (o : Vec.t) (d : Vec.t) lo =
         if r2 = r2 then begin
           (* a sphere, straight from the flat array *)
           let t = sphere_depth ctx.stats ctx.lim (Array.unsafe_get sp (4 * i)) (Array.unsafe_get sp ((4 * i) + 1)) (Array.unsafe_get sp ((4 * i) + 2)) r2 o d lo in
-          if t < !best || (t = !best && !id >= 0 && wins_tie ctx (Array.unsafe_get g.bounded i) !id o d) then begin
+          if replaces ctx (Array.unsafe_get g.bounded i) t !best !id o d then begin
             best := t;
             id := (Array.unsafe_get g.bounded i).id;
             sub := -1
           end
         end
         else try_obj g.bounded.(i);
-        !best);
+        (* the robust mode still looks for ties just beyond the best depth *)
+        if ctx.robust && !id >= 0 then !best +. tie_tolerance o !best else !best);
   ctx.depth.(0) <- !best;
   ctx.sub.(0) <- !sub;
   !id
@@ -341,25 +356,36 @@ let rec remove id = function [] -> [] | x :: rest -> if x = id then rest else x 
 let shadow ctx ~slot (p : Vec.t) (ng : Vec.t) e (l : Vec.t) dist interiors (lc : Rgb.t) : Rgb.t =
   let sc = ctx.scene in
   ctx.stats.shadow_rays <- ctx.stats.shadow_rays + 1;
-  let lo = if ctx.robust then 0. else shadow_tolerance in
-  let margin = if ctx.robust then (1e-9 *. dist) +. error_bound p (Vec.madd p dist l) dist else shadow_tolerance in
   match sc.shadow_mode with
   | No_occluders -> lc
   | Any_hit | Filtered ->
+      (* POV-Ray: hits from 1e-3 to the light minus 1e-3, the ray going on from each crossing. The
+         robust mode: every segment starts at a lifted origin and is aimed at the light anew, so
+         the lift never shortens the way to the light; hits count up to the light minus a margin
+         relative to the segment's length. *)
+      let lp = Vec.madd p dist l in
+      let lo = if ctx.robust then 0. else shadow_tolerance in
+      let margin remaining = if ctx.robust then (1e-9 *. remaining) +. error_bound p lp remaining else shadow_tolerance in
+      let aim (o : Vec.t) =
+        let v = Vec.sub lp o in
+        let len = Vec.length v in
+        (Vec.scale (1. /. len) v, len)
+      in
       let o = origin ctx p ng e l in
+      let l, dist = if ctx.robust then aim o else (l, dist) in
       let cached = ctx.shadow_cache.(slot) in
       let in_cache =
         cached >= 0
         &&
-        if ctx.robust then hit_shape ctx sc.objects.(cached).shape o l lo < dist -. margin
+        if ctx.robust then hit_shape ctx sc.objects.(cached).shape o l lo < dist -. margin dist
         else hit_shape ctx sc.objects.(cached).shape p l min_isect_depth < dist
       in
       if in_cache then Rgb.black
       else
-      let rec walk first (o : Vec.t) remaining interiors (lc : Rgb.t) =
+      let rec walk first (o : Vec.t) (l : Vec.t) remaining interiors (lc : Rgb.t) =
         let i = nearest ~hi:remaining ctx sc.occluders o l lo in
         let t = ctx.depth.(0) in
-        if i < 0 || t >= remaining -. margin then lc
+        if i < 0 || t >= remaining -. margin remaining then lc
         else
           let obj = sc.objects.(i) in
           if obj.opaque then begin
@@ -376,16 +402,15 @@ let shadow ctx ~slot (p : Vec.t) (ng : Vec.t) e (l : Vec.t) dist interiors (lc :
             let lc = Rgb.make (f32 (lc.r *. f.r)) (f32 (lc.g *. f.g)) (f32 (lc.b *. f.b)) in
             let interiors = if List.mem obj.id interiors then remove obj.id interiors else obj.id :: interiors in
             let q = Vec.madd o t l in
-            let next =
-              if not ctx.robust then q
-              else
-                let sub = ctx.sub.(0) in
-                let q = refine obj q in
-                origin ctx q (geometric_normal obj sub q) (error_bound o q obj.mag) l
-            in
-            walk false next (remaining -. t) interiors lc
+            if not ctx.robust then walk false q l (remaining -. t) interiors lc
+            else
+              let sub = ctx.sub.(0) in
+              let q = refine obj q in
+              let next = origin ctx q (geometric_normal obj sub q) (error_bound o q obj.mag) l in
+              let l, remaining = aim next in
+              walk false next l remaining interiors lc
       in
-      walk true o dist interiors lc
+      walk true o l dist interiors lc
 
 (* ---------------------------------------------------------------------------------------------- *)
 (* Local illumination (§3.3, §3.4) *)
