@@ -58,7 +58,7 @@ let show p = if p = infinity then "exact" else Printf.sprintf "%.1f dB" p
 let table = ref []
 
 let case path () =
-  let name = Filename.remove_extension (Filename.basename path) in
+  let name = Filename.concat (Filename.basename (Filename.dirname path)) (Filename.remove_extension (Filename.basename path)) in
   let base_robust = render true path and base_pov = render false path in
   let row =
     List.map
@@ -68,7 +68,7 @@ let case path () =
         Printf.sprintf "%s %s / %s" label (show robust) (show pov), (label, robust))
       moves
   in
-  table := Printf.sprintf "%-32s %s" name (String.concat "   " (List.map fst row)) :: !table;
+  table := Printf.sprintf "%-38s %s" name (String.concat "   " (List.map fst row)) :: !table;
   List.iter
     (fun (_, (label, robust)) ->
       if robust < min_psnr then Alcotest.failf "%s, %s, robust mode: PSNR %.2f dB < %.0f dB" name label robust min_psnr)
@@ -83,4 +83,4 @@ let () =
   in
   Fun.protect ~finally:report (fun () ->
       Alcotest.run ~and_exit:false ~argv:[| "test_metamorphic" |] "metamorphic"
-        [ ("robust mode", List.map (fun p -> Alcotest.test_case (Filename.basename p) `Quick (case p)) scenes) ])
+        [ ("robust mode", List.map (fun p -> Alcotest.test_case (Filename.concat (Filename.basename (Filename.dirname p)) (Filename.basename p)) `Quick (case p)) scenes) ])
