@@ -29,8 +29,8 @@ let escape s =
 let tick_label v = if v >= 0.01 && v < 10000. then Printf.sprintf "%.3g" v else Printf.sprintf "%.1e" v
 
 (* panel geometry *)
-let width = 760.
-let height = 480.
+let width = 880.
+let height = 520.
 let left = 78.
 let right = 24.
 let top = 64.
@@ -105,27 +105,44 @@ let panel b (sc : Sweep.scene) =
   p "<text x=\"%.1f\" y=\"%.1f\" font-size=\"12\" text-anchor=\"middle\">median wall time, seconds (log scale)</text>\n" ((x0 +. x1) /. 2.) (zero_row +. 40.);
   p "<text transform=\"translate(18,%.1f) rotate(-90)\" font-size=\"12\" text-anchor=\"middle\">RMSE against the ground truth, 1/255 (log scale)</text>\n" ((y0 +. y1) /. 2.);
   (* the points: others first, then each front as a line through its points *)
+  let fronts =
+    List.map
+      (fun r ->
+        let colour = List.assoc r colours and rname = List.assoc r names in
+        let front = Sweep.front sc r in
+        let tip (row : Sweep.row) t e = Printf.sprintf "%s %s: %.3f s, RMSE %.3f" rname (Sweep.label row.setting) t e in
+        List.iter (fun ((row : Sweep.row), t, e) -> if not (List.memq row front) then marker b r ~filled:false (sx t) (sy e) colour (tip row t e)) (points r);
+        let on_front = List.filter (fun (row, _, _) -> List.memq row front) (points r) in
+        let on_front = List.sort (fun (_, a, _) (_, b, _) -> compare a b) on_front in
+        if List.length on_front > 1 then
+          p "<polyline fill=\"none\" stroke=\"%s\" stroke-width=\"1.8\" points=\"%s\"/>\n" colour
+            (String.concat " " (List.map (fun (_, t, e) -> Printf.sprintf "%.1f,%.1f" (sx t) (sy e)) on_front));
+        List.iter (fun ((row : Sweep.row), t, e) -> marker b r ~filled:true (sx t) (sy e) colour (tip row t e)) on_front;
+        (colour, on_front))
+      [ `Povray; `Povml ]
+  in
+  (* the front points' labels, where one fits without covering another label or the legend;
+     every point has its setting as a tooltip *)
+  let legend = (x1 -. 200., y1 +. 8., x1 -. 8., y1 +. 84.) in
+  let placed = ref [ legend ] in
+  let free (l, t, r, bt) = l >= x0 && r <= x1 && t >= y1 && bt <= zero_row && not (List.exists (fun (l', t', r', b') -> l < r' && l' < r && t < b' && t' < bt) !placed) in
   List.iter
-    (fun r ->
-      let colour = List.assoc r colours and rname = List.assoc r names in
-      let front = Sweep.front sc r in
-      let tip (row : Sweep.row) t e = Printf.sprintf "%s %s: %.3f s, RMSE %.3f" rname (Sweep.label row.setting) t e in
-      List.iter (fun ((row : Sweep.row), t, e) -> if not (List.memq row front) then marker b r ~filled:false (sx t) (sy e) colour (tip row t e)) (points r);
-      let on_front = List.filter (fun (row, _, _) -> List.memq row front) (points r) in
-      let on_front = List.sort (fun (_, a, _) (_, b, _) -> compare a b) on_front in
-      if List.length on_front > 1 then
-        p "<polyline fill=\"none\" stroke=\"%s\" stroke-width=\"1.8\" points=\"%s\"/>\n" colour
-          (String.concat " " (List.map (fun (_, t, e) -> Printf.sprintf "%.1f,%.1f" (sx t) (sy e)) on_front));
+    (fun (colour, on_front) ->
       List.iter
         (fun ((row : Sweep.row), t, e) ->
-          marker b r ~filled:true (sx t) (sy e) colour (tip row t e);
-          (* labels near the right edge end at their point *)
-          let x = sx t in
-          let anchor, lx = if x > x1 -. 140. then ("end", x -. 6.) else ("start", x +. 6.) in
-          p "<text x=\"%.1f\" y=\"%.1f\" font-size=\"9.5\" fill=\"%s\" text-anchor=\"%s\">%s</text>\n" lx (sy e -. 6.) colour anchor
-            (escape (Sweep.label row.setting)))
+          let label = Sweep.label row.setting in
+          let w = 5.6 *. float_of_int (String.length label) and x = sx t and y = sy e in
+          let candidates =
+            [ ("start", x +. 6., y -. 6.); ("start", x +. 6., y +. 13.); ("end", x -. 6., y -. 6.); ("end", x -. 6., y +. 13.) ]
+          in
+          let box (anchor, tx, ty) = if anchor = "start" then (tx, ty -. 9., tx +. w, ty +. 2.) else (tx -. w, ty -. 9., tx, ty +. 2.) in
+          match List.find_opt (fun c -> free (box c)) candidates with
+          | None -> ()
+          | Some ((anchor, tx, ty) as c) ->
+              placed := box c :: !placed;
+              p "<text x=\"%.1f\" y=\"%.1f\" font-size=\"9.5\" fill=\"%s\" text-anchor=\"%s\">%s</text>\n" tx ty colour anchor (escape label))
         on_front)
-    [ `Povray; `Povml ];
+    (List.rev fronts);
   (* legend *)
   let lx = x1 -. 200. and ly = y1 +. 8. in
   p "<rect x=\"%.1f\" y=\"%.1f\" width=\"192\" height=\"76\" fill=\"white\" fill-opacity=\"0.9\" stroke=\"#bbb\"/>\n" lx ly;

@@ -75,12 +75,13 @@ let measure_scene c ~dir ~stem path =
   | Ok truth_img ->
       c.progress (Printf.sprintf "%s: ground truth in %s" name (short truth.seconds));
       let text = lazy (read_file abs) in
-      (* a copy of the scene with the overriding global_settings, once per level *)
+      (* a copy of the scene with the overriding global_settings, once per scene and level, under its
+         own name (stems are unique in the report) *)
       let scene_for (s : Sweep.setting) =
         match s.trace_level with
         | None -> abs
         | Some n ->
-            let sub = Filename.concat dir (Printf.sprintf "mtl%d" n) in
+            let sub = Filename.concat dir (Printf.sprintf "%s.mtl%d" stem n) in
             let copy = Filename.concat sub (Filename.basename abs) in
             if not (Sys.file_exists copy) then (
               mkdir_p sub;

@@ -92,6 +92,26 @@ povml report: one sweep part, one level, one run (a full report takes minutes):
   $ grep -c '<polyline\|<circle\|<rect' rep/s.svg > /dev/null && head -c 38 rep/s.svg
   <?xml version="1.0" encoding="UTF-8"?>
 
+Two scenes of the same name get their own files, and each its own copy for the max_trace_level
+override: with the ground truth rendered with -A, a scene without reflections has error 0 at any
+level:
+
+  $ mkdir sub && sed 's/rgb <1, 0.5, 0.2>/rgb <0.2, 0.5, 1>/' s.pov > sub/s.pov
+  $ povml report s.pov sub/s.pov --out rep2 +W16 +H12 --runs 1 --parts trace --trace-levels 1 --truth=-A 2> /dev/null
+  rep2/report.csv
+  rep2/report.md
+  rep2/report.svg
+  rep2/s.svg
+  rep2/s-2.svg
+  $ cut -d, -f1,4,11,15 rep2/report.csv
+  scene,renderer,status,rmse
+  s.pov,POV-Ray,truth,0
+  s.pov,povml,ok,0
+  s.pov,POV-Ray,ok,0
+  sub/s.pov,POV-Ray,truth,0
+  sub/s.pov,povml,ok,0
+  sub/s.pov,POV-Ray,ok,0
+
 Report usage errors:
 
   $ povml report s.pov
