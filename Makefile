@@ -7,7 +7,7 @@ DEB_PACKAGES = libcamlimages-ocaml-dev libalcotest-ocaml-dev \
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 POVML = ./_build/default/bin/main.exe
 
-.PHONY: all deps build render test bench references clean
+.PHONY: all deps build render test bench report references clean
 
 all: build
 
@@ -34,6 +34,10 @@ test: build
 
 bench: build
 	bash scenes/bench/run.sh
+
+# Error against time of povml and POV-Ray on the bench scenes (see README, "Checking against POV-Ray").
+report: build
+	$(POVML) report scenes/bench/spheres.pov --out bench-results/report +W320 +H240
 
 references: deps
 	bash reference/regen.sh

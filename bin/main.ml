@@ -200,6 +200,13 @@ let cmd =
           unrendered pixels black), $(b,+FN) (PNG), $(b,+FP) (PPM), $(b,+D)/$(b,-D), $(b,+V)/$(b,-V). \
           Each is shown below with its long form.";
       `S sw;
+      `S Manpage.s_commands;
+      `P "$(b,povml check) $(i,SCENE) [$(i,SWITCH)]… renders the scene with povml and with the installed POV-Ray, \
+          prints the differing pixels, peak, RMSE, PSNR and both wall times, writes a heat map of the \
+          differences and fails above the thresholds given ($(b,povml check --help)).";
+      `P "$(b,povml report) $(i,SCENE)… $(b,--out) $(i,DIR) [$(i,SWITCH)]… sweeps antialiasing and trace-depth \
+          settings in both renderers and writes error against time as CSV, Markdown and an SVG plot with each \
+          renderer's Pareto front ($(b,povml report --help)).";
       `S Manpage.s_exit_status;
       `P "0 when the image was written; 1 when the scene has an error (printed as \
           file:line:column: error: … with the source line) or the image cannot be written; 2 on a usage error.";
@@ -278,6 +285,9 @@ let () =
   Gc.set { (Gc.get ()) with minor_heap_size = 1 lsl 20; max_overhead = 1_000_000 };
   let argv = Array.to_list Sys.argv in
   let prog = List.hd argv in
+  (match argv with
+  | _ :: (("check" | "report") as sub) :: rest -> exit (Subcommands.main ~translate:translate_switch prog sub rest)
+  | _ -> ());
   let bad = ref None in
   let args =
     List.map

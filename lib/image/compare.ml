@@ -21,3 +21,4 @@ let images (a : Encode.t) (b : Encode.t) =
 
 let identical_share c = if c.pixels = 0 then 1. else float_of_int (c.pixels - c.differing) /. float_of_int c.pixels
 let psnr c = if c.rmse = 0. then infinity else 20. *. log10 (255. /. c.rmse)
+let differing_share c = if c.pixels = 0 then 0. else float_of_int c.differing /. float_of_int c.pixels

@@ -15,3 +15,6 @@ val identical_share : t -> float
 
 val psnr : t -> float
 (** [psnr c] is the peak signal-to-noise ratio in dB (infinity when identical). *)
+
+val differing_share : t -> float
+(** [differing_share c] is the share of pixels with any channel different, 0 … 1 (differing / pixels, exactly). *)

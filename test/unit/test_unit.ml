@@ -25,6 +25,7 @@ let () =
       ("Image", Test_misc.tests_image);
       ("Encode", Test_encode.tests);
       ("Compare", Test_compare.tests);
+      ("Check and report", Test_check.tests);
       ("Output", Test_misc.tests_output);
       ("Pipeline", Test_misc.tests_pipeline);
       ("Robust mode", Test_robust.tests);
