@@ -35,9 +35,11 @@ test: build
 bench: build
 	bash scenes/bench/run.sh
 
-# Error against time of povml and POV-Ray on the bench scenes (see README, "Checking against POV-Ray").
+# Error against time of povml and POV-Ray on bench scenes: the plot in the README (docs/report).
 report: build
-	$(POVML) report scenes/bench/spheres.pov --out bench-results/report +W320 +H240
+	$(POVML) report scenes/bench/spheres.pov scenes/bench/generated/spheres_10000.pov \
+	  scenes/bench/while_spheres.pov --out docs/report +W320 +H240 --runs 2 \
+	  --thresholds 0.9,0.6,0.3,0.2,0.1,0.0 --trace-levels 1-10
 
 references: deps
 	bash reference/regen.sh

@@ -25,6 +25,22 @@ type options = {
 
 let full_area w h = { left = 0; right = w - 1; top = 0; bottom = h - 1 }
 
+let defaults w h =
+  {
+    width = w;
+    height = h;
+    antialias = None;
+    aa_method = Non_adaptive;
+    aa_depth = 3;
+    jitter = 1.;
+    aa_gamma = 2.5;
+    area = full_area w h;
+    block_size = 32;
+    workers = 1;
+    progress = false;
+    robust = false;
+  }
+
 (* §1.4: the ray through the (possibly fractional) pixel position (x, y). *)
 let camera_dir (cam : Scene.camera) w h x y =
   let x0 = ((x +. 0.5) /. float_of_int w) -. 0.5 in

@@ -27,6 +27,11 @@ type options = {
 val full_area : int -> int -> area
 (** [full_area w h] is the whole image. *)
 
+val defaults : int -> int -> options
+(** [defaults w h] is POV-Ray's defaults for a w×h image: no antialiasing (method 1, depth 3,
+    jitter 1, gamma 2.5 when turned on), 32-pixel blocks, the POV-Ray mode; one worker, no
+    progress line. *)
+
 val camera_dir : Scene.camera -> int -> int -> float -> float -> Vec.t
 (** [camera_dir cam w h x y] is the unit direction of the camera ray through pixel position (x, y)
     of a w×h image (§1.4); integer positions are pixel centres. *)

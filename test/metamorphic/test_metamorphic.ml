@@ -35,21 +35,7 @@ let stiff () =
 
 let moves = [ ("scale 1e-3", (1e-3, Vec.zero)); ("scale 1e3", (1e3, Vec.zero)); ("translate 1e5", (1., Vec.make 1e5 1e5 1e5)) ]
 
-let opts robust =
-  {
-    Render.width = 160;
-    height = 120;
-    antialias = None;
-    aa_method = Render.Non_adaptive;
-    aa_depth = 3;
-    jitter = 0.;
-    aa_gamma = 2.5;
-    area = Render.full_area 160 120;
-    block_size = 32;
-    workers = 2;
-    progress = false;
-    robust;
-  }
+let opts robust = { (Render.defaults 160 120) with jitter = 0.; workers = 2; robust }
 
 let render ?move robust path = (Pipeline.run ?move (opts robust) path).image
 

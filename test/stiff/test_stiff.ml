@@ -13,21 +13,7 @@ let dir = "../../scenes/stiff"
 let scenes () =
   Sys.readdir dir |> Array.to_list |> List.filter (fun f -> Filename.check_suffix f ".pov") |> List.sort compare
 
-let opts ?antialias () =
-  {
-    Render.width = 40;
-    height = 30;
-    antialias;
-    aa_method = Render.Non_adaptive;
-    aa_depth = 3;
-    jitter = 1.;
-    aa_gamma = 2.5;
-    area = Render.full_area 40 30;
-    block_size = 32;
-    workers = 1;
-    progress = false;
-    robust = false;
-  }
+let opts ?antialias () = { (Render.defaults 40 30) with antialias }
 
 let render ?antialias file = Pipeline.run (opts ?antialias ()) (Filename.concat dir file)
 

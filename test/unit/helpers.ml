@@ -82,18 +82,4 @@ let result_eq ?(eps = 1e-6) msg (r, g, b) (res : Trace.result) =
 let v = Vec.make
 
 (* Render options for a w×h image: no antialiasing, one worker, 32-pixel blocks, no progress line. *)
-let render_opts w h =
-  {
-    Render.width = w;
-    height = h;
-    antialias = None;
-    aa_method = Render.Non_adaptive;
-    aa_depth = 3;
-    jitter = 0.;
-    aa_gamma = 2.5;
-    area = Render.full_area w h;
-    block_size = 32;
-    workers = 1;
-    progress = false;
-    robust = false;
-  }
+let render_opts w h = { (Render.defaults w h) with jitter = 0. }
