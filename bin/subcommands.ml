@@ -194,7 +194,7 @@ let report_cmd ~switches ~input =
       `P "$(b,povml report) [$(i,OPTION)]… $(i,SCENE)… $(b,--out) $(i,DIR) [$(i,SWITCH)]…";
       `S Manpage.s_description;
       `P "$(b,povml report) measures, for each scene, how the settings that trade error for time do in povml and in \
-          POV-Ray: antialiasing off, every antialiasing method × depth ($(b,+R)) × threshold ($(b,+A)), and \
+          POV-Ray: antialiasing off, every antialiasing method × depth ($(b,+R)) × threshold ($(b,+A)), and, without antialiasing, \
           max_trace_level 1 … 20 (set by a copy of the scene that ends with a $(b,global_settings) block, \
           which both renderers let override the scene's). Each image is compared with one ground truth per \
           scene: POV-Ray's image with $(b,--truth) (default $(b,+AM2 +R5 +A0.0)); each setting is rendered \

@@ -8,8 +8,8 @@ let log_ticks lo hi =
   let coarse = with_mantissas [ 1.; 2.; 5. ] in
   if List.length coarse >= 3 then coarse
   else
-    let fine = with_mantissas [ 1.; 2.; 3.; 4.; 5.; 6.; 7.; 8.; 9. ] in
-    if List.length fine >= 3 then fine
+    let fine = with_mantissas [ 1.; 1.5; 2.; 3.; 4.; 5.; 6.; 7.; 8.; 9. ] in
+    if List.length fine >= 2 then fine
     else
       let l = log10 lo and h = log10 hi in
       List.map (fun i -> 10. ** (l +. ((h -. l) *. float_of_int i /. 2.))) [ 0; 1; 2 ]
@@ -33,7 +33,7 @@ let width = 880.
 let height = 520.
 let left = 78.
 let right = 24.
-let top = 64.
+let top = 80.
 let bottom = 86. (* the zero row, the tick labels, the axis title, the note *)
 let x0 = left
 let x1 = width -. right
@@ -121,10 +121,9 @@ let panel b (sc : Sweep.scene) =
         (colour, on_front))
       [ `Povray; `Povml ]
   in
-  (* the front points' labels, where one fits without covering another label or the legend;
-     every point has its setting as a tooltip *)
-  let legend = (x1 -. 200., y1 +. 8., x1 -. 8., y1 +. 84.) in
-  let placed = ref [ legend ] in
+  (* the front points' labels, where one fits without covering another label; every point has its
+     setting as a tooltip *)
+  let placed = ref [] in
   let free (l, t, r, bt) = l >= x0 && r <= x1 && t >= y1 && bt <= zero_row && not (List.exists (fun (l', t', r', b') -> l < r' && l' < r && t < b' && t' < bt) !placed) in
   List.iter
     (fun (colour, on_front) ->
@@ -143,19 +142,17 @@ let panel b (sc : Sweep.scene) =
               p "<text x=\"%.1f\" y=\"%.1f\" font-size=\"9.5\" fill=\"%s\" text-anchor=\"%s\">%s</text>\n" tx ty colour anchor (escape label))
         on_front)
     (List.rev fronts);
-  (* legend *)
-  let lx = x1 -. 200. and ly = y1 +. 8. in
-  p "<rect x=\"%.1f\" y=\"%.1f\" width=\"192\" height=\"76\" fill=\"white\" fill-opacity=\"0.9\" stroke=\"#bbb\"/>\n" lx ly;
+  (* the legend, one row between the subtitle and the plot *)
+  let ly = 62. in
   List.iteri
     (fun i r ->
-      let y = ly +. 16. +. (18. *. float_of_int i) in
+      let lx = left +. (110. *. float_of_int i) in
       let colour = List.assoc r colours in
-      p "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"%s\" stroke-width=\"1.8\"/>\n" (lx +. 8.) y (lx +. 36.) y colour;
-      marker b r ~filled:true (lx +. 22.) y colour (List.assoc r names);
-      p "<text x=\"%.1f\" y=\"%.1f\" font-size=\"12\">%s</text>\n" (lx +. 44.) (y +. 4.) (List.assoc r names))
+      p "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"%s\" stroke-width=\"1.8\"/>\n" lx ly (lx +. 28.) ly colour;
+      marker b r ~filled:true (lx +. 14.) ly colour (List.assoc r names);
+      p "<text x=\"%.1f\" y=\"%.1f\" font-size=\"12\">%s</text>\n" (lx +. 36.) (ly +. 4.) (List.assoc r names))
     [ `Povml; `Povray ];
-  p "<text x=\"%.1f\" y=\"%.1f\" font-size=\"10.5\" fill=\"#444\">filled, joined: Pareto front</text>\n" (lx +. 8.) (ly +. 54.);
-  p "<text x=\"%.1f\" y=\"%.1f\" font-size=\"10.5\" fill=\"#444\">hollow: the other settings</text>\n" (lx +. 8.) (ly +. 68.);
+  p "<text x=\"%.1f\" y=\"%.1f\" font-size=\"11\" fill=\"#444\">filled and joined: the Pareto front; hollow: the other settings</text>\n" (left +. 230.) (ly +. 4.);
   (* what was not drawn *)
   let missing r =
     let n = List.length (List.filter (fun row -> match Sweep.get row r with Sweep.Rendered _ -> false | _ -> true) sc.rows) in

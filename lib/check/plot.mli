@@ -2,8 +2,8 @@
 
 val log_ticks : float -> float -> float list
 (** [log_ticks lo hi] is the tick values of a logarithmic axis from [lo] to [hi] (0 < lo < hi):
-    1, 2, 5 × 10^k inside the range, every integer × 10^k when that gives fewer than three, three
-    evenly spaced values when even that does. *)
+    1, 2, 5 × 10^k inside the range; 1, 1.5, 2, 3 … 9 × 10^k when that gives fewer than three; three
+    evenly spaced values when even that gives fewer than two. *)
 
 val escape : string -> string
 (** [escape s] is [s] with the characters XML reserves written as entities. *)

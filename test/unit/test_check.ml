@@ -204,8 +204,9 @@ let count ~sub s =
 let test_svg () =
   let ticks = Plot.log_ticks 0.07 3. in
   Alcotest.(check (list (float 1e-12))) "1-2-5 ticks" [ 0.1; 0.2; 0.5; 1.; 2. ] ticks;
-  Alcotest.(check (list (float 1e-12))) "fine ticks" [ 2.; 3.; 4. ] (Plot.log_ticks 1.5 4.5);
-  Alcotest.(check int) "always three or more" 3 (List.length (Plot.log_ticks 1.05 1.4));
+  Alcotest.(check (list (float 1e-12))) "fine ticks" [ 1.5; 2.; 3.; 4. ] (Plot.log_ticks 1.5 4.5);
+  Alcotest.(check (list (float 1e-12))) "fine ticks, 1.5 too" [ 1.5; 2.; 3. ] (Plot.log_ticks 1.08 3.17);
+  Alcotest.(check int) "at least two" 3 (List.length (Plot.log_ticks 1.05 1.4));
   Alcotest.(check string) "escape" "a&lt;b&amp;&quot;c&quot;&gt;" (Plot.escape "a<b&\"c\">");
   let svg = Plot.svg [ sample; { sample with path = "scenes/y.pov" } ] in
   Helpers.check_contains "svg root" ~sub:"<svg xmlns=\"http://www.w3.org/2000/svg\"" svg;
