@@ -353,6 +353,16 @@ let rec remove id = function [] -> [] | x :: rest -> if x = id then rest else x 
    right after a neighbouring point was shadowed by it.
    The robust mode counts every hit from the lifted origin to the light minus a relative margin,
    the cached object's too. *)
+(* The robust mode's shadow segment from [o] to the light at [lp]: its direction and length. *)
+let aim (lp : Vec.t) (o : Vec.t) =
+  let v = Vec.sub lp o in
+  let len = Vec.length v in
+  (Vec.scale (1. /. len) v, len)
+
+(* How far short of the light at [lp] a robust shadow segment of length [remaining] from near [p]
+   stops counting hits. *)
+let robust_margin (p : Vec.t) (lp : Vec.t) remaining = (1e-9 *. remaining) +. error_bound p lp remaining
+
 let shadow ctx ~slot (p : Vec.t) (ng : Vec.t) e (l : Vec.t) dist interiors (lc : Rgb.t) : Rgb.t =
   let sc = ctx.scene in
   ctx.stats.shadow_rays <- ctx.stats.shadow_rays + 1;
@@ -363,21 +373,15 @@ let shadow ctx ~slot (p : Vec.t) (ng : Vec.t) e (l : Vec.t) dist interiors (lc :
          robust mode: every segment starts at a lifted origin and is aimed at the light anew, so
          the lift never shortens the way to the light; hits count up to the light minus a margin
          relative to the segment's length. *)
-      let lp = Vec.madd p dist l in
+      let lp = if ctx.robust then Vec.madd p dist l else p in
       let lo = if ctx.robust then 0. else shadow_tolerance in
-      let margin remaining = if ctx.robust then (1e-9 *. remaining) +. error_bound p lp remaining else shadow_tolerance in
-      let aim (o : Vec.t) =
-        let v = Vec.sub lp o in
-        let len = Vec.length v in
-        (Vec.scale (1. /. len) v, len)
-      in
       let o = origin ctx p ng e l in
-      let l, dist = if ctx.robust then aim o else (l, dist) in
+      let l, dist = if ctx.robust then aim lp o else (l, dist) in
       let cached = ctx.shadow_cache.(slot) in
       let in_cache =
         cached >= 0
         &&
-        if ctx.robust then hit_shape ctx sc.objects.(cached).shape o l lo < dist -. margin dist
+        if ctx.robust then hit_shape ctx sc.objects.(cached).shape o l lo < dist -. robust_margin p lp dist
         else hit_shape ctx sc.objects.(cached).shape p l min_isect_depth < dist
       in
       if in_cache then Rgb.black
@@ -385,7 +389,7 @@ let shadow ctx ~slot (p : Vec.t) (ng : Vec.t) e (l : Vec.t) dist interiors (lc :
       let rec walk first (o : Vec.t) (l : Vec.t) remaining interiors (lc : Rgb.t) =
         let i = nearest ~hi:remaining ctx sc.occluders o l lo in
         let t = ctx.depth.(0) in
-        if i < 0 || t >= remaining -. margin remaining then lc
+        if i < 0 || t >= remaining -. (if ctx.robust then robust_margin p lp remaining else shadow_tolerance) then lc
         else
           let obj = sc.objects.(i) in
           if obj.opaque then begin
@@ -407,7 +411,7 @@ let shadow ctx ~slot (p : Vec.t) (ng : Vec.t) e (l : Vec.t) dist interiors (lc :
               let sub = ctx.sub.(0) in
               let q = refine obj q in
               let next = origin ctx q (geometric_normal obj sub q) (error_bound o q obj.mag) l in
-              let l, remaining = aim next in
+              let l, remaining = aim lp next in
               walk false next l remaining interiors lc
       in
       walk true o l dist interiors lc
