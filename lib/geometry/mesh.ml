@@ -154,16 +154,14 @@ let nearest_within lim m stack (o : Vec.t) (d : Vec.t) lo hit =
 let nearest m stack o d lo hit = nearest_within Limits.pov m stack o d lo hit
 
 (* Whether some face is hit with lo ≤ depth < hi. *)
-let any_hit_within lim m stack (o : Vec.t) (d : Vec.t) lo hi =
+let any_hit m stack (o : Vec.t) (d : Vec.t) lo hi =
   let found = ref false in
   Bvh.walk m.bvh stack o.x o.y o.z d.x d.y d.z hi (fun k ->
       if !found then neg_infinity
       else
-        let t = face_depth lim m k o.x o.y o.z d.x d.y d.z in
+        let t = face_depth Limits.pov m k o.x o.y o.z d.x d.y d.z in
         if t >= lo && t < hi then (found := true; neg_infinity) else hi);
   !found
-
-let any_hit m stack o d lo hi = any_hit_within Limits.pov m stack o d lo hi
 
 (* §2.6 Inside: an odd number of faces hit from [p] along [d]. *)
 let inside_along m stack (p : Vec.t) (d : Vec.t) =

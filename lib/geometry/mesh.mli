@@ -39,9 +39,6 @@ val nearest : t -> float array -> Vec.t -> Vec.t -> float -> float array -> int
 val nearest_within : Limits.t -> t -> float array -> Vec.t -> Vec.t -> float -> float array -> int
 (** [nearest_within lim m stack o d lo hit] is [nearest] with the faces' depth limits [lim]. *)
 
-val any_hit_within : Limits.t -> t -> float array -> Vec.t -> Vec.t -> float -> float -> bool
-(** [any_hit_within lim m stack o d lo hi] is [any_hit] with the faces' depth limits [lim]. *)
-
 val any_hit : t -> float array -> Vec.t -> Vec.t -> float -> float -> bool
 (** [any_hit m stack o d lo hi] tells whether a face is hit at a depth in [lo, hi). *)
 

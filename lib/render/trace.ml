@@ -233,7 +233,7 @@ let[@inline] replaces ctx ob t best cur (o : Vec.t) (d : Vec.t) =
    [ctx.depth.(0)] and, for a mesh, its face in [ctx.sub.(0)]. Of equal depths the one POV-Ray
    meets first wins ([wins_tie]); in the robust mode, of depths within rounding of each other the
    one written first. *)
-let nearest ?(hi = infinity) ctx (g : group) (o : Vec.t) (d : Vec.t) lo =
+let nearest ctx (g : group) (o : Vec.t) (d : Vec.t) lo hi =
   let best = ref hi and id = ref (-1) and sub = ref (-1) in
   let try_obj ob =
     let t = hit_shape ctx ob.shape o d lo in
@@ -387,7 +387,7 @@ let shadow ctx ~slot (p : Vec.t) (ng : Vec.t) e (l : Vec.t) dist interiors (lc :
       if in_cache then Rgb.black
       else
       let rec walk first (o : Vec.t) (l : Vec.t) remaining interiors (lc : Rgb.t) =
-        let i = nearest ~hi:remaining ctx sc.occluders o l lo in
+        let i = nearest ctx sc.occluders o l lo remaining in
         let t = ctx.depth.(0) in
         if i < 0 || t >= remaining -. (if ctx.robust then robust_margin p lp remaining else shadow_tolerance) then lc
         else
@@ -574,7 +574,7 @@ let rec trace ctx ~level ~weight ~interiors ~continued (o : Vec.t) (d : Vec.t) :
   let sc = ctx.scene in
   if level >= sc.max_trace_level || weight < sc.adc_bailout then black
   else
-    let i = nearest ctx sc.all o d ctx.min_depth in
+    let i = nearest ctx sc.all o d ctx.min_depth infinity in
     if i < 0 then sky_colour sc
     else
       let level = if continued then level else level + 1 in
