@@ -254,7 +254,7 @@ let invoke st (m : V.macro) loc =
   expect st LParen (Printf.sprintf "'(' after the macro name '%s'" m.mname);
   let table = Names.create 8 in
   let nparams = List.length m.params in
-  let wrong_count msg = raise (Error.Scene_error { loc = peek_loc st; msg; notes = [ (m.mloc, "the macro is defined here") ] }) in
+  let wrong_count msg = raise (Error.Scene_error { loc = peek_loc st; msg; notes = [ (m.mloc, "the macro is defined here") ]; kind = Scene }) in
   List.iteri
     (fun i p ->
       (* the commas between arguments are optional, and one may follow the last *)

@@ -1,9 +1,14 @@
-type t = { loc : Loc.t; msg : string; notes : (Loc.t * string) list }
+type kind = Scene | Limit | Access
+type t = { loc : Loc.t; msg : string; notes : (Loc.t * string) list; kind : kind }
 
 exception Scene_error of t
 
-let raise_at loc fmt = Printf.ksprintf (fun msg -> raise (Scene_error { loc; msg; notes = [] })) fmt
-let raise_notes loc notes msg = raise (Scene_error { loc; msg; notes })
+let raise_kind kind loc fmt = Printf.ksprintf (fun msg -> raise (Scene_error { loc; msg; notes = []; kind })) fmt
+let raise_at loc fmt = raise_kind Scene loc fmt
+let limit_at loc fmt = raise_kind Limit loc fmt
+let access_at loc fmt = raise_kind Access loc fmt
+let warning loc msg = { loc; msg; notes = []; kind = Scene }
+let raise_notes loc notes msg = raise (Scene_error { loc; msg; notes; kind = Scene })
 
 (* The [n]th line (1-based) of [text], without its line end. *)
 let nth_line text n =

@@ -1,6 +1,12 @@
 (** Errors and warnings in scenes: values with a location, printed in one place ([bin/]). *)
 
-type t = { loc : Loc.t; msg : string; notes : (Loc.t * string) list }
+(** What went wrong, which decides povml's exit status (1, 3 or 4). *)
+type kind =
+  | Scene  (** the scene is wrong: syntax, types, values *)
+  | Limit  (** the scene went past one of povml's limits (loop iterations, nesting, objects …) *)
+  | Access  (** the scene asked for a file it may not read or write *)
+
+type t = { loc : Loc.t; msg : string; notes : (Loc.t * string) list; kind : kind }
 (** A main message at [loc], with located sub-messages ("included from …", "did you mean …"). *)
 
 exception Scene_error of t
@@ -8,6 +14,15 @@ exception Scene_error of t
 
 val raise_at : Loc.t -> ('a, unit, string, 'b) format4 -> 'a
 (** [raise_at loc fmt …] raises [Scene_error] with a formatted message at [loc]. *)
+
+val limit_at : Loc.t -> ('a, unit, string, 'b) format4 -> 'a
+(** [limit_at loc fmt …] raises [Scene_error] of kind [Limit]. *)
+
+val access_at : Loc.t -> ('a, unit, string, 'b) format4 -> 'a
+(** [access_at loc fmt …] raises [Scene_error] of kind [Access]. *)
+
+val warning : Loc.t -> string -> t
+(** [warning loc msg] is a warning (kind [Scene]) without notes. *)
 
 val raise_notes : Loc.t -> (Loc.t * string) list -> string -> 'a
 (** [raise_notes loc notes msg] raises [Scene_error] with sub-messages. *)

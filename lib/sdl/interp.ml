@@ -15,6 +15,7 @@ type options = Reader.options = {
   library_paths : string list;
   debug : string -> unit;
   included : string -> depth:int -> float -> unit;
+  limits : Scene_limits.t;
 }
 
 let keywords = Reader.keywords
@@ -111,7 +112,7 @@ let load_string opts ~file text =
   st.index <- parse_index;
   (try parse_statements st with
   | Unsupported (loc, what, notes) ->
-      raise (Error.Scene_error { loc; msg = "not supported yet: " ^ what; notes = notes @ chain st })
+      raise (Error.Scene_error { loc; msg = "not supported yet: " ^ what; notes = notes @ chain st; kind = Scene })
   | Error.Scene_error e -> raise (Error.Scene_error { e with notes = e.notes @ chain st }));
   let scene = finish_scene st in
   (scene, List.rev st.warnings)
@@ -124,6 +125,7 @@ let default_options ~width ~height =
     library_paths = [];
     debug = (fun s -> prerr_string s; flush stderr);
     included = (fun _ ~depth:_ _ -> ());
+    limits = Scene_limits.default;
   }
 
 let load_file opts path = load_string opts ~file:path (read_file path)

@@ -13,8 +13,8 @@ type options = {
 }
 
 val default_options : width:int -> height:int -> options
-(** [default_options ~width ~height] has clock 0, no library paths, [#debug] text on stderr and no
-    include report. *)
+(** [default_options ~width ~height] has clock 0, no library paths, [#debug] text on stderr, no
+    include report and [Scene_limits.default]. *)
 
 val load_string : options -> file:string -> string -> Scene.t * Error.t list
 (** [load_string opts ~file text] interprets [text] (named [file] in locations) and returns the scene

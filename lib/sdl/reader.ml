@@ -20,6 +20,7 @@ type options = {
   library_paths : string list;  (** +L, searched in order after the scene's directory and the working directory *)
   debug : string -> unit;  (** where #debug text goes *)
   included : string -> depth:int -> float -> unit;  (** an include file was read: path, nesting, seconds *)
+  limits : Scene_limits.t;
 }
 
 type camera_spec = V.camera_spec = {
@@ -241,7 +242,7 @@ let advance st =
   (match st.cur.kind with LBrace -> st.depth <- st.depth + 1 | RBrace -> st.depth <- st.depth - 1 | _ -> ());
   if st.cur.kind != Eof then st.have <- false
 
-let warn st loc fmt = Printf.ksprintf (fun msg -> st.warnings <- { Error.loc; msg; notes = [] } :: st.warnings) fmt
+let warn st loc fmt = Printf.ksprintf (fun msg -> st.warnings <- Error.warning loc msg :: st.warnings) fmt
 
 let not_supported loc what = raise (Unsupported (loc, what, []))
 

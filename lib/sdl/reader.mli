@@ -15,6 +15,7 @@ type options = {
   library_paths : string list;
   debug : string -> unit;
   included : string -> depth:int -> float -> unit;
+  limits : Scene_limits.t;
 }
 
 (** The camera as written. *)

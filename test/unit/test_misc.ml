@@ -104,7 +104,7 @@ let test_stats () =
 (* ---- Error, Loc ---- *)
 
 let test_error_render () =
-  let e = { Error.loc = { Loc.file = "t.pov"; line = 2; col = 3 }; msg = "bad thing"; notes = [] } in
+  let e = { Error.loc = { Loc.file = "t.pov"; line = 2; col = 3 }; msg = "bad thing"; notes = []; kind = Scene } in
   let source = function "t.pov" -> Some "first line\nab cd\n" | _ -> None in
   Alcotest.(check string) "rendered" "t.pov:2:3: error: bad thing\n    2 | ab cd\n      |   ^\n" (Error.render ~source ~kind:"error" e);
   (* no source: just the head; a note with a location *)
@@ -113,7 +113,7 @@ let test_error_render () =
     (Error.render ~source:(fun _ -> None) ~kind:"warning" e);
   (* no location *)
   Alcotest.(check string) "located nowhere" "error: oops\n"
-    (Error.render ~source ~kind:"error" { Error.loc = Loc.none; msg = "oops"; notes = [] });
+    (Error.render ~source ~kind:"error" { Error.loc = Loc.none; msg = "oops"; notes = []; kind = Scene });
   Alcotest.(check string) "Loc.to_string" "a.pov:3:14" (Loc.to_string { Loc.file = "a.pov"; line = 3; col = 14 });
   (* raise_at formats its message *)
   match Error.raise_at { Loc.file = "x"; line = 1; col = 2 } "n = %d" 42 with

@@ -1,0 +1,17 @@
+(** How much a scene may ask for: the limits that make every scene end, with a located error of
+    kind [Error.Limit], in bounded time and memory. Each has a command-line switch. *)
+
+type t = {
+  include_depth : int;  (** nested [#include] files (POV-Ray stops at 31) *)
+  macro_depth : int;  (** nested macro calls (POV-Ray stops at 98) *)
+  macro_calls : int;  (** macro calls in the whole scene *)
+  iterations : int;  (** [#while] and [#for] iterations in the whole scene, all loops together *)
+  objects : int;  (** objects and light sources in the scene (a mesh is one) *)
+  nesting : int;  (** nested parentheses, braces, vectors and unions *)
+  memory_mb : int;  (** the interpreter's heap, in MiB *)
+  pixels : int;  (** width × height of the image *)
+}
+
+val default : t
+(** [default]: include depth 64, macro depth 10,000, 10,000,000 macro calls, 10,000,000 loop
+    iterations, 10,000,000 objects, nesting 10,000, memory 4,096 MiB, 67,108,864 pixels (8192²). *)
