@@ -10,6 +10,7 @@ type options = {
   included : string -> depth:int -> float -> unit;
       (** told of each include file when it has been read: its path, its nesting (1 for a file the
           scene includes) and the seconds it took, nested includes included *)
+  limits : Scene_limits.t;  (** what the scene may ask for (loop iterations, nesting, memory …) *)
 }
 
 val default_options : width:int -> height:int -> options
