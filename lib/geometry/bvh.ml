@@ -161,7 +161,9 @@ let build (prim : f32s) =
             let a = widest in
             let lo = bd.(6 + a) and hi = bd.(9 + a) in
             let scale = float_of_int bins /. (hi -. lo) in
-            let[@inline] bin_of k = imin (bins - 1) (int_of_float ((centre k a -. lo) *. scale)) in
+            (* clamped at both ends: a NaN centre (an infinite box) leaves the centres' bounds
+               without the centres compared before it, and int_of_float of NaN is min_int *)
+            let[@inline] bin_of k = let j = int_of_float ((centre k a -. lo) *. scale) in if j < 0 then 0 else imin (bins - 1) j in
             if hi > lo then begin
               for j = 0 to bins - 1 do
                 bin_n.(j) <- 0;

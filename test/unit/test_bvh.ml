@@ -318,6 +318,20 @@ let test_renumber () =
   Alcotest.check ints "same primitives, renamed" (sort_uniq (walk t o d)) (sort_uniq (List.map (fun j -> perm.(j)) (walk t' o d)));
   ignore prim
 
+(* A primitive whose box is infinite (a sphere of radius -1e400) has a NaN centre. The centres'
+   bounds are taken with comparisons that NaN fails, so they can leave out the centres read before
+   it, and the build indexed its bins with a negative number for those (memory corruption under
+   -unsafe; found by the fuzzer). Every primitive must still be in exactly one leaf. *)
+let test_non_finite_boxes () =
+  let inf = infinity in
+  let whole = (-.inf, -.inf, -.inf, inf, inf, inf) and far = (-1e6, 0., 0., -1e6 +. 1., 1., 1.) in
+  List.iter
+    (fun boxes ->
+      let n = List.length boxes in
+      let _, t = build_boxes boxes in
+      Alcotest.check ints "every primitive in one leaf" (range n) (List.sort compare (List.concat_map snd (leaves t))))
+    [ (far :: whole :: grid 2); grid 2 @ [ whole; far ]; List.init 9 (fun _ -> whole) @ grid 2; [ far; whole; far; whole; far; whole ] ]
+
 let tests =
   [
     Alcotest.test_case "random rays vs brute force" `Quick test_random_rays;
@@ -330,4 +344,5 @@ let tests =
     Alcotest.test_case "flat boxes" `Quick test_flat_boxes;
     Alcotest.test_case "4913 boxes: Morton-order top, structure and rays" `Quick test_large;
     Alcotest.test_case "renumber" `Quick test_renumber;
+    Alcotest.test_case "infinite and NaN boxes" `Quick test_non_finite_boxes;
   ]
