@@ -7,7 +7,7 @@ DEB_PACKAGES = libcamlimages-ocaml-dev libalcotest-ocaml-dev \
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 POVML = ./_build/default/bin/main.exe
 
-.PHONY: all deps build render test bench report references clean
+.PHONY: all deps build render test fuzz bench report references clean
 
 all: build
 
@@ -32,6 +32,17 @@ render: build
 test: build
 	dune test --force
 
+# AFL++ on the interpreter and a tiny render for FUZZ_SECONDS (test/fuzz/afl.sh), built instrumented in
+# _build_afl (test/fuzz/afl.workspace); prints the inputs tried and fails on any crash or hang.
+FUZZ_SECONDS ?= 1800
+fuzz: deps
+	@dpkg-query -W -f='$${Status}' afl++ 2>/dev/null | grep -q "install ok installed" || { \
+	  echo "Installing Debian packages: afl++"; \
+	  $(SUDO) apt-get update -q && DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -q afl++; }
+	dune build --workspace test/fuzz/afl.workspace --build-dir _build_afl \
+	  ./test/fuzz/afl_main.exe ./test/fuzz/povml.dict
+	FUZZ_SECONDS=$(FUZZ_SECONDS) bash test/fuzz/afl.sh
+
 bench: build
 	bash scenes/bench/run.sh
 
@@ -46,3 +57,4 @@ references: deps
 
 clean:
 	dune clean
+	rm -rf _build_afl _fuzz

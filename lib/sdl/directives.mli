@@ -1,5 +1,8 @@
 (** Directives (POVRAY-3.7 §11.3), run as the token stream is read. *)
 
+val directive_names : string list
+(** [directive_names] are the directives povml knows, without the '#'. *)
+
 val directive : Reader.st -> string -> Loc.t -> unit
 (** [directive st name loc] runs the directive [#name] read at [loc]. *)
 

@@ -1,6 +1,9 @@
 (** Expressions (POVRAY-3.7 §11.2): floats, vectors, colours, strings, the built-in functions and
     the transformations. *)
 
+val function_names : string list
+(** [function_names] are the built-in functions povml reads. *)
+
 val object_set : unit Reader.Names.t
 (** [object_set] are the keywords that start an object povml reads. *)
 

@@ -1,0 +1,17 @@
+(** The fuzz target: one input through the interpreter and a tiny render, and whether what
+    happened is allowed. Shared by the AFL++ executable and the deterministic run in the tests. *)
+
+val limits : Povml.Scene_limits.t
+(** [limits] are small limits, so that a legitimate but huge scene ends quickly with a limit error
+    instead of looking like a hang: 10,000 loop iterations, macro calls and objects, nesting
+    2,000, 512 MiB; the default macro and include depths. *)
+
+type outcome =
+  | Scene of int  (** the scene was read and rendered, with this many warnings *)
+  | Refused of Povml.Error.t  (** the scene was refused with a located error ([Scene_error]) *)
+  | Bug of string  (** anything else: an exception that is not [Scene_error], described *)
+
+val run : ?render:bool -> file:string -> string -> outcome
+(** [run ?render ~file text] interprets [text] (named [file] in locations) with [limits] and, when
+    [render] (the default) is set, compiles the scene and renders it at 8×8. Every exception but
+    [Scene_error] becomes [Bug], with its backtrace when backtraces are recorded. *)

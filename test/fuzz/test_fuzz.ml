@@ -1,0 +1,90 @@
+(* The short deterministic fuzz run of make test: with a fixed seed, mutations of the scenes in
+   scenes/ and test/fuzz/seeds go through the interpreter and an 8×8 render, and every outcome
+   other than a scene or a located scene error fails the test, the input saved beside it.
+
+   A mutator of our own rather than crowbar: crowbar's inputs are values built by generators, and
+   without AFL it only samples them at random; mutating real scenes keeps most inputs close to
+   valid, so the run reaches directives, macros and objects in its few seconds. AFL++ (make fuzz)
+   is the long, coverage-guided run.
+
+   Each input has a time budget: a CPU-time timer whose handler raises (OCaml runs it at the next
+   allocation), and a wall-clock timer left at its default action, which ends the process if a
+   loop never allocates; the input being run is in fuzz_current.pov for that case. *)
+
+open Povml_fuzz
+
+let inputs = try int_of_string (Sys.getenv "POVML_FUZZ_INPUTS") with Not_found | Failure _ -> 3000
+let budget = 2.
+let max_seed_bytes = 8192
+
+exception Out_of_time
+
+(* the scenes of scenes/bench are left out: their loops run for seconds on purpose *)
+let scene_dirs = [ "../../scenes"; "../../scenes/course"; "../../scenes/fidelity"; "../../scenes/stiff"; "seeds" ]
+
+let read path =
+  let ic = open_in_bin path in
+  Fun.protect ~finally:(fun () -> close_in ic) (fun () -> really_input_string ic (in_channel_length ic))
+
+let seeds =
+  List.concat_map
+    (fun d ->
+      if Sys.file_exists d then
+        Sys.readdir d |> Array.to_list |> List.sort compare
+        |> List.filter (fun f -> Filename.check_suffix f ".pov")
+        |> List.map (Filename.concat d)
+        |> List.filter (fun p -> (Unix.stat p).st_size <= max_seed_bytes)
+      else [])
+    scene_dirs
+  |> Array.of_list
+
+let write path text =
+  let oc = open_out_bin path in
+  Fun.protect ~finally:(fun () -> close_out oc) (fun () -> output_string oc text)
+
+let keep fd text =
+  ignore (Unix.lseek fd 0 SEEK_SET);
+  ignore (Unix.write_substring fd text 0 (String.length text));
+  Unix.ftruncate fd (String.length text)
+
+let set_timer which seconds = ignore (Unix.setitimer which { Unix.it_interval = 0.; it_value = seconds })
+
+let () =
+  Printexc.record_backtrace true;
+  if Array.length seeds < 20 then (Printf.eprintf "test_fuzz: only %d seed scenes found\n" (Array.length seeds); exit 1);
+  let texts = Array.map read seeds in
+  (* rewritten in place for each input: opening with truncation costs a millisecond on ext4 *)
+  let current = Unix.openfile "fuzz_current.pov" [ O_WRONLY; O_CREAT ] 0o644 in
+  let timed_out = ref false in
+  Sys.set_signal Sys.sigvtalrm (Sys.Signal_handle (fun _ -> timed_out := true; raise Out_of_time));
+  let rng = Random.State.make [| 6; 4 |] in
+  let scenes = ref 0 and refused = ref 0 and bugs = ref [] in
+  let t0 = Unix.gettimeofday () in
+  for i = 1 to inputs do
+    let k = Random.State.int rng (Array.length seeds) in
+    let text = Mutate.mutate rng ~seeds:texts texts.(k) in
+    keep current text;
+    timed_out := false;
+    set_timer Unix.ITIMER_VIRTUAL budget;
+    set_timer Unix.ITIMER_REAL (10. *. budget);
+    let outcome = Target.run ~file:seeds.(k) text in
+    set_timer Unix.ITIMER_VIRTUAL 0.;
+    set_timer Unix.ITIMER_REAL 0.;
+    match outcome with
+    | _ when !timed_out -> bugs := (i, seeds.(k), text, Printf.sprintf "took more than %g s of CPU time" budget) :: !bugs
+    | Scene _ -> incr scenes
+    | Refused _ -> incr refused
+    | Bug msg -> bugs := (i, seeds.(k), text, msg) :: !bugs
+  done;
+  Unix.close current;
+  Sys.remove "fuzz_current.pov";
+  let bugs = List.rev !bugs in
+  Printf.printf "%d inputs from %d seed scenes in %.1f s: %d scenes, %d scene errors, %d bugs\n" inputs (Array.length seeds)
+    (Unix.gettimeofday () -. t0) !scenes !refused (List.length bugs);
+  List.iter
+    (fun (i, seed, text, msg) ->
+      let path = Printf.sprintf "fuzz_failure_%d.pov" i in
+      write path text;
+      Printf.printf "input %d (a mutation of %s, saved as %s): %s\n" i seed (Filename.concat (Sys.getcwd ()) path) msg)
+    bugs;
+  if bugs <> [] then exit 1
