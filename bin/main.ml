@@ -55,6 +55,11 @@ let source file =
           try Some (really_input_string ic (in_channel_length ic)) with Sys_error _ | End_of_file -> None)
 
 let print_error e = prerr_string (Error.render ~source ~kind:"error" e)
+
+(* The exit status of a scene error: 1 for a wrong scene, 3 for a limit reached, 4 for a file the
+   scene may not read or write. *)
+let exit_status (e : Error.t) = match e.kind with Scene -> 1 | Limit -> 3 | Access -> 4
+let fail e = print_error e; `Ok (exit_status e)
 let print_warning e = prerr_string (Error.render ~source ~kind:"warning" e)
 
 let hms s =
@@ -113,20 +118,25 @@ let usage_error msg = `Error (false, msg)
 
 let dump_scene iopts input =
   match Interp.load_file iopts input with
-  | exception Error.Scene_error e -> print_error e; `Ok 1
+  | exception Error.Scene_error e -> fail e
   | scene, warnings ->
       List.iter print_warning warnings;
       print_string (Dump.scene scene);
       `Ok 0
 
 let run input positional output width height antialias no_aa method_ depth jitter no_jitter aa_gamma
-    libs threads sr er sc ec block_size format _display _verbose clock dump robust scene_scale scene_translate =
+    libs threads sr er sc ec block_size format _display _verbose clock dump robust scene_scale scene_translate limits =
   let input = match (input, positional) with Some i, _ -> Some i | None, Some p -> Some p | None, None -> None in
   match input with
   | None -> usage_error "no scene file given: use +I<file> or give the file name"
   | Some input ->
-      let iopts = { (Interp.default_options ~width ~height) with clock; library_paths = libs } in
+      let iopts = { (Interp.default_options ~width ~height) with clock; library_paths = libs; limits } in
       if width < 1 || height < 1 then usage_error "width and height must be at least 1"
+      else if width > limits.pixels / height then
+        fail
+          (Error.limit_error Loc.none
+             (Printf.sprintf "a %d×%d image has %s pixels, more than povml's limit of %s (raise it with --max-pixels N)" width height
+                (Reader.commas (width * height)) (Reader.commas limits.pixels)))
       else if dump then dump_scene iopts input
       else
         let fmt = match format with `Png -> Png_fmt | `Ppm -> Ppm_fmt in
@@ -171,7 +181,7 @@ let run input positional output width height antialias no_aa method_ depth jitte
           if not (scene_scale > 0. && Float.is_finite scene_scale) then usage_error "--scene-scale must be a positive number"
           else
           match Pipeline.run ~interp:iopts ?move opts input with
-          | exception Error.Scene_error e -> print_error e; `Ok 1
+          | exception Error.Scene_error e -> fail e
           | exception Pool.Worker_failed msg -> Printf.eprintf "povml: error: %s; no image was written\n" msg; `Ok 1
           | r -> (
               List.iter print_warning r.warnings;
@@ -209,7 +219,12 @@ let cmd =
           renderer's Pareto front ($(b,povml report --help)).";
       `S Manpage.s_exit_status;
       `P "0 when the image was written; 1 when the scene has an error (printed as \
-          file:line:column: error: … with the source line) or the image cannot be written; 2 on a usage error.";
+          file:line:column: error: … with the source line) or the image cannot be written; 2 on a usage error; \
+          3 when the scene went past one of the LIMITS below; 4 when the scene asked for a file it may not read or write.";
+      `S "LIMITS";
+      `P "Every scene ends, with an image or a located error, in bounded time and memory: loops, macro calls, \
+          nesting, objects, memory and image size have limits, each set with its switch. The defaults are far above \
+          what ordinary scenes need.";
       `S Manpage.s_examples;
       `P "povml +Iscenes/showcase.pov +W640 +H480 +A0.3";
     ]
@@ -274,8 +289,30 @@ let cmd =
     Arg.(value & opt vec Vec.zero & info [ "scene-translate" ] ~docv:"X,Y,Z"
            ~doc:"Render the scene moved by X,Y,Z (after $(b,--scene-scale)): objects, lights and camera.")
   in
+  let limits =
+    let lim = "LIMITS" in
+    let n names default doc = Arg.(value & opt int default & info names ~docv:"N" ~docs:lim ~doc) in
+    let d = Scene_limits.default in
+    let make include_depth macro_depth macro_calls iterations objects nesting memory_mb pixels =
+      { Scene_limits.include_depth; macro_depth; macro_calls; iterations; objects; nesting; memory_mb; pixels }
+    in
+    Term.(
+      const make
+      $ n [ "max-include-depth" ] d.include_depth "Include files nested deeper than N are an error (default 64; POV-Ray stops at 31)."
+      $ n [ "max-macro-depth" ] d.macro_depth "Macro calls nested deeper than N are an error (default 10,000; POV-Ray stops at 98)."
+      $ n [ "max-macro-calls" ] d.macro_calls "More than N macro calls in the whole scene are an error (default 10,000,000)."
+      $ n [ "max-iterations" ] d.iterations
+          "More than N iterations of $(b,#while) and $(b,#for) loops, all loops together, are an error (default 10,000,000): \
+           a loop that never ends stops with an error at the loop."
+      $ n [ "max-objects" ] d.objects "More than N objects and light sources in the scene are an error (default 10,000,000; a mesh counts as one)."
+      $ n [ "max-nesting" ] d.nesting
+          "Parentheses, vectors, signs and unions nested deeper than N are an error (default 10,000; POV-Ray warns about \
+           blocks nested deeper than 200 and povml gives the same warning)."
+      $ n [ "max-memory" ] d.memory_mb "Reading a scene that needs more than N MiB of memory is an error (default 4,096, or half of $(b,ulimit -v) when that is less)."
+      $ n [ "max-pixels" ] d.pixels "An image of more than N pixels (width × height) is an error (default 67,108,864 = 8192²).")
+  in
   let term =
-    Term.(ret (const run $ input $ positional $ output $ width $ height $ antialias $ no_aa $ method_ $ depth $ jitter $ no_jitter $ aa_gamma $ libs $ threads $ sr $ er $ sc $ ec $ block_size $ format $ display $ verbose $ clock $ dump $ robust $ scene_scale $ scene_translate))
+    Term.(ret (const run $ input $ positional $ output $ width $ height $ antialias $ no_aa $ method_ $ depth $ jitter $ no_jitter $ aa_gamma $ libs $ threads $ sr $ er $ sc $ ec $ block_size $ format $ display $ verbose $ clock $ dump $ robust $ scene_scale $ scene_translate $ limits))
   in
   Cmd.v (Cmd.info "povml" ~version:"0.1.0" ~doc ~man ~exits:[]) term
 

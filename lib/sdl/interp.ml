@@ -100,6 +100,7 @@ let load_string opts ~file text =
       frames = [ { lx = lexer; kind = Main; conds = [] } ];
       cur = { Token.kind = Eof; loc = Loc.none }; have = false; cur_elem = None; no_expand = false; defer = false; streams = [||];
       depth = 0; opts; global; tables = [ global ]; includes = 0; macro_depth = 0;
+      macro_calls = 0; iterations = 0; nesting = 0; braces = 0; object_count = 0;
       version = 370; version_set = false; warnings = [];
       objects = []; lights = []; camera = None; background = None; sky = None;
       assumed_gamma = None; max_trace_level = 5; adc_bailout = 1. /. 255.; ambient_light = Rgb.white;
@@ -113,7 +114,19 @@ let load_string opts ~file text =
   (try parse_statements st with
   | Unsupported (loc, what, notes) ->
       raise (Error.Scene_error { loc; msg = "not supported yet: " ^ what; notes = notes @ chain st; kind = Scene })
-  | Error.Scene_error e -> raise (Error.Scene_error { e with notes = e.notes @ chain st }));
+  | Error.Scene_error e -> raise (Error.Scene_error { e with notes = e.notes @ chain st })
+  (* the limits above should come first; these are the last line of defence, located where the
+     reader was *)
+  | Stack_overflow ->
+      raise
+        (Error.Scene_error
+           { loc = st.cur.loc; kind = Limit; notes = chain st;
+             msg = "the scene nests too deeply for the stack (lower --max-nesting or --max-macro-depth, or raise the stack size with ulimit -s)" })
+  | Out_of_memory ->
+      raise
+        (Error.Scene_error
+           { loc = st.cur.loc; kind = Limit; notes = chain st;
+             msg = "the scene needs more memory than the system gives povml (see --max-memory)" }));
   let scene = finish_scene st in
   (scene, List.rev st.warnings)
 
