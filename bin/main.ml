@@ -300,7 +300,7 @@ let cmd =
       const make
       $ n [ "max-include-depth" ] d.include_depth "Include files nested deeper than N are an error (default 64; POV-Ray stops at 31)."
       $ n [ "max-macro-depth" ] d.macro_depth "Macro calls nested deeper than N are an error (default 10,000; POV-Ray stops at 98)."
-      $ n [ "max-macro-calls" ] d.macro_calls "More than N macro calls in the whole scene are an error (default 10,000,000)."
+      $ n [ "max-macro-calls" ] d.macro_calls "More than N macro calls in the whole scene are an error (default 3,000,000)."
       $ n [ "max-iterations" ] d.iterations
           "More than N iterations of $(b,#while) and $(b,#for) loops, all loops together, are an error (default 10,000,000): \
            a loop that never ends stops with an error at the loop."
@@ -330,11 +330,26 @@ let () =
     List.map
       (fun a ->
         match translate_switch a with
-        | `Keep a -> a
-        | `Use a -> a
-        | `Bad -> if !bad = None then bad := Some a; a)
+        | `Keep a -> `Keep a
+        | `Use a -> `Switch a
+        | `Bad -> if !bad = None then bad := Some a; `Keep a)
       (List.tl argv)
   in
+  (* As in POV-Ray, the last of repeated switches wins (+W16 … +W640 is 640 wide; -A … +A0.3
+     antialiases); +L accumulates. *)
+  let key a =
+    let name = match String.index_opt a '=' with Some i -> String.sub a 2 (i - 2) | None -> String.sub a 2 (String.length a - 2) in
+    if String.length name > 3 && String.sub name 0 3 = "no-" then String.sub name 3 (String.length name - 3) else name
+  in
+  let rec last_wins = function
+    | [] -> []
+    | `Keep a :: rest -> a :: last_wins rest
+    | `Switch a :: rest ->
+        let k = key a in
+        if k <> "library-path" && List.exists (function `Switch b -> key b = k | `Keep _ -> false) rest then last_wins rest
+        else a :: last_wins rest
+  in
+  let args = last_wins args in
   match !bad with
   | Some a ->
       Printf.eprintf "povml: unknown or incomplete switch '%s' (see povml --help)\n" a;

@@ -253,8 +253,8 @@ let directive st d loc =
    passed by reference, then the body is read in a table of its own. *)
 let invoke st (m : V.macro) loc =
   if st.macro_depth >= st.opts.limits.macro_depth then
-    Error.limit_at loc "macro calls are nested more than %s deep, povml's limit (does '%s' call itself without end? raise the limit with --max-macro-depth N)"
-      (commas st.opts.limits.macro_depth) m.mname;
+    Error.limit_at loc "macro calls are nested more than %s deep, povml's limit (a macro that calls itself without end? raise the limit with --max-macro-depth N)"
+      (commas st.opts.limits.macro_depth);
   st.macro_calls <- st.macro_calls + 1;
   if st.macro_calls > st.opts.limits.macro_calls then
     Error.limit_at loc "the scene has called macros %s times, povml's limit (raise it with --max-macro-calls N)" (commas st.opts.limits.macro_calls);

@@ -75,8 +75,9 @@ let excerpt ~source (loc : Loc.t) =
             let first = let rec back i = if i > 0 && Char.code line.[i] land 0xC0 = 0x80 then back (i - 1) else i in back first in
             let shown, pad, cut = display line ~first ~width:(if String.length line <= 200 then 200 else 160) ~col in
             let lead = if first > 0 then "…" else "" in
-            Printf.sprintf "%5d | %s%s%s\n      | %s%s^\n" loc.line lead shown (if cut then "…" else "")
-              (if first > 0 then " " else "") pad)
+            let number = Printf.sprintf "%5d" loc.line in
+            Printf.sprintf "%s | %s%s%s\n%s | %s%s^\n" number lead shown (if cut then "…" else "")
+              (String.make (String.length number) ' ') (if first > 0 then " " else "") pad)
 
 let render ~source ~kind e =
   let head =

@@ -38,6 +38,7 @@ let rec parse_statements st =
   | _ -> unexpected st "an object, light_source, camera or directive"
 
 let finish_scene st : Scene.t =
+  if st.objects = [] && st.lights = [] then warn st Loc.none "no objects in scene";
   (* §8.1: without #version the effective version is 3.62 *)
   let version = if st.version_set then st.version else 362 in
   let gamma =

@@ -34,7 +34,7 @@ let default =
   {
     include_depth = 64;
     macro_depth = 10_000;
-    macro_calls = 10_000_000;
+    macro_calls = 3_000_000;
     iterations = 10_000_000;
     objects = 10_000_000;
     nesting = 10_000;
