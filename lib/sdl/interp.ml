@@ -16,6 +16,7 @@ type options = Reader.options = {
   debug : string -> unit;
   included : string -> depth:int -> float -> unit;
   limits : Scene_limits.t;
+  access : Access.t;
 }
 
 let keywords = Reader.keywords
@@ -93,6 +94,9 @@ let chain st =
     @ List.filteri (fun i _ -> i >= n - 2) notes
 
 let load_string opts ~file text =
+  (* the scene may read the files beside it and in the library paths *)
+  let access = List.fold_left Access.allow_read opts.access (Filename.dirname file :: opts.library_paths) in
+  let opts = { opts with access } in
   let lexer = Lexer.create ~file text in
   let global = Names.create 256 in
   let st =
@@ -104,16 +108,18 @@ let load_string opts ~file text =
       objects = []; lights = []; camera = None; background = None; sky = None;
       assumed_gamma = None; max_trace_level = 5; adc_bailout = 1. /. 255.; ambient_light = Rgb.white;
       default_texture = Defaults.texture;
-      directive = (fun _ _ _ -> ()); invoke = (fun _ _ _ -> ()); index = (fun _ _ -> 0);
+      directive = (fun _ _ _ -> ()); invoke = (fun _ _ _ -> ()); index = (fun _ _ -> 0); files = [];
     }
   in
   st.directive <- directive;
   st.invoke <- invoke;
   st.index <- parse_index;
-  (try parse_statements st with
-  | Unsupported (loc, what, notes) ->
-      raise (Error.Scene_error { loc; msg = "not supported yet: " ^ what; notes = notes @ chain st; kind = Scene })
-  | Error.Scene_error e -> raise (Error.Scene_error { e with notes = e.notes @ chain st }));
+  (* the scene's files are closed when its text has been read, or at its first error *)
+  Fun.protect ~finally:(fun () -> User_files.close_all st) (fun () ->
+      try parse_statements st with
+      | Unsupported (loc, what, notes) ->
+          raise (Error.Scene_error { loc; msg = "not supported yet: " ^ what; notes = notes @ chain st; kind = Scene })
+      | Error.Scene_error e -> raise (Error.Scene_error { e with notes = e.notes @ chain st }));
   let scene = finish_scene st in
   (scene, List.rev st.warnings)
 
@@ -126,6 +132,7 @@ let default_options ~width ~height =
     debug = (fun s -> prerr_string s; flush stderr);
     included = (fun _ ~depth:_ _ -> ());
     limits = Scene_limits.default;
+    access = Access.default;
   }
 
 let load_file opts path = load_string opts ~file:path (read_file path)
