@@ -55,6 +55,9 @@ let source file =
           try Some (really_input_string ic (in_channel_length ic)) with Sys_error _ | End_of_file -> None)
 
 let print_error e = prerr_string (Error.render ~source ~kind:"error" e)
+
+(* The exit status of a scene error: 1 for a wrong scene, 3 for a limit, 4 for a refused file. *)
+let error_status (e : Error.t) = match e.kind with Error.Scene -> 1 | Error.Limit -> 3 | Error.Access -> 4
 let print_warning e = prerr_string (Error.render ~source ~kind:"warning" e)
 
 let hms s =
@@ -113,19 +116,22 @@ let usage_error msg = `Error (false, msg)
 
 let dump_scene iopts input =
   match Interp.load_file iopts input with
-  | exception Error.Scene_error e -> print_error e; `Ok 1
+  | exception Error.Scene_error e -> print_error e; `Ok (error_status e)
   | scene, warnings ->
       List.iter print_warning warnings;
       print_string (Dump.scene scene);
       `Ok 0
 
 let run input positional output width height antialias no_aa method_ depth jitter no_jitter aa_gamma
-    libs threads sr er sc ec block_size format _display _verbose clock dump robust scene_scale scene_translate =
+    libs threads sr er sc ec block_size format _display _verbose clock dump robust scene_scale scene_translate
+    allow_read allow_write =
   let input = match (input, positional) with Some i, _ -> Some i | None, Some p -> Some p | None, None -> None in
   match input with
   | None -> usage_error "no scene file given: use +I<file> or give the file name"
   | Some input ->
-      let iopts = { (Interp.default_options ~width ~height) with clock; library_paths = libs } in
+      let access = List.fold_left Access.allow_read Access.default allow_read in
+      let access = List.fold_left Access.allow_write access allow_write in
+      let iopts = { (Interp.default_options ~width ~height) with clock; library_paths = libs; access } in
       if width < 1 || height < 1 then usage_error "width and height must be at least 1"
       else if dump then dump_scene iopts input
       else
@@ -171,7 +177,7 @@ let run input positional output width height antialias no_aa method_ depth jitte
           if not (scene_scale > 0. && Float.is_finite scene_scale) then usage_error "--scene-scale must be a positive number"
           else
           match Pipeline.run ~interp:iopts ?move opts input with
-          | exception Error.Scene_error e -> print_error e; `Ok 1
+          | exception Error.Scene_error e -> print_error e; `Ok (error_status e)
           | exception Pool.Worker_failed msg -> Printf.eprintf "povml: error: %s; no image was written\n" msg; `Ok 1
           | r -> (
               List.iter print_warning r.warnings;
@@ -199,6 +205,10 @@ let cmd =
           $(b,+L)dir, $(b,+K)v, $(b,+WT)n, $(b,+SR)/$(b,+ER)/$(b,+SC)/$(b,+EC) (partial render: full-size file, \
           unrendered pixels black), $(b,+FN) (PNG), $(b,+FP) (PPM), $(b,+D)/$(b,-D), $(b,+V)/$(b,-V). \
           Each is shown below with its long form.";
+      `P "A scene reads files ($(b,#include), $(b,#fopen), $(b,file_exists)) only under its own directory, \
+          the working directory, the $(b,+L) directories, /usr/share/povray-3.7/include and each \
+          $(b,--allow-read) directory, and writes files only under an $(b,--allow-write) directory; paths are \
+          resolved ($(b,..), symbolic links) before they are compared. POV-Ray's povray.conf is not read.";
       `S sw;
       `S Manpage.s_commands;
       `P "$(b,povml check) $(i,SCENE) [$(i,SWITCH)]… renders the scene with povml and with the installed POV-Ray, \
@@ -209,7 +219,8 @@ let cmd =
           renderer's Pareto front ($(b,povml report --help)).";
       `S Manpage.s_exit_status;
       `P "0 when the image was written; 1 when the scene has an error (printed as \
-          file:line:column: error: … with the source line) or the image cannot be written; 2 on a usage error.";
+          file:line:column: error: … with the source line) or the image cannot be written; 2 on a usage error; \
+          4 when the scene asks for a file it may not read or write (see $(b,--allow-read), $(b,--allow-write)).";
       `S Manpage.s_examples;
       `P "povml +Iscenes/showcase.pov +W640 +H480 +A0.3";
     ]
@@ -274,8 +285,19 @@ let cmd =
     Arg.(value & opt vec Vec.zero & info [ "scene-translate" ] ~docv:"X,Y,Z"
            ~doc:"Render the scene moved by X,Y,Z (after $(b,--scene-scale)): objects, lights and camera.")
   in
+  let allow_read =
+    Arg.(value & opt_all dir [] & info [ "allow-read" ] ~docv:"DIR" ~docs
+           ~doc:"Let the scene read the files under DIR ($(b,#include), $(b,#fopen) ... $(b,read), \
+                 $(b,file_exists)); repeatable. Without it a scene reads only under its own directory, the \
+                 working directory, the $(b,+L) directories and /usr/share/povray-3.7/include.")
+  in
+  let allow_write =
+    Arg.(value & opt_all dir [] & info [ "allow-write" ] ~docv:"DIR" ~docs
+           ~doc:"Let the scene write (and read) the files under DIR ($(b,#fopen) ... $(b,write) or \
+                 $(b,append)); repeatable. Without it a scene writes no file.")
+  in
   let term =
-    Term.(ret (const run $ input $ positional $ output $ width $ height $ antialias $ no_aa $ method_ $ depth $ jitter $ no_jitter $ aa_gamma $ libs $ threads $ sr $ er $ sc $ ec $ block_size $ format $ display $ verbose $ clock $ dump $ robust $ scene_scale $ scene_translate))
+    Term.(ret (const run $ input $ positional $ output $ width $ height $ antialias $ no_aa $ method_ $ depth $ jitter $ no_jitter $ aa_gamma $ libs $ threads $ sr $ er $ sc $ ec $ block_size $ format $ display $ verbose $ clock $ dump $ robust $ scene_scale $ scene_translate $ allow_read $ allow_write))
   in
   Cmd.v (Cmd.info "povml" ~version:"0.1.0" ~doc ~man ~exits:[]) term
 
