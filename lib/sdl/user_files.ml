@@ -156,7 +156,9 @@ let data_value lx =
   | _ -> data_error t "a float, a vector or a string"
 
 (* Where #read stores a value: a new identifier (made global, as POV-Ray does), or an identifier
-   or array element that holds a float, a 3-term vector or a string; POV-Ray refuses the others. *)
+   or array element that holds a float, a 3-term vector or a string; POV-Ray refuses the others.
+   A new identifier the data ends before stays undefined (POV-Ray declares it without a value,
+   so that its defined() is true though it cannot be used). *)
 let target st name at =
   let refuse v =
     Error.raise_at at "'#read' stores into a new identifier or one that holds a float, a 3-term vector or a string; '%s' is %s" name

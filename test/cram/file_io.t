@@ -274,3 +274,14 @@ A file is read or written, not both, and colours are not written, as in POV-Ray:
       3 | #write (Out, rgb 1)
         |              ^
   [1]
+
+--help documents both switches; a directory that does not exist is a usage error:
+
+  $ povml --help=plain | grep -e '--allow-read=DIR' -e '--allow-write=DIR'
+         --allow-read=DIR
+         --allow-write=DIR
+  $ povml --dump loop.pov --allow-write nothere
+  povml: option '--allow-write': no 'nothere' directory
+  Usage: povml [OPTION]… [SCENE]
+  Try 'povml --help' for more information.
+  [2]
