@@ -125,12 +125,15 @@ let dump_scene iopts input =
       `Ok 0
 
 let run input positional output width height antialias no_aa method_ depth jitter no_jitter aa_gamma
-    libs threads sr er sc ec block_size format _display _verbose clock dump robust scene_scale scene_translate limits =
+    libs threads sr er sc ec block_size format _display _verbose clock dump robust scene_scale scene_translate
+    allow_read allow_write limits =
   let input = match (input, positional) with Some i, _ -> Some i | None, Some p -> Some p | None, None -> None in
   match input with
   | None -> usage_error "no scene file given: use +I<file> or give the file name"
   | Some input ->
-      let iopts = { (Interp.default_options ~width ~height) with clock; library_paths = libs; limits } in
+      let access = List.fold_left Access.allow_read Access.default allow_read in
+      let access = List.fold_left Access.allow_write access allow_write in
+      let iopts = { (Interp.default_options ~width ~height) with clock; library_paths = libs; access; limits } in
       if width < 1 || height < 1 then usage_error "width and height must be at least 1"
       else if width > limits.pixels / height then
         fail
@@ -209,6 +212,10 @@ let cmd =
           $(b,+L)dir, $(b,+K)v, $(b,+WT)n, $(b,+SR)/$(b,+ER)/$(b,+SC)/$(b,+EC) (partial render: full-size file, \
           unrendered pixels black), $(b,+FN) (PNG), $(b,+FP) (PPM), $(b,+D)/$(b,-D), $(b,+V)/$(b,-V). \
           Each is shown below with its long form.";
+      `P "A scene reads files ($(b,#include), $(b,#fopen), $(b,file_exists)) only under its own directory, \
+          the working directory, the $(b,+L) directories, /usr/share/povray-3.7/include and each \
+          $(b,--allow-read) directory, and writes files only under an $(b,--allow-write) directory; paths are \
+          resolved ($(b,..), symbolic links) before they are compared. POV-Ray's povray.conf is not read.";
       `S sw;
       `S Manpage.s_commands;
       `P "$(b,povml check) $(i,SCENE) [$(i,SWITCH)]… renders the scene with povml and with the installed POV-Ray, \
@@ -220,7 +227,7 @@ let cmd =
       `S Manpage.s_exit_status;
       `P "0 when the image was written; 1 when the scene has an error (printed as \
           file:line:column: error: … with the source line) or the image cannot be written; 2 on a usage error; \
-          3 when the scene went past one of the LIMITS below; 4 when the scene asked for a file it may not read or write.";
+          3 when the scene went past one of the LIMITS below; 4 when the scene asks for a file it may not read or write (see $(b,--allow-read), $(b,--allow-write)).";
       `S "LIMITS";
       `P "Every scene ends, with an image or a located error, in bounded time and memory: loops, macro calls, \
           nesting, objects, memory and image size have limits, each set with its switch. The defaults are far above \
@@ -289,6 +296,17 @@ let cmd =
     Arg.(value & opt vec Vec.zero & info [ "scene-translate" ] ~docv:"X,Y,Z"
            ~doc:"Render the scene moved by X,Y,Z (after $(b,--scene-scale)): objects, lights and camera.")
   in
+  let allow_read =
+    Arg.(value & opt_all dir [] & info [ "allow-read" ] ~docv:"DIR" ~docs
+           ~doc:"Let the scene read the files under DIR ($(b,#include), $(b,#fopen) ... $(b,read), \
+                 $(b,file_exists)); repeatable. Without it a scene reads only under its own directory, the \
+                 working directory, the $(b,+L) directories and /usr/share/povray-3.7/include.")
+  in
+  let allow_write =
+    Arg.(value & opt_all dir [] & info [ "allow-write" ] ~docv:"DIR" ~docs
+           ~doc:"Let the scene write (and read) the files under DIR ($(b,#fopen) ... $(b,write) or \
+                 $(b,append)); repeatable. Without it a scene writes no file.")
+  in
   let limits =
     let lim = "LIMITS" in
     let n names default doc = Arg.(value & opt int default & info names ~docv:"N" ~docs:lim ~doc) in
@@ -312,7 +330,7 @@ let cmd =
       $ n [ "max-pixels" ] d.pixels "An image of more than N pixels (width × height) is an error (default 67,108,864 = 8192²).")
   in
   let term =
-    Term.(ret (const run $ input $ positional $ output $ width $ height $ antialias $ no_aa $ method_ $ depth $ jitter $ no_jitter $ aa_gamma $ libs $ threads $ sr $ er $ sc $ ec $ block_size $ format $ display $ verbose $ clock $ dump $ robust $ scene_scale $ scene_translate $ limits))
+    Term.(ret (const run $ input $ positional $ output $ width $ height $ antialias $ no_aa $ method_ $ depth $ jitter $ no_jitter $ aa_gamma $ libs $ threads $ sr $ er $ sc $ ec $ block_size $ format $ display $ verbose $ clock $ dump $ robust $ scene_scale $ scene_translate $ allow_read $ allow_write $ limits))
   in
   Cmd.v (Cmd.info "povml" ~version:"0.1.0" ~doc ~man ~exits:[]) term
 

@@ -122,6 +122,7 @@ let directive st d loc =
       | None ->
           Error.raise_at loc "cannot find the include file \"%s\" (searched %s)" name (String.concat ", " (include_dirs st))
       | Some path ->
+          Access.check_read st.opts.access loc path;
           let text = read_file path in
           st.frames <- { lx = Lexer.create ~file:path text; kind = Included (loc, Unix.gettimeofday ()); conds = [] } :: st.frames;
           st.tables <- Names.create 16 :: st.tables;
@@ -242,7 +243,10 @@ let directive st d loc =
         | _ -> unexpected st "'texture', 'pigment', 'finish' or '}' in #default"
       in
       loop ()
-  | "fopen" | "fclose" | "read" | "write" -> not_supported loc (Printf.sprintf "'#%s'" d)
+  | "fopen" -> User_files.fopen st
+  | "fclose" -> User_files.fclose st
+  | "read" -> User_files.read st loc
+  | "write" -> User_files.write st
   | "render" | "statistics" -> st.opts.debug (string_arg st d)
   | _ -> (
       match Suggest.nearest d directive_names with

@@ -396,7 +396,11 @@ and parse_function st loc name =
   | "strlwr" -> arity 1; V.String (String.lowercase_ascii (string_arg (arg 0)))
   | "val" -> arity 1; V.Float (Strfmt.value (string_arg (arg 0)))
   | "strcmp" -> arity 2; V.Float (float_of_int (Strfmt.compare (string_arg (arg 0)) (string_arg (arg 1))))
-  | "file_exists" -> arity 1; V.Float (if find_file ~inc:false st (string_arg (arg 0)) <> None then 1. else 0.)
+  | "file_exists" ->
+      (* POV-Ray opens the file through its I/O restrictions, so a file it may not read is not there *)
+      arity 1;
+      let found = match find_file ~inc:false st (string_arg (arg 0)) with Some p -> Access.readable st.opts.access p | None -> false in
+      V.Float (if found then 1. else 0.)
   | _ -> Error.raise_at loc "unknown function '%s'" name
 
 (* The arguments of dimensions() and dimension_size(): an array identifier, then floats. *)

@@ -16,6 +16,7 @@ type options = Reader.options = {
   debug : string -> unit;
   included : string -> depth:int -> float -> unit;
   limits : Scene_limits.t;
+  access : Access.t;
 }
 
 let keywords = Reader.keywords
@@ -94,6 +95,9 @@ let chain st =
     @ List.filteri (fun i _ -> i >= n - 2) notes
 
 let load_string opts ~file text =
+  (* the scene may read the files beside it and in the library paths *)
+  let access = List.fold_left Access.allow_read opts.access (Filename.dirname file :: opts.library_paths) in
+  let opts = { opts with access } in
   let lexer = Lexer.create ~file text in
   let global = Names.create 256 in
   let st =
@@ -106,28 +110,30 @@ let load_string opts ~file text =
       objects = []; lights = []; camera = None; background = None; sky = None;
       assumed_gamma = None; max_trace_level = 5; adc_bailout = 1. /. 255.; ambient_light = Rgb.white;
       default_texture = Defaults.texture;
-      directive = (fun _ _ _ -> ()); invoke = (fun _ _ _ -> ()); index = (fun _ _ -> 0);
+      directive = (fun _ _ _ -> ()); invoke = (fun _ _ _ -> ()); index = (fun _ _ -> 0); files = [];
     }
   in
   st.directive <- directive;
   st.invoke <- invoke;
   st.index <- parse_index;
-  (try parse_statements st with
-  | Unsupported (loc, what, notes) ->
-      raise (Error.Scene_error { loc; msg = "not supported yet: " ^ what; notes = notes @ chain st; kind = Scene })
-  | Error.Scene_error e -> raise (Error.Scene_error { e with notes = e.notes @ chain st })
-  (* the limits above should come first; these are the last line of defence, located where the
-     reader was *)
-  | Stack_overflow ->
-      raise
-        (Error.Scene_error
-           { loc = st.cur.loc; kind = Limit; notes = chain st;
-             msg = "the scene nests too deeply for the stack (lower --max-nesting or --max-macro-depth, or raise the stack size with ulimit -s)" })
-  | Out_of_memory ->
-      raise
-        (Error.Scene_error
-           { loc = st.cur.loc; kind = Limit; notes = chain st;
-             msg = "the scene needs more memory than the system gives povml (see --max-memory)" }));
+  (* the scene's files are closed when its text has been read, or at its first error *)
+  Fun.protect ~finally:(fun () -> User_files.close_all st) (fun () ->
+      try parse_statements st with
+      | Unsupported (loc, what, notes) ->
+          raise (Error.Scene_error { loc; msg = "not supported yet: " ^ what; notes = notes @ chain st; kind = Scene })
+      | Error.Scene_error e -> raise (Error.Scene_error { e with notes = e.notes @ chain st })
+      (* the limits above should come first; these are the last line of defence, located where the
+         reader was *)
+      | Stack_overflow ->
+          raise
+            (Error.Scene_error
+               { loc = st.cur.loc; kind = Limit; notes = chain st;
+                 msg = "the scene nests too deeply for the stack (lower --max-nesting or --max-macro-depth, or raise the stack size with ulimit -s)" })
+      | Out_of_memory ->
+          raise
+            (Error.Scene_error
+               { loc = st.cur.loc; kind = Limit; notes = chain st;
+                 msg = "the scene needs more memory than the system gives povml (see --max-memory)" }));
   let scene = finish_scene st in
   (scene, List.rev st.warnings)
 
@@ -140,6 +146,7 @@ let default_options ~width ~height =
     debug = (fun s -> prerr_string s; flush stderr);
     included = (fun _ ~depth:_ _ -> ());
     limits = Scene_limits.default;
+    access = Access.default;
   }
 
 let load_file opts path = load_string opts ~file:path (read_file path)

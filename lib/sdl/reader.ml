@@ -21,6 +21,7 @@ type options = {
   debug : string -> unit;  (** where #debug text goes *)
   included : string -> depth:int -> float -> unit;  (** an include file was read: path, nesting, seconds *)
   limits : Scene_limits.t;
+  access : Access.t;  (** the files the scene may read and write *)
 }
 
 type camera_spec = V.camera_spec = {
@@ -88,6 +89,7 @@ type st = {
   mutable directive : st -> string -> Loc.t -> unit;  (* the directive reader, tied below *)
   mutable invoke : st -> V.macro -> Loc.t -> unit;  (* the macro caller, tied below *)
   mutable index : st -> V.array_v -> int;  (* reads the subscripts of an array element, tied below *)
+  mutable files : V.user_file list;  (* the files #fopen opened, closed when the scene ends *)
 }
 
 (* ---------------------------------------------------------------------------------------------- *)
@@ -348,7 +350,7 @@ let main_file st = Lexer.file (List.nth st.frames (List.length st.frames - 1)).l
 
 let include_dirs st =
   let main = Filename.dirname (main_file st) in
-  let debian = "/usr/share/povray-3.7/include" in
+  let debian = Access.standard_include_dir in
   (* the scene's directory (POV-Ray searches the working directory, usually the scene's), then +L *)
   let dirs = [ main; Filename.current_dir_name ] @ st.opts.library_paths @ (if Sys.file_exists debian then [ debian ] else []) in
   List.fold_left (fun acc d -> if List.mem d acc then acc else acc @ [ d ]) [] dirs

@@ -16,6 +16,7 @@ type options = {
   debug : string -> unit;
   included : string -> depth:int -> float -> unit;
   limits : Scene_limits.t;
+  access : Access.t;
 }
 
 (** The camera as written. *)
@@ -84,6 +85,7 @@ type st = {
   mutable directive : st -> string -> Loc.t -> unit;
   mutable invoke : st -> V.macro -> Loc.t -> unit;
   mutable index : st -> V.array_v -> int;
+  mutable files : V.user_file list;
 }
 
 val keywords : string list

@@ -6,6 +6,12 @@ without the render statistics, its exit status and whether an image was written.
 0 image written, 1 scene error, 3 one of povml's limits reached. Every scene of this directory has
 its case below (the last case checks that).
 
+The test directory holds the scenes as symbolic links into the build tree; povml resolves links
+before it decides whether a scene may read a file (a link cannot lead a scene out of its directory),
+so the scenes are made plain files first:
+
+  $ for f in *.pov; do cp "$f" "$f.copy" && mv "$f.copy" "$f"; done
+
 Each scene starts with the same four lines (#version 3.7, assumed_gamma 1, a camera, a light), so
 the errors are on line 5.
 
