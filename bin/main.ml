@@ -113,7 +113,7 @@ let usage_error msg = `Error (false, msg)
 
 let dump_scene iopts input =
   match Interp.load_file iopts input with
-  | exception Error.Scene_error e -> print_error e; `Ok 1
+  | exception Error.Scene_error e -> print_error e; `Ok (Exits.scene_error e.kind)
   | scene, warnings ->
       List.iter print_warning warnings;
       print_string (Dump.scene scene);
@@ -170,16 +170,17 @@ let run input positional output width height antialias no_aa method_ depth jitte
           in
           if not (scene_scale > 0. && Float.is_finite scene_scale) then usage_error "--scene-scale must be a positive number"
           else
+          let () = Interrupt.install () in
           match Pipeline.run ~interp:iopts ?move opts input with
-          | exception Error.Scene_error e -> print_error e; `Ok 1
+          | exception Error.Scene_error e -> print_error e; `Ok (Exits.scene_error e.kind)
           | exception Pool.Worker_failed msg -> Printf.eprintf "povml: error: %s; no image was written\n" msg; `Ok 1
           | r -> (
               List.iter print_warning r.warnings;
               let f = match fmt with Png_fmt -> Output.Png | Ppm_fmt -> Output.Ppm in
-              match Output.write f output r.image with
+              match Interrupt.commit (fun () -> Output.write f output r.image) with
               | Error msg ->
                   Printf.eprintf "%s: error: cannot write the image: %s\n" output msg;
-                  `Ok 1
+                  `Ok Exits.cannot_write
               | Ok () ->
                   print_stats r opts;
                   Printf.eprintf "Wrote %s (%dx%d)\n" output width height;
@@ -207,9 +208,9 @@ let cmd =
       `P "$(b,povml report) $(i,SCENE)… $(b,--out) $(i,DIR) [$(i,SWITCH)]… sweeps antialiasing and trace-depth \
           settings in both renderers and writes error against time as CSV, Markdown and an SVG plot with each \
           renderer's Pareto front ($(b,povml report --help)).";
-      `S Manpage.s_exit_status;
-      `P "0 when the image was written; 1 when the scene has an error (printed as \
-          file:line:column: error: … with the source line) or the image cannot be written; 2 on a usage error.";
+    ]
+    @ Exits.man
+    @ [
       `S Manpage.s_examples;
       `P "povml +Iscenes/showcase.pov +W640 +H480 +A0.3";
     ]
@@ -303,8 +304,9 @@ let () =
       Printf.eprintf "povml: unknown or incomplete switch '%s' (see povml --help)\n" a;
       exit 2
   | None -> (
-      match Cmd.eval_value ~argv:(Array.of_list (prog :: args)) cmd with
-      | Ok (`Ok code) -> exit code
-      | Ok (`Version | `Help) -> exit 0
-      | Error (`Parse | `Term) -> exit 2
-      | Error `Exn -> exit 3)
+      exit @@ Exits.guard @@ fun () ->
+      match Cmd.eval_value ~catch:false ~argv:(Array.of_list (prog :: args)) cmd with
+      | Ok (`Ok code) -> code
+      | Ok (`Version | `Help) -> 0
+      | Error (`Parse | `Term) -> 2
+      | Error `Exn -> Exits.internal_error)
