@@ -25,7 +25,10 @@ let write fmt path img =
   Interrupt.hold (fun () ->
       Interrupt.check ();
       match Filename.temp_file ~temp_dir:dir ".povml-" ".part" with
-      | exception Sys_error msg -> Error msg
+      | exception Sys_error msg ->
+          (* the message names the temporary file, which never existed: name the directory *)
+          let reason = match String.rindex_opt msg ':' with Some i -> String.sub msg (i + 2) (String.length msg - i - 2) | None -> msg in
+          Error (dir ^ ": " ^ reason)
       | tmp -> (
           let discard () = try Sys.remove tmp with Sys_error _ -> () in
           match
