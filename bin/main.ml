@@ -56,10 +56,7 @@ let source file =
 
 let print_error e = prerr_string (Error.render ~source ~kind:"error" e)
 
-(* The exit status of a scene error: 1 for a wrong scene, 3 for a limit reached, 4 for a file the
-   scene may not read or write. *)
-let exit_status (e : Error.t) = match e.kind with Scene -> 1 | Limit -> 3 | Access -> 4
-let fail e = print_error e; `Ok (exit_status e)
+let fail (e : Error.t) = print_error e; `Ok (Exits.scene_error e.kind)
 let print_warning e = prerr_string (Error.render ~source ~kind:"warning" e)
 
 let hms s =
@@ -183,16 +180,17 @@ let run input positional output width height antialias no_aa method_ depth jitte
           in
           if not (scene_scale > 0. && Float.is_finite scene_scale) then usage_error "--scene-scale must be a positive number"
           else
+          let () = Interrupt.install () in
           match Pipeline.run ~interp:iopts ?move opts input with
           | exception Error.Scene_error e -> fail e
           | exception Pool.Worker_failed msg -> Printf.eprintf "povml: error: %s; no image was written\n" msg; `Ok 1
           | r -> (
               List.iter print_warning r.warnings;
               let f = match fmt with Png_fmt -> Output.Png | Ppm_fmt -> Output.Ppm in
-              match Output.write f output r.image with
+              match Interrupt.commit (fun () -> Output.write f output r.image) with
               | Error msg ->
                   Printf.eprintf "%s: error: cannot write the image: %s\n" output msg;
-                  `Ok 1
+                  `Ok Exits.cannot_write
               | Ok () ->
                   print_stats r opts;
                   Printf.eprintf "Wrote %s (%dx%d)\n" output width height;
@@ -224,10 +222,9 @@ let cmd =
       `P "$(b,povml report) $(i,SCENE)… $(b,--out) $(i,DIR) [$(i,SWITCH)]… sweeps antialiasing and trace-depth \
           settings in both renderers and writes error against time as CSV, Markdown and an SVG plot with each \
           renderer's Pareto front ($(b,povml report --help)).";
-      `S Manpage.s_exit_status;
-      `P "0 when the image was written; 1 when the scene has an error (printed as \
-          file:line:column: error: … with the source line) or the image cannot be written; 2 on a usage error; \
-          3 when the scene went past one of the LIMITS below; 4 when the scene asks for a file it may not read or write (see $(b,--allow-read), $(b,--allow-write)).";
+    ]
+    @ Exits.man
+    @ [
       `S "LIMITS";
       `P "Every scene ends, with an image or a located error, in bounded time and memory: loops, macro calls, \
           nesting, objects, memory and image size have limits, each set with its switch. The defaults are far above \
@@ -373,8 +370,9 @@ let () =
       Printf.eprintf "povml: unknown or incomplete switch '%s' (see povml --help)\n" a;
       exit 2
   | None -> (
-      match Cmd.eval_value ~argv:(Array.of_list (prog :: args)) cmd with
-      | Ok (`Ok code) -> exit code
-      | Ok (`Version | `Help) -> exit 0
-      | Error (`Parse | `Term) -> exit 2
-      | Error `Exn -> exit 3)
+      exit @@ Exits.guard @@ fun () ->
+      match Cmd.eval_value ~catch:false ~argv:(Array.of_list (prog :: args)) cmd with
+      | Ok (`Ok code) -> code
+      | Ok (`Version | `Help) -> 0
+      | Error (`Parse | `Term) -> 2
+      | Error `Exn -> Exits.internal_error)

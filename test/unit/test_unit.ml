@@ -33,4 +33,5 @@ let () =
       ("Language properties (qcheck)", Test_lang_props.tests);
       ("POV-Ray source rules (Lexer)", Test_lexer.source_rules);
       ("POV-Ray source rules (Interp)", Test_interp.source_rules);
+      ("Interrupt", Test_interrupt.tests);
     ])
