@@ -183,7 +183,10 @@ let run input positional output width height antialias no_aa method_ depth jitte
           let () = Interrupt.install () in
           match Pipeline.run ~interp:iopts ?move opts input with
           | exception Error.Scene_error e -> fail e
-          | exception Pool.Worker_failed msg -> Printf.eprintf "povml: error: %s; no image was written\n" msg; `Ok 1
+          | exception Pool.Worker_failed msg ->
+              (* a render process died: not the scene's fault *)
+              Printf.eprintf "povml: internal error: %s; no image was written (please report it)\n" msg;
+              `Ok Exits.internal_error
           | r -> (
               List.iter print_warning r.warnings;
               let f = match fmt with Png_fmt -> Output.Png | Ppm_fmt -> Output.Ppm in
