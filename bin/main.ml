@@ -55,6 +55,8 @@ let source file =
           try Some (really_input_string ic (in_channel_length ic)) with Sys_error _ | End_of_file -> None)
 
 let print_error e = prerr_string (Error.render ~source ~kind:"error" e)
+
+let fail (e : Error.t) = print_error e; `Ok (Exits.scene_error e.kind)
 let print_warning e = prerr_string (Error.render ~source ~kind:"warning" e)
 
 let hms s =
@@ -113,20 +115,28 @@ let usage_error msg = `Error (false, msg)
 
 let dump_scene iopts input =
   match Interp.load_file iopts input with
-  | exception Error.Scene_error e -> print_error e; `Ok 1
+  | exception Error.Scene_error e -> fail e
   | scene, warnings ->
       List.iter print_warning warnings;
       print_string (Dump.scene scene);
       `Ok 0
 
 let run input positional output width height antialias no_aa method_ depth jitter no_jitter aa_gamma
-    libs threads sr er sc ec block_size format _display _verbose clock dump robust scene_scale scene_translate =
+    libs threads sr er sc ec block_size format _display _verbose clock dump robust scene_scale scene_translate
+    allow_read allow_write limits =
   let input = match (input, positional) with Some i, _ -> Some i | None, Some p -> Some p | None, None -> None in
   match input with
   | None -> usage_error "no scene file given: use +I<file> or give the file name"
   | Some input ->
-      let iopts = { (Interp.default_options ~width ~height) with clock; library_paths = libs } in
+      let access = List.fold_left Access.allow_read Access.default allow_read in
+      let access = List.fold_left Access.allow_write access allow_write in
+      let iopts = { (Interp.default_options ~width ~height) with clock; library_paths = libs; access; limits } in
       if width < 1 || height < 1 then usage_error "width and height must be at least 1"
+      else if width > limits.pixels / height then
+        fail
+          (Error.limit_error Loc.none
+             (Printf.sprintf "a %d×%d image has %s pixels, more than povml's limit of %s (raise it with --max-pixels N)" width height
+                (Reader.commas (width * height)) (Reader.commas limits.pixels)))
       else if dump then dump_scene iopts input
       else
         let fmt = match format with `Png -> Png_fmt | `Ppm -> Ppm_fmt in
@@ -170,16 +180,20 @@ let run input positional output width height antialias no_aa method_ depth jitte
           in
           if not (scene_scale > 0. && Float.is_finite scene_scale) then usage_error "--scene-scale must be a positive number"
           else
+          let () = Interrupt.install () in
           match Pipeline.run ~interp:iopts ?move opts input with
-          | exception Error.Scene_error e -> print_error e; `Ok 1
-          | exception Pool.Worker_failed msg -> Printf.eprintf "povml: error: %s; no image was written\n" msg; `Ok 1
+          | exception Error.Scene_error e -> fail e
+          | exception Pool.Worker_failed msg ->
+              (* a render process died: not the scene's fault *)
+              Printf.eprintf "povml: internal error: %s; no image was written (please report it)\n" msg;
+              `Ok Exits.internal_error
           | r -> (
               List.iter print_warning r.warnings;
               let f = match fmt with Png_fmt -> Output.Png | Ppm_fmt -> Output.Ppm in
-              match Output.write f output r.image with
+              match Interrupt.commit (fun () -> Output.write f output r.image) with
               | Error msg ->
                   Printf.eprintf "%s: error: cannot write the image: %s\n" output msg;
-                  `Ok 1
+                  `Ok Exits.cannot_write
               | Ok () ->
                   print_stats r opts;
                   Printf.eprintf "Wrote %s (%dx%d)\n" output width height;
@@ -199,6 +213,10 @@ let cmd =
           $(b,+L)dir, $(b,+K)v, $(b,+WT)n, $(b,+SR)/$(b,+ER)/$(b,+SC)/$(b,+EC) (partial render: full-size file, \
           unrendered pixels black), $(b,+FN) (PNG), $(b,+FP) (PPM), $(b,+D)/$(b,-D), $(b,+V)/$(b,-V). \
           Each is shown below with its long form.";
+      `P "A scene reads files ($(b,#include), $(b,#fopen), $(b,file_exists)) only under its own directory, \
+          the working directory, the $(b,+L) directories, /usr/share/povray-3.7/include and each \
+          $(b,--allow-read) directory, and writes files only under an $(b,--allow-write) directory; paths are \
+          resolved ($(b,..), symbolic links) before they are compared. POV-Ray's povray.conf is not read.";
       `S sw;
       `S Manpage.s_commands;
       `P "$(b,povml check) $(i,SCENE) [$(i,SWITCH)]… renders the scene with povml and with the installed POV-Ray, \
@@ -207,9 +225,13 @@ let cmd =
       `P "$(b,povml report) $(i,SCENE)… $(b,--out) $(i,DIR) [$(i,SWITCH)]… sweeps antialiasing and trace-depth \
           settings in both renderers and writes error against time as CSV, Markdown and an SVG plot with each \
           renderer's Pareto front ($(b,povml report --help)).";
-      `S Manpage.s_exit_status;
-      `P "0 when the image was written; 1 when the scene has an error (printed as \
-          file:line:column: error: … with the source line) or the image cannot be written; 2 on a usage error.";
+    ]
+    @ Exits.man
+    @ [
+      `S "LIMITS";
+      `P "Every scene ends, with an image or a located error, in bounded time and memory: loops, macro calls, \
+          nesting, objects, memory and image size have limits, each set with its switch. The defaults are far above \
+          what ordinary scenes need.";
       `S Manpage.s_examples;
       `P "povml +Iscenes/showcase.pov +W640 +H480 +A0.3";
     ]
@@ -274,8 +296,41 @@ let cmd =
     Arg.(value & opt vec Vec.zero & info [ "scene-translate" ] ~docv:"X,Y,Z"
            ~doc:"Render the scene moved by X,Y,Z (after $(b,--scene-scale)): objects, lights and camera.")
   in
+  let allow_read =
+    Arg.(value & opt_all dir [] & info [ "allow-read" ] ~docv:"DIR" ~docs
+           ~doc:"Let the scene read the files under DIR ($(b,#include), $(b,#fopen) ... $(b,read), \
+                 $(b,file_exists)); repeatable. Without it a scene reads only under its own directory, the \
+                 working directory, the $(b,+L) directories and /usr/share/povray-3.7/include.")
+  in
+  let allow_write =
+    Arg.(value & opt_all dir [] & info [ "allow-write" ] ~docv:"DIR" ~docs
+           ~doc:"Let the scene write (and read) the files under DIR ($(b,#fopen) ... $(b,write) or \
+                 $(b,append)); repeatable. Without it a scene writes no file.")
+  in
+  let limits =
+    let lim = "LIMITS" in
+    let n names default doc = Arg.(value & opt int default & info names ~docv:"N" ~docs:lim ~doc) in
+    let d = Scene_limits.default in
+    let make include_depth macro_depth macro_calls iterations objects nesting memory_mb pixels =
+      { Scene_limits.include_depth; macro_depth; macro_calls; iterations; objects; nesting; memory_mb; pixels }
+    in
+    Term.(
+      const make
+      $ n [ "max-include-depth" ] d.include_depth "Include files nested deeper than N are an error (default 64; POV-Ray stops at 31)."
+      $ n [ "max-macro-depth" ] d.macro_depth "Macro calls nested deeper than N are an error (default 10,000; POV-Ray stops at 98)."
+      $ n [ "max-macro-calls" ] d.macro_calls "More than N macro calls in the whole scene are an error (default 3,000,000)."
+      $ n [ "max-iterations" ] d.iterations
+          "More than N iterations of $(b,#while) and $(b,#for) loops, all loops together, are an error (default 10,000,000): \
+           a loop that never ends stops with an error at the loop."
+      $ n [ "max-objects" ] d.objects "More than N objects and light sources in the scene are an error (default 10,000,000; a mesh counts as one)."
+      $ n [ "max-nesting" ] d.nesting
+          "Parentheses, vectors, signs and unions nested deeper than N are an error (default 10,000; POV-Ray warns about \
+           blocks nested deeper than 200 and povml gives the same warning)."
+      $ n [ "max-memory" ] d.memory_mb "Reading a scene that needs more than N MiB of memory is an error (default 4,096, or half of $(b,ulimit -v) when that is less)."
+      $ n [ "max-pixels" ] d.pixels "An image of more than N pixels (width × height) is an error (default 67,108,864 = 8192²).")
+  in
   let term =
-    Term.(ret (const run $ input $ positional $ output $ width $ height $ antialias $ no_aa $ method_ $ depth $ jitter $ no_jitter $ aa_gamma $ libs $ threads $ sr $ er $ sc $ ec $ block_size $ format $ display $ verbose $ clock $ dump $ robust $ scene_scale $ scene_translate))
+    Term.(ret (const run $ input $ positional $ output $ width $ height $ antialias $ no_aa $ method_ $ depth $ jitter $ no_jitter $ aa_gamma $ libs $ threads $ sr $ er $ sc $ ec $ block_size $ format $ display $ verbose $ clock $ dump $ robust $ scene_scale $ scene_translate $ allow_read $ allow_write $ limits))
   in
   Cmd.v (Cmd.info "povml" ~version:"0.1.0" ~doc ~man ~exits:[]) term
 
@@ -293,18 +348,34 @@ let () =
     List.map
       (fun a ->
         match translate_switch a with
-        | `Keep a -> a
-        | `Use a -> a
-        | `Bad -> if !bad = None then bad := Some a; a)
+        | `Keep a -> `Keep a
+        | `Use a -> `Switch a
+        | `Bad -> if !bad = None then bad := Some a; `Keep a)
       (List.tl argv)
   in
+  (* As in POV-Ray, the last of repeated switches wins (+W16 … +W640 is 640 wide; -A … +A0.3
+     antialiases); +L accumulates. *)
+  let key a =
+    let name = match String.index_opt a '=' with Some i -> String.sub a 2 (i - 2) | None -> String.sub a 2 (String.length a - 2) in
+    if String.length name > 3 && String.sub name 0 3 = "no-" then String.sub name 3 (String.length name - 3) else name
+  in
+  let rec last_wins = function
+    | [] -> []
+    | `Keep a :: rest -> a :: last_wins rest
+    | `Switch a :: rest ->
+        let k = key a in
+        if k <> "library-path" && List.exists (function `Switch b -> key b = k | `Keep _ -> false) rest then last_wins rest
+        else a :: last_wins rest
+  in
+  let args = last_wins args in
   match !bad with
   | Some a ->
       Printf.eprintf "povml: unknown or incomplete switch '%s' (see povml --help)\n" a;
       exit 2
   | None -> (
-      match Cmd.eval_value ~argv:(Array.of_list (prog :: args)) cmd with
-      | Ok (`Ok code) -> exit code
-      | Ok (`Version | `Help) -> exit 0
-      | Error (`Parse | `Term) -> exit 2
-      | Error `Exn -> exit 3)
+      exit @@ Exits.guard @@ fun () ->
+      match Cmd.eval_value ~catch:false ~argv:(Array.of_list (prog :: args)) cmd with
+      | Ok (`Ok code) -> code
+      | Ok (`Version | `Help) -> 0
+      | Error (`Parse | `Term) -> 2
+      | Error `Exn -> Exits.internal_error)

@@ -17,21 +17,32 @@ let write_png path (img : Encode.t) =
   done;
   Png.save path [] (Images.Rgb24 rgb)
 
+(* The temporary file is created, and renamed or removed, with SIGINT and SIGTERM held back, so
+   that it always has a name to remove by; a signal that came while the image was being encoded
+   cancels the rename. *)
 let write fmt path img =
   let dir = Filename.dirname path in
-  match Filename.temp_file ~temp_dir:dir ".povml-" ".part" with
-  | exception Sys_error msg -> Error msg
-  | tmp -> (
-      match (match fmt with Png -> write_png tmp img | Ppm -> write_ppm tmp img) with
-      | () -> (
-          (* the temporary file is private; the image gets ordinary permissions *)
-          (try Unix.chmod tmp 0o644 with Unix.Unix_error _ -> ());
-          match Unix.rename tmp path with
-          | () -> Ok ()
-          | exception Unix.Unix_error (e, _, _) -> (try Sys.remove tmp with Sys_error _ -> ()); Error (Unix.error_message e))
-      | exception e ->
-          (try Sys.remove tmp with Sys_error _ -> ());
-          Error (match e with Sys_error m | Failure m -> m | e -> Printexc.to_string e))
+  Interrupt.hold (fun () ->
+      Interrupt.check ();
+      match Filename.temp_file ~temp_dir:dir ".povml-" ".part" with
+      | exception Sys_error msg ->
+          (* the message names the temporary file, which never existed: name the directory *)
+          let reason = match String.rindex_opt msg ':' with Some i -> String.sub msg (i + 2) (String.length msg - i - 2) | None -> msg in
+          Error (dir ^ ": " ^ reason)
+      | tmp -> (
+          let discard () = try Sys.remove tmp with Sys_error _ -> () in
+          match
+            (match fmt with Png -> write_png tmp img | Ppm -> write_ppm tmp img);
+            Interrupt.check ()
+          with
+          | () -> (
+              (* the temporary file is private; the image gets ordinary permissions *)
+              (try Unix.chmod tmp 0o644 with Unix.Unix_error _ -> ());
+              match Unix.rename tmp path with
+              | () -> Ok ()
+              | exception Unix.Unix_error (e, _, _) -> discard (); Error (Unix.error_message e))
+          | exception Interrupt.Interrupted -> discard (); raise Interrupt.Interrupted
+          | exception e -> discard (); Error (match e with Sys_error m | Failure m -> m | e -> Printexc.to_string e)))
 
 let read_png path =
   match Png.load path [] with

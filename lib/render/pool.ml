@@ -1,7 +1,12 @@
 (* Worker processes by fork. Task numbers go down one pipe that every worker reads (4-byte records:
    a pipe moves up to PIPE_BUF bytes atomically, so each read takes one whole task), results go
    back marshalled into one unlinked temporary file per worker. The parent keeps its heap as it is:
-   nothing is compacted or copied before the fork, and pages the workers only read stay shared. *)
+   nothing is compacted or copied before the fork, and pages the workers only read stay shared.
+
+   No worker outlives the map for long: when the parent leaves [map] by an exception (an
+   interrupt among them) it kills and reaps the workers, and a worker whose parent died (SIGKILL,
+   where nothing can run) notices within half a second and exits. A worker never writes anywhere
+   but its own result file and stderr. *)
 
 exception Worker_failed of string
 
@@ -21,10 +26,25 @@ let rec write_all fd buf off len =
     | k -> write_all fd buf (off + k) (len - k)
     | exception Unix.Unix_error (Unix.EINTR, _, _) -> write_all fd buf off len
 
-let worker f items task_r out =
+(* What a forked process does first, while the parent's [Interrupt.hold] still blocks SIGINT and
+   SIGTERM (the mask is inherited, pending signals are not). *)
+let become_worker parent =
+  (* Ctrl-C reaches the whole process group: the parent alone decides, and kills its workers *)
+  Sys.set_signal Sys.sigint Sys.Signal_ignore;
+  Sys.set_signal Sys.sigterm Sys.Signal_default;
+  (* a worker whose stderr was closed dies quietly on its progress line *)
+  Sys.set_signal Sys.sigpipe Sys.Signal_default;
+  (* the parent can die by SIGKILL: an orphan leaves within half a second, even inside a block *)
+  let orphaned _ = if Unix.getppid () <> parent then Unix._exit 1 in
+  Sys.set_signal Sys.sigalrm (Sys.Signal_handle orphaned);
+  ignore (Unix.setitimer Unix.ITIMER_REAL { Unix.it_interval = 0.5; it_value = 0.5 });
+  ignore (Unix.sigprocmask Unix.SIG_UNBLOCK [ Sys.sigint; Sys.sigterm ])
+
+let worker parent f items task_r out =
   let oc = Unix.out_channel_of_descr out in
   let buf = Bytes.create 4 in
   let rec loop () =
+    if Unix.getppid () <> parent then Unix._exit 1;
     match read_task task_r buf with
     | None -> ()
     | Some i ->
@@ -45,6 +65,44 @@ let rec waitpid pid =
   | _, st -> st
   | exception Unix.Unix_error (Unix.EINTR, _, _) -> waitpid pid
 
+(* The parent's side once the workers run: hand out the tasks, wait for every worker (removing it
+   from [running]), then read the results. *)
+let collect items n ~close task_w outs running =
+  let buf = Bytes.create 4 in
+  (try
+     for i = 0 to n - 1 do
+       Bytes.set_int32_le buf 0 (Int32.of_int i);
+       write_all task_w buf 0 4
+     done
+   with Unix.Unix_error (Unix.EPIPE, _, _) -> ());
+  close task_w;
+  let failed = ref None in
+  List.iter
+    (fun pid ->
+      let st = waitpid pid in
+      running := List.filter (fun p -> p <> pid) !running;
+      match st with
+      | Unix.WEXITED 0 -> ()
+      | Unix.WEXITED c -> failed := Some (Printf.sprintf "a render worker failed (status %d)" c)
+      | Unix.WSIGNALED s | Unix.WSTOPPED s -> failed := Some (Printf.sprintf "a render worker was killed (signal %d)" s))
+    !running;
+  let results = Array.make (Array.length items) None in
+  Array.iter
+    (fun fd ->
+      ignore (Unix.lseek fd 0 Unix.SEEK_SET);
+      let ic = Unix.in_channel_of_descr fd in
+      try
+        while true do
+          let (i : int), r = Marshal.from_channel ic in
+          results.(i) <- Some r
+        done
+      with End_of_file -> ())
+    outs;
+  (* a worker that died with the interrupt did not fail *)
+  Interrupt.check ();
+  (match !failed with Some m -> raise (Worker_failed m) | None -> ());
+  Array.to_list (Array.map (function Some r -> r | None -> raise (Worker_failed "a task was not done")) results)
+
 let map ~workers f items =
   let items = Array.of_list items in
   let n = Array.length items in
@@ -60,48 +118,41 @@ let map ~workers f items =
           Unix.unlink name;
           fd)
     in
-    let pids =
-      Array.map
-        (fun out ->
-          match Unix.fork () with
-          | 0 -> Unix.close task_w; worker f items task_r out
-          | pid -> pid)
-        outs
-    in
-    Unix.close task_r;
+    let parent = Unix.getpid () in
+    let running = ref [] in
     (* if every worker died, writing tasks must fail with EPIPE, not kill this process *)
     let pipe_handler = Sys.signal Sys.sigpipe Sys.Signal_ignore in
-    let buf = Bytes.create 4 in
-    Fun.protect
-      ~finally:(fun () -> Unix.close task_w; Sys.set_signal Sys.sigpipe pipe_handler)
-      (fun () ->
-        try
-          for i = 0 to n - 1 do
-            Bytes.set_int32_le buf 0 (Int32.of_int i);
-            write_all task_w buf 0 4
-          done
-        with Unix.Unix_error (Unix.EPIPE, _, _) -> ());
-    let failed = ref None in
-    Array.iter
-      (fun pid ->
-        match waitpid pid with
-        | Unix.WEXITED 0 -> ()
-        | Unix.WEXITED c -> failed := Some (Printf.sprintf "a render worker failed (status %d)" c)
-        | Unix.WSIGNALED s | Unix.WSTOPPED s -> failed := Some (Printf.sprintf "a render worker was killed (signal %d)" s))
-      pids;
-    let results = Array.make n None in
-    Array.iter
-      (fun fd ->
-        ignore (Unix.lseek fd 0 Unix.SEEK_SET);
-        let ic = Unix.in_channel_of_descr fd in
-        (try
-           while true do
-             let (i : int), r = Marshal.from_channel ic in
-             results.(i) <- Some r
-           done
-         with End_of_file -> ());
-        close_in ic)
-      outs;
-    (match !failed with Some m -> raise (Worker_failed m) | None -> ());
-    Array.to_list (Array.map (function Some r -> r | None -> raise (Worker_failed "a task was not done")) results)
+    let open_fds = ref (task_r :: task_w :: Array.to_list outs) in
+    let close fd =
+      if List.mem fd !open_fds then begin
+        open_fds := List.filter (fun d -> d <> fd) !open_fds;
+        try Unix.close fd with Unix.Unix_error _ -> ()
+      end
+    in
+    let close_all () = List.iter close !open_fds; Sys.set_signal Sys.sigpipe pipe_handler in
+    let start () =
+      Interrupt.hold (fun () ->
+          Array.iter
+            (fun out ->
+              match Unix.fork () with
+              | 0 ->
+                  (* the child never returns into the parent's code *)
+                  (try Unix.close task_w; become_worker parent; worker parent f items task_r out with _ -> ());
+                  Unix._exit 3
+              | pid -> running := pid :: !running)
+            outs);
+      running := List.rev !running;
+      (* the workers hold the read end; once they are gone, writing a task fails with EPIPE *)
+      close task_r;
+      Interrupt.check ()
+    in
+    match start (); collect items n ~close task_w outs running with
+    | results -> close_all (); results
+    | exception e ->
+        (* kill and reap the workers still running, with signals held back so that this finishes *)
+        Interrupt.hold (fun () ->
+            List.iter (fun pid -> try Unix.kill pid Sys.sigkill with Unix.Unix_error _ -> ()) !running;
+            List.iter (fun pid -> ignore (waitpid pid)) !running;
+            close_all ());
+        raise e
   end

@@ -7,4 +7,7 @@ exception Worker_failed of string
 val map : workers:int -> ('a -> 'b) -> 'a list -> 'b list
 (** [map ~workers f xs] is [List.map f xs], computed by up to [workers] processes that take the
     next task as they finish one. With one worker (or one task) it runs in this process. Results
-    come back by [Marshal], so they must not contain functions. *)
+    come back by [Marshal], so they must not contain functions. When [map] raises (an
+    [Interrupt.Interrupted] among others) it has killed and reaped its workers first; a worker
+    whose parent was killed exits within half a second. Workers ignore SIGINT (the parent
+    decides) and write nothing but their results and stderr. *)

@@ -48,6 +48,8 @@ and parse_array st =
       let n = parse_float st in
       (* the size is truncated, as POV-Ray does: array[2.5] has 2 elements *)
       if n < 1. then Error.raise_at l "an array dimension must be at least 1, not %g" n;
+      if not (n < 2147483648.) then Error.raise_at l "an array dimension must be less than 2147483648, not %g" n;
+      if List.length acc >= 5 then Error.raise_at l "an array has at most 5 dimensions";
       expect st RBracket "']' after an array dimension";
       dims (int_of_float n :: acc)
     end
@@ -55,9 +57,14 @@ and parse_array st =
   in
   let dims = Array.of_list (dims []) in
   if Array.length dims = 0 then Error.raise_at loc "'array' needs a size: array[N]";
-  let total = Array.fold_left ( * ) 1 dims in
-  if total > 50_000_000 then Error.raise_at loc "this array would have %d elements; the limit is 50,000,000" total;
+  let total = Array.fold_left (fun t d -> t *. float_of_int d) 1. dims in
+  let mib = total *. float_of_int (Sys.word_size / 8) /. 1048576. in
+  if mib >= float_of_int st.opts.limits.memory_mb then
+    Error.limit_at loc "this array of %.0f elements would need %.0f MiB, more than povml's memory limit of %s MiB (raise it with --max-memory MIB)"
+      total mib (commas st.opts.limits.memory_mb);
+  let total = int_of_float total in
   let cells = Array.make total None in
+  check_memory st loc;
   if peek st == LBrace then begin
     (* nested braces, one level per dimension *)
     let rec fill_level d offset =

@@ -83,8 +83,6 @@ let return_from_macro st =
   st.tables <- List.tl st.tables;
   st.macro_depth <- st.macro_depth - 1
 
-let max_include_depth = 64
-let max_macro_depth = 10_000
 
 let directive_names =
   [ "declare"; "local"; "undef"; "version"; "include"; "if"; "ifdef"; "ifndef"; "elseif"; "else"; "end"; "while";
@@ -117,12 +115,14 @@ let directive st d loc =
       st.version_set <- true
   | "include" -> (
       let name = string_arg st "include" in
-      if st.includes >= max_include_depth then
-        Error.raise_at loc "includes are nested more than %d deep (does a file include itself?)" max_include_depth;
+      if st.includes >= st.opts.limits.include_depth then
+        Error.limit_at loc "include files are nested more than %s deep, povml's limit (does a file include itself? raise the limit with --max-include-depth N)"
+          (commas st.opts.limits.include_depth);
       match find_file st name with
       | None ->
           Error.raise_at loc "cannot find the include file \"%s\" (searched %s)" name (String.concat ", " (include_dirs st))
       | Some path ->
+          Access.check_read st.opts.access loc path;
           let text = read_file path in
           st.frames <- { lx = Lexer.create ~file:path text; kind = Included (loc, Unix.gettimeofday ()); conds = [] } :: st.frames;
           st.tables <- Names.create 16 :: st.tables;
@@ -142,6 +142,7 @@ let directive st d loc =
       match f.conds with
       | If_branch _ :: _ | Switch_case _ :: _ -> pop_cond st
       | While_loop (m, l) :: _ ->
+          count_iteration st l;
           Lexer.reset f.lx m;
           if not (truth (cond_value st "while")) then begin pop_cond st; skip_to_end st l "#while" end
       | For_loop r :: _ -> (
@@ -149,7 +150,10 @@ let directive st d loc =
           | V.Float i ->
               let i = i +. r.step in
               r.var := V.Float i;
-              if (r.step > 0. && i <= r.stop +. 1e-10) || (r.step < 0. && i >= r.stop -. 1e-10) then Lexer.reset f.lx r.body
+              if (r.step > 0. && i <= r.stop +. 1e-10) || (r.step < 0. && i >= r.stop -. 1e-10) then begin
+                count_iteration st r.floc;
+                Lexer.reset f.lx r.body
+              end
               else pop_cond st
           | v -> Error.raise_at r.floc "the #for variable was changed to %s inside the loop" (V.kind_name v))
       | [] -> (
@@ -239,7 +243,10 @@ let directive st d loc =
         | _ -> unexpected st "'texture', 'pigment', 'finish' or '}' in #default"
       in
       loop ()
-  | "fopen" | "fclose" | "read" | "write" -> not_supported loc (Printf.sprintf "'#%s'" d)
+  | "fopen" -> User_files.fopen st
+  | "fclose" -> User_files.fclose st
+  | "read" -> User_files.read st loc
+  | "write" -> User_files.write st
   | "render" | "statistics" -> st.opts.debug (string_arg st d)
   | _ -> (
       match Suggest.nearest d directive_names with
@@ -249,8 +256,13 @@ let directive st d loc =
 (* A macro call (§11.3): the arguments are read in the caller, an identifier standing alone is
    passed by reference, then the body is read in a table of its own. *)
 let invoke st (m : V.macro) loc =
-  if st.macro_depth >= max_macro_depth then
-    Error.raise_at loc "macro calls are nested more than %d deep (does '%s' call itself without end?)" max_macro_depth m.mname;
+  if st.macro_depth >= st.opts.limits.macro_depth then
+    Error.limit_at loc "macro calls are nested more than %s deep, povml's limit (a macro that calls itself without end? raise the limit with --max-macro-depth N)"
+      (commas st.opts.limits.macro_depth);
+  st.macro_calls <- st.macro_calls + 1;
+  if st.macro_calls > st.opts.limits.macro_calls then
+    Error.limit_at loc "the scene has called macros %s times, povml's limit (raise it with --max-macro-calls N)" (commas st.opts.limits.macro_calls);
+  if st.macro_calls land 255 = 0 then check_memory st loc;
   expect st LParen (Printf.sprintf "'(' after the macro name '%s'" m.mname);
   let table = Names.create 8 in
   let nparams = List.length m.params in

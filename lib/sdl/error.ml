@@ -7,6 +7,7 @@ let raise_kind kind loc fmt = Printf.ksprintf (fun msg -> raise (Scene_error { l
 let raise_at loc fmt = raise_kind Scene loc fmt
 let limit_at loc fmt = raise_kind Limit loc fmt
 let access_at loc fmt = raise_kind Access loc fmt
+let limit_error loc msg = { loc; msg; notes = []; kind = Limit }
 let warning loc msg = { loc; msg; notes = []; kind = Scene }
 let raise_notes loc notes msg = raise (Scene_error { loc; msg; notes; kind = Scene })
 
@@ -27,6 +28,37 @@ let nth_line text n =
       let stop = if stop > start && text.[stop - 1] = '\r' then stop - 1 else stop in
       Some (String.sub text start (stop - start))
 
+(* The length of the valid UTF-8 sequence starting at [i] of [s], or 0. *)
+let utf8_length s i =
+  let n = String.length s in
+  let cont k = i + k < n && Char.code s.[i + k] land 0xC0 = 0x80 in
+  match Char.code s.[i] with
+  | c when c < 0x80 -> 1
+  | c when c >= 0xC2 && c < 0xE0 && cont 1 -> 2
+  | c when c >= 0xE0 && c < 0xF0 && cont 1 && cont 2 -> 3
+  | c when c >= 0xF0 && c < 0xF5 && cont 1 && cont 2 && cont 3 -> 4
+  | _ -> 0
+
+(* [line] as it can be shown on a terminal, from byte [first] for at most [width] characters:
+   control characters and bytes that are not UTF-8 become '?', tabs stay (so the caret lines up).
+   Also the pad that puts a caret under byte [col] (0-based). *)
+let display line ~first ~width ~col =
+  let b = Buffer.create 256 and pad = Buffer.create 64 in
+  let n = String.length line in
+  let rec go i shown =
+    if i < n && shown < width then begin
+      let k = utf8_length line i in
+      let c = line.[i] in
+      let text = if k = 0 || (k = 1 && (c < ' ' || c = '\127') && c <> '\t') then "?" else String.sub line i k in
+      Buffer.add_string b text;
+      if i < col then Buffer.add_char pad (if c = '\t' then '\t' else ' ');
+      go (i + max k 1) (shown + 1)
+    end
+    else i
+  in
+  let stop = go first 0 in
+  (Buffer.contents b, Buffer.contents pad, stop < n)
+
 let excerpt ~source (loc : Loc.t) =
   if loc.line <= 0 then ""
   else
@@ -36,14 +68,16 @@ let excerpt ~source (loc : Loc.t) =
         match nth_line text loc.line with
         | None -> ""
         | Some line ->
-            let line = if String.length line > 200 then String.sub line 0 200 ^ "…" else line in
-            (* Keep tabs so the caret lines up with the source as a terminal shows it. *)
-            let pad =
-              String.init
-                (max 0 (min (loc.col - 1) (String.length line)))
-                (fun i -> if i < String.length line && line.[i] = '\t' then '\t' else ' ')
-            in
-            Printf.sprintf "%5d | %s\n      | %s^\n" loc.line line pad)
+            (* a line longer than 200 bytes is shown as 160 characters around the column *)
+            let col = max 0 (min (loc.col - 1) (String.length line)) in
+            let first = if String.length line <= 200 || col < 120 then 0 else col - 80 in
+            (* start on a character, not inside one *)
+            let first = let rec back i = if i > 0 && Char.code line.[i] land 0xC0 = 0x80 then back (i - 1) else i in back first in
+            let shown, pad, cut = display line ~first ~width:(if String.length line <= 200 then 200 else 160) ~col in
+            let lead = if first > 0 then "…" else "" in
+            let number = Printf.sprintf "%5d" loc.line in
+            Printf.sprintf "%s | %s%s%s\n%s | %s%s^\n" number lead shown (if cut then "…" else "")
+              (String.make (String.length number) ' ') (if first > 0 then " " else "") pad)
 
 let render ~source ~kind e =
   let head =

@@ -21,6 +21,9 @@ val limit_at : Loc.t -> ('a, unit, string, 'b) format4 -> 'a
 val access_at : Loc.t -> ('a, unit, string, 'b) format4 -> 'a
 (** [access_at loc fmt …] raises [Scene_error] of kind [Access]. *)
 
+val limit_error : Loc.t -> string -> t
+(** [limit_error loc msg] is an error of kind [Limit] without notes. *)
+
 val warning : Loc.t -> string -> t
 (** [warning loc msg] is a warning (kind [Scene]) without notes. *)
 

@@ -73,9 +73,9 @@ and binop st loc op a b =
 
 and parse_unary st =
   match peek st with
-  | Minus -> let loc = peek_loc st in advance st; numeric_map loc (fun x -> -.x) (parse_unary st)
-  | Plus -> advance st; parse_unary st
-  | Bang -> let loc = peek_loc st in advance st; numeric_map loc (fun x -> if truth x then 0. else 1.) (parse_unary st)
+  | Minus -> let loc = peek_loc st in advance st; numeric_map loc (fun x -> -.x) (nest st loc (fun () -> parse_unary st))
+  | Plus -> let loc = peek_loc st in advance st; nest st loc (fun () -> parse_unary st)
+  | Bang -> let loc = peek_loc st in advance st; numeric_map loc (fun x -> if truth x then 0. else 1.) (nest st loc (fun () -> parse_unary st))
   | _ -> parse_postfix st
 
 and numeric_map loc f v =
@@ -170,10 +170,15 @@ and parse_primary st =
   | Num f -> advance st; V.Float f
   | LParen ->
       advance st;
-      let v = parse_full st in
+      let v = nest st loc (fun () -> parse_full st) in
       expect st RParen "')'";
       v
-  | Lt ->
+  | Lt -> nest st loc (fun () -> parse_vector_literal st loc)
+  | Str s -> advance st; V.String s
+  | Ident name -> parse_ident_value st loc name
+  | k -> ignore k; unexpected st "a numeric expression"
+
+and parse_vector_literal st loc =
       advance st;
       let first = parse_float st in
       let rec terms acc n =
@@ -187,9 +192,6 @@ and parse_primary st =
       if List.length ts < 2 then Error.raise_at loc "a vector needs at least 2 terms";
       expect st Gt "',' or '>' in a vector";
       V.Vector (Array.of_list ts)
-  | Str s -> advance st; V.String s
-  | Ident name -> parse_ident_value st loc name
-  | k -> ignore k; unexpected st "a numeric expression"
 
 and parse_ident_value st loc name =
   match name with
@@ -394,7 +396,11 @@ and parse_function st loc name =
   | "strlwr" -> arity 1; V.String (String.lowercase_ascii (string_arg (arg 0)))
   | "val" -> arity 1; V.Float (Strfmt.value (string_arg (arg 0)))
   | "strcmp" -> arity 2; V.Float (float_of_int (Strfmt.compare (string_arg (arg 0)) (string_arg (arg 1))))
-  | "file_exists" -> arity 1; V.Float (if find_file ~inc:false st (string_arg (arg 0)) <> None then 1. else 0.)
+  | "file_exists" ->
+      (* POV-Ray opens the file through its I/O restrictions, so a file it may not read is not there *)
+      arity 1;
+      let found = match find_file ~inc:false st (string_arg (arg 0)) with Some p -> Access.readable st.opts.access p | None -> false in
+      V.Float (if found then 1. else 0.)
   | _ -> Error.raise_at loc "unknown function '%s'" name
 
 (* The arguments of dimensions() and dimension_size(): an array identifier, then floats. *)

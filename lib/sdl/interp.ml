@@ -16,6 +16,7 @@ type options = Reader.options = {
   debug : string -> unit;
   included : string -> depth:int -> float -> unit;
   limits : Scene_limits.t;
+  access : Access.t;
 }
 
 let keywords = Reader.keywords
@@ -38,6 +39,7 @@ let rec parse_statements st =
   | _ -> unexpected st "an object, light_source, camera or directive"
 
 let finish_scene st : Scene.t =
+  if st.objects = [] && st.lights = [] then warn st Loc.none "no objects in scene";
   (* §8.1: without #version the effective version is 3.62 *)
   let version = if st.version_set then st.version else 362 in
   let gamma =
@@ -93,6 +95,9 @@ let chain st =
     @ List.filteri (fun i _ -> i >= n - 2) notes
 
 let load_string opts ~file text =
+  (* the scene may read the files beside it and in the library paths *)
+  let access = List.fold_left Access.allow_read opts.access (Filename.dirname file :: opts.library_paths) in
+  let opts = { opts with access } in
   let lexer = Lexer.create ~file text in
   let global = Names.create 256 in
   let st =
@@ -100,20 +105,35 @@ let load_string opts ~file text =
       frames = [ { lx = lexer; kind = Main; conds = [] } ];
       cur = { Token.kind = Eof; loc = Loc.none }; have = false; cur_elem = None; no_expand = false; defer = false; streams = [||];
       depth = 0; opts; global; tables = [ global ]; includes = 0; macro_depth = 0;
+      macro_calls = 0; iterations = 0; nesting = 0; braces = 0; object_count = 0;
       version = 370; version_set = false; warnings = [];
       objects = []; lights = []; camera = None; background = None; sky = None;
       assumed_gamma = None; max_trace_level = 5; adc_bailout = 1. /. 255.; ambient_light = Rgb.white;
       default_texture = Defaults.texture;
-      directive = (fun _ _ _ -> ()); invoke = (fun _ _ _ -> ()); index = (fun _ _ -> 0);
+      directive = (fun _ _ _ -> ()); invoke = (fun _ _ _ -> ()); index = (fun _ _ -> 0); files = [];
     }
   in
   st.directive <- directive;
   st.invoke <- invoke;
   st.index <- parse_index;
-  (try parse_statements st with
-  | Unsupported (loc, what, notes) ->
-      raise (Error.Scene_error { loc; msg = "not supported yet: " ^ what; notes = notes @ chain st; kind = Scene })
-  | Error.Scene_error e -> raise (Error.Scene_error { e with notes = e.notes @ chain st }));
+  (* the scene's files are closed when its text has been read, or at its first error *)
+  Fun.protect ~finally:(fun () -> User_files.close_all st) (fun () ->
+      try parse_statements st with
+      | Unsupported (loc, what, notes) ->
+          raise (Error.Scene_error { loc; msg = "not supported yet: " ^ what; notes = notes @ chain st; kind = Scene })
+      | Error.Scene_error e -> raise (Error.Scene_error { e with notes = e.notes @ chain st })
+      (* the limits above should come first; these are the last line of defence, located where the
+         reader was *)
+      | Stack_overflow ->
+          raise
+            (Error.Scene_error
+               { loc = st.cur.loc; kind = Limit; notes = chain st;
+                 msg = "the scene nests too deeply for the stack (lower --max-nesting or --max-macro-depth, or raise the stack size with ulimit -s)" })
+      | Out_of_memory ->
+          raise
+            (Error.Scene_error
+               { loc = st.cur.loc; kind = Limit; notes = chain st;
+                 msg = "the scene needs more memory than the system gives povml (see --max-memory)" }));
   let scene = finish_scene st in
   (scene, List.rev st.warnings)
 
@@ -126,6 +146,7 @@ let default_options ~width ~height =
     debug = (fun s -> prerr_string s; flush stderr);
     included = (fun _ ~depth:_ _ -> ());
     limits = Scene_limits.default;
+    access = Access.default;
   }
 
 let load_file opts path = load_string opts ~file:path (read_file path)

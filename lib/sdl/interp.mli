@@ -11,11 +11,14 @@ type options = {
       (** told of each include file when it has been read: its path, its nesting (1 for a file the
           scene includes) and the seconds it took, nested includes included *)
   limits : Scene_limits.t;  (** what the scene may ask for (loop iterations, nesting, memory …) *)
+  access : Access.t;
+      (** the files the scene may read and write; the scene's directory and the library paths are
+          added to the readable ones when it is loaded *)
 }
 
 val default_options : width:int -> height:int -> options
 (** [default_options ~width ~height] has clock 0, no library paths, [#debug] text on stderr, no
-    include report and [Scene_limits.default]. *)
+    include report, [Scene_limits.default] and [Access.default]. *)
 
 val load_string : options -> file:string -> string -> Scene.t * Error.t list
 (** [load_string opts ~file text] interprets [text] (named [file] in locations) and returns the scene

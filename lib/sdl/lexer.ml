@@ -51,6 +51,14 @@ let skip_block lx pos open_loc =
   in
   go pos 1 [ open_loc ]
 
+(* POV-Ray refuses a token (identifier, string, number) of 256 characters or more, counted as
+   written (escapes count as two). *)
+let max_token = 255
+
+let check_length lx pos n what =
+  if n > max_token then
+    Error.raise_at (loc_at lx pos) "this %s is %d characters long; POV-Ray allows at most %d" what n max_token
+
 (* A string from just after its opening quote; returns the token and the offset after it. *)
 let lex_string lx pos =
   let text = lx.text and len = lx.len in
@@ -83,6 +91,7 @@ let lex_string lx pos =
       | c -> Buffer.add_char buf c; go (p + 1)
   in
   let p = go pos in
+  check_length lx (pos - 1) (p - pos - 1) "string";
   ({ kind = Str (Buffer.contents buf); loc }, p)
 
 (* A number: digits, an optional fraction, an optional exponent (§11.1). *)
@@ -131,7 +140,7 @@ let rec skip_ws lx p =
   if p >= lx.len then p
   else
     match String.unsafe_get lx.text p with
-    | ' ' | '\t' | '\r' -> skip_ws lx (p + 1)
+    | ' ' | '\t' | '\r' | '\000' -> skip_ws lx (p + 1)
     | '\n' -> newline lx p; skip_ws lx (p + 1)
     | _ -> p
 
@@ -198,15 +207,15 @@ let next lx =
       let peek_is ch = pos + 1 < len && text.[pos + 1] = ch in
       match c with
       | '\n' -> newline lx pos; go (pos + 1)
-      | ' ' | '\t' | '\r' | '\012' | '\011' | '\026' -> go (pos + 1)
+      | ' ' | '\t' | '\r' | '\012' | '\011' | '\026' | '\000' -> go (pos + 1)
       | '/' when peek_is '/' ->
           let p = ref (pos + 1) in
           while !p < len && text.[!p] <> '\n' do incr p done;
           go !p
       | '/' when peek_is '*' -> go (skip_block lx (pos + 2) (loc_at lx pos))
       | '"' -> let t, p = lex_string lx (pos + 1) in lx.pos <- p; t
-      | '0' .. '9' -> let t, p = lex_number lx pos in lx.pos <- p; t
-      | '.' when pos + 1 < len && is_digit text.[pos + 1] -> let t, p = lex_number lx pos in lx.pos <- p; t
+      | '0' .. '9' -> let t, p = lex_number lx pos in check_length lx pos (p - pos) "number"; lx.pos <- p; t
+      | '.' when pos + 1 < len && is_digit text.[pos + 1] -> let t, p = lex_number lx pos in check_length lx pos (p - pos) "number"; lx.pos <- p; t
       | '#' ->
           let p = ref (pos + 1) in
           while !p < len && (text.[!p] = ' ' || text.[!p] = '\t') do incr p done;
@@ -217,6 +226,7 @@ let next lx =
       | c when is_ident_start c ->
           let p = ref (pos + 1) in
           while !p < len && is_ident text.[!p] do incr p done;
+          check_length lx pos (!p - pos) "identifier";
           tok (Ident (String.sub text pos (!p - pos))) (!p - pos)
       | '{' -> tok LBrace 1 | '}' -> tok RBrace 1
       | '(' -> tok LParen 1 | ')' -> tok RParen 1
@@ -261,7 +271,7 @@ let next_char lx =
     if p >= len then None
     else
       match text.[p] with
-      | ' ' | '\t' | '\r' | '\n' | '\012' | '\011' -> go (p + 1)
+      | ' ' | '\t' | '\r' | '\n' | '\012' | '\011' | '\000' -> go (p + 1)
       | '/' when p + 1 < len && text.[p + 1] = '/' ->
           (match String.index_from_opt text p '\n' with Some q -> go q | None -> None)
       | '/' when p + 1 < len && text.[p + 1] = '*' ->

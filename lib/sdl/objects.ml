@@ -319,7 +319,7 @@ let rec parse_object st : V.obj =
         | _ when object_follows st -> members (V.Member_obj (parse_object st) :: acc)
         | _ -> List.rev acc
       in
-      let ms = members [] in
+      let ms = nest st loc (fun () -> members []) in
       if List.length ms < 2 then warn st loc "a union should have at least two members";
       parse_object_mods st (new_obj_of (V.Union ms) loc) "union"
   | Ident "light_source" -> new_obj_of (V.Union [ V.Member_light (parse_light st) ]) loc
@@ -511,11 +511,13 @@ let finish_prim st (o : V.obj) shape : Scene.obj =
    or interior take the union's, and its no_shadow goes to every member; its lights join the scene's. *)
 let rec add_object st (o : V.obj) =
   match o.shape with
-  | Prim shape -> st.objects <- finish_prim st o shape :: st.objects
+  | Prim shape ->
+      count_object st o.oloc;
+      st.objects <- finish_prim st o shape :: st.objects
   | Union ms ->
       List.iter
         (function
-          | V.Member_light l -> st.lights <- l :: st.lights
+          | V.Member_light l -> count_object st o.oloc; st.lights <- l :: st.lights
           | V.Member_obj c ->
               add_object st
                 {

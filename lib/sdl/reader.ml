@@ -21,6 +21,7 @@ type options = {
   debug : string -> unit;  (** where #debug text goes *)
   included : string -> depth:int -> float -> unit;  (** an include file was read: path, nesting, seconds *)
   limits : Scene_limits.t;
+  access : Access.t;  (** the files the scene may read and write *)
 }
 
 type camera_spec = V.camera_spec = {
@@ -67,6 +68,11 @@ type st = {
   mutable tables : V.t ref Names.t list;  (* innermost first; the global table is last *)
   mutable includes : int;  (* open include files *)
   mutable macro_depth : int;
+  mutable macro_calls : int;  (* in the whole scene, against [opts.limits] *)
+  mutable iterations : int;  (* loop iterations in the whole scene *)
+  mutable nesting : int;  (* open parentheses, vectors, unary operators and unions being read *)
+  mutable braces : int;  (* POV-Ray's count of nested blocks, for its warning past 200 *)
+  mutable object_count : int;  (* objects and lights that entered the scene *)
   mutable version : int;  (* languageVersion × 100 *)
   mutable version_set : bool;
   mutable warnings : Error.t list;  (* newest first *)
@@ -83,6 +89,7 @@ type st = {
   mutable directive : st -> string -> Loc.t -> unit;  (* the directive reader, tied below *)
   mutable invoke : st -> V.macro -> Loc.t -> unit;  (* the macro caller, tied below *)
   mutable index : st -> V.array_v -> int;  (* reads the subscripts of an array element, tied below *)
+  mutable files : V.user_file list;  (* the files #fopen opened, closed when the scene ends *)
 }
 
 (* ---------------------------------------------------------------------------------------------- *)
@@ -140,6 +147,44 @@ let is_unsupported s = Names.mem unsupported_set s
    executed when the parser first looks past it, and [advance] never reads ahead. *)
 
 let top st = List.hd st.frames
+
+(* ---------------------------------------------------------------------------------------------- *)
+(* Limits: every scene ends in bounded time and memory, with a located error of kind Limit. *)
+
+let commas n =
+  let s = string_of_int n in
+  let len = String.length s in
+  String.concat "" (List.init len (fun i -> (if i > 0 && (len - i) mod 3 = 0 then "," else "") ^ String.make 1 s.[i]))
+
+let check_memory st loc =
+  let limit = st.opts.limits.memory_mb in
+  if (Gc.quick_stat ()).heap_words / (1 lsl 20) * (Sys.word_size / 8) >= limit then
+    Error.limit_at loc "the scene needs more than %s MiB of memory, povml's limit (raise it with --max-memory MIB)" (commas limit)
+
+let count_iteration st loc =
+  st.iterations <- st.iterations + 1;
+  if st.iterations > st.opts.limits.iterations then
+    Error.limit_at loc "the scene's loops have run %s times, povml's limit (does this loop never end? raise the limit with --max-iterations N)"
+      (commas st.opts.limits.iterations);
+  check_memory st loc
+
+let count_object st loc =
+  st.object_count <- st.object_count + 1;
+  if st.object_count > st.opts.limits.objects then
+    Error.limit_at loc "the scene has more than %s objects and lights, povml's limit (raise it with --max-objects N)"
+      (commas st.opts.limits.objects);
+  if st.object_count land 1023 = 0 then check_memory st loc
+
+(* [nest st loc f] reads a nested construct with [f], refusing to nest deeper than the limit: the
+   reader recurses on nesting, so this is what keeps deep input from overflowing the stack. *)
+let nest st loc f =
+  if st.nesting >= st.opts.limits.nesting then
+    Error.limit_at loc "this is nested more than %s levels deep (parentheses, vectors, signs and unions together), povml's limit (raise it with --max-nesting N)"
+      (commas st.opts.limits.nesting);
+  st.nesting <- st.nesting + 1;
+  match f () with
+  | v -> st.nesting <- st.nesting - 1; v
+  | exception e -> st.nesting <- st.nesting - 1; raise e
 
 let lookup_cell st name =
   let rec go = function
@@ -239,7 +284,14 @@ let peek_loc st = if not st.have then fill st else run_pending st; st.cur.loc
 
 let advance st =
   if not st.have then fill st else run_pending st;
-  (match st.cur.kind with LBrace -> st.depth <- st.depth + 1 | RBrace -> st.depth <- st.depth - 1 | _ -> ());
+  (match st.cur.kind with
+  | LBrace ->
+      st.depth <- st.depth + 1;
+      (* POV-Ray warns at a block nested 200 deep, and then counts that block as not opened *)
+      if st.braces + 1 >= 200 then st.warnings <- Error.warning st.cur.loc "too many nested '{' braces" :: st.warnings
+      else st.braces <- st.braces + 1
+  | RBrace -> st.depth <- st.depth - 1; st.braces <- st.braces - 1
+  | _ -> ());
   if st.cur.kind != Eof then st.have <- false
 
 let warn st loc fmt = Printf.ksprintf (fun msg -> st.warnings <- Error.warning loc msg :: st.warnings) fmt
@@ -298,7 +350,7 @@ let main_file st = Lexer.file (List.nth st.frames (List.length st.frames - 1)).l
 
 let include_dirs st =
   let main = Filename.dirname (main_file st) in
-  let debian = "/usr/share/povray-3.7/include" in
+  let debian = Access.standard_include_dir in
   (* the scene's directory (POV-Ray searches the working directory, usually the scene's), then +L *)
   let dirs = [ main; Filename.current_dir_name ] @ st.opts.library_paths @ (if Sys.file_exists debian then [ debian ] else []) in
   List.fold_left (fun acc d -> if List.mem d acc then acc else acc @ [ d ]) [] dirs

@@ -16,6 +16,7 @@ type options = {
   debug : string -> unit;
   included : string -> depth:int -> float -> unit;
   limits : Scene_limits.t;
+  access : Access.t;
 }
 
 (** The camera as written. *)
@@ -63,6 +64,11 @@ type st = {
   mutable tables : V.t ref Names.t list;
   mutable includes : int;
   mutable macro_depth : int;
+  mutable macro_calls : int;  (** macro calls so far, against [opts.limits] *)
+  mutable iterations : int;  (** loop iterations so far, all loops together *)
+  mutable nesting : int;  (** parentheses, vectors, signs and unions open in the reader *)
+  mutable braces : int;  (** POV-Ray's count of nested blocks, for its warning past 200 *)
+  mutable object_count : int;  (** objects and lights that entered the scene *)
   mutable version : int;
   mutable version_set : bool;
   mutable warnings : Error.t list;
@@ -79,6 +85,7 @@ type st = {
   mutable directive : st -> string -> Loc.t -> unit;
   mutable invoke : st -> V.macro -> Loc.t -> unit;
   mutable index : st -> V.array_v -> int;
+  mutable files : V.user_file list;
 }
 
 val keywords : string list
@@ -98,6 +105,24 @@ val is_unsupported : string -> bool
 
 val top : st -> frame
 (** [top st] is the frame tokens are read from. *)
+
+val commas : int -> string
+(** [commas n] is [n] with thousands separated by commas ("10,000,000"), as limits are printed. *)
+
+val check_memory : st -> Loc.t -> unit
+(** [check_memory st loc] raises a [Limit] error at [loc] when the heap has reached the memory limit. *)
+
+val count_iteration : st -> Loc.t -> unit
+(** [count_iteration st loc] counts one loop iteration of the loop at [loc], raising a [Limit] error
+    past the limit (or past the memory limit). *)
+
+val count_object : st -> Loc.t -> unit
+(** [count_object st loc] counts one object or light entering the scene, raising a [Limit] error
+    past the limit. *)
+
+val nest : st -> Loc.t -> (unit -> 'a) -> 'a
+(** [nest st loc f] is [f ()] read one nesting level deeper, raising a [Limit] error at [loc]
+    when that is deeper than the limit (the reader recurses on nesting: this keeps the stack safe). *)
 
 val lookup_cell : st -> string -> V.t ref option
 (** [lookup_cell st name] is the cell of [name] in the innermost table that has it. *)

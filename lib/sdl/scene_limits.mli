@@ -13,5 +13,6 @@ type t = {
 }
 
 val default : t
-(** [default]: include depth 64, macro depth 10,000, 10,000,000 macro calls, 10,000,000 loop
-    iterations, 10,000,000 objects, nesting 10,000, memory 4,096 MiB, 67,108,864 pixels (8192²). *)
+(** [default]: include depth 64, macro depth 10,000, 3,000,000 macro calls, 10,000,000 loop
+    iterations, 10,000,000 objects, nesting 10,000, memory 4,096 MiB (or half the address space
+    the process may use, [ulimit -v], when that is less), 67,108,864 pixels (8192²). *)

@@ -29,6 +29,13 @@ type macro = { mname : string; params : string list; source : Lexer.t; body : Le
 (** A random stream made by [seed(n)] (§11.2). *)
 type stream = { mutable state : int }
 
+(** A file opened by [#fopen]: its path and what it is open for. Reading, the whole text is read
+    at [#fopen] and tokens are taken from it; the file is [Closed] by [#fclose], at the end of the
+    data, and when the scene ends. *)
+type user_file = { path : string; mutable io : io }
+
+and io = Reading of Lexer.t | Writing of out_channel | Closed
+
 type t =
   | Float of float
   | Vector of float array
@@ -46,6 +53,7 @@ type t =
   | Transform of Transform.t
   | Unsupported of { what : string; at : Loc.t }
       (** a declaration that uses a feature povml cannot render yet: an error only where it is used *)
+  | File of user_file  (** the identifier [#fopen] declares *)
 
 (** An array: its dimensions and its elements in row-major order, [None] until assigned. *)
 and array_v = { dims : int array; cells : t option array }
@@ -66,18 +74,19 @@ let kind_name = function
   | Macro _ -> "a macro"
   | Transform _ -> "a transform"
   | Unsupported u -> Printf.sprintf "a value that uses %s" u.what
+  | File f -> Printf.sprintf "the file \"%s\" opened by #fopen" f.path
 
 let terms = function
   | Float _ -> 1
   | Vector a | Colour a -> Array.length a
-  | String _ | Pigment _ | Finish _ | Texture _ | Interior _ | Object _ | Light _ | Camera _ | Array _ | Macro _ | Transform _ | Unsupported _ -> 0
+  | String _ | Pigment _ | Finish _ | Texture _ | Interior _ | Object _ | Light _ | Camera _ | Array _ | Macro _ | Transform _ | Unsupported _ | File _ -> 0
 
 (* POVRAY-3.7 §11.2: a float is replicated into every term, a shorter vector is padded with zeros. *)
 let promote v n =
   match v with
   | Float f -> Array.make n f
   | Vector a | Colour a -> Array.init n (fun i -> if i < Array.length a then a.(i) else 0.)
-  | String _ | Pigment _ | Finish _ | Texture _ | Interior _ | Object _ | Light _ | Camera _ | Array _ | Macro _ | Transform _ | Unsupported _ -> invalid_arg "Value.promote"
+  | String _ | Pigment _ | Finish _ | Texture _ | Interior _ | Object _ | Light _ | Camera _ | Array _ | Macro _ | Transform _ | Unsupported _ | File _ -> invalid_arg "Value.promote"
 
 let numeric v = terms v > 0
 
@@ -96,4 +105,4 @@ let map f = function
   | Float x -> Some (Float (f x))
   | Vector a -> Some (Vector (Array.map f a))
   | Colour a -> Some (Colour (Array.map f a))
-  | String _ | Pigment _ | Finish _ | Texture _ | Interior _ | Object _ | Light _ | Camera _ | Array _ | Macro _ | Transform _ | Unsupported _ -> None
+  | String _ | Pigment _ | Finish _ | Texture _ | Interior _ | Object _ | Light _ | Camera _ | Array _ | Macro _ | Transform _ | Unsupported _ | File _ -> None

@@ -32,6 +32,13 @@ type macro = { mname : string; params : string list; source : Lexer.t; body : Le
 (** A random stream made by [seed(n)] (§11.2). *)
 type stream = { mutable state : int }
 
+(** A file opened by [#fopen]: its path and what it is open for. Reading, the whole text is read
+    at [#fopen] and tokens are taken from it; the file is [Closed] by [#fclose], at the end of the
+    data, and when the scene ends. *)
+type user_file = { path : string; mutable io : io }
+
+and io = Reading of Lexer.t | Writing of out_channel | Closed
+
 type t =
   | Float of float
   | Vector of float array  (** 2 to 5 terms *)
@@ -49,6 +56,7 @@ type t =
   | Transform of Transform.t
   | Unsupported of { what : string; at : Loc.t }
       (** a declaration that uses a feature povml cannot render yet: an error only where it is used *)
+  | File of user_file  (** the identifier [#fopen] declares *)
 
 (** An array: its dimensions and its elements in row-major order, [None] until assigned. *)
 and array_v = { dims : int array; cells : t option array }

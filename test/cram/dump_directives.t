@@ -101,6 +101,7 @@ global shows through), or only the alias of a by-reference parameter.
   H=1
   K still 5
   S is a string again
+  warning: no objects in scene
 
 Not checked here: '#undef A[0]' clears one element in POV-Ray (A[1] stays readable); povml removes
 the whole array A. '#ifdef (A[0])' / 'defined(A[0])' after it is an error in povml.
@@ -559,3 +560,4 @@ array[2.5], strcmp's difference of codes, file_exists without ".inc" appended:
   X=2 Fact(5)=120 R3=8 M2=1234
   dims=2 0 0
   strcmp=99 -32 file_exists(l)=0 file_exists(l.inc)=1
+  warning: no objects in scene

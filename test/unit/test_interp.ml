@@ -275,7 +275,7 @@ let test_version_gamma () =
   (match w with
   | [ e ] -> check_contains "warning" ~sub:"assumed_gamma" e.msg
   | l -> Alcotest.failf "expected one warning about assumed_gamma, got %d" (List.length l));
-  let s, w = load "#version 3.7;\nglobal_settings { assumed_gamma 2.2 }" in
+  let s, w = load "#version 3.7;\nglobal_settings { assumed_gamma 2.2 }\nsphere { 0, 1 }" in
   Alcotest.(check bool) "assumed_gamma 2.2" true (s.gamma = Scene.Working 2.2);
   Alcotest.(check int) "no warning with assumed_gamma" 0 (List.length w);
   (* assumed_gamma applies whatever the version *)
@@ -330,9 +330,9 @@ let test_global_settings () =
     | l -> Alcotest.failf "expected one warning, got %d" (List.length l)
   in
   check_contains "above 256" ~sub:"Maximum max_trace_level is 256 but 300 was specified. Going to use max_trace_level 256."
-    (one_warning "#version 3.7;\nglobal_settings { assumed_gamma 1 max_trace_level 300 }");
-  Alcotest.(check int) "256: no warning" 0 (List.length (warnings "#version 3.7;\nglobal_settings { assumed_gamma 1 max_trace_level 256 }"));
-  Alcotest.(check int) "0: no warning" 0 (List.length (warnings "#version 3.7;\nglobal_settings { assumed_gamma 1 max_trace_level 0 }"))
+    (one_warning "#version 3.7;\nglobal_settings { assumed_gamma 1 max_trace_level 300 }\nsphere { 0, 1 }");
+  Alcotest.(check int) "256: no warning" 0 (List.length (warnings "#version 3.7;\nglobal_settings { assumed_gamma 1 max_trace_level 256 }\nsphere { 0, 1 }"));
+  Alcotest.(check int) "0: no warning" 0 (List.length (warnings "#version 3.7;\nglobal_settings { assumed_gamma 1 max_trace_level 0 }\nsphere { 0, 1 }"))
 
 (* ---- finishes (§5.1, §10.1) ---- *)
 
@@ -509,7 +509,7 @@ let test_optional_comma () =
    warning "More than one camera in scene. Ignoring previous camera(s).". povml lets the second
    camera modify the first (interp.ml: parse_camera). Not in POVRAY-3.7.md. *)
 let test_second_camera () =
-  let s, w = load (v37 ^ "camera { location <1,2,3> }\ncamera { right <2,0,0> }") in
+  let s, w = load (v37 ^ "camera { location <1,2,3> }\ncamera { right <2,0,0> }\nsphere { 0, 1 }") in
   vec_eq "the first camera's location is dropped" (v 0. 0. 0.) s.camera.location;
   vec_eq "the second camera's right" (v 2. 0. 0.) s.camera.right;
   Alcotest.(check int) "one warning" 1 (List.length w)
@@ -518,7 +518,7 @@ let test_second_camera () =
    assumed_gamma with the warning "New instance of assumed_gamma ignored" (the first one stays);
    povml keeps the last one. From the POV-Ray source (parse.cpp), not in POVRAY-3.7.md. *)
 let test_second_assumed_gamma () =
-  let s, w = load "#version 3.7;\nglobal_settings { assumed_gamma 1.0 }\nglobal_settings { assumed_gamma 2.2 }" in
+  let s, w = load "#version 3.7;\nglobal_settings { assumed_gamma 1.0 }\nglobal_settings { assumed_gamma 2.2 }\nsphere { 0, 1 }" in
   Alcotest.(check bool) "the first assumed_gamma stays" true (s.gamma = Scene.Working 1.);
   Alcotest.(check int) "one warning" 1 (List.length w)
 

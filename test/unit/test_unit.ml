@@ -28,8 +28,10 @@ let () =
       ("Check and report", Test_check.tests);
       ("Output", Test_misc.tests_output);
       ("Pipeline", Test_misc.tests_pipeline);
+      ("Access and user files", Test_user_files.tests);
       ("Robust mode", Test_robust.tests);
       ("Language properties (qcheck)", Test_lang_props.tests);
       ("POV-Ray source rules (Lexer)", Test_lexer.source_rules);
       ("POV-Ray source rules (Interp)", Test_interp.source_rules);
+      ("Interrupt", Test_interrupt.tests);
     ])

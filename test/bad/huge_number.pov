@@ -1,0 +1,7 @@
+#version 3.7;
+global_settings { assumed_gamma 1 }
+camera { location <0,0,-5> look_at 0 }
+light_source { <5,5,-5>, rgb 1 }
+#declare Big = 1e999999;
+#debug concat("Big = ", str(Big, 0, 3), "\n")
+sphere { 0, 1 pigment { rgb 1 } }

@@ -1,0 +1,9 @@
+#version 3.7;
+global_settings { assumed_gamma 1 }
+camera { location <0,0,-5> look_at 0 }
+light_source { <5,5,-5>, rgb 1 }
+mesh2 {
+  vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0> }
+  face_indices { 1, <0,1,7> }
+  pigment { rgb 1 }
+}
