@@ -274,6 +274,15 @@ and parse_function st loc name =
   let f2 f = arity 2; V.Float (f (float_arg (arg 0)) (float_arg (arg 1))) in
   let of_vec (v : Vec.t) = V.Vector [| v.x; v.y; v.z |] in
   let int_arg a = int_of_float (c_int (float_arg a)) in
+  (* str and vstr pad each number to |L| characters and print P digits after the point, so a
+     string of about |L| + P bytes a number; it must fit in the memory limit before it is made (a width
+     of 2^31 took 12 s and 2 GiB; found by fuzzing). POV-Ray prints into a fixed buffer. *)
+  let string_room terms l p =
+    let mib = float_of_int terms *. (Float.abs (float_of_int l) +. float_of_int (max 0 p)) /. 1048576. in
+    if mib >= float_of_int st.opts.limits.memory_mb then
+      Error.limit_at loc "'%s' would make a string of %.0f MiB, more than povml's memory limit of %s MiB (raise it with --max-memory MIB)"
+        name mib (commas st.opts.limits.memory_mb)
+  in
   match name with
   | "abs" -> f1 Float.abs
   | "sqrt" -> f1 (fun x -> if x < 0. then Error.raise_at loc "sqrt of negative number %f" x else sqrt x)
@@ -363,7 +372,11 @@ and parse_function st loc name =
           (* a dimension the array does not have has size 0 (checked with POV-Ray) *)
           V.Float (if d < 1 || d > Array.length a.dims then 0. else float_of_int a.dims.(d - 1))
       | _ -> Error.raise_at loc "'dimension_size' takes an array and a dimension number")
-  | "str" -> arity 3; V.String (Strfmt.str (float_arg (arg 0)) (int_arg (arg 1)) (int_arg (arg 2)))
+  | "str" ->
+      arity 3;
+      let l = int_arg (arg 1) and p = int_arg (arg 2) in
+      string_room 1 l p;
+      V.String (Strfmt.str (float_arg (arg 0)) l p)
   | "vstr" ->
       arity 5;
       let k = int_arg (arg 0) in
@@ -375,7 +388,9 @@ and parse_function st loc name =
         | _, (V.Vector a | V.Colour a) -> Array.init k (fun i -> if i < Array.length a then a.(i) else 0.)
         | l, v -> Error.raise_at l "'vstr' expects a vector, not %s" (V.kind_name v)
       in
-      V.String (Strfmt.vstr terms (string_arg (arg 2)) (int_arg (arg 3)) (int_arg (arg 4)))
+      let l = int_arg (arg 3) and p = int_arg (arg 4) in
+      string_room k l p;
+      V.String (Strfmt.vstr terms (string_arg (arg 2)) l p)
   | "concat" -> V.String (String.concat "" (List.map string_arg args))
   | "substr" ->
       arity 3;

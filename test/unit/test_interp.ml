@@ -415,6 +415,27 @@ let test_interior () =
   (* §2.7: the legacy finish ior is copied into the interior *)
   float_eq "legacy finish ior" 1.33 (the_object (scene "sphere { 0, 1 finish { ior 1.33 } }")).interior.ior
 
+(* str and vstr with a width or precision whose string would not fit in the memory limit: a limit
+   error before the string is made (found by fuzzing: a width of 2^31 took 12 s and 2 GiB) *)
+let test_str_width_limit () =
+  let opts = { opts with limits = { opts.limits with memory_mb = 16 } } in
+  let expect text col =
+    match Interp.load_string opts ~file:"t.pov" text with
+    | _ -> Alcotest.failf "%s: expected a limit error" text
+    | exception Error.Scene_error e ->
+        Alcotest.(check bool) (text ^ ": a limit") true (e.kind = Limit);
+        Alcotest.(check (pair int int)) (text ^ ": location") (1, col) (e.loc.line, e.loc.col);
+        check_contains text ~sub:"'str' would make a string of 95 MiB, more than povml's memory limit of 16 MiB" e.msg
+  in
+  expect "#declare S = str(1, 100000000, 0);" 14;
+  expect "#declare S = str(1, -100000000, 0);" 14;
+  expect "#declare S = str(1, 0, 100000000);" 14;
+  (match Interp.load_string opts ~file:"t.pov" "#declare S = vstr(5, <1,2,3>, \",\", 4000000, 0);" with
+  | _ -> Alcotest.fail "vstr: expected a limit error"
+  | exception Error.Scene_error e -> check_contains "vstr" ~sub:"'vstr' would make a string of 19 MiB" e.msg);
+  (* a width within the limit still pads *)
+  ignore (Interp.load_string opts ~file:"t.pov" "#declare S = str(1, 1000000, 0);\n#if (strlen(S) != 1000000) #error \"width\" #end")
+
 (* ---- errors (locations and "did you mean") ---- *)
 
 let test_errors () =
@@ -491,6 +512,7 @@ let tests =
     Alcotest.test_case "albedo" `Quick test_albedo;
     Alcotest.test_case "interior" `Quick test_interior;
     Alcotest.test_case "errors" `Quick test_errors;
+    Alcotest.test_case "str width and the memory limit" `Quick test_str_width_limit;
     Alcotest.test_case "warnings" `Quick test_warnings_order;
     Alcotest.test_case "load_file" `Quick test_load_file;
   ]
