@@ -17,8 +17,9 @@ max_seed_bytes=8192
 
 rm -rf "$out"
 mkdir -p "$out/seeds"
-# Seeds: every small scene but the benchmarks (their loops run for seconds on purpose).
-find scenes test/fuzz/seeds -name '*.pov' -size -$((max_seed_bytes + 1))c -not -path 'scenes/bench/*' | sort |
+# Seeds: every small scene but the benchmarks (their loops run for seconds on purpose), and the
+# malformed scenes of test/bad.
+find scenes test/fuzz/seeds test/bad -name '*.pov' -size -$((max_seed_bytes + 1))c -not -path 'scenes/bench/*' | sort |
   while read -r f; do cp "$f" "$out/seeds/$(echo "${f%.pov}" | tr / _).pov"; done
 echo "make fuzz: $(ls "$out/seeds" | wc -l) seed scenes, $(wc -l < $build/povml.dict) dictionary words, $seconds s"
 

@@ -3,13 +3,15 @@
 
 val limits : Povml.Scene_limits.t
 (** [limits] are small limits, so that a legitimate but huge scene ends quickly with a limit error
-    instead of looking like a hang: 10,000 loop iterations, macro calls and objects, nesting
-    2,000, 512 MiB; the default macro and include depths. *)
+    instead of looking like a hang: 10,000 loop iterations, macro calls and objects, macro depth
+    1,000, nesting 2,000, 512 MiB; the default include depth. *)
 
 type outcome =
   | Scene of int  (** the scene was read and rendered, with this many warnings *)
   | Refused of Povml.Error.t  (** the scene was refused with a located error ([Scene_error]) *)
-  | Bug of string  (** anything else: an exception that is not [Scene_error], described *)
+  | Bug of string
+      (** anything else: an exception that is not [Scene_error], or the error the interpreter makes
+          of Stack_overflow and Out_of_memory when no limit stopped the scene first; described *)
 
 val run : ?render:bool -> file:string -> string -> outcome
 (** [run ?render ~file text] interprets [text] (named [file] in locations) with [limits] and, when

@@ -1,5 +1,5 @@
 (* The short deterministic fuzz run of make test: with a fixed seed, mutations of the scenes in
-   scenes/ and test/fuzz/seeds go through the interpreter and an 8×8 render, and every outcome
+   scenes/, test/fuzz/seeds and test/bad go through the interpreter and an 8×8 render, and every outcome
    other than a scene or a located scene error fails the test, the input saved beside it.
 
    A mutator of our own rather than crowbar: crowbar's inputs are values built by generators, and
@@ -7,20 +7,22 @@
    valid, so the run reaches directives, macros and objects in its few seconds. AFL++ (make fuzz)
    is the long, coverage-guided run.
 
-   Each input has a time budget: a CPU-time timer whose handler raises (OCaml runs it at the next
-   allocation), and a wall-clock timer left at its default action, which ends the process if a
-   loop never allocates; the input being run is in fuzz_current.pov for that case. *)
+   Each input has a time budget: a CPU-time timer whose handler raises, and a wall-clock timer ten
+   times longer left at its default action, which ends the process where the handler cannot run
+   (a blocking system call, C code); the input being run is in fuzz_current.pov for that case.
+   POVML_FUZZ_INPUTS sets the number of inputs. *)
 
 open Povml_fuzz
 
-let inputs = try int_of_string (Sys.getenv "POVML_FUZZ_INPUTS") with Not_found | Failure _ -> 3000
+let inputs = try int_of_string (Sys.getenv "POVML_FUZZ_INPUTS") with Not_found | Failure _ -> 20_000
 let budget = 2.
 let max_seed_bytes = 8192
 
 exception Out_of_time
 
 (* the scenes of scenes/bench are left out: their loops run for seconds on purpose *)
-let scene_dirs = [ "../../scenes"; "../../scenes/course"; "../../scenes/fidelity"; "../../scenes/stiff"; "seeds" ]
+let scene_dirs =
+  [ "../../scenes"; "../../scenes/course"; "../../scenes/fidelity"; "../../scenes/stiff"; "seeds"; "../bad"; "../bad/fuzz" ]
 
 let read path =
   let ic = open_in_bin path in
@@ -67,7 +69,14 @@ let () =
     timed_out := false;
     set_timer Unix.ITIMER_VIRTUAL budget;
     set_timer Unix.ITIMER_REAL (10. *. budget);
-    let outcome = Target.run ~file:seeds.(k) text in
+    (* the timer may also go off after the run, before it is stopped *)
+    let outcome =
+      try
+        let o = Target.run ~file:seeds.(k) text in
+        set_timer Unix.ITIMER_VIRTUAL 0.;
+        o
+      with Out_of_time -> Target.Bug "out of time"
+    in
     set_timer Unix.ITIMER_VIRTUAL 0.;
     set_timer Unix.ITIMER_REAL 0.;
     match outcome with
@@ -81,10 +90,14 @@ let () =
   let bugs = List.rev !bugs in
   Printf.printf "%d inputs from %d seed scenes in %.1f s: %d scenes, %d scene errors, %d bugs\n" inputs (Array.length seeds)
     (Unix.gettimeofday () -. t0) !scenes !refused (List.length bugs);
-  List.iter
-    (fun (i, seed, text, msg) ->
-      let path = Printf.sprintf "fuzz_failure_%d.pov" i in
-      write path text;
-      Printf.printf "input %d (a mutation of %s, saved as %s): %s\n" i seed (Filename.concat (Sys.getcwd ()) path) msg)
+  let shown = 10 in
+  List.iteri
+    (fun n (i, seed, text, msg) ->
+      if n < shown then begin
+        let path = Printf.sprintf "fuzz_failure_%d.pov" i in
+        write path text;
+        Printf.printf "input %d (a mutation of %s, saved as %s): %s\n" i seed (Filename.concat (Sys.getcwd ()) path) msg
+      end)
     bugs;
+  if List.length bugs > shown then Printf.printf "… and %d more\n" (List.length bugs - shown);
   if bugs <> [] then exit 1
