@@ -4,7 +4,7 @@
 val limits : Povml.Scene_limits.t
 (** [limits] are small limits, so that a legitimate but huge scene ends quickly with a limit error
     instead of looking like a hang: 10,000 loop iterations, macro calls and objects, macro depth
-    1,000, nesting 2,000, 512 MiB; the default include depth. *)
+    1,000, nesting 2,000, 128 MiB; the default include depth. *)
 
 type outcome =
   | Scene of int  (** the scene was read and rendered, with this many warnings *)
