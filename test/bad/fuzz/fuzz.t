@@ -22,6 +22,15 @@ string must fit in the memory limit (512 MiB under 1 GiB of address space):
         |                         ^
   [exit 3, no image]
 
+A mesh2 that announces 121111111111111 faces and lists one: room for the announced faces was made
+before any was read, beyond the memory limit. The count is checked after the list:
+
+  $ sh ../run.sh mesh2_huge_count.pov
+  mesh2_huge_count.pov:7:16: error: face_indices says 121111111111111 entries but lists 1
+      7 |   face_indices { 121111111111111, <0, 1, 2> }
+        |                ^
+  [exit 1, no image]
+
 Every scene in this directory has its case above:
 
   $ for f in *.pov; do grep -q "run.sh $f" fuzz.t 2>/dev/null || echo "no case for $f"; done
