@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # make fuzz: AFL++ on the instrumented target (built by the Makefile in _build_afl) for FUZZ_SECONDS,
-# seeded with the small scenes of scenes/ and test/fuzz/seeds, with the language's dictionary.
+# seeded with the small scenes of scenes/, test/fuzz/seeds and test/bad, with the language's words
+# as its dictionary.
 # Prints how many inputs were tried and fails if any input crashed or hung.
 #   FUZZ_SECONDS   how long to fuzz (default 1800)
 #   FUZZ_OUT       AFL++'s output directory (default _fuzz, git-ignored); each run starts afresh
@@ -25,8 +26,9 @@ echo "make fuzz: $(ls "$out/seeds" | wc -l) seed scenes, $(wc -l < $build/povml.
 
 # A container has no CPU frequency governor to check and sends core dumps to a file (core_pattern
 # "core"), which AFL++ refuses unless told that crashes may be reported late; the fuzzer runs on
-# whichever core is free. The afl-fuzz exit status is ignored: the statistics decide.
-# OCaml's instrumentation writes a 64 KiB map, much smaller than AFL++'s default.
+# whichever core is free; OCaml's instrumentation writes a 64 KiB map, much smaller than AFL++'s
+# default. -m: 2 GiB of address space an input, well above the target's memory limit (128 MiB).
+# The afl-fuzz exit status is ignored: the statistics decide.
 export AFL_SKIP_CPUFREQ=1 AFL_I_DONT_CARE_ABOUT_MISSING_CRASHES=1 AFL_NO_AFFINITY=1 AFL_NO_UI=1
 export AFL_MAP_SIZE=65536
 afl-fuzz -i "$out/seeds" -o "$out" -x $build/povml.dict -t "$timeout" -m 2048 -V "$seconds" \
