@@ -348,6 +348,11 @@ Inputs the fuzzer found (`make fuzz`, test/fuzz) that crashed povml or took too 
       5 | #debug concat("Big = ", str(1e999999, 12345678901234567890, 3), "\n")
         |                         ^
   [exit 3, no image]
+  $ sh run.sh fuzz/mesh2_lying_count.pov
+  fuzz/mesh2_lying_count.pov:11:16: error: face_indices says 121111111111111 entries but lists 1
+     11 |   face_indices { 121111111111111, <0,1,2>, 0 }
+        |                ^
+  [exit 1, no image]
 
 Every scene in this directory and in fuzz/ has its case above:
 
