@@ -65,6 +65,14 @@ let rec waitpid pid =
   | _, st -> st
   | exception Unix.Unix_error (Unix.EINTR, _, _) -> waitpid pid
 
+(* OCaml numbers signals its own way (Sys.sigkill is -7): the name a user knows. *)
+let signal_name s =
+  let names =
+    [ (Sys.sigkill, "SIGKILL"); (Sys.sigsegv, "SIGSEGV"); (Sys.sigterm, "SIGTERM"); (Sys.sigint, "SIGINT");
+      (Sys.sigabrt, "SIGABRT"); (Sys.sigbus, "SIGBUS"); (Sys.sigpipe, "SIGPIPE"); (Sys.sigstop, "SIGSTOP") ]
+  in
+  match List.assoc_opt s names with Some n -> n | None -> Printf.sprintf "signal %d" s
+
 (* The parent's side once the workers run: hand out the tasks, wait for every worker (removing it
    from [running]), then read the results. *)
 let collect items n ~close task_w outs running =
@@ -84,8 +92,12 @@ let collect items n ~close task_w outs running =
       match st with
       | Unix.WEXITED 0 -> ()
       | Unix.WEXITED c -> failed := Some (Printf.sprintf "a render worker failed (status %d)" c)
-      | Unix.WSIGNALED s | Unix.WSTOPPED s -> failed := Some (Printf.sprintf "a render worker was killed (signal %d)" s))
+      | Unix.WSIGNALED s | Unix.WSTOPPED s -> failed := Some (Printf.sprintf "a render worker was killed (%s)" (signal_name s)))
     !running;
+  (* a worker that died with the interrupt did not fail; one that died otherwise may have left its
+     results cut short, so they are read only when every worker finished *)
+  Interrupt.check ();
+  (match !failed with Some m -> raise (Worker_failed m) | None -> ());
   let results = Array.make (Array.length items) None in
   Array.iter
     (fun fd ->
@@ -98,9 +110,6 @@ let collect items n ~close task_w outs running =
         done
       with End_of_file -> ())
     outs;
-  (* a worker that died with the interrupt did not fail *)
-  Interrupt.check ();
-  (match !failed with Some m -> raise (Worker_failed m) | None -> ());
   Array.to_list (Array.map (function Some r -> r | None -> raise (Worker_failed "a task was not done")) results)
 
 let map ~workers f items =

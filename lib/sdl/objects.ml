@@ -219,11 +219,9 @@ let parse_counted_block ?(start = fun (_ : int) -> ()) st what item =
   let n = parse_float st in
   if n < 0. || Float.of_int (int_of_float n) <> n then Error.raise_at nloc "the count of %s must be a whole number, not %g" what n;
   let n = int_of_float n in
-  (* room for the announced entries, within reason: a wrong count is reported after the block. An
-     entry takes at most 4 words (a face's three indices and its texture), and the room made before
-     any entry is read stays within a quarter of the memory limit: a count of 10^14 was an
-     allocation no limit saw (found by fuzzing) *)
-  start (min n (min 50_000_000 (st.opts.limits.memory_mb * 8192)));
+  (* room for the announced entries, within reason: a wrong count is reported after the block, and
+     a count that lies must not take the memory (an entry takes at most 4 words: half the limit) *)
+  start (min n (min 50_000_000 (st.opts.limits.memory_mb * 1048576 / 64)));
   let count = ref 0 in
   while peek st != RBrace do
     if peek st == Eof then close_block st what;

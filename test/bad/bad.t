@@ -10,7 +10,7 @@ The test directory holds the scenes as symbolic links into the build tree; povml
 before it decides whether a scene may read a file (a link cannot lead a scene out of its directory),
 so the scenes are made plain files first:
 
-  $ for f in *.pov; do cp "$f" "$f.copy" && mv "$f.copy" "$f"; done
+  $ for f in *.pov fuzz/*.pov; do cp "$f" "$f.copy" && mv "$f.copy" "$f"; done
 
 Each scene starts with the same four lines (#version 3.7, assumed_gamma 1, a camera, a light), so
 the errors are on line 5.
@@ -336,6 +336,24 @@ A UTF-8 byte-order mark and CRLF line ends render normally, to the same image as
   $ cmp bom.png plain.png && cmp crlf.png plain.png && echo same images
   same images
 
-Every scene in this directory has its case above:
+Inputs the fuzzer found (`make fuzz`, test/fuzz) that crashed povml or took too long, each fixed:
 
-  $ for f in *.pov; do grep -q "run.sh $f" bad.t 2>/dev/null || grep -q "> $f" bad.t 2>/dev/null || echo "no case for $f"; done
+  $ sh run.sh fuzz/bvh_infinite_sphere.pov
+  fuzz/bvh_infinite_sphere.pov:9:13: warning: sphere radius -inf is not positive
+      9 | sphere { 0, -1e400 pigment { rgb 1 } }
+        |             ^
+  [exit 0, image written]
+  $ sh run.sh fuzz/str_huge_width.pov
+  fuzz/str_huge_width.pov:5:25: error: 'str' would make a string of 2048 MiB, more than povml's memory limit of 512 MiB (raise it with --max-memory MIB)
+      5 | #debug concat("Big = ", str(1e999999, 12345678901234567890, 3), "\n")
+        |                         ^
+  [exit 3, no image]
+  $ sh run.sh fuzz/mesh2_lying_count.pov
+  fuzz/mesh2_lying_count.pov:11:16: error: face_indices says 121111111111111 entries but lists 1
+     11 |   face_indices { 121111111111111, <0,1,2>, 0 }
+        |                ^
+  [exit 1, no image]
+
+Every scene in this directory and in fuzz/ has its case above:
+
+  $ for f in *.pov fuzz/*.pov; do grep -q "run.sh $f" bad.t 2>/dev/null || grep -q "> $f" bad.t 2>/dev/null || echo "no case for $f"; done

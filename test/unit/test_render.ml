@@ -128,9 +128,14 @@ let test_pool () =
     (fun w -> Alcotest.(check bool) (Printf.sprintf "%d workers" w) true (Pool.map ~workers:w f xs = List.map f xs))
     [ 1; 2; 3; 8 ];
   Alcotest.(check (list int)) "no tasks" [] (Pool.map ~workers:2 Fun.id []);
-  match Pool.map ~workers:2 (fun x -> if x = 50 then failwith "boom" else x) xs with
+  (match Pool.map ~workers:2 (fun x -> if x = 50 then failwith "boom" else x) xs with
   | _ -> Alcotest.fail "a failing task went unnoticed"
-  | exception Pool.Worker_failed _ -> ()
+  | exception Pool.Worker_failed _ -> ());
+  (* a worker killed half-way (its results may be cut short) is named by its signal, not by the
+     unmarshalling of what it left *)
+  match Pool.map ~workers:2 (fun x -> if x = 50 then Unix.kill (Unix.getpid ()) Sys.sigkill; x) xs with
+  | _ -> Alcotest.fail "a killed worker went unnoticed"
+  | exception Pool.Worker_failed m -> Alcotest.(check string) "message" "a render worker was killed (SIGKILL)" m
 
 let tests =
   [
