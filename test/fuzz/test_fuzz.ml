@@ -10,11 +10,13 @@
    Each input has a time budget: a CPU-time timer whose handler raises, and a wall-clock timer ten
    times longer left at its default action, which ends the process where the handler cannot run
    (a blocking system call, C code); the input being run is in fuzz_current.pov for that case.
-   POVML_FUZZ_INPUTS sets the number of inputs. *)
+   POVML_FUZZ_INPUTS sets the number of inputs, POVML_FUZZ_SEED the seed (for a longer run of
+   different inputs by hand). *)
 
 open Povml_fuzz
 
 let inputs = try int_of_string (Sys.getenv "POVML_FUZZ_INPUTS") with Not_found | Failure _ -> 20_000
+let seed = try int_of_string (Sys.getenv "POVML_FUZZ_SEED") with Not_found | Failure _ -> 6
 let budget = 2.
 let max_seed_bytes = 8192
 
@@ -59,7 +61,7 @@ let () =
   let current = Unix.openfile "fuzz_current.pov" [ O_WRONLY; O_CREAT ] 0o644 in
   let timed_out = ref false in
   Sys.set_signal Sys.sigvtalrm (Sys.Signal_handle (fun _ -> timed_out := true; raise Out_of_time));
-  let rng = Random.State.make [| 6; 4 |] in
+  let rng = Random.State.make [| seed; 4 |] in
   let scenes = ref 0 and refused = ref 0 and bugs = ref [] in
   let t0 = Unix.gettimeofday () in
   for i = 1 to inputs do
