@@ -6,6 +6,9 @@ type t = {
   tangent : float;
       (** a sphere is missed when the squared half-chord is at most this (1e-10), and behind the
           ray when its centre's projection is below it *)
+  close : float;
+      (** a box keeps the side it found for a slab crossing this close to it, unless the ray is
+          steeper towards the new side: CLOSE_TOLERANCE, 1e-6 (§15.1) *)
 }
 
 val pov : t

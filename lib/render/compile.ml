@@ -21,9 +21,17 @@ let shape_of (s : Scene.shape) =
       match Triangle.smooth p1 n1 p2 n2 p3 n3 with Some (Ok t) -> Some (Smooth_triangle t) | None | Some (Error ()) -> None)
   | Mesh { mesh; trans = None; _ } -> Some (Mesh { mesh; tr = Transform.identity; moved = false })
   | Mesh { mesh; trans = Some tr; _ } -> Some (Mesh { mesh; tr; moved = true })
+  | Box { lo; hi; trans } -> (
+      let bx = { x0 = lo.x; y0 = lo.y; z0 = lo.z; x1 = hi.x; y1 = hi.y; z1 = hi.z } in
+      match trans with None -> Some (Box bx) | Some btr -> Some (Box_trans { bx; btr }))
+
+(* Box::Inside: a closed box, its surface included *)
+let in_box b (p : Vec.t) = not (p.x < b.x0 || p.x > b.x1 || p.y < b.y0 || p.y > b.y1 || p.z < b.z0 || p.z > b.z1)
 
 let inside stack shape (p : Vec.t) =
   match shape with
+  | Box b -> in_box b p
+  | Box_trans { bx; btr } -> in_box bx (Transform.inv_point btr p)
   | Sphere s ->
       let dx = p.x -. s.cx and dy = p.y -. s.cy and dz = p.z -. s.cz in
       (dx *. dx) +. (dy *. dy) +. (dz *. dz) < s.r2
@@ -58,6 +66,8 @@ let bounds = function
   | Plane _ | Plane_trans _ -> None
   | Triangle t | Smooth_triangle t -> Some (Triangle.bounds t)
   | Mesh m -> if m.moved then Some (Transform.bounds m.tr (Mesh.bounds m.mesh)) else Some (Mesh.bounds m.mesh)
+  | Box b -> Some [| b.x0; b.y0; b.z0; b.x1; b.y1; b.z1 |]
+  | Box_trans { bx = b; btr } -> Some (Transform.bounds btr [| b.x0; b.y0; b.z0; b.x1; b.y1; b.z1 |])
 
 (* The largest coordinate magnitude of a shape: its box, or for a plane its point nearest the origin. *)
 let magnitude shape =
@@ -68,7 +78,7 @@ let magnitude shape =
   | None, Plane_trans { pl; ptr; _ } ->
       let q = Transform.point ptr (Vec.make (-.pl.dist *. pl.nx) (-.pl.dist *. pl.ny) (-.pl.dist *. pl.nz)) in
       max_abs [| q.x; q.y; q.z |]
-  | None, (Sphere _ | Ellipsoid _ | Triangle _ | Smooth_triangle _ | Mesh _) -> 0.
+  | None, (Sphere _ | Ellipsoid _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _) -> 0.
 
 (* POV-Ray's box of a bounded shape (Compute_BBox, then Make_BBox or Make_BBox_from_min_max, which
    round the lower corner and the lengths to single precision): [| llx; lly; llz; lx; ly; lz |].
@@ -98,6 +108,8 @@ let pov_box shape =
   | Mesh m ->
       let b = of_min_max (Array.sub (Mesh.extent m.mesh) 0 3) (Array.sub (Mesh.extent m.mesh) 3 3) in
       if m.moved then mapped m.tr b else b
+  | Box b -> of_min_max [| b.x0; b.y0; b.z0 |] [| b.x1; b.y1; b.z1 |]
+  | Box_trans { bx = b; btr } -> mapped btr (of_min_max [| b.x0; b.y0; b.z0 |] [| b.x1; b.y1; b.z1 |])
 
 let group objs =
   let unbounded = List.filter (fun o -> bounds o.shape = None) objs in
@@ -112,7 +124,7 @@ let group objs =
     (fun i o ->
       match o.shape with
       | Sphere s -> spheres.(4 * i) <- s.cx; spheres.((4 * i) + 1) <- s.cy; spheres.((4 * i) + 2) <- s.cz; spheres.((4 * i) + 3) <- s.r2
-      | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ -> ())
+      | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ -> ())
     bounded;
   { unbounded = Array.of_list unbounded; bounded; bvh; spheres }
 
@@ -208,7 +220,7 @@ let scene (s : Scene.t) : Compiled.t =
            let face_surfs =
              match o.shape with
              | Mesh m -> Array.map (surface ~legacy ~ambient_light:s.ambient_light) m.textures
-             | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ -> [||]
+             | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Box _ -> [||]
            in
            {
              id;

@@ -5,5 +5,5 @@ val scene : Scene.t -> Compiled.t
     and the camera's starting interior list. *)
 
 val inside : float array -> Compiled.shape -> Vec.t -> bool
-(** [inside stack shape p] is POV-Ray's Inside test (§2.2, §2.3, §2.6); [stack] is traversal room
+(** [inside stack shape p] is POV-Ray's Inside test (§2.2, §2.3, §2.6, §15.1); [stack] is traversal room
     for meshes (512 floats). *)

@@ -7,6 +7,9 @@ type sphere = { cx : float; cy : float; cz : float; radius : float; r2 : float }
 (** A plane (§2.3): unit normal and POV-Ray's [Distance] = −d. *)
 type plane = { nx : float; ny : float; nz : float; dist : float }
 
+(** A box (§15.1): its lower and upper corners, sorted per axis. *)
+type box = { x0 : float; y0 : float; z0 : float; x1 : float; y1 : float; z1 : float }
+
 (** A mesh placed in the scene: shared data, and its transform when it has one ([moved]); an
     unmoved mesh is searched in world space as it is, like POV-Ray's mesh without a Trans (§2.6). *)
 type mesh_inst = { mesh : Mesh.t; tr : Transform.t; moved : bool }
@@ -21,6 +24,8 @@ type shape =
   | Triangle of Triangle.t
   | Smooth_triangle of Triangle.t
   | Mesh of mesh_inst
+  | Box of box  (** §15.1, in world space; the side hit is left where a mesh leaves its face *)
+  | Box_trans of { bx : box; btr : Transform.t }  (** §15.1, §14.5 (a): [bx] mapped by [btr] *)
 
 (** Everything about a surface that does not depend on the hit point, derived once from a
     plain pigment and its finish (§3.2, §3.5, §5). *)

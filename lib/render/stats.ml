@@ -11,6 +11,8 @@ type t = {
   mutable triangle_hits : int;
   mutable mesh_tests : int;
   mutable mesh_hits : int;
+  mutable box_tests : int;
+  mutable box_hits : int;
   mutable max_level : int;
   mutable samples : int;
 }
@@ -18,7 +20,7 @@ type t = {
 let create () =
   {
     camera_rays = 0; reflected_rays = 0; refracted_rays = 0; shadow_rays = 0; sphere_tests = 0;
-    sphere_hits = 0; plane_tests = 0; plane_hits = 0; triangle_tests = 0; triangle_hits = 0; mesh_tests = 0; mesh_hits = 0; max_level = 0; samples = 0;
+    sphere_hits = 0; plane_tests = 0; plane_hits = 0; triangle_tests = 0; triangle_hits = 0; mesh_tests = 0; mesh_hits = 0; box_tests = 0; box_hits = 0; max_level = 0; samples = 0;
   }
 
 let merge a b =
@@ -35,6 +37,8 @@ let merge a b =
     triangle_hits = a.triangle_hits + b.triangle_hits;
     mesh_tests = a.mesh_tests + b.mesh_tests;
     mesh_hits = a.mesh_hits + b.mesh_hits;
+    box_tests = a.box_tests + b.box_tests;
+    box_hits = a.box_hits + b.box_hits;
     max_level = max a.max_level b.max_level;
     samples = a.samples + b.samples;
   }

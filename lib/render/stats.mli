@@ -13,6 +13,8 @@ type t = {
   mutable triangle_hits : int;
   mutable mesh_tests : int;
   mutable mesh_hits : int;
+  mutable box_tests : int;
+  mutable box_hits : int;
   mutable max_level : int;  (** deepest trace level reached *)
   mutable samples : int;  (** antialiasing samples beyond the first per pixel *)
 }

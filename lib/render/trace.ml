@@ -120,6 +120,87 @@ let plane_trans_depth (stats : Stats.t) (lim : Limits.t) (p : plane) (t : Transf
     if t >= lim.near && t <= lim.far && t >= lo then (stats.plane_hits <- stats.plane_hits + 1; t)
     else infinity
 
+(* §15.1, Box::Intersect, §14.5 (a): the slabs of the box [b] crossed by the ray from (px, py, pz)
+   along (vx, vy, vz), not renormalised, so depths are world depths. The X slab uses exact
+   comparisons; the Y and Z slabs keep the side already found when a crossing is within
+   [ctx.lim.close] (1e-6) of it,
+   unless the ray is steeper towards the new side. Sides are 1–6 for X−, X+, Y−, Y+, Z−, Z+ (0: none
+   yet). The near crossing counts beyond the near limit, the far one always; the nearest at least
+   [lo] is returned and its side left in [ctx.sub.(0)]. *)
+let box_depth ctx (b : box) px py pz vx vy vz lo =
+  let stats = ctx.stats in
+  stats.box_tests <- stats.box_tests + 1;
+  let box_close = ctx.lim.close in
+  let tmin = ref 0. and tmax = ref 2e10 and smin = ref 0 and smax = ref 0 and miss = ref false in
+  if vx < -.epsilon || vx > epsilon then begin
+    let neg = vx < 0. in
+    let t = ((if neg then b.x0 else b.x1) -. px) /. vx in
+    if t < !tmin then miss := true
+    else begin
+      if t <= !tmax then begin smax := (if neg then 1 else 2); tmax := t end;
+      let t = ((if neg then b.x1 else b.x0) -. px) /. vx in
+      if t >= !tmin then if t > !tmax then miss := true else begin smin := (if neg then 2 else 1); tmin := t end
+    end
+  end
+  else if px < b.x0 || px > b.x1 then miss := true;
+  if not !miss then
+    if vy < -.epsilon || vy > epsilon then begin
+      let neg = vy < 0. in
+      let steeper = Float.abs vy > Float.abs vx in
+      let t = ((if neg then b.y0 else b.y1) -. py) /. vy in
+      if t < !tmin then miss := true
+      else begin
+        if t <= !tmax -. box_close then begin smax := (if neg then 3 else 4); tmax := t end
+        else if t <= !tmax +. box_close && steeper then smax := (if neg then 3 else 4);
+        let t = ((if neg then b.y1 else b.y0) -. py) /. vy in
+        if t >= !tmin +. box_close then (if t > !tmax then miss := true else begin smin := (if neg then 4 else 3); tmin := t end)
+        else if t >= !tmin -. box_close && steeper then smin := (if neg then 4 else 3)
+      end
+    end
+    else if py < b.y0 || py > b.y1 then miss := true;
+  if not !miss then
+    if vz < -.epsilon || vz > epsilon then begin
+      let neg = vz < 0. in
+      let az = Float.abs vz in
+      let steeper_x = az > Float.abs vx and steeper_y = az > Float.abs vy in
+      let t = ((if neg then b.z0 else b.z1) -. pz) /. vz in
+      if t < !tmin then miss := true
+      else begin
+        let s = !smax in
+        if t <= !tmax -. box_close then begin smax := (if neg then 5 else 6); tmax := t end
+        else if t <= !tmax +. box_close && (((s = 1 || s = 2) && steeper_x) || ((s = 3 || s = 4) && steeper_y)) then
+          smax := (if neg then 5 else 6);
+        let s = !smin in
+        let t = ((if neg then b.z1 else b.z0) -. pz) /. vz in
+        if t >= !tmin +. box_close then (if t > !tmax then miss := true else begin smin := (if neg then 6 else 5); tmin := t end)
+        else if t >= !tmin -. box_close && (((s = 1 || s = 2) && steeper_x) || ((s = 3 || s = 4) && steeper_y)) then
+          smin := (if neg then 6 else 5)
+      end
+    end
+    else if pz < b.z0 || pz > b.z1 then miss := true;
+  if !miss || !tmax < ctx.lim.near then infinity
+  else if !tmin > ctx.lim.near && !tmin >= lo then begin
+    stats.box_hits <- stats.box_hits + 1;
+    ctx.sub.(0) <- !smin;
+    !tmin
+  end
+  else if !tmax >= lo then begin
+    stats.box_hits <- stats.box_hits + 1;
+    ctx.sub.(0) <- !smax;
+    !tmax
+  end
+  else infinity
+
+(* §15.1: the box [b] mapped by [t]: the ray brought into object space, direction not renormalised. *)
+let box_trans_depth ctx (b : box) (t : Transform.t) (o : Vec.t) (d : Vec.t) lo =
+  let px = (o.x *. t.i00) +. (o.y *. t.i10) +. (o.z *. t.i20) +. t.i30 in
+  let py = (o.x *. t.i01) +. (o.y *. t.i11) +. (o.z *. t.i21) +. t.i31 in
+  let pz = (o.x *. t.i02) +. (o.y *. t.i12) +. (o.z *. t.i22) +. t.i32 in
+  let vx = (d.x *. t.i00) +. (d.y *. t.i10) +. (d.z *. t.i20) in
+  let vy = (d.x *. t.i01) +. (d.y *. t.i11) +. (d.z *. t.i21) in
+  let vz = (d.x *. t.i02) +. (d.y *. t.i12) +. (d.z *. t.i22) in
+  box_depth ctx b px py pz vx vy vz lo
+
 let hit_shape ctx shape (o : Vec.t) (d : Vec.t) lo =
   let stats = ctx.stats in
   match shape with
@@ -136,6 +217,8 @@ let hit_shape ctx shape (o : Vec.t) (d : Vec.t) lo =
         if t >= ctx.lim.near && t <= ctx.lim.far && t >= lo then (stats.plane_hits <- stats.plane_hits + 1; t)
         else infinity
   | Plane_trans { pl; ptr; _ } -> plane_trans_depth stats ctx.lim pl ptr o d lo
+  | Box b -> box_depth ctx b o.x o.y o.z d.x d.y d.z lo
+  | Box_trans { bx; btr } -> box_trans_depth ctx bx btr o d lo
   | Triangle t | Smooth_triangle t ->
       (* §2.4 *)
       stats.triangle_tests <- stats.triangle_tests + 1;
@@ -270,10 +353,22 @@ let surface_of obj sub =
   | Mesh m when sub >= 0 ->
       let t = Mesh.texture m.mesh sub in
       if t >= 0 then obj.face_surfs.(t) else obj.surf
-  | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ -> obj.surf
+  | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ -> obj.surf
+
+(* Box::Normal: the outward axis of the side hit (1–6). *)
+let box_side_normal side =
+  match side with
+  | 1 -> Vec.make (-1.) 0. 0.
+  | 2 -> Vec.make 1. 0. 0.
+  | 3 -> Vec.make 0. (-1.) 0.
+  | 4 -> Vec.make 0. 1. 0.
+  | 5 -> Vec.make 0. 0. (-1.)
+  | _ -> Vec.make 0. 0. 1.
 
 let normal obj sub (p : Vec.t) : Vec.t =
   match obj.shape with
+  | Box _ -> box_side_normal sub
+  | Box_trans { btr; _ } -> Transform.normalize (Transform.normal btr (box_side_normal sub))
   | Sphere s -> Vec.make ((p.x -. s.cx) /. s.radius) ((p.y -. s.cy) /. s.radius) ((p.z -. s.cz) /. s.radius)
   | Ellipsoid { sp = s; etr } ->
       (* Sphere::Normal: P' − C in object space, by the inverse transpose, normalised (§14.6) *)
@@ -301,7 +396,7 @@ let geometric_normal obj sub (p : Vec.t) =
   match obj.shape with
   | Smooth_triangle t -> Vec.make t.nx t.ny t.nz
   | Mesh m -> if m.moved then Transform.normalize (Transform.normal m.tr (Mesh.face_normal m.mesh sub)) else Mesh.face_normal m.mesh sub
-  | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ -> normal obj sub p
+  | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Box _ | Box_trans _ -> normal obj sub p
 
 (* A hit point put back onto a sphere: o + t·d is off by rounding errors of the size of the ray's
    length, a point projected from the centre by those of the centre and radius only. *)
@@ -314,7 +409,7 @@ let refine obj (p : Vec.t) =
   match obj.shape with
   | Sphere s -> onto s.cx s.cy s.cz s.radius p
   | Ellipsoid { sp = s; etr } -> Transform.point etr (onto s.cx s.cy s.cz s.radius (Transform.inv_point etr p))
-  | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ -> p
+  | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ -> p
 
 let norm_inf (v : Vec.t) = Float.max (Float.abs v.x) (Float.max (Float.abs v.y) (Float.abs v.z))
 

@@ -31,11 +31,12 @@ val make_ctx : ?robust:bool -> Compiled.t -> Stats.t -> ctx
 val hit_shape : ctx -> Compiled.shape -> Vec.t -> Vec.t -> float -> float
 (** [hit_shape ctx shape o d lo] is the nearest depth along the unit direction [d] at which the ray
     from [o] meets [shape] within the shape's own limits and at least [lo] (§2, §14.5), or
-    infinity; for a mesh the face is left in [ctx.sub.(0)]. *)
+    infinity; for a mesh the face, for a box the side (1–6: X−, X+, Y−, Y+, Z−, Z+), is left in
+    [ctx.sub.(0)]. *)
 
 val normal : Compiled.obj -> int -> Vec.t -> Vec.t
 (** [normal obj face p] is the unit normal of [obj] at its surface point [p] ([face]: the mesh face
-    hit, else ignored), before it is turned toward the ray (§3.1, §14.6). *)
+    or box side hit, else ignored), before it is turned toward the ray (§3.1, §14.6). *)
 
 val black : result
 (** [black] is what a ray cut off by max_trace_level or adc_bailout returns. *)

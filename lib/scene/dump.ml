@@ -69,6 +69,7 @@ let shape = function
   | Triangle { p1; p2; p3 } -> Printf.sprintf "triangle { %s, %s, %s" (vec p1) (vec p2) (vec p3)
   | Smooth_triangle { p1; n1; p2; n2; p3; n3 } ->
       Printf.sprintf "smooth_triangle { %s, %s, %s, %s, %s, %s" (vec p1) (vec n1) (vec p2) (vec n2) (vec p3) (vec n3)
+  | Box { lo; hi; trans = t } -> Printf.sprintf "box { %s, %s%s" (vec lo) (vec hi) (trans t)
   | Mesh { mesh; trans = t; textures } ->
       let b = Mesh.bounds mesh in
       Printf.sprintf "mesh { // %d triangles within <%s, %s, %s> … <%s, %s, %s>%s%s" mesh.faces (num b.(0)) (num b.(1))

@@ -95,6 +95,20 @@ let shape (s : Scene.shape) op : Scene.shape =
               | Rotate _ | Transform _ -> Transform.normal (op_transform op) n
             in
             Smooth_triangle { p1 = mp p1; n1 = mn n1; p2 = mp p2; n2 = mn n2; p3 = mp p3; n3 = mn n3 })
+  | Box { lo; hi; trans = None } -> (
+      (* §15.1, Box::Translate/Scale: translate and scale move the corners (re-sorted per axis
+         after a scale); rotate and matrix attach a transform *)
+      match op with
+      | Translate v -> Box { lo = Vec.add lo v; hi = Vec.add hi v; trans = None }
+      | Scale v ->
+          let a = Vec.mul lo v and b = Vec.mul hi v in
+          (* swapped only where the lower corner came out above the upper one *)
+          let lo_of p q = if p > q then q else p and hi_of p q = if p > q then p else q in
+          let lo = Vec.make (lo_of a.x b.x) (lo_of a.y b.y) (lo_of a.z b.z) in
+          let hi = Vec.make (hi_of a.x b.x) (hi_of a.y b.y) (hi_of a.z b.z) in
+          Box { lo; hi; trans = None }
+      | Rotate _ | Transform _ -> Box { lo; hi; trans = Some (attach None op) })
+  | Box { lo; hi; trans = Some _ as trans } -> Box { lo; hi; trans = Some (attach trans op) }
   | Mesh { mesh; trans; textures } ->
       (* §2.6, Mesh::Translate/Rotate/Scale all call Transform *)
       Mesh { mesh; trans = Some (attach trans op); textures }
@@ -110,7 +124,7 @@ let scene ~scale ~translate (s : Scene.t) : Scene.t =
     (* a smooth triangle's Scale renormalises its vertex normals, which changes how they blend;
        as a matrix the uniform scale only multiplies all three by the same factor *)
     let scaling =
-      match o.shape with Smooth_triangle _ -> Transform (Transform.scale sv) | Sphere _ | Plane _ | Triangle _ | Mesh _ -> Scale sv
+      match o.shape with Smooth_triangle _ -> Transform (Transform.scale sv) | Sphere _ | Plane _ | Triangle _ | Mesh _ | Box _ -> Scale sv
     in
     let sh = shape (shape o.shape scaling) (Translate translate) in
     { o with shape = sh; interior = { o.interior with fade_distance = o.interior.fade_distance *. scale } }

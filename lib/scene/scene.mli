@@ -53,6 +53,9 @@ type shape =
       (** §2.5, vertex normals unit length as parsed, moved by [MTransNormal] since *)
   | Mesh of { mesh : Mesh.t; trans : Transform.t option; textures : texture array }
       (** §2.6: shared mesh data, placed by [trans]; faces with a texture index use [textures] *)
+  | Box of { lo : Vec.t; hi : Vec.t; trans : Transform.t option }
+      (** §15.1: the corners sorted per axis ([lo] ≤ [hi]); with [trans], the object-space box
+          mapped by it *)
 
 (** A finished object: textured, with an interior (§2.7). *)
 type obj = {

@@ -51,7 +51,7 @@ let new_obj shape loc = new_obj_of (V.Prim shape) loc
 
 (* Objects povml does not render yet: inside a union they are reported as "not supported yet". *)
 let unsupported_objects =
-  [ "box"; "cylinder"; "cone"; "disc"; "torus"; "polygon"; "prism"; "lathe"; "sor"; "blob"; "text"; "height_field";
+  [ "cylinder"; "cone"; "disc"; "torus"; "polygon"; "prism"; "lathe"; "sor"; "blob"; "text"; "height_field";
     "isosurface"; "superellipsoid"; "julia_fractal"; "parametric"; "bicubic_patch"; "ovus"; "quadric"; "cubic";
     "quartic"; "poly"; "intersection"; "difference"; "merge"; "sphere_sweep"; "lemon" ]
 
@@ -282,6 +282,17 @@ let rec parse_object st : V.obj =
       let radius = parse_float st in
       if radius <= 0. then warn st rloc "sphere radius %g is not positive" radius;
       parse_object_mods st (new_obj (Sphere { centre; radius; trans = None }) loc) "sphere"
+  | Ident "box" ->
+      (* §15.1: the corners are sorted per axis; a flat or empty box is accepted silently *)
+      advance st;
+      open_block st "box";
+      let a = parse_vector st in
+      ignore (accept st Comma);
+      let b = parse_vector st in
+      let lo_of p q = if p > q then q else p and hi_of p q = if p > q then p else q in
+      let lo = Vec.make (lo_of a.x b.x) (lo_of a.y b.y) (lo_of a.z b.z) in
+      let hi = Vec.make (hi_of a.x b.x) (hi_of a.y b.y) (hi_of a.z b.z) in
+      parse_object_mods st (new_obj (Box { lo; hi; trans = None }) loc) "box"
   | Ident "plane" ->
       advance st;
       open_block st "plane";

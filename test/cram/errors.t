@@ -70,10 +70,10 @@ A zero plane normal is refused, as POV-Ray refuses it:
 
 Features of later versions are named:
 
-  $ printf 'box { 0, 1 }\n' > box.pov
-  $ povml box.pov +W10 +H10 -D
-  box.pov:1:1: error: not supported yet: 'box'
-      1 | box { 0, 1 }
+  $ printf 'cylinder { 0, y, 1 }\n' > cylinder.pov
+  $ povml cylinder.pov +W10 +H10 -D
+  cylinder.pov:1:1: error: not supported yet: 'cylinder'
+      1 | cylinder { 0, y, 1 }
         | ^
   [1]
 

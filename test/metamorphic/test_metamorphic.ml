@@ -21,6 +21,9 @@ let fidelity =
     "scenes/fidelity/transform_ellipsoid.pov";
     "scenes/fidelity/mesh_glass_octahedron.pov";
     "scenes/fidelity/camera_under_plane.pov";
+    "scenes/fidelity/box_shadows.pov";
+    "scenes/fidelity/box_rotated_mirror.pov";
+    "scenes/fidelity/box_glass.pov";
     "scenes/course/10_everything_together.pov";
   ]
 

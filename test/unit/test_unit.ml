@@ -18,6 +18,7 @@ let () =
       ("Bvh", Test_bvh.tests);
       ("Transform", Test_transform.tests);
       ("Compile", Test_compile.tests);
+      ("Box", Test_box.tests);
       ("Trace", Test_trace.tests);
       ("Render", Test_render.tests);
       ("Jitter", Test_jitter.tests);
