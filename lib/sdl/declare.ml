@@ -11,7 +11,7 @@ open Settings
 
 (* The value of a #declare or of a macro argument (the parser's "rvalue"), and whether a ';' should
    follow it (§11.3: after floats, vectors, colours and strings). *)
-let rec parse_rvalue st : V.t * bool =
+let rec parse_rvalue ?(store = ignore) st : V.t * bool =
   let loc = peek_loc st in
   match peek st with
   | Ident "light_source" -> (V.Light (parse_light st), false)
@@ -26,7 +26,7 @@ let rec parse_rvalue st : V.t * bool =
   | Ident "interior" -> advance st; (V.Interior (parse_interior st Defaults.interior), false)
   | Ident "camera" -> advance st; (V.Camera (parse_camera st), false)
   | Ident "transform" -> advance st; (V.Transform (parse_transform st), false)
-  | Ident "array" -> (parse_array st, false)
+  | Ident "array" -> (parse_array ~store st, false)
   | Ident s when Names.mem unsupported_rvalue_set s -> not_supported loc (Printf.sprintf "'%s'" s)
   | Ident s -> (
       match cur_value st s with
@@ -37,11 +37,26 @@ let rec parse_rvalue st : V.t * bool =
       | _ -> (parse_expr st, true))
   | _ -> (parse_expr st, true)
 
-(* array[d1][d2]… [{ initialisers }] (§11.2). *)
-and parse_array st =
+(* array[d1][d2]… [{ initialisers }] (§11.2). The array is handed to [store] before the look for
+   '{': that look runs the directives that follow, and POV-Ray lets them assign elements of the
+   array being declared (#declare A = array[3] then #declare A[0] = … with no ';' between). *)
+and parse_array ?(store = ignore) st =
   let loc = peek_loc st in
   advance st;
-  let rec dims acc =
+  (* the array of the dimensions read so far, handed to [store] before the next token is looked at *)
+  let make dims =
+    let total = Array.fold_left (fun t d -> t *. float_of_int d) 1. dims in
+    let mib = total *. float_of_int (Sys.word_size / 8) /. 1048576. in
+    if mib >= float_of_int st.opts.limits.memory_mb then
+      Error.limit_at loc "this array of %.0f elements would need %.0f MiB, more than povml's memory limit of %s MiB (raise it with --max-memory MIB)"
+        total mib (commas st.opts.limits.memory_mb);
+    let cells = Array.make (int_of_float total) None in
+    check_memory st loc;
+    let value = V.Array { dims; cells } in
+    store value;
+    (value, cells)
+  in
+  let rec dims acc made =
     if peek st == LBracket then begin
       advance st;
       let l = peek_loc st in
@@ -51,20 +66,15 @@ and parse_array st =
       if not (n < 2147483648.) then Error.raise_at l "an array dimension must be less than 2147483648, not %g" n;
       if List.length acc >= 5 then Error.raise_at l "an array has at most 5 dimensions";
       expect st RBracket "']' after an array dimension";
-      dims (int_of_float n :: acc)
+      let acc = int_of_float n :: acc in
+      let dims_so_far = Array.of_list (List.rev acc) in
+      dims acc (Some (dims_so_far, make dims_so_far))
     end
-    else List.rev acc
+    else made
   in
-  let dims = Array.of_list (dims []) in
-  if Array.length dims = 0 then Error.raise_at loc "'array' needs a size: array[N]";
-  let total = Array.fold_left (fun t d -> t *. float_of_int d) 1. dims in
-  let mib = total *. float_of_int (Sys.word_size / 8) /. 1048576. in
-  if mib >= float_of_int st.opts.limits.memory_mb then
-    Error.limit_at loc "this array of %.0f elements would need %.0f MiB, more than povml's memory limit of %s MiB (raise it with --max-memory MIB)"
-      total mib (commas st.opts.limits.memory_mb);
-  let total = int_of_float total in
-  let cells = Array.make total None in
-  check_memory st loc;
+  let dims, (value, cells) =
+    match dims [] None with Some m -> m | None -> Error.raise_at loc "'array' needs a size: array[N]"
+  in
   if peek st == LBrace then begin
     (* nested braces, one level per dimension *)
     let rec fill_level d offset =
@@ -83,7 +93,7 @@ and parse_array st =
     in
     fill_level 0 0
   end;
-  V.Array { dims; cells }
+  value
 
 (* The subscripts [i][j]… of an element of [a], as a row-major index. *)
 let parse_index st (a : V.array_v) =
@@ -153,8 +163,9 @@ let parse_declare st ~local dloc =
   expect st Eq (Printf.sprintf "'=' after '%s'" name);
   let d0 = st.depth in
   let in_main = List.length st.frames = 1 in
+  let store value = match target with `Name s -> assign st ~local s value | `Element (_, a, i) -> a.cells.(i) <- Some value in
   let value, needs_semi =
-    try parse_rvalue st
+    try parse_rvalue ~store st
     with Unsupported (l, what, _) ->
       (* a declaration povml cannot make yet is no error until it is used (issue: include files
          declare much more than a scene uses) *)
@@ -163,9 +174,7 @@ let parse_declare st ~local dloc =
       (V.Unsupported { what; at = l }, false)
   in
   (* the value is stored before anything after it is read: the next token may be a directive *)
-  (match target with
-  | `Name s -> assign st ~local s value
-  | `Element (_, a, i) -> a.cells.(i) <- Some value);
+  store value;
   if needs_semi && not (accept st Semi) then begin
     if st.version >= 350 then
       warn st (peek_loc st) "all #declares of float, vector, and color require semicolon ';' at end if the language version is 3.5 or higher"

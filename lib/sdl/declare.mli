@@ -1,8 +1,10 @@
 (** Declarations (POVRAY-3.7 §11.3): the value of a #declare or a macro argument, arrays, and where
     a value is stored. *)
 
-val parse_rvalue : Reader.st -> Value.t * bool
-(** [parse_rvalue st] reads a declarable value and whether a ';' should follow it. *)
+val parse_rvalue : ?store:(Value.t -> unit) -> Reader.st -> Value.t * bool
+(** [parse_rvalue ~store st] reads a declarable value and whether a ';' should follow it. An array
+    is passed to [store] as soon as its size is known, before its initialiser is looked for, so the
+    directives read by that look see it. *)
 
 val parse_index : Reader.st -> Value.array_v -> int
 (** [parse_index st a] reads the subscripts of an element of [a] as a row-major index. *)

@@ -31,6 +31,14 @@ let test_promotion () =
   float_eq "(1 < 2) + (2 <= 1) + (3 != 3) + (3 = 3)" 2. (radius "sphere { 0, (1 < 2) + (2 <= 1) + (3 != 3) + (3 = 3) }");
   float_eq "?:" 5. (radius "sphere { 0, (0 ? 4 : 5) }")
 
+let test_array_declared_without_semicolon () =
+  (* #declare A = array[3] with no ';': looking for an initialiser reads the directives after it,
+     which may already assign its elements, as in POV-Ray's incdemo/glasses scenes *)
+  float_eq "element set by the next directive" 5. (radius "#declare A = array[3]\n#declare A[1] = 5;\nsphere { 0, A[1] }");
+  float_eq "two dimensions" 7.
+    (radius "#declare B = array[2][2]\n#declare X = 1;\n#declare B[1][0] = 7;\nsphere { 0, B[1][0] }");
+  float_eq "an initialiser still follows" 2. (radius "#declare C = array[2] { 1, 2 }\nsphere { 0, C[1] }")
+
 let test_functions () =
   (* sqrt(16) + pow(2,3) + abs(-1) = 4 + 8 + 1 = 13 *)
   float_eq "sqrt+pow+abs" 13. (radius "sphere { 0, sqrt(16) + pow(2,3) + abs(-1) }");
@@ -493,6 +501,7 @@ let tests =
   [
     Alcotest.test_case "promotion and operators" `Quick test_promotion;
     Alcotest.test_case "functions" `Quick test_functions;
+    Alcotest.test_case "array declared without ';'" `Quick test_array_declared_without_semicolon;
     Alcotest.test_case "component selectors" `Quick test_components;
     Alcotest.test_case "division by zero" `Quick test_division_by_zero;
     Alcotest.test_case "colours" `Quick test_colours;
