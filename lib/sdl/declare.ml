@@ -27,6 +27,10 @@ let rec parse_rvalue ?(store = ignore) st : V.t * bool =
   | Ident "camera" -> advance st; (V.Camera (parse_camera st), false)
   | Ident "transform" -> advance st; (V.Transform (parse_transform st), false)
   | Ident "array" -> (parse_array ~store st, false)
+  | Str _ | Ident ("str" | "vstr" | "concat" | "substr" | "chr" | "strupr" | "strlwr") ->
+      (* a string is read without looking past it, and needs no ';': the token after it may call a
+         macro that uses the identifier being declared (POV-Ray's portfolio scenes) *)
+      (parse_string st, false)
   | Ident s when Names.mem unsupported_rvalue_set s -> not_supported loc (Printf.sprintf "'%s'" s)
   | Ident s -> (
       match cur_value st s with
@@ -34,8 +38,20 @@ let rec parse_rvalue ?(store = ignore) st : V.t * bool =
       | Some ((V.Pigment _ | V.Finish _ | V.Texture _ | V.Interior _ | V.Light _ | V.Camera _ | V.Transform _ | V.Unsupported _) as v) ->
           advance st; (v, false)
       | Some (V.Array a) -> advance st; (V.Array { a with cells = Array.copy a.cells }, false)
+      | Some (V.String _) -> (parse_string st, false)
       | _ -> (parse_expr st, true))
   | _ -> (parse_expr st, true)
+
+(* A string value, read without looking past it. An arithmetic operator right after it is the
+   likely mistake of joining strings with '+': said so at the operator (POV-Ray only says it expected
+   an object there). *)
+and parse_string st =
+  let v = parse_primary st in
+  (match Lexer.next_char (top st).lx with
+  | Some ('+' | '-' | '*' | '/') when not st.have ->
+      Error.raise_at (peek_loc st) "cannot do arithmetic on a string (strings are joined with concat(…))"
+  | Some _ | None -> ());
+  v
 
 (* array[d1][d2]… [{ initialisers }] (§11.2). The array is handed to [store] before the look for
    '{': that look runs the directives that follow, and POV-Ray lets them assign elements of the

@@ -69,7 +69,7 @@ Wrong value types:
         |                   ^
   [exit 1, no image]
   $ sh run.sh wrong_type_arith.pov
-  wrong_type_arith.pov:5:21: error: cannot do arithmetic on a string and a float
+  wrong_type_arith.pov:5:21: error: cannot do arithmetic on a string (strings are joined with concat(…))
       5 | #declare A = "text" + 1;
         |                     ^
   [exit 1, no image]

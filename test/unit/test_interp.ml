@@ -39,6 +39,12 @@ let test_array_declared_without_semicolon () =
     (radius "#declare B = array[2][2]\n#declare X = 1;\n#declare B[1][0] = 7;\nsphere { 0, B[1][0] }");
   float_eq "an initialiser still follows" 2. (radius "#declare C = array[2] { 1, 2 }\nsphere { 0, C[1] }")
 
+let test_string_declared_without_semicolon () =
+  (* a string is read without looking past it: the macro call after it sees the new identifier *)
+  float_eq "literal" 3. (radius "#macro Mk(A) sphere { 0, strlen(A) } #end\n#declare S = \"abc\"\nMk(S)");
+  float_eq "function" 2. (radius "#macro Mk(A) sphere { 0, strlen(A) } #end\n#declare S = concat(\"a\", \"b\")\nMk(S)");
+  float_eq "identifier" 3. (radius "#macro Mk(A) sphere { 0, strlen(A) } #end\n#declare T = \"xyz\";\n#declare S = T\nMk(S)")
+
 let test_functions () =
   (* sqrt(16) + pow(2,3) + abs(-1) = 4 + 8 + 1 = 13 *)
   float_eq "sqrt+pow+abs" 13. (radius "sphere { 0, sqrt(16) + pow(2,3) + abs(-1) }");
@@ -502,6 +508,7 @@ let tests =
     Alcotest.test_case "promotion and operators" `Quick test_promotion;
     Alcotest.test_case "functions" `Quick test_functions;
     Alcotest.test_case "array declared without ';'" `Quick test_array_declared_without_semicolon;
+    Alcotest.test_case "string declared without ';'" `Quick test_string_declared_without_semicolon;
     Alcotest.test_case "component selectors" `Quick test_components;
     Alcotest.test_case "division by zero" `Quick test_division_by_zero;
     Alcotest.test_case "colours" `Quick test_colours;
