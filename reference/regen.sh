@@ -45,7 +45,7 @@ while IFS=$'\t' read -r name scene options min_identical max_peak reason || [ -n
   [ "$lineno" -eq 1 ] && continue                       # header
   case "$name" in ''|'#'*) continue ;; esac
   selected "$name" || continue
-  src="$root/$scene"
+  case "$scene" in /*) src="$scene" ;; *) src="$root/$scene" ;; esac   # POV-Ray's own samples: absolute
   if [ ! -f "$src" ]; then
     echo "FAIL  $name: scene not found: $scene"; failed=$((failed + 1)); continue
   fi
