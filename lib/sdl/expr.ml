@@ -181,8 +181,11 @@ and parse_primary st =
 and parse_vector_literal st loc =
       advance st;
       let first = parse_float st in
+      (* the commas between terms are optional, as everywhere in POV-Ray: <0 20 0> is <0,20,0>
+         (and <1 -2 3> is <1-2, 3>) *)
       let rec terms acc n =
-        if accept st Comma then begin
+        let next = accept st Comma || (match peek st with Num _ | LParen | Ident _ | Plus | Minus | Lt -> true | _ -> false) in
+        if next then begin
           if n >= 5 then Error.raise_at (peek_loc st) "a vector has at most 5 terms";
           terms (parse_float st :: acc) (n + 1)
         end

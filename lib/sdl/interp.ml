@@ -35,6 +35,12 @@ let rec parse_statements st =
   | Ident "background" -> parse_background st; parse_statements st
   | Ident "sky_sphere" -> parse_sky_sphere st; parse_statements st
   | Ident "global_settings" -> advance st; parse_global_settings st; parse_statements st
+  | Ident ("default" | "version" as d) ->
+      (* old scenes write these directives without '#' where an object may stand; POV-Ray takes them *)
+      advance st; directive st d loc; parse_statements st
+  | Ident ("declare" | "include" as d) ->
+      warn st loc "should have '#' before '%s'" d;
+      advance st; directive st d loc; parse_statements st
   | _ when object_follows st -> add_object st (parse_object st); parse_statements st
   | _ -> unexpected st "an object, light_source, camera or directive"
 

@@ -45,6 +45,19 @@ let test_string_declared_without_semicolon () =
   float_eq "function" 2. (radius "#macro Mk(A) sphere { 0, strlen(A) } #end\n#declare S = concat(\"a\", \"b\")\nMk(S)");
   float_eq "identifier" 3. (radius "#macro Mk(A) sphere { 0, strlen(A) } #end\n#declare T = \"xyz\";\n#declare S = T\nMk(S)")
 
+let test_optional_vector_commas () =
+  (* POV-Ray's commas between vector terms are optional: <0 20 0> = <0,20,0>; <1 -2 3> is <1-2, 3> *)
+  vec_eq "<0 20 0>" (v 0. 20. 0.) (centre "sphere { <0 20 0>, 1 }");
+  vec_eq "<1 -2 3>" (v (-1.) 3. 0.) (centre "sphere { <1 -2 3>, 1 }");
+  vec_eq "<1, 2 3>" (v 1. 2. 3.) (centre "sphere { <1, 2 3>, 1 }")
+
+let test_directives_without_hash () =
+  (* at the top level, 'default', 'version', 'declare' and 'include' work without '#', the last two
+     with a warning (checked with POV-Ray) *)
+  let f = finish "default { finish { ambient 0.7 } }\ndeclare R = 2;\nsphere { 0, R pigment { rgb 1 } }" in
+  float_eq "default without #" 0.7 f.ambient.r;
+  float_eq "declare without #" 2. (radius "declare R = 2;\nsphere { 0, R }")
+
 let test_functions () =
   (* sqrt(16) + pow(2,3) + abs(-1) = 4 + 8 + 1 = 13 *)
   float_eq "sqrt+pow+abs" 13. (radius "sphere { 0, sqrt(16) + pow(2,3) + abs(-1) }");
@@ -507,6 +520,8 @@ let tests =
   [
     Alcotest.test_case "promotion and operators" `Quick test_promotion;
     Alcotest.test_case "functions" `Quick test_functions;
+    Alcotest.test_case "optional commas in vectors" `Quick test_optional_vector_commas;
+    Alcotest.test_case "directives without '#'" `Quick test_directives_without_hash;
     Alcotest.test_case "array declared without ';'" `Quick test_array_declared_without_semicolon;
     Alcotest.test_case "string declared without ';'" `Quick test_string_declared_without_semicolon;
     Alcotest.test_case "component selectors" `Quick test_components;
