@@ -556,6 +556,11 @@ let attenuation (lt : light) (p : Vec.t) (l : Vec.t) dist =
   in
   if a > 0. && lt.fade then a *. (2. /. (1. +. Float.pow (dist /. lt.lfade_distance) lt.lfade_power)) else a
 
+(* §18.3, ComputeOneWhiteLightRay: the length of a parallel light's ray from a point whose unit
+   direction to the centre is [l] at distance [dist]: dist·(−dir·l), the signed distance of the
+   point in front of the plane through the centre perpendicular to dir. *)
+let parallel_depth (lt : light) (l : Vec.t) dist = dist *. -.((lt.dx *. l.x) +. (lt.dy *. l.y) +. (lt.dz *. l.z))
+
 (* One light's diffuse, phong and specular terms, summed in single precision the way POV-Ray sums
    them: per light first, then into the surface colour. [di]: the object is double_illuminate. *)
 let light_terms ctx ~slot ~di (s : surface) (p : Vec.t) (n : Vec.t) ng e (d : Vec.t) interiors (lt : light) : Rgb.t =
@@ -564,7 +569,7 @@ let light_terms ctx ~slot ~di (s : surface) (p : Vec.t) (n : Vec.t) ng e (d : Ve
   let dist = sqrt ((lvx *. lvx) +. (lvy *. lvy) +. (lvz *. lvz)) in
   let l = Vec.make (lvx /. dist) (lvy /. dist) (lvz /. dist) in
   (* §18.3: a parallel light's ray runs along −dir, as far as the plane through the centre *)
-  let dist = if lt.parallel then dist *. -.((lt.dx *. l.x) +. (lt.dy *. l.y) +. (lt.dz *. l.z)) else dist in
+  let dist = if lt.parallel then parallel_depth lt l dist else dist in
   let l = if lt.parallel then Vec.make (-.lt.dx) (-.lt.dy) (-.lt.dz) else l in
   let a = attenuation lt p l dist in
   let lc =
