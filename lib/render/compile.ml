@@ -309,5 +309,6 @@ let scene (s : Scene.t) : Compiled.t =
     legacy;
     camera = s.camera;
     start_interiors;
-    bounding = List.length s.objects + List.length s.lights >= 3;
+    (* a light's looks_like shape belongs to the light's top-level object (§19.2) *)
+    bounding = List.length (List.filter (fun (o : Scene.obj) -> not o.looks_like) s.objects) + List.length s.lights >= 3;
   }

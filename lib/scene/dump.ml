@@ -82,7 +82,7 @@ let obj (o : obj) =
     (String.concat ""
        (List.map
           (fun (on, flag) -> if on then "\n  " ^ flag else "")
-          [ (o.no_shadow, "no_shadow"); (o.no_image, "no_image"); (o.no_reflection, "no_reflection"); (o.double_illuminate, "double_illuminate") ]))
+          [ (o.no_shadow, "no_shadow"); (o.no_image, "no_image"); (o.no_reflection, "no_reflection"); (o.double_illuminate, "double_illuminate"); (o.looks_like, "// a light's looks_like") ]))
     (Loc.to_string o.loc)
 
 (* radius and falloff of a spotlight are stored as cosines: written back as degrees *)

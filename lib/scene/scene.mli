@@ -67,6 +67,9 @@ type obj = {
   no_image : bool;  (** §16.6: not hit by image rays (camera rays and what is seen through them) *)
   no_reflection : bool;  (** §16.6: not hit by reflection rays and their descendants *)
   double_illuminate : bool;  (** §16.6: lit from behind too (diffuse with |N·L|) *)
+  looks_like : bool;
+      (** §19.2: the shape of a light: part of its light's top-level object, not one of its own
+          (rays do start inside it, like inside any object: checked against POV-Ray) *)
 }
 
 (** How a light's intensity depends on where the lit point is (§3.4, §18.2, §18.3). *)

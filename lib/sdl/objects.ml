@@ -61,7 +61,17 @@ let parse_object_mods st (o : V.obj) what : V.obj =
   loop o
 
 let new_obj_of shape loc =
-  { V.shape; texture = None; interior = None; no_shadow = false; oloc = loc; no_image = false; no_reflection = false; double_illuminate = false }
+  {
+    V.shape;
+    texture = None;
+    interior = None;
+    no_shadow = false;
+    oloc = loc;
+    no_image = false;
+    no_reflection = false;
+    double_illuminate = false;
+    looks_like = false;
+  }
 let new_obj shape loc = new_obj_of (V.Prim shape) loc
 
 
@@ -71,26 +81,45 @@ let unsupported_objects =
     "isosurface"; "superellipsoid"; "julia_fractal"; "parametric"; "bicubic_patch"; "ovus"; "quadric"; "cubic";
     "quartic"; "poly"; "intersection"; "difference"; "merge"; "sphere_sweep"; "lemon" ]
 
-(* light_source { centre, colour … } (§10.2, §18.2, §18.3). radius, falloff and tightness need a
-   spotlight or cylinder keyword written before them, point_at one of those or parallel. *)
-let parse_light st =
-  let loc = peek_loc st in
+(* A light source as read: a light alone, or a light with its looks_like object, which is kept
+   as a union of the two so that later transforms move both and the scene dissolves it (§19.2). *)
+type light_source = Lone of Scene.light | Shaped of V.obj
+
+(* light_source { centre, colour … } (§10.2, §18.2, §18.3, §19.2). radius, falloff and tightness
+   need a spotlight or cylinder keyword written before them, point_at one of those or parallel;
+   [object] reads the object of a looks_like. *)
+let parse_light_with st ~object_ =
+  let lloc = peek_loc st in
   advance st;
   open_block st "light_source";
   let position = parse_vector st in
   ignore (accept st Comma);
   (* §10.2: the colour after the position; without one the light is black *)
   let colour = if peek st == RBrace || (match peek st with Ident s -> List.mem s [ "shadowless"; "fade_distance"; "fade_power"; "translate" ] | _ -> false) then Rgb.black else parse_rgb st "a light colour" in
-  ignore loc;
   let shaped (l : Scene.light) loc what =
     match l.kind with
     | Spotlight | Cylinder_light -> ()
     | Point_light -> Error.raise_at loc "'%s' needs a spotlight or cylinder light: write 'spotlight' or 'cylinder' before it" what
   in
-  let rec loop (l : Scene.light) =
+  let rec loop_with (l : Scene.light) (looks : V.obj option) =
+    let loop l = loop_with l looks in
     let loc = peek_loc st in
     match peek st with
-    | RBrace -> advance st; l
+    | RBrace -> (
+        advance st;
+        match looks with
+        | None -> Lone l
+        | Some o ->
+            Shaped (new_obj_of (V.Union [ V.Member_light l; V.Member_obj o ]) lloc))
+    (* §19.2: the object is written about the origin and moved to the centre, then its own
+       modifiers apply; it never casts a shadow *)
+    | Ident "looks_like" ->
+        if looks <> None then Error.raise_at loc "a light_source takes only one looks_like";
+        advance st;
+        open_block st "looks_like";
+        let o = move_obj (Place.Translate l.position) (object_ st) in
+        let o = parse_object_mods st o "looks_like" in
+        loop_with l (Some { o with no_shadow = true; looks_like = true })
     | Ident "shadowless" -> advance st; loop { l with shadowless = true }
     | Ident "fade_distance" -> advance st; loop { l with fade_distance = parse_float st }
     | Ident "fade_power" -> advance st; loop { l with fade_power = parse_float st }
@@ -119,12 +148,14 @@ let parse_light st =
         let r = parse_float st in
         loop { l with falloff = (match l.kind with Spotlight -> cos (r *. Float.pi /. 180.) | Cylinder_light | Point_light -> r) }
     | Ident "tightness" -> shaped l loc "tightness"; advance st; loop { l with tightness = parse_float st }
-    | Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") -> loop (move_light (parse_op st) l)
+    | Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") ->
+        let op = parse_op st in
+        loop_with (move_light op l) (Option.map (move_obj op) looks)
     | Ident ("color" | "colour" | "rgb") -> loop { l with colour = parse_rgb st "a light colour" }
     | Ident s when is_unsupported s -> not_supported loc (Printf.sprintf "'%s' in a light_source" s)
     | _ -> unexpected st "a light_source keyword or '}'"
   in
-  loop
+  loop_with
     {
       Scene.position;
       colour;
@@ -138,6 +169,7 @@ let parse_light st =
       falloff = 0.;
       tightness = 0.;
     }
+    None
 
 let f32 x = Int32.float_of_bits (Int32.bits_of_float x)
 
@@ -388,14 +420,17 @@ let rec parse_object st : V.obj =
       open_block st "union";
       let rec members acc =
         match peek st with
-        | Ident "light_source" -> members (V.Member_light (parse_light st) :: acc)
+        | Ident "light_source" ->
+            let m = match parse_light_source st with Lone l -> V.Member_light l | Shaped o -> V.Member_obj o in
+            members (m :: acc)
         | _ when object_follows st -> members (V.Member_obj (parse_object st) :: acc)
         | _ -> List.rev acc
       in
       let ms = nest st loc (fun () -> members []) in
       if List.length ms < 2 then warn st loc "a union should have at least two members";
       parse_object_mods st (new_obj_of (V.Union ms) loc) "union"
-  | Ident "light_source" -> new_obj_of (V.Union [ V.Member_light (parse_light st) ]) loc
+  | Ident "light_source" -> (
+      match parse_light_source st with Lone l -> new_obj_of (V.Union [ V.Member_light l ]) loc | Shaped o -> o)
   | Ident s -> (
       match cur_value st s with
       | Some (V.Object o) -> advance st; { o with oloc = loc }
@@ -403,6 +438,9 @@ let rec parse_object st : V.obj =
       | Some (V.Unsupported u) -> unsupported_use loc s u.what u.at
       | _ -> unexpected st "an object")
   | _ -> unexpected st "an object"
+
+(* A light_source, its looks_like object read by [parse_object] (§19.2). *)
+and parse_light_source st = parse_light_with st ~object_:parse_object
 
 (* Does an object (a keyword or an identifier of one) come next? *)
 and object_follows st =
@@ -587,6 +625,7 @@ let finish_prim st (o : V.obj) shape : Scene.obj =
     no_image = o.no_image;
     no_reflection = o.no_reflection;
     double_illuminate = o.double_illuminate;
+    looks_like = o.looks_like;
   }
 
 (* An object entering the scene (§16.4, §16.5): a union is dissolved, its members without a texture
@@ -610,6 +649,7 @@ let rec add_object st (o : V.obj) =
                   no_shadow = c.no_shadow || o.no_shadow;
                   no_image = c.no_image || o.no_image;
                   no_reflection = c.no_reflection || o.no_reflection;
+                  looks_like = c.looks_like || o.looks_like;
                 })
         ms
 

@@ -112,7 +112,7 @@ let keywords =
     "degrees"; "vlength"; "vnormalize"; "vdot"; "vcross"; "select"; "triangle"; "smooth_triangle"; "mesh";
     "mesh2"; "vertex_vectors"; "normal_vectors"; "uv_vectors"; "texture_list"; "face_indices"; "normal_indices";
     "uv_indices"; "inside_vector"; "box"; "no_image"; "no_reflection"; "double_illuminate"; "spotlight";
-    "parallel"; "point_at"; "radius"; "tightness"; "orthographic" ]
+    "parallel"; "point_at"; "radius"; "tightness"; "orthographic"; "looks_like" ]
 
 (* POV-Ray keywords that a later povml will read; meeting one is a located "not supported yet". *)
 let unsupported =
@@ -122,7 +122,7 @@ let unsupported =
     "difference"; "merge"; "rotate"; "scale"; "matrix"; "transform"; "inverse"; "normal"; "material"; "checker"; "gradient"; "hexagon"; "brick"; "image_map";
     "bozo"; "marble"; "wood"; "agate"; "granite"; "spotted"; "leopard"; "onion"; "radial"; "spiral1";
     "spiral2"; "ripples"; "waves"; "wrinkles"; "bumps"; "dents"; "crackle"; "color_map"; "colour_map";
-    "pigment_map"; "texture_map"; "area_light"; "cylinder"; "looks_like";
+    "pigment_map"; "texture_map"; "area_light"; "cylinder";
     "projected_through"; "fisheye"; "panoramic"; "ultra_wide_angle"; "omnimax";
     "cylindrical"; "spherical"; "aperture"; "focal_point"; "blur_samples"; "radiosity"; "photons";
     "media"; "fog"; "rainbow"; "irid"; "crand"; "dispersion"; "dispersion_samples"; "caustics";

@@ -7,6 +7,7 @@ type obj = {
   no_image : bool;
   no_reflection : bool;
   double_illuminate : bool;
+  looks_like : bool;  (** a light's looks_like object (§19.2) *)
 }
 
 (** A primitive, or a union whose members are dissolved into the scene (POVRAY-3.7 §16.4). *)
