@@ -31,6 +31,15 @@ point_at needs a spotlight, cylinder or parallel light:
         |                               ^
   [1]
 
+A light takes one looks_like object:
+
+  $ printf 'light_source { <0,5,0>, rgb 1\n  looks_like { sphere { 0, 1 } }\n  looks_like { sphere { 0, 2 } } }\n' > looks.pov
+  $ povml looks.pov +W10 +H10 -D
+  looks.pov:3:3: error: a light_source takes only one looks_like
+      3 |   looks_like { sphere { 0, 2 } } }
+        |   ^
+  [1]
+
 After the keyword they are read:
 
   $ printf '#version 3.7;\nglobal_settings { assumed_gamma 1 }\nlight_source { <0,5,0>, rgb 1 spotlight radius 20 falloff 30 tightness 2 point_at 0 }\nlight_source { <0,5,0>, rgb 1 parallel point_at 0 }\nlight_source { <0,5,0>, rgb 1 cylinder radius 1 falloff 2 }\nsphere { 0, 1 pigment { rgb 1 } }\n' > good.pov

@@ -239,6 +239,38 @@ let test_ortho_origins () =
   Alcotest.(check (list int)) "on a sphere's surface: outside it (strict)" [ 3 ] (at (v 3. 0. 0.));
   Alcotest.(check (list int)) "above the plane" [] (at (v 0. 11. 0.))
 
+(* ---- looks_like (§19.2) ---- *)
+
+let test_looks_like () =
+  let s = scene (v37 ^ "light_source { <0,2,0>, rgb 1 looks_like { sphere { 0, 0.5 } translate x } translate z }") in
+  let l = match s.lights with [ l ] -> l | _ -> Alcotest.fail "one light" in
+  vec_eq "the light moved by its own translate" (v 0. 2. 1.) l.position;
+  let o = the_object s in
+  let c, r = sphere_of o in
+  (* moved to the centre <0,2,0>, then by its own translate x, then by the light's translate z *)
+  vec_eq "the object at the centre and moved" (v 1. 2. 1.) c;
+  float_eq "radius" 0.5 r;
+  Alcotest.(check bool) "no_shadow" true o.no_shadow;
+  Alcotest.(check bool) "marked as a light's shape" true o.looks_like;
+  (* a declared light with looks_like is an object: its copies move light and shape *)
+  let s = scene (v37 ^ "#declare L = light_source { 0, rgb 1 looks_like { sphere { 0, 0.5 } } }
+object { L translate y*3 }") in
+  vec_eq "copy: light" (v 0. 3. 0.) (List.hd s.lights).position;
+  vec_eq "copy: shape" (v 0. 3. 0.) (fst (sphere_of (the_object s)));
+  (* a union's transforms and texture reach the shape *)
+  let s = scene (v37 ^ "union { light_source { 0, rgb 1 looks_like { sphere { 0, 0.5 } } } sphere { x*5, 1 } pigment { rgb <0,1,0> } translate y }") in
+  let o = List.hd s.objects in
+  vec_eq "union moves the shape" (v 0. 1. 0.) (fst (sphere_of o));
+  colour_eq "union pigment" (colour5 0. 1. 0. 0. 0.) (pigment_of o);
+  (* the light and its shape count as one top-level object for POV-Ray's bounding threshold *)
+  let c = compile (v37 ^ "light_source { 0, rgb 1 looks_like { sphere { 0, 0.5 } } } sphere { x*5, 1 }") in
+  Alcotest.(check bool) "two top-level objects: no bounding" false c.bounding;
+  (* a camera inside the shape starts inside it (checked against POV-Ray: lights_looks_like_inside) *)
+  let c = compile (v37 ^ "camera { location 0 } light_source { 0, rgb 1 looks_like { sphere { 0, 0.5 } } }") in
+  Alcotest.(check (list int)) "camera inside the shape" [ 0 ] c.start_interiors;
+  expect_scene_error "two looks_like" "light_source { 0, rgb 1 looks_like { sphere { 0, 1 } }\n  looks_like { sphere { 0, 1 } } }" ~line:2 ~col:3
+    ~sub:"only one looks_like"
+
 let tests =
   [
     Alcotest.test_case "spotlight, cylinder and parallel parsing" `Quick test_parse_spotlight;
@@ -254,4 +286,5 @@ let tests =
     Alcotest.test_case "no_image and no_reflection traced" `Quick test_flag_trace;
     Alcotest.test_case "orthographic camera vectors" `Quick test_ortho_camera;
     Alcotest.test_case "orthographic origins and interiors" `Quick test_ortho_origins;
+    Alcotest.test_case "looks_like" `Quick test_looks_like;
   ]
