@@ -54,6 +54,11 @@ let inside stack shape (p : Vec.t) =
         | None -> false
         | Some d -> Mesh.inside_along m.mesh stack (Transform.inv_point m.tr p) (Transform.normalize (Transform.inv_direction m.tr d)))
 
+(* §6.4: the objects whose inside holds [p], the last one first (the order of the interior list of
+   a ray that starts at [p]). *)
+let interiors_at (objects : obj array) stack p =
+  Array.fold_left (fun acc o -> if inside stack o.shape p then o.id :: acc else acc) [] objects
+
 (* The box of a bounded shape; None for an unbounded one. A transformed shape's box is its
    object-space box with the corners mapped (Recompute_BBox, §15.8). *)
 let bounds = function
@@ -236,6 +241,7 @@ let scene (s : Scene.t) : Compiled.t =
              mag = magnitude shape;
 
              pbox = pov_box shape;
+             double_illuminate = o.double_illuminate;
            })
          visible)
   in
@@ -251,6 +257,12 @@ let scene (s : Scene.t) : Compiled.t =
     Array.of_list
       (List.map
          (fun (l : Scene.light) ->
+           (* §14.8: normalize(point_at − centre), left as it is when shorter than EPSILON *)
+           let dir =
+             let v = Vec.sub l.point_at l.position in
+             let len = Vec.length v in
+             if len > epsilon then Vec.make (v.x /. len) (v.y /. len) (v.z /. len) else v
+           in
            {
              lx = l.position.x;
              ly = l.position.y;
@@ -260,18 +272,33 @@ let scene (s : Scene.t) : Compiled.t =
              fade = l.fade_power > 0. && Float.abs l.fade_distance > epsilon;
              lfade_distance = l.fade_distance;
              lfade_power = l.fade_power;
+             spread =
+               (match l.kind with
+               | Point_light -> Everywhere
+               | Spotlight -> Cone { radius_cos = l.radius; falloff_cos = l.falloff; tightness = l.tightness }
+               | Cylinder_light -> Beam { beam_radius = l.radius; beam_falloff = l.falloff; beam_tightness = l.tightness });
+             parallel = l.parallel;
+             dx = dir.x;
+             dy = dir.y;
+             dz = dir.z;
            })
          s.lights)
   in
   (* §6.4: the camera ray starts inside every object that contains the camera location; the list
      is kept with the last entered first. *)
   let all = group (Array.to_list objects) in
-  let start_interiors =
-    Array.fold_left (fun acc o -> if inside stack o.shape s.camera.location then o.id :: acc else acc) [] objects
+  (* §16.6: image rays never meet no_image objects, reflection rays never meet no_reflection ones;
+     a scene without those flags searches one group for every ray *)
+  let flags = Array.of_list (List.map (fun ((o : Scene.obj), _) -> (o.no_image, o.no_reflection)) visible) in
+  let without keep =
+    if Array.for_all keep flags then all else group (List.filter (fun (o : obj) -> keep flags.(o.id)) (Array.to_list objects))
   in
+  let start_interiors = interiors_at objects stack s.camera.location in
   {
     objects;
     all;
+    seen = without (fun (no_image, _) -> not no_image);
+    mirrored = without (fun (_, no_reflection) -> not no_reflection);
     occluders = (if List.length occluders = Array.length objects then all else group occluders);
     shadow_mode;
     lights;
@@ -282,5 +309,6 @@ let scene (s : Scene.t) : Compiled.t =
     legacy;
     camera = s.camera;
     start_interiors;
-    bounding = List.length s.objects + List.length s.lights >= 3;
+    (* a light's looks_like shape belongs to the light's top-level object (§19.2) *)
+    bounding = List.length (List.filter (fun (o : Scene.obj) -> not o.looks_like) s.objects) + List.length s.lights >= 3;
   }

@@ -7,3 +7,7 @@ val scene : Scene.t -> Compiled.t
 val inside : float array -> Compiled.shape -> Vec.t -> bool
 (** [inside stack shape p] is POV-Ray's Inside test (§2.2, §2.3, §2.6, §15.1); [stack] is traversal room
     for meshes (512 floats). *)
+
+val interiors_at : Compiled.obj array -> float array -> Vec.t -> int list
+(** [interiors_at objects stack p] is the ids of the objects whose inside holds [p], the last one
+    first: the interior list of a ray starting at [p] (§6.4, §18.4); [stack] as for [inside]. *)

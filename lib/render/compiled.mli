@@ -67,9 +67,16 @@ type obj = {
       (** POV-Ray's bounding box of the object, as it stores it: lower corner and lengths, each
           rounded to single precision ([||] for a plane). Only used to break exact depth ties the
           way POV-Ray's bounding order does (§2.1). *)
+  double_illuminate : bool;  (** §16.6: lights behind the surface light it too *)
 }
 
-(** A point light with its attenuation settings. *)
+(** How a light's colour is attenuated by the lit point's place, besides fade (§3.4, §18.2). *)
+type spread =
+  | Everywhere  (** a point or parallel light: no cone, no beam *)
+  | Cone of { radius_cos : float; falloff_cos : float; tightness : float }  (** a spotlight *)
+  | Beam of { beam_radius : float; beam_falloff : float; beam_tightness : float }  (** a cylinder light *)
+
+(** A light with its attenuation settings. *)
 type light = {
   lx : float;
   ly : float;
@@ -79,6 +86,11 @@ type light = {
   fade : bool;  (** fade_power > 0 and |fade_distance| > EPSILON (§3.4) *)
   lfade_distance : float;
   lfade_power : float;
+  spread : spread;
+  parallel : bool;  (** §18.3: light arrives along −dir, up to the plane through the centre *)
+  dx : float;
+  dy : float;
+  dz : float;  (** the unit direction from the centre to point_at (§14.8) *)
 }
 
 (** How a shadow ray is answered, chosen once for the scene (§4). *)
@@ -101,6 +113,9 @@ type group = {
 type t = {
   objects : obj array;  (** every object, in scene order; [id] indexes this array *)
   all : group;  (** every object *)
+  seen : group;  (** what image rays can hit: the objects without no_image ([all] when none has it) *)
+  mirrored : group;
+      (** what reflection rays can hit: the objects without no_reflection ([all] when none has it) *)
   occluders : group;  (** objects without no_shadow *)
   shadow_mode : shadow_mode;
   lights : light array;

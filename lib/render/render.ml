@@ -52,11 +52,25 @@ let camera_dir (cam : Scene.camera) w h x y =
        (d.y +. (x0 *. r.y) +. (y0 *. u.y))
        (d.z +. (x0 *. r.z) +. (y0 *. u.z)))
 
+(* §18.4: an orthographic ray's origin, the point of the screen at (x, y). *)
+let ortho_origin (cam : Scene.camera) w h x y =
+  let x0 = ((x +. 0.5) /. float_of_int w) -. 0.5 in
+  let y0 = ((float_of_int (h - 1) -. (y -. 0.5)) /. float_of_int h) -. 0.5 in
+  let l = cam.location and r = cam.right and u = cam.up in
+  Vec.make (l.x +. (x0 *. r.x) +. (y0 *. u.x)) (l.y +. (x0 *. r.y) +. (y0 *. u.y)) (l.z +. (x0 *. r.z) +. (y0 *. u.z))
+
 let sample ctx opts x y =
   let sc = ctx.Trace.scene in
   ctx.stats.camera_rays <- ctx.stats.camera_rays + 1;
-  Trace.trace ctx ~level:0 ~weight:1. ~interiors:sc.start_interiors ~continued:false sc.camera.location
-    (camera_dir sc.camera opts.width opts.height x y)
+  match sc.camera.projection with
+  | Perspective ->
+      Trace.trace ctx ~level:0 ~weight:1. ~interiors:sc.start_interiors ~continued:false sc.camera.location
+        (camera_dir sc.camera opts.width opts.height x y)
+  | Orthographic ->
+      (* every ray has its own origin, so its own interior list *)
+      let o = ortho_origin sc.camera opts.width opts.height x y in
+      Trace.trace ctx ~level:0 ~weight:1. ~interiors:(Compile.interiors_at sc.objects ctx.mstack o) ~continued:false o
+        (Vec.normalize sc.camera.direction)
 
 (* §9.1: colours are compared after x ↦ max(x,0)^(1/aa_gamma), in the working space. *)
 let aa_distance enc (a : Trace.result) (b : Trace.result) =

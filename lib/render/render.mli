@@ -38,3 +38,7 @@ val camera_dir : Scene.camera -> int -> int -> float -> float -> Vec.t
 
 val render : options -> Compiled.t -> Scene.gamma -> Image.t * Stats.t
 (** [render opts scene gamma] traces the image and returns it with the merged statistics. *)
+
+val ortho_origin : Scene.camera -> int -> int -> float -> float -> Vec.t
+(** [ortho_origin cam w h x y] is the origin of the orthographic camera ray through pixel position
+    (x, y) of a [w]×[h] image: the location moved across the screen by [right] and [up] (§18.4). *)

@@ -523,31 +523,73 @@ let metallic_factor metallic cos_angle (c : Rgb.t) (lc : Rgb.t) =
   let k ch = f32 (1. +. f32 (m *. f32 (ch -. 1.))) in
   Rgb.make (f32 (lc.r *. k c.r)) (f32 (lc.g *. k c.g)) (f32 (lc.b *. k c.b))
 
+(* §3.4, cubic_spline: 0 below [lo], 1 from [hi] on, the smooth step (3 − 2s)s² between. *)
+let cubic_spline lo hi p = if p < lo then 0. else if p >= hi then 1. else let s = (p -. lo) /. (hi -. lo) in (3. -. (2. *. s)) *. s *. s
+
+(* §3.4, §18.2, §18.3, Attenuate_Light: the factor of the light [lt] at [p], whose light ray has
+   the unit direction [l] and length [dist] (for a parallel light, the depth in front of its plane). *)
+let attenuation (lt : light) (p : Vec.t) (l : Vec.t) dist =
+  let a =
+    match lt.spread with
+    | Everywhere -> 1.
+    | Cone c ->
+        (* the ray's cosine with the spot axis, turned round for a light in front of the point *)
+        let ct = (l.x *. lt.dx) +. (l.y *. lt.dy) +. (l.z *. lt.dz) in
+        let ct = if dist > 0. then -.ct else ct in
+        if ct > 0. then
+          let a = Float.pow ct c.tightness in
+          if c.radius_cos > 0. && ct < c.radius_cos then a *. cubic_spline c.falloff_cos c.radius_cos ct else a
+        else 0.
+    | Beam b ->
+        (* §18.2: the point's distance from the beam's axis, on the lit side of the centre *)
+        let vx = p.x -. lt.lx and vy = p.y -. lt.ly and vz = p.z -. lt.lz in
+        let k = (vx *. lt.dx) +. (vy *. lt.dy) +. (vz *. lt.dz) in
+        if k > 0. then
+          let qx = vx -. (k *. lt.dx) and qy = vy -. (k *. lt.dy) and qz = vz -. (k *. lt.dz) in
+          let len = sqrt ((qx *. qx) +. (qy *. qy) +. (qz *. qz)) in
+          if len < b.beam_falloff then
+            let r = 1. -. (len /. b.beam_falloff) in
+            let a = Float.pow r b.beam_tightness in
+            if b.beam_radius > 0. && len > b.beam_radius then a *. cubic_spline 0. (1. -. (b.beam_radius /. b.beam_falloff)) r else a
+          else 0.
+        else 0.
+  in
+  if a > 0. && lt.fade then a *. (2. /. (1. +. Float.pow (dist /. lt.lfade_distance) lt.lfade_power)) else a
+
+(* §18.3, ComputeOneWhiteLightRay: the length of a parallel light's ray from a point whose unit
+   direction to the centre is [l] at distance [dist]: dist·(−dir·l), the signed distance of the
+   point in front of the plane through the centre perpendicular to dir. *)
+let parallel_depth (lt : light) (l : Vec.t) dist = dist *. -.((lt.dx *. l.x) +. (lt.dy *. l.y) +. (lt.dz *. l.z))
+
 (* One light's diffuse, phong and specular terms, summed in single precision the way POV-Ray sums
-   them: per light first, then into the surface colour. *)
-let light_terms ctx ~slot (s : surface) (p : Vec.t) (n : Vec.t) ng e (d : Vec.t) interiors (lt : light) : Rgb.t =
+   them: per light first, then into the surface colour. [di]: the object is double_illuminate. *)
+let light_terms ctx ~slot ~di (s : surface) (p : Vec.t) (n : Vec.t) ng e (d : Vec.t) interiors (lt : light) : Rgb.t =
   let acc = Rgb.black in
   let lvx = lt.lx -. p.x and lvy = lt.ly -. p.y and lvz = lt.lz -. p.z in
   let dist = sqrt ((lvx *. lvx) +. (lvy *. lvy) +. (lvz *. lvz)) in
   let l = Vec.make (lvx /. dist) (lvy /. dist) (lvz /. dist) in
+  (* §18.3: a parallel light's ray runs along −dir, as far as the plane through the centre *)
+  let dist = if lt.parallel then parallel_depth lt l dist else dist in
+  let l = if lt.parallel then Vec.make (-.lt.dx) (-.lt.dy) (-.lt.dz) else l in
+  let a = attenuation lt p l dist in
   let lc =
-    if lt.fade then
-      let a = 2. /. (1. +. Float.pow (dist /. lt.lfade_distance) lt.lfade_power) in
-      Rgb.make (f32 (lt.lcolour.r *. a)) (f32 (lt.lcolour.g *. a)) (f32 (lt.lcolour.b *. a))
-    else lt.lcolour
+    if a <> 1. then Rgb.make (f32 (lt.lcolour.r *. a)) (f32 (lt.lcolour.g *. a)) (f32 (lt.lcolour.b *. a)) else lt.lcolour
   in
   let small (c : Rgb.t) bound = Float.abs c.r < bound && Float.abs c.g < bound && Float.abs c.b < bound in
   if small lc epsilon then Rgb.black
   else
     let nl = Vec.dot n l in
-    if nl < epsilon then Rgb.black
+    (* §16.6: double_illuminate skips the test of the side the light is on *)
+    if (not di) && nl < epsilon then Rgb.black
     else
-      let lc = if lt.shadowless then lc else shadow ctx ~slot p ng e l dist interiors lc in
+      (* a point behind a parallel light's plane is never shadowed (§18.3) *)
+      let lc = if lt.shadowless || dist <= 0. then lc else shadow ctx ~slot p ng e l dist interiors lc in
       if Float.abs lc.r <= epsilon && Float.abs lc.g <= epsilon && Float.abs lc.b <= epsilon then Rgb.black
       else
         let acc =
           if s.diffuse > 0. then
-            let i = (if s.brilliance = 1. then nl else Float.pow nl s.brilliance) *. (s.diffuse *. s.att) in
+            let anl = Float.abs nl in
+            let i = (if s.brilliance = 1. then anl else Float.pow anl s.brilliance) *. (s.diffuse *. s.att) in
             Rgb.make
               (f32 (acc.r +. f32 (f32 (s.colour.r *. i) *. lc.r)))
               (f32 (acc.g +. f32 (f32 (s.colour.g *. i) *. lc.g)))
@@ -580,12 +622,12 @@ let light_terms ctx ~slot (s : surface) (p : Vec.t) (n : Vec.t) ng e (d : Vec.t)
             else acc
           else acc
 
-let add_lights ctx ~level s p n ng e d interiors (acc : Rgb.t) =
+let add_lights ctx ~level ~di s p n ng e d interiors (acc : Rgb.t) =
   let lights = ctx.scene.lights in
   let acc = ref acc in
   for k = 0 to Array.length lights - 1 do
     let slot = (2 * k) + if level = 2 then 0 else 1 in
-    let t = light_terms ctx ~slot s p n ng e d interiors lights.(k) in
+    let t = light_terms ctx ~slot ~di s p n ng e d interiors lights.(k) in
     let a = !acc in
     acc := Rgb.make (f32 (a.r +. t.r)) (f32 (a.g +. t.g)) (f32 (a.b +. t.b))
   done;
@@ -665,18 +707,20 @@ let sky_colour sc : result =
 (* ---------------------------------------------------------------------------------------------- *)
 (* The recursive trace (§7) and surface colour (§6.5) *)
 
-let rec trace ctx ~level ~weight ~interiors ~continued (o : Vec.t) (d : Vec.t) : result =
+(* §16.6: a ray is a reflection ray ([reflected]) when it or an ancestor was reflected, else an image
+   ray; each kind searches the objects it can meet. *)
+let rec trace_ray ctx ~reflected ~level ~weight ~interiors ~continued (o : Vec.t) (d : Vec.t) : result =
   let sc = ctx.scene in
   if level >= sc.max_trace_level || weight < sc.adc_bailout then black
   else
-    let i = nearest ctx sc.all o d ctx.min_depth infinity in
+    let i = nearest ctx (if reflected then sc.mirrored else sc.seen) o d ctx.min_depth infinity in
     if i < 0 then sky_colour sc
     else
       let level = if continued then level else level + 1 in
       if level > ctx.stats.max_level then ctx.stats.max_level <- level;
-      shade ctx sc.objects.(i) ctx.sub.(0) ctx.depth.(0) ~level ~weight ~interiors o d
+      shade ctx ~reflected sc.objects.(i) ctx.sub.(0) ctx.depth.(0) ~level ~weight ~interiors o d
 
-and shade ctx obj sub depth ~level ~weight ~interiors (o : Vec.t) (d : Vec.t) : result =
+and shade ctx ~reflected obj sub depth ~level ~weight ~interiors (o : Vec.t) (d : Vec.t) : result =
   let sc = ctx.scene in
   let s = surface_of obj sub in
   (* §3.2: the layer loop runs while the remaining translucency (1 at the start) exceeds adc_bailout *)
@@ -697,7 +741,7 @@ and shade ctx obj sub depth ~level ~weight ~interiors (o : Vec.t) (d : Vec.t) : 
       f32 (if s.refl.fresnel then weight *. Rgb.max3 refl else weight *. Float.max (Rgb.max3 s.refl.rmax) (Rgb.max3 s.refl.rmin))
     in
     let refl = if s.reflects && s.refl.refl_metallic <> 0. then metallic_factor s.refl.refl_metallic ci s.colour refl else refl in
-    let local = if s.lit then add_lights ctx ~level s p n ng e d interiors s.emitted else s.emitted in
+    let local = if s.lit then add_lights ctx ~level ~di:obj.double_illuminate s p n ng e d interiors s.emitted else s.emitted in
     (* §6: transmitted ray *)
     let local, tr, tir =
       if not s.transparent then (local, 0., false)
@@ -712,7 +756,7 @@ and shade ctx obj sub depth ~level ~weight ~interiors (o : Vec.t) (d : Vec.t) : 
         if not (trans > sc.adc_bailout) then (local, 0., false)
         else
           let w = f32 (weight *. Float.max (Float.abs filcol.r) (Float.max (Float.abs filcol.g) (Float.abs filcol.b))) in
-          let ct, tir = refract ctx obj ~level ~weight:w ~interiors p ng e d n in
+          let ct, tir = refract ctx ~reflected obj ~level ~weight:w ~interiors p ng e d n in
           let att = Rgb.grey obj.old_refract in
           let att =
             if Float.abs obj.fade_distance > epsilon && List.mem obj.id interiors then
@@ -734,7 +778,7 @@ and shade ctx obj sub depth ~level ~weight ~interiors (o : Vec.t) (d : Vec.t) : 
     else
       let rd = Vec.normalize (Vec.madd d (-2. *. Vec.dot d n) n) in
       ctx.stats.reflected_rays <- ctx.stats.reflected_rays + 1;
-      let c = trace ctx ~level ~weight:w_refl ~interiors ~continued:false (origin ctx p ng e rd) rd in
+      let c = trace_ray ctx ~reflected:true ~level ~weight:w_refl ~interiors ~continued:false (origin ctx p ng e rd) rd in
       let e = s.refl.exponent in
       if e <> 1. then
         let ie = 1. /. e in
@@ -743,7 +787,7 @@ and shade ctx obj sub depth ~level ~weight ~interiors (o : Vec.t) (d : Vec.t) : 
       else { r = f32 (local.r +. f32 (refl.r *. c.r)); g = f32 (local.g +. f32 (refl.g *. c.g)); b = f32 (local.b +. f32 (refl.b *. c.b)); tr }
 
 (* §6.2: the transmitted ray; returns its colour and whether total internal reflection happened. *)
-and refract ctx obj ~level ~weight ~interiors p ng e d n : result * bool =
+and refract ctx ~reflected obj ~level ~weight ~interiors p ng e d n : result * bool =
   let sc = ctx.scene in
   let ior, inner =
     match interiors with
@@ -755,14 +799,17 @@ and refract ctx obj ~level ~weight ~interiors p ng e d n : result * bool =
   ctx.stats.refracted_rays <- ctx.stats.refracted_rays + 1;
   if Float.abs (ior -. 1.) < epsilon then
     (* a continued ray: same direction, no new trace level *)
-    (trace ctx ~level ~weight ~interiors:inner ~continued:true (origin ctx p ng e d) d, false)
+    (trace_ray ctx ~reflected ~level ~weight ~interiors:inner ~continued:true (origin ctx p ng e d) d, false)
   else
     let dn = Vec.dot d n in
     let nn, nl = if dn <= 0. then (-.dn, n) else (dn, Vec.neg n) in
     let t = 1. +. (ior *. ior *. ((nn *. nn) -. 1.)) in
     if t < 0. then
       let rd = Vec.normalize (Vec.madd d (-2. *. dn) n) in
-      (trace ctx ~level ~weight ~interiors ~continued:false (origin ctx p ng e rd) rd, true)
+      (* total internal reflection: a reflected ray (§16.6) *)
+      (trace_ray ctx ~reflected:true ~level ~weight ~interiors ~continued:false (origin ctx p ng e rd) rd, true)
     else
       let dir = Vec.add (Vec.scale ior d) (Vec.scale ((ior *. nn) -. sqrt t) nl) in
-      (trace ctx ~level ~weight ~interiors:inner ~continued:false (origin ctx p ng e dir) dir, false)
+      (trace_ray ctx ~reflected ~level ~weight ~interiors:inner ~continued:false (origin ctx p ng e dir) dir, false)
+
+let trace ctx ~level ~weight ~interiors ~continued o d = trace_ray ctx ~reflected:false ~level ~weight ~interiors ~continued o d

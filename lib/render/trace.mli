@@ -49,3 +49,18 @@ val trace : ctx -> level:int -> weight:float -> interiors:int list -> continued:
     along the unit direction [dir] (§7): black past max_trace_level or below adc_bailout, the sky
     when nothing is hit, else the shaded surface. [interiors] are the objects the ray is inside,
     last entered first; a [continued] ray (ior 1 transmission) does not use up a trace level. *)
+
+val cubic_spline : float -> float -> float -> float
+(** [cubic_spline lo hi p] is 0 below [lo], 1 from [hi] on, and (3 − 2s)s² with s = (p − lo)/(hi − lo)
+    between: the soft edge of spotlights and cylinder lights (§3.4). *)
+
+val attenuation : Compiled.light -> Vec.t -> Vec.t -> float -> float
+(** [attenuation light p l dist] is the factor of [light]'s colour at the point [p] whose light ray
+    has the unit direction [l] (towards the light) and length [dist] (§3.4, Attenuate_Light): the
+    spotlight cone (cos^tightness, the cubic spline between the falloff and radius cosines, 0 behind),
+    the cylinder beam, then fade. *)
+
+val parallel_depth : Compiled.light -> Vec.t -> float -> float
+(** [parallel_depth light l dist] is the length of a parallel light's ray from a point at distance
+    [dist] from its centre in the unit direction [l]: the point's signed distance in front of the
+    plane through the centre perpendicular to the light's direction (§18.3). *)

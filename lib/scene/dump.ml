@@ -79,11 +79,26 @@ let shape = function
 
 let obj (o : obj) =
   Printf.sprintf "%s\n  %s%s%s\n} // %s\n" (shape o.shape) (texture o.texture) (interior o.interior)
-    (if o.no_shadow then "\n  no_shadow" else "")
+    (String.concat ""
+       (List.map
+          (fun (on, flag) -> if on then "\n  " ^ flag else "")
+          [ (o.no_shadow, "no_shadow"); (o.no_image, "no_image"); (o.no_reflection, "no_reflection"); (o.double_illuminate, "double_illuminate"); (o.looks_like, "// a light's looks_like") ]))
     (Loc.to_string o.loc)
 
+(* radius and falloff of a spotlight are stored as cosines: written back as degrees *)
 let light (l : light) =
-  Printf.sprintf "light_source { %s, %s%s%s }\n" (vec l.position) (rgb l.colour) (if l.shadowless then " shadowless" else "")
+  let deg c = num (acos c *. 180. /. Float.pi) in
+  let kind =
+    match l.kind with
+    | Point_light -> ""
+    | Spotlight -> Printf.sprintf " spotlight radius %s falloff %s tightness %s" (deg l.radius) (deg l.falloff) (num l.tightness)
+    | Cylinder_light -> Printf.sprintf " cylinder radius %s falloff %s tightness %s" (num l.radius) (num l.falloff) (num l.tightness)
+  in
+  let aimed = l.parallel || match l.kind with Point_light -> false | Spotlight | Cylinder_light -> true in
+  Printf.sprintf "light_source { %s, %s%s%s%s%s%s }\n" (vec l.position) (rgb l.colour) kind
+    (match l.kind with Cylinder_light -> "" | Point_light | Spotlight -> if l.parallel then " parallel" else "")
+    (if aimed then " point_at " ^ vec l.point_at else "")
+    (if l.shadowless then " shadowless" else "")
     (if l.fade_distance <> 0. || l.fade_power <> 0. then
        Printf.sprintf " fade_distance %s fade_power %s" (num l.fade_distance) (num l.fade_power)
      else "")
@@ -96,7 +111,10 @@ let scene (s : t) =
   add (Printf.sprintf "global_settings { max_trace_level %d adc_bailout %s ambient_light %s }\n" s.max_trace_level
          (num s.adc_bailout) (rgb s.ambient_light));
   let c = s.camera in
-  add (Printf.sprintf "camera { location %s direction %s up %s right %s }\n" (vec c.location) (vec c.direction) (vec c.up) (vec c.right));
+  add
+    (Printf.sprintf "camera { %slocation %s direction %s up %s right %s }\n"
+       (match c.projection with Perspective -> "" | Orthographic -> "orthographic ")
+       (vec c.location) (vec c.direction) (vec c.up) (vec c.right));
   add (Printf.sprintf "background { %s }\n" (colour s.background));
   (match s.sky with
   | None -> ()

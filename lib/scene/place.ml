@@ -130,7 +130,17 @@ let scene ~scale ~translate (s : Scene.t) : Scene.t =
     { o with shape = sh; interior = { o.interior with fade_distance = o.interior.fade_distance *. scale } }
   in
   let light (l : Scene.light) =
-    { l with position = Vec.add (Vec.scale scale l.position) translate; fade_distance = l.fade_distance *. scale }
+    let radius, falloff =
+      match l.kind with Cylinder_light -> (l.radius *. scale, l.falloff *. scale) | Point_light | Spotlight -> (l.radius, l.falloff)
+    in
+    {
+      l with
+      position = Vec.add (Vec.scale scale l.position) translate;
+      point_at = Vec.add (Vec.scale scale l.point_at) translate;
+      fade_distance = l.fade_distance *. scale;
+      radius;
+      falloff;
+    }
   in
   let c = s.camera in
   let camera =
@@ -139,6 +149,7 @@ let scene ~scale ~translate (s : Scene.t) : Scene.t =
       direction = Vec.scale scale c.direction;
       up = Vec.scale scale c.up;
       right = Vec.scale scale c.right;
+      projection = c.projection;
     }
   in
   { s with objects = List.map obj s.objects; lights = List.map light s.lights; camera }

@@ -64,19 +64,42 @@ type obj = {
   interior : interior;
   no_shadow : bool;
   loc : Loc.t;  (** where the object was written *)
+  no_image : bool;  (** §16.6: not hit by image rays (camera rays and what is seen through them) *)
+  no_reflection : bool;  (** §16.6: not hit by reflection rays and their descendants *)
+  double_illuminate : bool;  (** §16.6: lit from behind too (diffuse with |N·L|) *)
+  looks_like : bool;
+      (** §19.2: the shape of a light: part of its light's top-level object, not one of its own
+          (rays do start inside it, like inside any object: checked against POV-Ray) *)
 }
 
-(** A point light (§3.3, §3.4, §10.2). *)
+(** How a light's intensity depends on where the lit point is (§3.4, §18.2, §18.3). *)
+type light_kind =
+  | Point_light  (** the same in every direction *)
+  | Spotlight  (** a cone around [point_at]: radius and falloff are cosines of angles *)
+  | Cylinder_light  (** a beam along [point_at]: radius and falloff are distances from its axis *)
+
+(** A light source (§3.3, §3.4, §10.2, §18.2, §18.3). *)
 type light = {
   position : Vec.t;
   colour : Rgb.t;
   shadowless : bool;
   fade_distance : float;
   fade_power : float;
+  kind : light_kind;
+  parallel : bool;  (** §18.3: every ray arrives along the direction [position] → [point_at] *)
+  point_at : Vec.t;  (** moved with the light; <0,0,1> unless written *)
+  radius : float;  (** spotlight: cos(radius); cylinder: the radius; 0 for a point light *)
+  falloff : float;  (** spotlight: cos(falloff); cylinder: the falloff radius *)
+  tightness : float;
 }
 
+(** The projection of a camera (§1.4, §18.4). *)
+type projection =
+  | Perspective  (** rays from [location] through the screen *)
+  | Orthographic  (** parallel rays along [direction] from points of the screen *)
+
 (** The camera after §1.3: the vectors used by §1.4. *)
-type camera = { location : Vec.t; direction : Vec.t; up : Vec.t; right : Vec.t }
+type camera = { location : Vec.t; direction : Vec.t; up : Vec.t; right : Vec.t; projection : projection }
 
 (** How the working colour space maps to the file (§8.1). *)
 type gamma =

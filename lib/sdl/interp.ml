@@ -31,7 +31,9 @@ let rec parse_statements st =
       if st.camera <> None then warn st loc "more than one camera in scene; ignoring previous camera(s)";
       st.camera <- Some (parse_camera st);
       parse_statements st
-  | Ident "light_source" -> st.lights <- parse_light st :: st.lights; parse_statements st
+  | Ident "light_source" ->
+      (match parse_light_source st with Lone l -> st.lights <- l :: st.lights | Shaped o -> add_object st o);
+      parse_statements st
   | Ident "background" -> parse_background st; parse_statements st
   | Ident "sky_sphere" -> parse_sky_sphere st; parse_statements st
   | Ident "global_settings" -> advance st; parse_global_settings st; parse_statements st

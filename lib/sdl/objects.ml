@@ -9,8 +9,19 @@ open Materials
 
 let move_shape op s = Place.shape s op
 
-(* §14.8: a light's position moves as a point *)
-let move_light op (l : Scene.light) = { l with position = Transform.point (Place.op_transform op) l.position }
+(* §14.8: a light's centre and point_at move as points; the direction between them is taken
+   when the scene is compiled *)
+let move_light op (l : Scene.light) =
+  let t = Place.op_transform op in
+  { l with position = Transform.point t l.position; point_at = Transform.point t l.point_at }
+
+(* §16.5: double_illuminate on a union is set on every member at once, at any depth *)
+let rec set_double_illuminate b (o : V.obj) =
+  match o.shape with
+  | Prim _ -> { o with double_illuminate = b }
+  | Union ms ->
+      let member = function V.Member_obj c -> V.Member_obj (set_double_illuminate b c) | V.Member_light _ as m -> m in
+      { o with double_illuminate = b; shape = Union (List.map member ms) }
 
 let rec move_obj op (o : V.obj) =
   match o.shape with
@@ -39,13 +50,28 @@ let parse_object_mods st (o : V.obj) what : V.obj =
         loop { o with interior = Some (parse_interior st base) }
     | Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") -> loop (move_obj (parse_op st) o)
     | Ident "no_shadow" -> advance st; loop { o with no_shadow = true }
+    (* §16.6: the flags take an optional boolean; hollow only matters to media, which povml lacks *)
+    | Ident "no_image" -> advance st; loop { o with no_image = parse_bool_opt st }
+    | Ident "no_reflection" -> advance st; loop { o with no_reflection = parse_bool_opt st }
+    | Ident "double_illuminate" -> advance st; loop (set_double_illuminate (parse_bool_opt st) o)
     | Ident "hollow" -> advance st; ignore (parse_bool_opt st); loop o
     | Ident s when is_unsupported s -> not_supported loc (Printf.sprintf "'%s'" s)
     | _ -> unexpected st (Printf.sprintf "an object modifier or '}' closing '%s'" what)
   in
   loop o
 
-let new_obj_of shape loc = { V.shape; texture = None; interior = None; no_shadow = false; oloc = loc }
+let new_obj_of shape loc =
+  {
+    V.shape;
+    texture = None;
+    interior = None;
+    no_shadow = false;
+    oloc = loc;
+    no_image = false;
+    no_reflection = false;
+    double_illuminate = false;
+    looks_like = false;
+  }
 let new_obj shape loc = new_obj_of (V.Prim shape) loc
 
 
@@ -55,28 +81,95 @@ let unsupported_objects =
     "isosurface"; "superellipsoid"; "julia_fractal"; "parametric"; "bicubic_patch"; "ovus"; "quadric"; "cubic";
     "quartic"; "poly"; "intersection"; "difference"; "merge"; "sphere_sweep"; "lemon" ]
 
-let parse_light st =
-  let loc = peek_loc st in
+(* A light source as read: a light alone, or a light with its looks_like object, which is kept
+   as a union of the two so that later transforms move both and the scene dissolves it (§19.2). *)
+type light_source = Lone of Scene.light | Shaped of V.obj
+
+(* light_source { centre, colour … } (§10.2, §18.2, §18.3, §19.2). radius, falloff and tightness
+   need a spotlight or cylinder keyword written before them, point_at one of those or parallel;
+   [object] reads the object of a looks_like. *)
+let parse_light_with st ~object_ =
+  let lloc = peek_loc st in
   advance st;
   open_block st "light_source";
   let position = parse_vector st in
   ignore (accept st Comma);
   (* §10.2: the colour after the position; without one the light is black *)
   let colour = if peek st == RBrace || (match peek st with Ident s -> List.mem s [ "shadowless"; "fade_distance"; "fade_power"; "translate" ] | _ -> false) then Rgb.black else parse_rgb st "a light colour" in
-  ignore loc;
-  let rec loop (l : Scene.light) =
+  let shaped (l : Scene.light) loc what =
+    match l.kind with
+    | Spotlight | Cylinder_light -> ()
+    | Point_light -> Error.raise_at loc "'%s' needs a spotlight or cylinder light: write 'spotlight' or 'cylinder' before it" what
+  in
+  let rec loop_with (l : Scene.light) (looks : V.obj option) =
+    let loop l = loop_with l looks in
     let loc = peek_loc st in
     match peek st with
-    | RBrace -> advance st; l
+    | RBrace -> (
+        advance st;
+        match looks with
+        | None -> Lone l
+        | Some o ->
+            Shaped (new_obj_of (V.Union [ V.Member_light l; V.Member_obj o ]) lloc))
+    (* §19.2: the object is written about the origin and moved to the centre, then its own
+       modifiers apply; it never casts a shadow *)
+    | Ident "looks_like" ->
+        if looks <> None then Error.raise_at loc "a light_source takes only one looks_like";
+        advance st;
+        open_block st "looks_like";
+        let o = move_obj (Place.Translate l.position) (object_ st) in
+        let o = parse_object_mods st o "looks_like" in
+        loop_with l (Some { o with no_shadow = true; looks_like = true })
     | Ident "shadowless" -> advance st; loop { l with shadowless = true }
     | Ident "fade_distance" -> advance st; loop { l with fade_distance = parse_float st }
     | Ident "fade_power" -> advance st; loop { l with fade_power = parse_float st }
-    | Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") -> loop (move_light (parse_op st) l)
+    (* §18.2: the kind keyword resets radius, falloff and tightness to its defaults where it stands *)
+    | Ident "spotlight" ->
+        advance st;
+        loop { l with kind = Spotlight; radius = cos (30. *. Float.pi /. 180.); falloff = cos (45. *. Float.pi /. 180.); tightness = 0. }
+    | Ident "cylinder" -> advance st; loop { l with kind = Cylinder_light; radius = 0.75; falloff = 1.; tightness = 0.; parallel = true }
+    | Ident "parallel" -> advance st; loop { l with parallel = true }
+    | Ident "point_at" ->
+        (match l.kind with
+        | Spotlight | Cylinder_light -> ()
+        | Point_light ->
+            if not l.parallel then
+              Error.raise_at loc "'point_at' needs a spotlight, cylinder or parallel light: write 'spotlight', 'cylinder' or 'parallel' before it");
+        advance st;
+        loop { l with point_at = parse_vector st }
+    | Ident "radius" ->
+        shaped l loc "radius";
+        advance st;
+        let r = parse_float st in
+        loop { l with radius = (match l.kind with Spotlight -> cos (r *. Float.pi /. 180.) | Cylinder_light | Point_light -> r) }
+    | Ident "falloff" ->
+        shaped l loc "falloff";
+        advance st;
+        let r = parse_float st in
+        loop { l with falloff = (match l.kind with Spotlight -> cos (r *. Float.pi /. 180.) | Cylinder_light | Point_light -> r) }
+    | Ident "tightness" -> shaped l loc "tightness"; advance st; loop { l with tightness = parse_float st }
+    | Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") ->
+        let op = parse_op st in
+        loop_with (move_light op l) (Option.map (move_obj op) looks)
     | Ident ("color" | "colour" | "rgb") -> loop { l with colour = parse_rgb st "a light colour" }
     | Ident s when is_unsupported s -> not_supported loc (Printf.sprintf "'%s' in a light_source" s)
     | _ -> unexpected st "a light_source keyword or '}'"
   in
-  loop { Scene.position; colour; shadowless = false; fade_distance = 0.; fade_power = 0. }
+  loop_with
+    {
+      Scene.position;
+      colour;
+      shadowless = false;
+      fade_distance = 0.;
+      fade_power = 0.;
+      kind = Point_light;
+      parallel = false;
+      point_at = Vec.make 0. 0. 1.;
+      radius = 0.;
+      falloff = 0.;
+      tightness = 0.;
+    }
+    None
 
 let f32 x = Int32.float_of_bits (Int32.bits_of_float x)
 
@@ -327,14 +420,17 @@ let rec parse_object st : V.obj =
       open_block st "union";
       let rec members acc =
         match peek st with
-        | Ident "light_source" -> members (V.Member_light (parse_light st) :: acc)
+        | Ident "light_source" ->
+            let m = match parse_light_source st with Lone l -> V.Member_light l | Shaped o -> V.Member_obj o in
+            members (m :: acc)
         | _ when object_follows st -> members (V.Member_obj (parse_object st) :: acc)
         | _ -> List.rev acc
       in
       let ms = nest st loc (fun () -> members []) in
       if List.length ms < 2 then warn st loc "a union should have at least two members";
       parse_object_mods st (new_obj_of (V.Union ms) loc) "union"
-  | Ident "light_source" -> new_obj_of (V.Union [ V.Member_light (parse_light st) ]) loc
+  | Ident "light_source" -> (
+      match parse_light_source st with Lone l -> new_obj_of (V.Union [ V.Member_light l ]) loc | Shaped o -> o)
   | Ident s -> (
       match cur_value st s with
       | Some (V.Object o) -> advance st; { o with oloc = loc }
@@ -342,6 +438,9 @@ let rec parse_object st : V.obj =
       | Some (V.Unsupported u) -> unsupported_use loc s u.what u.at
       | _ -> unexpected st "an object")
   | _ -> unexpected st "an object"
+
+(* A light_source, its looks_like object read by [parse_object] (§19.2). *)
+and parse_light_source st = parse_light_with st ~object_:parse_object
 
 (* Does an object (a keyword or an identifier of one) come next? *)
 and object_follows st =
@@ -517,10 +616,21 @@ let finish_prim st (o : V.obj) shape : Scene.obj =
   let interior = match o.interior with Some i -> i | None -> Defaults.interior in
   let interior = match texture.finish.legacy_ior with Some ior -> { interior with ior } | None -> interior in
   let interior = if interior.ior = 0. then { interior with ior = 1. } else interior in
-  { Scene.shape; texture; interior; no_shadow = o.no_shadow; loc = o.oloc }
+  {
+    Scene.shape;
+    texture;
+    interior;
+    no_shadow = o.no_shadow;
+    loc = o.oloc;
+    no_image = o.no_image;
+    no_reflection = o.no_reflection;
+    double_illuminate = o.double_illuminate;
+    looks_like = o.looks_like;
+  }
 
 (* An object entering the scene (§16.4, §16.5): a union is dissolved, its members without a texture
-   or interior take the union's, and its no_shadow goes to every member; its lights join the scene's. *)
+   or interior take the union's, and its no_shadow, no_image and no_reflection go to every member
+   (double_illuminate went down when it was parsed); its lights join the scene's. *)
 let rec add_object st (o : V.obj) =
   match o.shape with
   | Prim shape ->
@@ -537,6 +647,9 @@ let rec add_object st (o : V.obj) =
                   texture = (match c.texture with Some _ -> c.texture | None -> o.texture);
                   interior = (match c.interior with Some _ -> c.interior | None -> o.interior);
                   no_shadow = c.no_shadow || o.no_shadow;
+                  no_image = c.no_image || o.no_image;
+                  no_reflection = c.no_reflection || o.no_reflection;
+                  looks_like = c.looks_like || o.looks_like;
                 })
         ms
 

@@ -4,8 +4,12 @@
 val unsupported_rvalue_set : unit Reader.Names.t
 (** [unsupported_rvalue_set] are the keywords of values povml cannot make yet. *)
 
-val parse_light : Reader.st -> Scene.light
-(** [parse_light st] reads a light_source (the keyword is the next token). *)
+(** A light source as read: alone, or with its looks_like object (§19.2), kept as a union of the
+    light and the object so that later transforms move both. *)
+type light_source = Lone of Scene.light | Shaped of Value.obj
+
+val parse_light_source : Reader.st -> light_source
+(** [parse_light_source st] reads a light_source (the keyword is the next token). *)
 
 val parse_object : Reader.st -> Value.obj
 (** [parse_object st] reads an object with its modifiers. *)

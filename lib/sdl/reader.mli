@@ -29,6 +29,7 @@ type camera_spec = V.camera_spec = {
   c_look_at : (Vec.t * Loc.t) option;
   c_angle : (float * Loc.t) option;
   c_trans : Transform.t option;
+  c_ortho : bool;
 }
 
 (** A feature povml does not render yet: where, what, and notes. *)

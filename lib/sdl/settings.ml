@@ -7,7 +7,7 @@ open Materials
 
 
 let empty_camera =
-  { c_location = None; c_direction = None; c_up = None; c_right = None; c_sky = None; c_look_at = None; c_angle = None; c_trans = None }
+  { c_location = None; c_direction = None; c_up = None; c_right = None; c_sky = None; c_look_at = None; c_angle = None; c_trans = None; c_ortho = false }
 
 let parse_camera st =
   open_block st "camera";
@@ -20,7 +20,8 @@ let parse_camera st =
     let loc = peek_loc st in
     match peek st with
     | RBrace -> advance st; c
-    | Ident "perspective" -> advance st; loop c
+    | Ident "perspective" -> advance st; loop { c with c_ortho = false }
+    | Ident "orthographic" -> advance st; loop { c with c_ortho = true }
     | Ident "location" -> advance st; loop { c with c_location = Some (parse_vector st) }
     | Ident "direction" -> advance st; loop { c with c_direction = Some (parse_vector st) }
     | Ident "up" -> advance st; loop { c with c_up = Some (parse_vector st) }
@@ -72,8 +73,18 @@ let build_camera st (c : camera_spec) : Scene.camera =
         let u = Vec.cross d r in
         (Vec.scale dl d, Vec.scale (if handedness > 0. then rl else -.rl) r, Vec.scale ul u)
   in
+  (* §18.4: an orthographic camera without up and right, or with an angle, sees as wide as the
+     perspective one would at the look_at distance: right and up scaled by k1/k2 *)
+  let right, up =
+    if c.c_ortho && ((c.c_up = None && c.c_right = None) || c.c_angle <> None) then
+      let look_at = match c.c_look_at with Some (p, _) -> p | None -> Vec.make 0. 0. 1. in
+      let k1 = Vec.length (Vec.sub look_at location) and k2 = Vec.length direction in
+      if k1 > 1e-10 && k2 > 1e-10 then (Vec.scale (k1 /. k2) right, Vec.scale (k1 /. k2) up) else (right, up)
+    else (right, up)
+  in
+  let projection = if c.c_ortho then Scene.Orthographic else Scene.Perspective in
   match c.c_trans with
-  | None -> { Scene.location; direction; up; right }
+  | None -> { Scene.location; direction; up; right; projection }
   | Some t ->
       (* §14.8: the location as a point, the other vectors as directions *)
       {
@@ -81,6 +92,7 @@ let build_camera st (c : camera_spec) : Scene.camera =
         direction = Transform.direction t direction;
         up = Transform.direction t up;
         right = Transform.direction t right;
+        projection;
       }
 
 let parse_global_settings st =

@@ -7,6 +7,10 @@ type obj = {
   interior : Scene.interior option;
   no_shadow : bool;
   oloc : Loc.t;
+  no_image : bool;
+  no_reflection : bool;
+  double_illuminate : bool;
+  looks_like : bool;  (** a light's looks_like object (§19.2) *)
 }
 
 (** A primitive, or a union whose members are dissolved into the scene (POVRAY-3.7 §16.4). *)
@@ -24,6 +28,7 @@ type camera_spec = {
   c_look_at : (Vec.t * Loc.t) option;
   c_angle : (float * Loc.t) option;
   c_trans : Transform.t option;
+  c_ortho : bool;  (** the orthographic keyword was written (§18.4) *)
 }
 
 (** A macro: its parameters and where its body starts in the text that defines it. *)

@@ -27,7 +27,7 @@ An unknown identifier:
   > sphere { 0, Raduis pigment { rgb 1 } }
   > POV
   $ povml ident.pov +W10 +H10 -D
-  ident.pov:2:13: error: unknown identifier 'Raduis'; did you mean 'Radius'?
+  ident.pov:2:13: error: unknown identifier 'Raduis'; did you mean 'Radius' or 'radius'?
       2 | sphere { 0, Raduis pigment { rgb 1 } }
         |             ^
   [1]

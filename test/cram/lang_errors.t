@@ -9,7 +9,7 @@ Unknown identifiers and misspelt words get a suggestion:
   > sphere { 0, Raduis }
   > POV
   $ povml --dump ident.pov
-  ident.pov:2:13: error: unknown identifier 'Raduis'; did you mean 'Radius'?
+  ident.pov:2:13: error: unknown identifier 'Raduis'; did you mean 'Radius' or 'radius'?
       2 | sphere { 0, Raduis }
         |             ^
   [1]

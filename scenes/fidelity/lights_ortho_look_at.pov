@@ -1,0 +1,13 @@
+// povml fidelity scene: lights_ortho_look_at
+// Rule: orthographic camera with look_at and no up/right: right and up scaled by k1/k2,
+//       k1 = |look_at − location|, k2 = |direction|; parallel rays from the screen's points
+//       (POVRAY-3.7.md §18.4).
+#version 3.7;
+global_settings { assumed_gamma 1.0 }
+camera { orthographic location <1, 4, -6> look_at <0, 0.5, 0> }
+background { rgb <0.1, 0.15, 0.25> }
+light_source { <-4, 8, -5>, rgb 1 }
+plane { y, 0 pigment { rgb <0.9, 0.88, 0.8> } }
+sphere { <-1.2, 0.6, 0.4>, 0.6 pigment { rgb <0.9, 0.3, 0.2> } finish { phong 0.8 phong_size 40 } }
+sphere { <1.1, 0.5, -0.3>, 0.5 pigment { rgb <0.3, 0.6, 0.9> } finish { specular 0.5 reflection 0.3 } }
+box { <-0.3, 0, 1.2>, <0.5, 1.1, 2> rotate <0, 25, 0> pigment { rgb <0.4, 0.8, 0.3> } }
