@@ -2,8 +2,10 @@
 
 val scene : Scene.t -> Compiled.t
 (** [scene s] is [s] compiled: flat shapes, constant surfaces, the shadow strategy this scene needs,
-    and the camera's starting interior list. *)
+    and the camera's starting interior list (the objects whose bounding box and Inside test both
+    contain the camera, §6.4). *)
 
 val inside : float array -> Compiled.shape -> Vec.t -> bool
-(** [inside stack shape p] is POV-Ray's Inside test (§2.2, §2.3, §2.6, §15.1); [stack] is traversal room
-    for meshes (512 floats). *)
+(** [inside stack shape p] is POV-Ray's Inside test (§2.2, §2.3, §2.6, §15.1–§15.4: a closed cylinder
+    or cone shrunk by 1e-10, an open one grown by it, a disc the half-space behind its normal,
+    negated by [inverse]); [stack] is traversal room for meshes (512 floats). *)
