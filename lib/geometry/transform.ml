@@ -220,3 +220,34 @@ let to_string t =
   let m = mat t in
   String.concat "; "
     (List.init 4 (fun r -> Printf.sprintf "[%h %h %h %h]" m.(4 * r) m.((4 * r) + 1) m.((4 * r) + 2) m.((4 * r) + 3)))
+
+(* Compute_Axis_Rotation_Transform: [angle] in radians, the axis normalised by VNormalize (times
+   the reciprocal of its length), the inverse the transpose. *)
+let axis_rotate_rad (axis : Vec.t) angle =
+  let v = normalize axis in
+  let x = v.x and y = v.y and z = v.z in
+  let c = cos angle and s = sin angle in
+  let m = ident () in
+  m.(0) <- (x *. x) +. (c *. (1.0 -. (x *. x)));
+  m.(1) <- (x *. y *. (1.0 -. c)) +. (z *. s);
+  m.(2) <- (x *. z *. (1.0 -. c)) -. (y *. s);
+  m.(4) <- (x *. y *. (1.0 -. c)) -. (z *. s);
+  m.(5) <- (y *. y) +. (c *. (1.0 -. (y *. y)));
+  m.(6) <- (y *. z *. (1.0 -. c)) +. (x *. s);
+  m.(8) <- (x *. z *. (1.0 -. c)) +. (y *. s);
+  m.(9) <- (y *. z *. (1.0 -. c)) -. (x *. s);
+  m.(10) <- (z *. z) +. (c *. (1.0 -. (z *. z)));
+  make m (transpose m)
+
+(* Compute_Coordinate_Transform (§15.2): scale <radius, radius, length>, then the rotation taking
+   +z to [up] (about (−up.y, up.x, 0) by acos up.z; about x when up is within EPSILON of ±z, with
+   up.z snapped to ±1), then translate [origin]. Returns the snapped [up] too: POV-Ray writes the
+   snap back into the vector it was given (a disc keeps it as its normal). *)
+let coordinate (origin : Vec.t) (up : Vec.t) radius length =
+  let t = scale (Vec.make radius radius length) in
+  let axis, up =
+    if Float.abs up.z > 1.0 -. epsilon then (Vec.make 1. 0. 0., { up with z = (if up.z < 0. then -1. else 1.) })
+    else (Vec.make (-.up.y) up.x 0., up)
+  in
+  let t = compose t (axis_rotate_rad axis (acos up.z)) in
+  (compose t (translate origin), up)

@@ -78,3 +78,13 @@ val bounds : t -> float array -> float array
 
 val to_string : t -> string
 (** [to_string t] prints [M] row by row, for tests and debugging. *)
+
+val axis_rotate_rad : Vec.t -> float -> t
+(** [axis_rotate_rad axis a] rotates by [a] radians about [axis] ([Compute_Axis_Rotation_Transform]:
+    the axis normalised by [normalize], the inverse the transpose). *)
+
+val coordinate : Vec.t -> Vec.t -> float -> float -> t * Vec.t
+(** [coordinate origin up radius length] is POV-Ray's [Compute_Coordinate_Transform] (§15.2): the
+    canonical space (unit radius, unit length along +z) scaled by [<radius, radius, length>],
+    turned so that +z becomes the unit vector [up], and moved to [origin]; with [up] as POV-Ray
+    leaves it (its z snapped to ±1 when within 1e-10 of it). *)

@@ -3,6 +3,11 @@ open Compiled
 let epsilon = 1e-10
 let f32 x = Int32.float_of_bits (Int32.bits_of_float x)
 
+let finite (t : Transform.t) =
+  List.for_all Float.is_finite
+    [ t.m00; t.m01; t.m02; t.m10; t.m11; t.m12; t.m20; t.m21; t.m22; t.m30; t.m31; t.m32;
+      t.i00; t.i01; t.i02; t.i10; t.i11; t.i12; t.i20; t.i21; t.i22; t.i30; t.i31; t.i32 ]
+
 (* A shape ready to trace; None for a triangle that POV-Ray never hits (no area, or a standalone
    smooth triangle whose vertex normals straddle its face). *)
 let shape_of (s : Scene.shape) =
@@ -24,12 +29,38 @@ let shape_of (s : Scene.shape) =
   | Box { lo; hi; trans } -> (
       let bx = { x0 = lo.x; y0 = lo.y; z0 = lo.z; x1 = hi.x; y1 = hi.y; z1 = hi.z } in
       match trans with None -> Some (Box bx) | Some btr -> Some (Box_trans { bx; btr }))
+  | Cone { cylinder; dist; closed; inverted; trans; _ } ->
+      (* a cylinder of radius 0 has no inverse transform: POV-Ray never hits it *)
+      if finite trans then Some (Cone { ctr = trans; dist; cyl = cylinder; closed; cinverted = inverted }) else None
+  | Disc { normal; radius; hole; inverted; trans; _ } ->
+      if finite trans then
+        Some (Disc { dtr = trans; dnx = normal.x; dny = normal.y; dnz = normal.z; or2 = radius *. radius; ir2 = hole *. hole; dinverted = inverted })
+      else None
 
 (* Box::Inside: a closed box, its surface included *)
 let in_box b (p : Vec.t) = not (p.x < b.x0 || p.x > b.x1 || p.y < b.y0 || p.y > b.y1 || p.z < b.z0 || p.z > b.z1)
 
+(* Cone::Inside (§15.2, §15.3): closed shapes shrunk by EPSILON, open ones grown by it (an open
+   cylinder still has a solid inside); inverse negates the answer. *)
+let in_cone c (p : Vec.t) =
+  let q = Transform.inv_point c.ctr p in
+  let offset = if c.closed then -.epsilon else epsilon in
+  let w2 = (q.x *. q.x) +. (q.y *. q.y) in
+  let out =
+    if c.cyl then w2 > 1.0 +. offset || q.z < 0.0 -. offset || q.z > 1.0 +. offset
+    else w2 > (q.z *. q.z) +. offset || q.z < c.dist -. offset || q.z > 1.0 +. offset
+  in
+  out = c.cinverted
+
+(* Disc::Inside (§15.4): the open half-space behind the disc's plane, z < 0 in canonical space *)
+let in_disc d (p : Vec.t) =
+  let q = Transform.inv_point d.dtr p in
+  (q.z >= 0.0) = d.dinverted
+
 let inside stack shape (p : Vec.t) =
   match shape with
+  | Cone c -> in_cone c p
+  | Disc d -> in_disc d p
   | Box b -> in_box b p
   | Box_trans { bx; btr } -> in_box bx (Transform.inv_point btr p)
   | Sphere s ->
@@ -54,13 +85,11 @@ let inside stack shape (p : Vec.t) =
         | None -> false
         | Some d -> Mesh.inside_along m.mesh stack (Transform.inv_point m.tr p) (Transform.normalize (Transform.inv_direction m.tr d)))
 
-(* §6.4: the objects whose inside holds [p], the last one first (the order of the interior list of
-   a ray that starts at [p]). *)
-let interiors_at (objects : obj array) stack p =
-  Array.fold_left (fun acc o -> if inside stack o.shape p then o.id :: acc else acc) [] objects
-
 (* The box of a bounded shape; None for an unbounded one. A transformed shape's box is its
    object-space box with the corners mapped (Recompute_BBox, §15.8). *)
+(* SMALL_TOLERANCE: a disc's box is this thick on each side of its plane (§15.4) *)
+let small_tolerance = 1e-3
+
 let bounds = function
   | Sphere s ->
       let r = Float.abs s.radius in
@@ -73,6 +102,10 @@ let bounds = function
   | Mesh m -> if m.moved then Some (Transform.bounds m.tr (Mesh.bounds m.mesh)) else Some (Mesh.bounds m.mesh)
   | Box b -> Some [| b.x0; b.y0; b.z0; b.x1; b.y1; b.z1 |]
   | Box_trans { bx = b; btr } -> Some (Transform.bounds btr [| b.x0; b.y0; b.z0; b.x1; b.y1; b.z1 |])
+  | Cone c -> Some (Transform.bounds c.ctr [| -1.; -1.; c.dist; 1.; 1.; 1. |])
+  | Disc d ->
+      let r = sqrt d.or2 in
+      Some (Transform.bounds d.dtr [| -.r; -.r; -.small_tolerance; r; r; small_tolerance |])
 
 (* The largest coordinate magnitude of a shape: its box, or for a plane its point nearest the origin. *)
 let magnitude shape =
@@ -83,7 +116,7 @@ let magnitude shape =
   | None, Plane_trans { pl; ptr; _ } ->
       let q = Transform.point ptr (Vec.make (-.pl.dist *. pl.nx) (-.pl.dist *. pl.ny) (-.pl.dist *. pl.nz)) in
       max_abs [| q.x; q.y; q.z |]
-  | None, (Sphere _ | Ellipsoid _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _) -> 0.
+  | None, (Sphere _ | Ellipsoid _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _) -> 0.
 
 (* POV-Ray's box of a bounded shape (Compute_BBox, then Make_BBox or Make_BBox_from_min_max, which
    round the lower corner and the lengths to single precision): [| llx; lly; llz; lx; ly; lz |].
@@ -115,6 +148,27 @@ let pov_box shape =
       if m.moved then mapped m.tr b else b
   | Box b -> of_min_max [| b.x0; b.y0; b.z0 |] [| b.x1; b.y1; b.z1 |]
   | Box_trans { bx = b; btr } -> mapped btr (of_min_max [| b.x0; b.y0; b.z0 |] [| b.x1; b.y1; b.z1 |])
+  | Cone c ->
+      (* Cone::Compute_BBox: Make_BBox(−1, −1, dist, 2, 2, 1 − dist), then through Trans *)
+      mapped c.ctr [| f32 (-1.); f32 (-1.); f32 c.dist; f32 2.; f32 2.; f32 (1. -. c.dist) |]
+  | Disc d ->
+      (* Disc::Compute_BBox: Make_BBox(−r, −r, −SMALL_TOLERANCE, 2r, 2r, 2·SMALL_TOLERANCE) *)
+      let r = sqrt d.or2 in
+      mapped d.dtr [| f32 (-.r); f32 (-.r); f32 (-.small_tolerance); f32 (2. *. r); f32 (2. *. r); f32 (2. *. small_tolerance) |]
+
+(* Inside_BBox: whether [p] is in POV-Ray's box [b] of an object (faces included); an unbounded
+   object's ([||]) holds every point. POV-Ray asks it before the object's own inside test when it
+   fills the camera's interior list (§6.4), so a camera behind a disc is inside the disc's
+   half-space only within the disc's thin box (§15.4). *)
+let in_pov_box (b : float array) (p : Vec.t) =
+  Array.length b = 0
+  || not
+       (p.x < b.(0) || p.y < b.(1) || p.z < b.(2) || p.x > b.(0) +. b.(3) || p.y > b.(1) +. b.(4) || p.z > b.(2) +. b.(5))
+
+(* §6.4: the objects whose bounding box and inside both hold [p], the last one first (the order of
+   the interior list of a ray that starts at [p]). *)
+let interiors_at (objects : obj array) stack p =
+  Array.fold_left (fun acc o -> if in_pov_box o.pbox p && inside stack o.shape p then o.id :: acc else acc) [] objects
 
 let group objs =
   let unbounded = List.filter (fun o -> bounds o.shape = None) objs in
@@ -129,7 +183,7 @@ let group objs =
     (fun i o ->
       match o.shape with
       | Sphere s -> spheres.(4 * i) <- s.cx; spheres.((4 * i) + 1) <- s.cy; spheres.((4 * i) + 2) <- s.cz; spheres.((4 * i) + 3) <- s.r2
-      | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ -> ())
+      | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ -> ())
     bounded;
   { unbounded = Array.of_list unbounded; bounded; bvh; spheres }
 
@@ -225,7 +279,7 @@ let scene (s : Scene.t) : Compiled.t =
            let face_surfs =
              match o.shape with
              | Mesh m -> Array.map (surface ~legacy ~ambient_light:s.ambient_light) m.textures
-             | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Box _ -> [||]
+             | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Box _ | Cone _ | Disc _ -> [||]
            in
            {
              id;
@@ -275,7 +329,7 @@ let scene (s : Scene.t) : Compiled.t =
              spread =
                (match l.kind with
                | Point_light -> Everywhere
-               | Spotlight -> Cone { radius_cos = l.radius; falloff_cos = l.falloff; tightness = l.tightness }
+               | Spotlight -> Spot { radius_cos = l.radius; falloff_cos = l.falloff; tightness = l.tightness }
                | Cylinder_light -> Beam { beam_radius = l.radius; beam_falloff = l.falloff; beam_tightness = l.tightness });
              parallel = l.parallel;
              dx = dir.x;

@@ -2,12 +2,14 @@
 
 val scene : Scene.t -> Compiled.t
 (** [scene s] is [s] compiled: flat shapes, constant surfaces, the shadow strategy this scene needs,
-    and the camera's starting interior list. *)
+    and the camera's starting interior list (the objects whose bounding box and Inside test both
+    contain the camera, §6.4). *)
 
 val inside : float array -> Compiled.shape -> Vec.t -> bool
-(** [inside stack shape p] is POV-Ray's Inside test (§2.2, §2.3, §2.6, §15.1); [stack] is traversal room
-    for meshes (512 floats). *)
+(** [inside stack shape p] is POV-Ray's Inside test (§2.2, §2.3, §2.6, §15.1–§15.4: a closed cylinder
+    or cone shrunk by 1e-10, an open one grown by it, a disc the half-space behind its normal,
+    negated by [inverse]); [stack] is traversal room for meshes (512 floats). *)
 
 val interiors_at : Compiled.obj array -> float array -> Vec.t -> int list
-(** [interiors_at objects stack p] is the ids of the objects whose inside holds [p], the last one
+(** [interiors_at objects stack p] is the ids of the objects whose bounding box and inside hold [p], the last one
     first: the interior list of a ray starting at [p] (§6.4, §18.4); [stack] as for [inside]. *)

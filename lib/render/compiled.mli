@@ -14,6 +14,26 @@ type box = { x0 : float; y0 : float; z0 : float; x1 : float; y1 : float; z1 : fl
     unmoved mesh is searched in world space as it is, like POV-Ray's mesh without a Trans (§2.6). *)
 type mesh_inst = { mesh : Mesh.t; tr : Transform.t; moved : bool }
 
+(** A cylinder or cone (§15.2, §15.3) in its canonical space, placed by [ctr]. *)
+type cone = {
+  ctr : Transform.t;  (** canonical space to world *)
+  dist : float;  (** a cone's small end at z = [dist] (0 for a cylinder) *)
+  cyl : bool;  (** the canonical cylinder x² + y² = 1 instead of the cone x² + y² = z² *)
+  closed : bool;  (** the end caps are surfaces *)
+  cinverted : bool;  (** [inverse]: the inside test is negated *)
+}
+
+(** A disc (§15.4) in the plane z = 0 of its canonical space, placed by [dtr]. *)
+type disc = {
+  dtr : Transform.t;  (** canonical space to world *)
+  dnx : float;
+  dny : float;
+  dnz : float;  (** the world normal, the same at every point *)
+  or2 : float;  (** outer radius² *)
+  ir2 : float;  (** hole radius² *)
+  dinverted : bool;  (** [inverse]: the inside test is negated *)
+}
+
 type shape =
   | Sphere of sphere
   | Ellipsoid of { sp : sphere; etr : Transform.t }
@@ -26,6 +46,10 @@ type shape =
   | Mesh of mesh_inst
   | Box of box  (** §15.1, in world space; the side hit is left where a mesh leaves its face *)
   | Box_trans of { bx : box; btr : Transform.t }  (** §15.1, §14.5 (a): [bx] mapped by [btr] *)
+  | Cone of cone
+      (** §15.2, §15.3, §14.5 (b); the part hit is left where a mesh leaves its face: 1 the base (small
+          end, z = dist), 2 the cap (z = 1), 3 the side *)
+  | Disc of disc  (** §15.4, §14.5 (b) *)
 
 (** Everything about a surface that does not depend on the hit point, derived once from a
     plain pigment and its finish (§3.2, §3.5, §5). *)
@@ -73,7 +97,7 @@ type obj = {
 (** How a light's colour is attenuated by the lit point's place, besides fade (§3.4, §18.2). *)
 type spread =
   | Everywhere  (** a point or parallel light: no cone, no beam *)
-  | Cone of { radius_cos : float; falloff_cos : float; tightness : float }  (** a spotlight *)
+  | Spot of { radius_cos : float; falloff_cos : float; tightness : float }  (** a spotlight *)
   | Beam of { beam_radius : float; beam_falloff : float; beam_tightness : float }  (** a cylinder light *)
 
 (** A light with its attenuation settings. *)

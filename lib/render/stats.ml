@@ -13,6 +13,10 @@ type t = {
   mutable mesh_hits : int;
   mutable box_tests : int;
   mutable box_hits : int;
+  mutable cone_tests : int;
+  mutable cone_hits : int;
+  mutable disc_tests : int;
+  mutable disc_hits : int;
   mutable max_level : int;
   mutable samples : int;
 }
@@ -20,7 +24,7 @@ type t = {
 let create () =
   {
     camera_rays = 0; reflected_rays = 0; refracted_rays = 0; shadow_rays = 0; sphere_tests = 0;
-    sphere_hits = 0; plane_tests = 0; plane_hits = 0; triangle_tests = 0; triangle_hits = 0; mesh_tests = 0; mesh_hits = 0; box_tests = 0; box_hits = 0; max_level = 0; samples = 0;
+    sphere_hits = 0; plane_tests = 0; plane_hits = 0; triangle_tests = 0; triangle_hits = 0; mesh_tests = 0; mesh_hits = 0; box_tests = 0; box_hits = 0; cone_tests = 0; cone_hits = 0; disc_tests = 0; disc_hits = 0; max_level = 0; samples = 0;
   }
 
 let merge a b =
@@ -39,6 +43,10 @@ let merge a b =
     mesh_hits = a.mesh_hits + b.mesh_hits;
     box_tests = a.box_tests + b.box_tests;
     box_hits = a.box_hits + b.box_hits;
+    cone_tests = a.cone_tests + b.cone_tests;
+    cone_hits = a.cone_hits + b.cone_hits;
+    disc_tests = a.disc_tests + b.disc_tests;
+    disc_hits = a.disc_hits + b.disc_hits;
     max_level = max a.max_level b.max_level;
     samples = a.samples + b.samples;
   }

@@ -15,6 +15,10 @@ type t = {
   mutable mesh_hits : int;
   mutable box_tests : int;
   mutable box_hits : int;
+  mutable cone_tests : int;  (** cylinders and cones *)
+  mutable cone_hits : int;
+  mutable disc_tests : int;
+  mutable disc_hits : int;
   mutable max_level : int;  (** deepest trace level reached *)
   mutable samples : int;  (** antialiasing samples beyond the first per pixel *)
 }

@@ -25,10 +25,14 @@ type ctx = {
   min_depth : float;  (* the nearest depth any ray accepts *)
   robust : bool;  (* secondary rays leave from points lifted off the surface *)
   shadow_cache : int array;  (* §4: per light, the opaque object that last blocked it, or −1 *)
+  hits : float array;  (* scratch: every hit of one cylinder, cone or disc, as (depth, part) pairs *)
 }
 
 (* POV-Ray keeps two cache slots per light: one for the shadow tests made while shading a hit at
    trace level 2 (lightSourceLevel1ShadowCache) and one for every other level. *)
+(* A cylinder or cone has at most 4 crossings listed (two on the side, the two ends), a disc one. *)
+let max_hits = 8
+
 let make_ctx ?(robust = false) scene stats =
   let slots = 2 * max 1 (Array.length scene.lights) in
   {
@@ -42,6 +46,7 @@ let make_ctx ?(robust = false) scene stats =
     min_depth = (if robust then 0. else min_isect_depth);
     robust;
     shadow_cache = Array.make slots (-1);
+    hits = Array.make max_hits 0.;
   }
 let black = { r = 0.; g = 0.; b = 0.; tr = 0. }
 
@@ -201,6 +206,153 @@ let box_trans_depth ctx (b : box) (t : Transform.t) (o : Vec.t) (d : Vec.t) lo =
   let vz = (d.x *. t.i02) +. (d.y *. t.i12) +. (d.z *. t.i22) in
   box_depth ctx b px py pz vx vy vz lo
 
+(* §15.2, §15.3: cylinders and cones reject canonical depths up to Cone_Tolerance (1e-9) *)
+let cone_tolerance = 1e-9
+
+(* The parts of a cylinder or cone a hit can be on (§15.2): POV-Ray's BASE_HIT, CAP_HIT, SIDE_HIT. *)
+let base_hit = 1
+let cap_hit = 2
+let side_hit = 3
+
+(* §15.2, §15.3, Cone::Intersect, §14.5 (b): every crossing of the ray from [o] along the unit [d]
+   with the cylinder or cone [c], in POV-Ray's order (the side's two roots, then the cap at z = 1,
+   then the base at z = dist), written into [out] as pairs (world depth, part: 1 base, 2 cap,
+   3 side); returns how many. The ray is brought into canonical space with its direction
+   renormalised; depths are limited there (1e-9 < s < 1e7) and divided by the direction's length.
+   [out] needs room for 8 floats. Nothing is allocated. *)
+let[@inline] put (out : float array) n depth part =
+  out.(2 * n) <- depth;
+  out.((2 * n) + 1) <- part;
+  n + 1
+
+let cone_hits ctx (c : cone) (o : Vec.t) (d : Vec.t) (out : float array) =
+  let stats = ctx.stats in
+  stats.cone_tests <- stats.cone_tests + 1;
+  let t = c.ctr in
+  let px = (o.x *. t.i00) +. (o.y *. t.i10) +. (o.z *. t.i20) +. t.i30 in
+  let py = (o.x *. t.i01) +. (o.y *. t.i11) +. (o.z *. t.i21) +. t.i31 in
+  let pz = (o.x *. t.i02) +. (o.y *. t.i12) +. (o.z *. t.i22) +. t.i32 in
+  let vx = (d.x *. t.i00) +. (d.y *. t.i10) +. (d.z *. t.i20) in
+  let vy = (d.x *. t.i01) +. (d.y *. t.i11) +. (d.z *. t.i21) in
+  let vz = (d.x *. t.i02) +. (d.y *. t.i12) +. (d.z *. t.i22) in
+  let len = sqrt ((vx *. vx) +. (vy *. vy) +. (vz *. vz)) in
+  (* VInverseScaleEq: times the reciprocal *)
+  let k = 1. /. len in
+  let vx = vx *. k and vy = vy *. k and vz = vz *. k in
+  let near = if ctx.robust then 0. else cone_tolerance and far = ctx.lim.far in
+  let side = float_of_int side_hit in
+  let n =
+    if c.cyl then begin
+      let a = (vx *. vx) +. (vy *. vy) in
+      if a > epsilon then begin
+        let b = (px *. vx) +. (py *. vy) in
+        let cc = (px *. px) +. (py *. py) -. 1.0 in
+        let dsc = (b *. b) -. (a *. cc) in
+        if dsc >= 0.0 then begin
+          let sq = sqrt dsc in
+          (* the far root first, as Cone::Intersect lists them *)
+          let t1 = (-.b +. sq) /. a and t2 = (-.b -. sq) /. a in
+          let z1 = pz +. (t1 *. vz) and z2 = pz +. (t2 *. vz) in
+          let n = if t1 > near && t1 < far && z1 >= 0.0 && z1 <= 1.0 then put out 0 (t1 /. len) side else 0 in
+          if t2 > near && t2 < far && z2 >= 0.0 && z2 <= 1.0 then put out n (t2 /. len) side else n
+        end
+        else 0
+      end
+      else 0
+    end
+    else begin
+      let a = (vx *. vx) +. (vy *. vy) -. (vz *. vz) in
+      let b = (vx *. px) +. (vy *. py) -. (vz *. pz) in
+      let cc = (px *. px) +. (py *. py) -. (pz *. pz) in
+      if Float.abs a < epsilon then begin
+        (* the ray parallel to a generator: one crossing *)
+        if Float.abs b > epsilon then begin
+          let t1 = -0.5 *. cc /. b in
+          let z1 = pz +. (t1 *. vz) in
+          if t1 > near && t1 < far && z1 >= c.dist && z1 <= 1.0 then put out 0 (t1 /. len) side else 0
+        end
+        else 0
+      end
+      else begin
+        let dsc = (b *. b) -. (a *. cc) in
+        if dsc >= 0.0 then begin
+          let sq = sqrt dsc in
+          let t1 = (-.b -. sq) /. a and t2 = (-.b +. sq) /. a in
+          let z1 = pz +. (t1 *. vz) and z2 = pz +. (t2 *. vz) in
+          let n = if t1 > near && t1 < far && z1 >= c.dist && z1 <= 1.0 then put out 0 (t1 /. len) side else 0 in
+          if t2 > near && t2 < far && z2 >= c.dist && z2 <= 1.0 then put out n (t2 /. len) side else n
+        end
+        else 0
+      end
+    end
+  in
+  let n =
+    if c.closed && Float.abs vz > epsilon then begin
+      let s1 = (1.0 -. pz) /. vz in
+      let a1 = px +. (s1 *. vx) and b1 = py +. (s1 *. vy) in
+      let n = if (a1 *. a1) +. (b1 *. b1) <= 1.0 && s1 > near && s1 < far then put out n (s1 /. len) (float_of_int cap_hit) else n in
+      let s2 = (c.dist -. pz) /. vz in
+      let a2 = px +. (s2 *. vx) and b2 = py +. (s2 *. vy) in
+      let r2 = if c.cyl then 1.0 else c.dist *. c.dist in
+      if (a2 *. a2) +. (b2 *. b2) <= r2 && s2 > near && s2 < far then put out n (s2 /. len) (float_of_int base_hit) else n
+    end
+    else n
+  in
+  if n > 0 then stats.cone_hits <- stats.cone_hits + 1;
+  n
+
+(* §15.4, Disc::Intersect, §14.5 (b): the crossing of the ray with the disc [dc], written into
+   [out] as (world depth, 0); returns 0 or 1. The plane's crossing must be ahead in canonical
+   units (s ≥ 0), within the ring (hole² ≤ r² ≤ radius²), and its world depth within the limits
+   (1e-6 < depth < 1e7). *)
+let disc_hits ctx (dc : disc) (o : Vec.t) (d : Vec.t) (out : float array) =
+  let stats = ctx.stats in
+  stats.disc_tests <- stats.disc_tests + 1;
+  let t = dc.dtr in
+  let vx = (d.x *. t.i00) +. (d.y *. t.i10) +. (d.z *. t.i20) in
+  let vy = (d.x *. t.i01) +. (d.y *. t.i11) +. (d.z *. t.i21) in
+  let vz = (d.x *. t.i02) +. (d.y *. t.i12) +. (d.z *. t.i22) in
+  let len = sqrt ((vx *. vx) +. (vy *. vy) +. (vz *. vz)) in
+  let k = 1. /. len in
+  let vx = vx *. k and vy = vy *. k and vz = vz *. k in
+  if Float.abs vz > epsilon then begin
+    let px = (o.x *. t.i00) +. (o.y *. t.i10) +. (o.z *. t.i20) +. t.i30 in
+    let py = (o.x *. t.i01) +. (o.y *. t.i11) +. (o.z *. t.i21) +. t.i31 in
+    let pz = (o.x *. t.i02) +. (o.y *. t.i12) +. (o.z *. t.i22) +. t.i32 in
+    let s = -.pz /. vz in
+    if s >= 0.0 then begin
+      let u = px +. (s *. vx) and v = py +. (s *. vy) in
+      let r2 = (u *. u) +. (v *. v) in
+      if r2 >= dc.ir2 && r2 <= dc.or2 then begin
+        let depth = s /. len in
+        if depth > ctx.lim.near && depth < ctx.lim.far then begin
+          stats.disc_hits <- stats.disc_hits + 1;
+          put out 0 depth 0.
+        end
+        else 0
+      end
+      else 0
+    end
+    else 0
+  end
+  else 0
+
+(* The nearest of the [n] hits in [ctx.hits] at least [lo], its part left in [ctx.sub.(0)]; or
+   infinity. POV-Ray takes them from the top of its intersection stack, the last found first,
+   keeping a strictly nearer one: of equal depths the last found wins. *)
+let nearest_listed ctx n lo =
+  let h = ctx.hits in
+  let best = ref infinity and part = ref 0 in
+  for i = n - 1 downto 0 do
+    let t = h.(2 * i) in
+    if t < !best && t >= lo then begin
+      best := t;
+      part := int_of_float h.((2 * i) + 1)
+    end
+  done;
+  if !best < infinity then ctx.sub.(0) <- !part;
+  !best
+
 let hit_shape ctx shape (o : Vec.t) (d : Vec.t) lo =
   let stats = ctx.stats in
   match shape with
@@ -219,6 +371,8 @@ let hit_shape ctx shape (o : Vec.t) (d : Vec.t) lo =
   | Plane_trans { pl; ptr; _ } -> plane_trans_depth stats ctx.lim pl ptr o d lo
   | Box b -> box_depth ctx b o.x o.y o.z d.x d.y d.z lo
   | Box_trans { bx; btr } -> box_trans_depth ctx bx btr o d lo
+  | Cone c -> nearest_listed ctx (cone_hits ctx c o d ctx.hits) lo
+  | Disc dc -> nearest_listed ctx (disc_hits ctx dc o d ctx.hits) lo
   | Triangle t | Smooth_triangle t ->
       (* §2.4 *)
       stats.triangle_tests <- stats.triangle_tests + 1;
@@ -353,7 +507,9 @@ let surface_of obj sub =
   | Mesh m when sub >= 0 ->
       let t = Mesh.texture m.mesh sub in
       if t >= 0 then obj.face_surfs.(t) else obj.surf
-  | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ -> obj.surf
+  | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _
+  | Disc _ ->
+      obj.surf
 
 (* Box::Normal: the outward axis of the side hit (1–6). *)
 let box_side_normal side =
@@ -365,8 +521,22 @@ let box_side_normal side =
   | 5 -> Vec.make 0. 0. (-1.)
   | _ -> Vec.make 0. 0. 1.
 
+(* Cone::Normal (§15.2, §15.3): in canonical space the side's (x, y, 0) for a cylinder and
+   (x, y, −z) for a cone, the ends ±z; then by the inverse transpose, normalised (§14.6). *)
+let cone_normal (c : cone) part (p : Vec.t) =
+  let n =
+    if part = cap_hit then Vec.make 0. 0. 1.
+    else if part = base_hit then Vec.make 0. 0. (-1.)
+    else
+      let q = Transform.inv_point c.ctr p in
+      if c.cyl then Vec.make q.x q.y 0. else Vec.make q.x q.y (-.q.z)
+  in
+  Transform.normalize (Transform.normal c.ctr n)
+
 let normal obj sub (p : Vec.t) : Vec.t =
   match obj.shape with
+  | Cone c -> cone_normal c sub p
+  | Disc dc -> Vec.make dc.dnx dc.dny dc.dnz
   | Box _ -> box_side_normal sub
   | Box_trans { btr; _ } -> Transform.normalize (Transform.normal btr (box_side_normal sub))
   | Sphere s -> Vec.make ((p.x -. s.cx) /. s.radius) ((p.y -. s.cy) /. s.radius) ((p.z -. s.cz) /. s.radius)
@@ -396,7 +566,7 @@ let geometric_normal obj sub (p : Vec.t) =
   match obj.shape with
   | Smooth_triangle t -> Vec.make t.nx t.ny t.nz
   | Mesh m -> if m.moved then Transform.normalize (Transform.normal m.tr (Mesh.face_normal m.mesh sub)) else Mesh.face_normal m.mesh sub
-  | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Box _ | Box_trans _ -> normal obj sub p
+  | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Box _ | Box_trans _ | Cone _ | Disc _ -> normal obj sub p
 
 (* A hit point put back onto a sphere: o + t·d is off by rounding errors of the size of the ray's
    length, a point projected from the centre by those of the centre and radius only. *)
@@ -409,7 +579,7 @@ let refine obj (p : Vec.t) =
   match obj.shape with
   | Sphere s -> onto s.cx s.cy s.cz s.radius p
   | Ellipsoid { sp = s; etr } -> Transform.point etr (onto s.cx s.cy s.cz s.radius (Transform.inv_point etr p))
-  | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ -> p
+  | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ -> p
 
 let norm_inf (v : Vec.t) = Float.max (Float.abs v.x) (Float.max (Float.abs v.y) (Float.abs v.z))
 
@@ -532,7 +702,7 @@ let attenuation (lt : light) (p : Vec.t) (l : Vec.t) dist =
   let a =
     match lt.spread with
     | Everywhere -> 1.
-    | Cone c ->
+    | Spot c ->
         (* the ray's cosine with the spot axis, turned round for a light in front of the point *)
         let ct = (l.x *. lt.dx) +. (l.y *. lt.dy) +. (l.z *. lt.dz) in
         let ct = if dist > 0. then -.ct else ct in

@@ -15,10 +15,12 @@ type ctx = {
   min_depth : float;
   robust : bool;
   shadow_cache : int array;
+  hits : float array;
 }
 (** What a trace reads: the compiled scene, the worker's statistics, scratch space (the last
     hit's depth and mesh face, traversal stacks) and POV-Ray's shadow cache (§4: per light, the
-    opaque object that last blocked it), all private to one worker; and the mode's limits: the
+    opaque object that last blocked it), room for the hits of one cylinder, cone or disc, all private
+    to one worker; and the mode's limits: the
     depths shapes accept, the nearest depth any ray accepts (1e-4, §2.1), and whether secondary
     rays leave from points lifted off the surface (robust mode). *)
 
@@ -31,8 +33,21 @@ val make_ctx : ?robust:bool -> Compiled.t -> Stats.t -> ctx
 val hit_shape : ctx -> Compiled.shape -> Vec.t -> Vec.t -> float -> float
 (** [hit_shape ctx shape o d lo] is the nearest depth along the unit direction [d] at which the ray
     from [o] meets [shape] within the shape's own limits and at least [lo] (§2, §14.5), or
-    infinity; for a mesh the face, for a box the side (1–6: X−, X+, Y−, Y+, Z−, Z+), is left in
-    [ctx.sub.(0)]. *)
+    infinity; for a mesh the face, for a box the side (1–6: X−, X+, Y−, Y+, Z−, Z+), for a
+    cylinder or cone the part (1 base, 2 cap, 3 side), is left in [ctx.sub.(0)]. Of a cylinder's,
+    cone's or disc's equal depths the last listed wins, as in POV-Ray. *)
+
+val cone_hits : ctx -> Compiled.cone -> Vec.t -> Vec.t -> float array -> int
+(** [cone_hits ctx c o d out] lists every crossing of the ray from [o] along the unit direction
+    [d] with the cylinder or cone [c] within its own limits (§15.2, §15.3: canonical depths
+    1e-9 < s < 1e7, divided by the length of the canonical direction), in POV-Ray's order: the
+    side's roots, then the cap (z = 1), then the base (z = dist). Crossing [i] is written as the
+    world depth [out.(2i)] and the part [out.(2i+1)] (1. base, 2. cap, 3. side); the result is how
+    many there are (at most 4, so [out] needs 8 floats). No minimum depth is applied. *)
+
+val disc_hits : ctx -> Compiled.disc -> Vec.t -> Vec.t -> float array -> int
+(** [disc_hits ctx dc o d out] is [cone_hits] for a disc (§15.4): 0 or 1 crossing, written as
+    ([out.(0)] = world depth within 1e-6 … 1e7, [out.(1)] = 0.). *)
 
 val normal : Compiled.obj -> int -> Vec.t -> Vec.t
 (** [normal obj face p] is the unit normal of [obj] at its surface point [p] ([face]: the mesh face

@@ -70,6 +70,14 @@ let shape = function
   | Smooth_triangle { p1; n1; p2; n2; p3; n3 } ->
       Printf.sprintf "smooth_triangle { %s, %s, %s, %s, %s, %s" (vec p1) (vec n1) (vec p2) (vec n2) (vec p3) (vec n3)
   | Box { lo; hi; trans = t } -> Printf.sprintf "box { %s, %s%s" (vec lo) (vec hi) (trans t)
+  | Cone { p1; r1; p2; r2; cylinder; dist; closed; inverted; trans = t } ->
+      let flags = (if closed then "" else " open") ^ if inverted then " inverse" else "" in
+      let canon = if cylinder then "canonical cylinder" else Printf.sprintf "canonical cone from z = %s" (num dist) in
+      if r1 = r2 && cylinder then Printf.sprintf "cylinder { %s, %s, %s%s // %s%s" (vec p1) (vec p2) (num r1) flags canon (trans (Some t))
+      else Printf.sprintf "cone { %s, %s, %s, %s%s // %s%s" (vec p1) (num r1) (vec p2) (num r2) flags canon (trans (Some t))
+  | Disc { centre; normal; radius; hole; inverted; trans = t } ->
+      Printf.sprintf "disc { %s, %s, %s, %s%s // centre as written, normal as moved%s" (vec centre) (vec normal) (num radius)
+        (num hole) (if inverted then " inverse" else "") (trans (Some t))
   | Mesh { mesh; trans = t; textures } ->
       let b = Mesh.bounds mesh in
       Printf.sprintf "mesh { // %d triangles within <%s, %s, %s> … <%s, %s, %s>%s%s" mesh.faces (num b.(0)) (num b.(1))

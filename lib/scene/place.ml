@@ -112,6 +112,13 @@ let shape (s : Scene.shape) op : Scene.shape =
   | Mesh { mesh; trans; textures } ->
       (* §2.6, Mesh::Translate/Rotate/Scale all call Transform *)
       Mesh { mesh; trans = Some (attach trans op); textures }
+  | Cone c ->
+      (* §14.4, Cone::Translate/Rotate/Scale/Transform: every modifier is composed into Trans *)
+      Cone { c with trans = attach (Some c.trans) op }
+  | Disc d ->
+      (* §15.4, Disc::Transform: the normal by the inverse transpose, normalised, at every step *)
+      let t = op_transform op in
+      Disc { d with normal = Transform.normalize (Transform.normal t d.normal); trans = Transform.compose d.trans t }
 
 (* ---------------------------------------------------------------------------------------------- *)
 (* The whole scene moved: every object, light and the camera scaled by [scale] about the origin and
@@ -124,7 +131,7 @@ let scene ~scale ~translate (s : Scene.t) : Scene.t =
     (* a smooth triangle's Scale renormalises its vertex normals, which changes how they blend;
        as a matrix the uniform scale only multiplies all three by the same factor *)
     let scaling =
-      match o.shape with Smooth_triangle _ -> Transform (Transform.scale sv) | Sphere _ | Plane _ | Triangle _ | Mesh _ | Box _ -> Scale sv
+      match o.shape with Smooth_triangle _ -> Transform (Transform.scale sv) | Sphere _ | Plane _ | Triangle _ | Mesh _ | Box _ | Cone _ | Disc _ -> Scale sv
     in
     let sh = shape (shape o.shape scaling) (Translate translate) in
     { o with shape = sh; interior = { o.interior with fade_distance = o.interior.fade_distance *. scale } }

@@ -56,6 +56,25 @@ type shape =
   | Box of { lo : Vec.t; hi : Vec.t; trans : Transform.t option }
       (** §15.1: the corners sorted per axis ([lo] ≤ [hi]); with [trans], the object-space box
           mapped by it *)
+  | Cone of {
+      p1 : Vec.t;
+      r1 : float;
+      p2 : Vec.t;
+      r2 : float;  (** as written: a cylinder has [r1 = r2] *)
+      cylinder : bool;  (** the canonical cylinder [x² + y² ≤ 1, 0 ≤ z ≤ 1] (§15.2) … *)
+      dist : float;  (** … else the canonical cone [x² + y² ≤ z², dist ≤ z ≤ 1] (§15.3) *)
+      closed : bool;  (** the end caps are part of the surface (no [open]) *)
+      inverted : bool;  (** [inverse]: the inside test is negated *)
+      trans : Transform.t;  (** canonical space to world: POV-Ray's set-up, then every modifier *)
+    }  (** §15.2, §15.3: a cylinder or cone, always placed by a transform (§14.4) *)
+  | Disc of {
+      centre : Vec.t;
+      normal : Vec.t;  (** the unit normal, moved with every modifier (MTransNormal, normalised) *)
+      radius : float;
+      hole : float;  (** as written (0 without a hole) *)
+      inverted : bool;  (** [inverse]: the inside test is negated *)
+      trans : Transform.t;  (** canonical space (the disc in z = 0) to world *)
+    }  (** §15.4 *)
 
 (** A finished object: textured, with an interior (§2.7). *)
 type obj = {

@@ -54,6 +54,13 @@ let parse_object_mods st (o : V.obj) what : V.obj =
     | Ident "no_image" -> advance st; loop { o with no_image = parse_bool_opt st }
     | Ident "no_reflection" -> advance st; loop { o with no_reflection = parse_bool_opt st }
     | Ident "double_illuminate" -> advance st; loop (set_double_illuminate (parse_bool_opt st) o)
+    | Ident "inverse" -> (
+        (* §15.2–§15.4, Invert: the primitive's inside test is negated *)
+        match o.shape with
+        | Prim (Cone c) -> advance st; loop { o with shape = Prim (Cone { c with inverted = not c.inverted }) }
+        | Prim (Disc d) -> advance st; loop { o with shape = Prim (Disc { d with inverted = not d.inverted }) }
+        | Prim (Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _) | Union _ ->
+            not_supported loc (Printf.sprintf "'inverse' in a %s (only cylinders, cones and discs take it so far)" what))
     | Ident "hollow" -> advance st; ignore (parse_bool_opt st); loop o
     | Ident s when is_unsupported s -> not_supported loc (Printf.sprintf "'%s'" s)
     | _ -> unexpected st (Printf.sprintf "an object modifier or '}' closing '%s'" what)
@@ -77,7 +84,7 @@ let new_obj shape loc = new_obj_of (V.Prim shape) loc
 
 (* Objects povml does not render yet: inside a union they are reported as "not supported yet". *)
 let unsupported_objects =
-  [ "cylinder"; "cone"; "disc"; "torus"; "polygon"; "prism"; "lathe"; "sor"; "blob"; "text"; "height_field";
+  [ "torus"; "polygon"; "prism"; "lathe"; "sor"; "blob"; "text"; "height_field";
     "isosurface"; "superellipsoid"; "julia_fractal"; "parametric"; "bicubic_patch"; "ovus"; "quadric"; "cubic";
     "quartic"; "poly"; "intersection"; "difference"; "merge"; "sphere_sweep"; "lemon" ]
 
@@ -182,6 +189,8 @@ let unit_normal st loc (n : Vec.t) =
   else Vec.normalize n
 
 let comma st = ignore (accept st Comma)
+
+let show_vec (v : Vec.t) = Printf.sprintf "<%g, %g, %g>" v.x v.y v.z
 
 (* A vector written as plain numbers, read without tokens (Lexer.scan_vector3) into [out]: true
    when that worked, and the parser then stands after the '>'. *)
@@ -386,6 +395,50 @@ let rec parse_object st : V.obj =
       let lo = Vec.make (lo_of a.x b.x) (lo_of a.y b.y) (lo_of a.z b.z) in
       let hi = Vec.make (hi_of a.x b.x) (hi_of a.y b.y) (hi_of a.z b.z) in
       parse_object_mods st (new_obj (Box { lo; hi; trans = None }) loc) "box"
+  | Ident "cylinder" ->
+      (* §15.2: cylinder { P1, P2, r [open] } *)
+      advance st;
+      open_block st "cylinder";
+      let p1 = parse_vector st in
+      comma st;
+      let p2 = parse_vector st in
+      comma st;
+      let rloc = peek_loc st in
+      let radius = parse_float st in
+      let closed = not (accept_ident st "open") in
+      if radius = 0. then warn st rloc "cylinder radius is 0: it cannot be seen";
+      (match Quadric.cylinder ~p1 ~p2 ~radius ~closed with
+      | Some shape -> parse_object_mods st (new_obj shape loc) "cylinder"
+      | None -> Error.raise_at loc "degenerate cylinder: its end points %s and %s are the same point" (show_vec p1) (show_vec p2))
+  | Ident "cone" ->
+      (* §15.3: cone { P1, r1, P2, r2 [open] } *)
+      advance st;
+      open_block st "cone";
+      let p1 = parse_vector st in
+      comma st;
+      let r1 = parse_float st in
+      comma st;
+      let p2 = parse_vector st in
+      comma st;
+      let r2 = parse_float st in
+      let closed = not (accept_ident st "open") in
+      (match Quadric.cone ~p1 ~r1 ~p2 ~r2 ~closed with
+      | Some shape -> parse_object_mods st (new_obj shape loc) "cone"
+      | None -> Error.raise_at loc "degenerate cone: its end points %s and %s are the same point" (show_vec p1) (show_vec p2))
+  | Ident "disc" ->
+      (* §15.4: disc { C, N, R [, H] } *)
+      advance st;
+      open_block st "disc";
+      let centre = parse_vector st in
+      comma st;
+      let nloc = peek_loc st in
+      let normal = parse_vector st in
+      comma st;
+      let radius = parse_float st in
+      comma st;
+      let hole = if float_follows st then parse_float st else 0. in
+      if Vec.length normal = 0. then Error.raise_at nloc "degenerate disc normal <0,0,0>";
+      parse_object_mods st (new_obj (Quadric.disc ~centre ~normal ~radius ~hole) loc) "disc"
   | Ident "plane" ->
       advance st;
       open_block st "plane";

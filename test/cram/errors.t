@@ -70,12 +70,49 @@ A zero plane normal is refused, as POV-Ray refuses it:
 
 Features of later versions are named:
 
-  $ printf 'cylinder { 0, y, 1 }\n' > cylinder.pov
-  $ povml cylinder.pov +W10 +H10 -D
-  cylinder.pov:1:1: error: not supported yet: 'cylinder'
-      1 | cylinder { 0, y, 1 }
+  $ printf 'lathe { linear_spline 2, <0,0>, <1,1> }\n' > lathe.pov
+  $ povml lathe.pov +W10 +H10 -D
+  lathe.pov:1:1: error: not supported yet: 'lathe'
+      1 | lathe { linear_spline 2, <0,0>, <1,1> }
         | ^
   [1]
+
+A cylinder or cone whose end points coincide is refused, as POV-Ray refuses it (§15.2):
+
+  $ printf 'cylinder { <1,2,3>, <1,2,3>, 0.5 }\n' > degenerate_cylinder.pov
+  $ povml degenerate_cylinder.pov +W10 +H10 -D
+  degenerate_cylinder.pov:1:1: error: degenerate cylinder: its end points <1, 2, 3> and <1, 2, 3> are the same point
+      1 | cylinder { <1,2,3>, <1,2,3>, 0.5 }
+        | ^
+  [1]
+  $ printf '#version 3.7;\ncone { y, 1, y, 0.5 open }\n' > degenerate_cone.pov
+  $ povml degenerate_cone.pov +W10 +H10 -D
+  degenerate_cone.pov:2:1: error: degenerate cone: its end points <0, 1, 0> and <0, 1, 0> are the same point
+      2 | cone { y, 1, y, 0.5 open }
+        | ^
+  [1]
+
+A disc needs a normal, and inverse is taken by cylinders, cones and discs only so far:
+
+  $ printf 'disc { 0, <0,0,0>, 1 }\n' > disc.pov
+  $ povml disc.pov +W10 +H10 -D
+  disc.pov:1:11: error: degenerate disc normal <0,0,0>
+      1 | disc { 0, <0,0,0>, 1 }
+        |           ^
+  [1]
+  $ printf 'sphere { 0, 1 inverse }\n' > inverse.pov
+  $ povml inverse.pov +W10 +H10 -D
+  inverse.pov:1:15: error: not supported yet: 'inverse' in a sphere (only cylinders, cones and discs take it so far)
+      1 | sphere { 0, 1 inverse }
+        |               ^
+  [1]
+
+A cylinder of radius 0 is accepted with a warning and never seen:
+
+  $ printf '#version 3.7;\nglobal_settings { assumed_gamma 1 }\ncylinder { 0, y, 0 }\n' > thin.pov
+  $ povml thin.pov +W10 +H10 -D 2>&1 | grep -E 'warning|Wrote'
+  thin.pov:3:18: warning: cylinder radius is 0: it cannot be seen
+  Wrote thin.png (10x10)
 
 Warnings are printed and rendering continues (POV-Ray renders a sphere of radius -1 too):
 

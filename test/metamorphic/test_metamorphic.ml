@@ -24,6 +24,10 @@ let fidelity =
     "scenes/fidelity/box_shadows.pov";
     "scenes/fidelity/box_rotated_mirror.pov";
     "scenes/fidelity/box_glass.pov";
+    "scenes/fidelity/quadrics_cylinder_transformed.pov";
+    "scenes/fidelity/quadrics_cone_pointed.pov";
+    "scenes/fidelity/quadrics_disc_hole.pov";
+    "scenes/fidelity/quadrics_glass_cylinder.pov";
     "scenes/course/10_everything_together.pov";
   ]
 

@@ -20,6 +20,7 @@ let () =
       ("Compile", Test_compile.tests);
       ("Box", Test_box.tests);
       ("Lights, orthographic camera, flags", Test_lights.tests);
+      ("Quadrics", Test_quadrics.tests);
       ("Trace", Test_trace.tests);
       ("Render", Test_render.tests);
       ("Jitter", Test_jitter.tests);

@@ -1,0 +1,273 @@
+(* Cylinders, cones and discs (POVRAY-3.7 §15.2–§15.4): the canonical set-up, every hit listed in
+   POV-Ray's order with its part, the nearest one, normals, the inside tests, and the errors.
+   Every expected value is worked out by hand in the comments. *)
+
+open Povml
+open Helpers
+
+let v37 = "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"
+
+let setup text =
+  let c = compile (v37 ^ text) in
+  (c.objects.(0), Trace.make_ctx c (Stats.create ()))
+
+let cone_of (obj : Compiled.obj) = match obj.shape with Cone c -> c | _ -> Alcotest.fail "expected a cylinder or cone"
+let disc_of (obj : Compiled.obj) = match obj.shape with Disc d -> d | _ -> Alcotest.fail "expected a disc"
+
+(* Every hit of the ray from [o] along [d] (normalised here): (depth, part) in POV-Ray's order. *)
+let all_hits (obj, ctx) o d =
+  let d = Vec.normalize d in
+  let out = Array.make 8 nan in
+  let n =
+    match obj.Compiled.shape with
+    | Cone c -> Trace.cone_hits ctx c o d out
+    | Disc dc -> Trace.disc_hits ctx dc o d out
+    | _ -> Alcotest.fail "expected a quadric"
+  in
+  List.init n (fun i -> (out.(2 * i), int_of_float out.((2 * i) + 1)))
+
+let hits_eq ?(eps = 1e-12) msg expected actual =
+  Alcotest.(check int) (msg ^ ": count") (List.length expected) (List.length actual);
+  List.iteri
+    (fun i ((te, pe), (ta, pa)) ->
+      float_eq ~eps (Printf.sprintf "%s: depth %d" msg i) te ta;
+      Alcotest.(check int) (Printf.sprintf "%s: part %d" msg i) pe pa)
+    (List.combine expected actual)
+
+(* The nearest hit at least [lo]: depth, part and unit normal. *)
+let hit ?(lo = 0.) (obj, ctx) o d =
+  let d = Vec.normalize d in
+  ctx.Trace.sub.(0) <- -1;
+  let t = Trace.hit_shape ctx obj.Compiled.shape o d lo in
+  let part = ctx.sub.(0) in
+  (t, part, if t < infinity then Trace.normal obj part (Vec.madd o t d) else Vec.zero)
+
+let inside (obj : Compiled.obj) p = Compile.inside (Array.make 512 0.) obj.shape p
+let base = 1 and cap = 2 and side = 3
+
+(* P2 at the origin, P1 = (0,0,2) along +z: the rotation is the identity (acos 1 = 0), so the
+   transform is exactly scale <1,1,2>; canonical z = world z / 2. P2's end (world z = 0) is the
+   base (part 1), P1's (world z = 2) the cap (part 2). *)
+let c1 = "cylinder { <0,0,2>, <0,0,0>, 1 }"
+
+let test_cylinder_setup () =
+  (* §15.2: P2 maps to z = 0, P1 to z = 1, radius 1 along x and y *)
+  let obj, _ = setup "cylinder { <1,2,3>, <1,2,5>, 0.5 }" in
+  let c = cone_of obj in
+  Alcotest.(check bool) "a cylinder" true c.cyl;
+  Alcotest.(check bool) "closed" true c.closed;
+  vec_eq ~eps:1e-12 "P2 at z = 0" (v 1. 2. 5.) (Transform.point c.ctr Vec.zero);
+  vec_eq ~eps:1e-12 "P1 at z = 1" (v 1. 2. 3.) (Transform.point c.ctr (v 0. 0. 1.));
+  vec_eq ~eps:1e-12 "radius along x" (v 1.5 2. 5.) (Transform.point c.ctr (v 1. 0. 0.));
+  (* modifiers compose after the set-up *)
+  let obj, _ = setup "cylinder { 0, y, 1 open translate x }" in
+  let c = cone_of obj in
+  Alcotest.(check bool) "open" false c.closed;
+  vec_eq ~eps:1e-12 "moved P2" (v 1. 1. 0.) (Transform.point c.ctr Vec.zero);
+  (* the exact canonical transform of an axis along +z: scale <1,1,2> *)
+  let c = cone_of (fst (setup c1)) in
+  vec_eq "exact" (v 1. 1. 2.) (Transform.point c.ctr (v 1. 1. 1.))
+
+let test_cylinder_hits () =
+  let s = setup c1 in
+  (* along the axis from outside: no side (a = 0), the cap (s = 3.5 in canonical units, over
+     len 0.5 → 7) then the base (s = 2.5 → 5), listed in that order *)
+  hits_eq "along the axis" [ (7., cap); (5., base) ] (all_hits s (v 0. 0. (-5.)) (v 0. 0. 1.));
+  let t, part, n = hit s (v 0. 0. (-5.)) (v 0. 0. 1.) in
+  float_eq "nearest: the base" 5. t;
+  Alcotest.(check int) "base part" base part;
+  vec_eq "base normal" (v 0. 0. (-1.)) n;
+  (* from inside along the axis: the cap at 1; the base is behind *)
+  hits_eq "from inside to the cap" [ (1., cap) ] (all_hits s (v 0. 0. 1.) (v 0. 0. 1.));
+  let _, part, n = hit s (v 0. 0. 1.) (v 0. 0. 1.) in
+  Alcotest.(check int) "cap part" cap part;
+  vec_eq "cap normal" (v 0. 0. 1.) n;
+  (* across the side, parallel to the caps: a = 1, b = −5, c = 24, d = 1; roots 6 then 4 *)
+  hits_eq "across" [ (6., side); (4., side) ] (all_hits s (v (-5.) 0. 1.) (v 1. 0. 0.));
+  let t, part, n = hit s (v (-5.) 0. 1.) (v 1. 0. 0.) in
+  float_eq "nearest side" 4. t;
+  Alcotest.(check int) "side part" side part;
+  vec_eq "side normal" (v (-1.) 0. 0.) n;
+  (* from inside across: only the far root (the other is −1, behind) *)
+  hits_eq "from inside across" [ (1., side) ] (all_hits s (v 0. 0. 1.) (v 1. 0. 0.));
+  (* a miss: d = 25 − 1·28 < 0 *)
+  hits_eq "miss" [] (all_hits s (v (-5.) 2. 1.) (v 1. 0. 0.));
+  (* hits beyond [lo]: the far side *)
+  let t, _, n = hit ~lo:5. s (v (-5.) 0. 1.) (v 1. 0. 0.) in
+  float_eq "beyond lo" 6. t;
+  vec_eq "far side normal" (v 1. 0. 0.) n
+
+let test_cylinder_grazing () =
+  let s = setup c1 in
+  (* in the plane of the cap (canonical z = 1 exactly): |V.z| = 0, so no end is tested, and the
+     side's z ≤ 1 holds: both side crossings count *)
+  hits_eq "in the cap plane" [ (6., side); (4., side) ] (all_hits s (v (-5.) 0. 2.) (v 1. 0. 0.));
+  (* tangent to the rim of the cap: d = 25 − 25 = 0, a double root at 5 *)
+  hits_eq "tangent to the cap's rim" [ (5., side); (5., side) ] (all_hits s (v (-5.) 1. 2.) (v 1. 0. 0.));
+  (* just above the cap plane: nothing *)
+  hits_eq "above the cap" [] (all_hits s (v (-5.) 0. 2.000001) (v 1. 0. 0.));
+  (* straight down the side wall (x = 1, a = 0): no side, and the ends' x² + y² = 1 ≤ 1 count *)
+  hits_eq "down the wall" [ (7., cap); (5., base) ] (all_hits s (v 1. 0. (-5.)) (v 0. 0. 1.));
+  (* starting on the side: the root at s = 0 is not beyond 1e-9 *)
+  hits_eq "on the side, outward" [] (all_hits s (v 1. 0. 1.) (v 1. 0. 0.));
+  hits_eq "on the side, inward" [ (2., side) ] (all_hits s (v 1. 0. 1.) (v (-1.) 0. 0.));
+  (* an open cylinder has no ends: along the axis nothing, across only the side *)
+  let o = setup "cylinder { <0,0,2>, <0,0,0>, 1 open }" in
+  hits_eq "open, along the axis" [] (all_hits o (v 0. 0. (-5.)) (v 0. 0. 1.));
+  hits_eq "open, inner wall from inside" [ (1., side) ] (all_hits o (v 0. 0. 1.) (v 1. 0. 0.))
+
+(* The cone of radius 1 at world z = 1 and 0.5 at z = 0 (written small end second): h = 1,
+   apex at z = −1, H = 2, dist = 0.5; the transform is exactly scale <1,1,2> then translate
+   <0,0,−1>, so canonical z = (world z + 1)/2 and the radius at world z is (z + 1)/2. *)
+let k1 = "cone { <0,0,1>, 1, <0,0,0>, 0.5 }"
+
+let test_cone_setup () =
+  let c = cone_of (fst (setup k1)) in
+  Alcotest.(check bool) "a cone" false c.cyl;
+  float_eq "dist = 0.5" 0.5 c.dist;
+  vec_eq "apex" (v 0. 0. (-1.)) (Transform.point c.ctr Vec.zero);
+  vec_eq "big end" (v 1. 0. 1.) (Transform.point c.ctr (v 1. 0. 1.));
+  (* written small end first: swapped, the same cone *)
+  let c' = cone_of (fst (setup "cone { <0,0,0>, 0.5, <0,0,1>, 1 }")) in
+  float_eq "swapped dist" 0.5 c'.dist;
+  vec_eq "swapped apex" (v 0. 0. (-1.)) (Transform.point c'.ctr Vec.zero);
+  (* equal radii: a cylinder of that radius *)
+  let c = cone_of (fst (setup "cone { <0,0,2>, 0.5, <0,0,0>, 0.5 }")) in
+  Alcotest.(check bool) "equal radii: a cylinder" true c.cyl;
+  vec_eq "its radius" (v 0.5 0. 0.) (Transform.point c.ctr (v 1. 0. 0.));
+  (* r1 = 0: the point at the small end, dist = 0 *)
+  let c = cone_of (fst (setup "cone { <0,0,0>, 0, <0,0,1>, 1 }")) in
+  Alcotest.(check bool) "pointed: a cone" false c.cyl;
+  float_eq "pointed: dist 0" 0. c.dist
+
+let test_cone_hits () =
+  let s = setup k1 in
+  (* along the axis: the side's double root is the apex (canonical z = 0 < dist: dropped); the cap
+     at s = 3 → 6, the base at s = 2.5 → 5 *)
+  hits_eq "along the axis" [ (6., cap); (5., base) ] (all_hits s (v 0. 0. (-5.)) (v 0. 0. 1.));
+  (* across at world z = 0.5 (radius 0.75): a = 1, b = −5, c = 25 − 0.5625, d = 0.5625; the near
+     root (5 − 0.75) first for a cone *)
+  hits_eq "across" [ (4.25, side); (5.75, side) ] (all_hits s (v (-5.) 0. 0.5) (v 1. 0. 0.));
+  (* the side normal (x, y, −z) = (−0.75, 0, −0.75) through the inverse transpose diag(1,1,½):
+     (−0.75, 0, −0.375), normalised (−2, 0, −1)/√5 *)
+  let t, part, n = hit s (v (-5.) 0. 0.5) (v 1. 0. 0.) in
+  float_eq "nearest" 4.25 t;
+  Alcotest.(check int) "side" side part;
+  vec_eq ~eps:1e-12 "side normal" (Vec.scale (1. /. sqrt 5.) (v (-2.) 0. (-1.))) n;
+  (* parallel to a generator (a = 0 exactly): one root −c/(2b). From canonical (−1.5, 0, 0) along
+     (1,0,1)/√2 it meets x = −z at (−0.75, 0, 0.75): s = 0.75√2, over len √2/√5 → 0.75√5; the cap
+     at s = √2 → √5 (x = −0.5 inside); the base misses (x = −1, r² = 1 > 0.25) *)
+  hits_eq ~eps:1e-12 "parallel to a generator"
+    [ (0.75 *. sqrt 5., side); (sqrt 5., cap) ]
+    (all_hits s (v (-1.5) 0. (-1.)) (v 1. 0. 2.));
+  (* below the small end: the lower nappe is cut away *)
+  hits_eq "below" [] (all_hits s (v (-5.) 0. (-0.5)) (v 1. 0. 0.));
+  (* the pointed cone along its axis: the double root at the apex (z = 0 = dist, kept twice), the
+     cap at 6, the base point (r² = 0 ≤ dist² = 0) at 5; of the equal depths the last listed, the
+     base, is the nearest *)
+  let p = setup "cone { <0,0,0>, 0, <0,0,1>, 1 }" in
+  hits_eq "pointed" [ (5., side); (5., side); (6., cap); (5., base) ] (all_hits p (v 0. 0. (-5.)) (v 0. 0. 1.));
+  let t, part, _ = hit p (v 0. 0. (-5.)) (v 0. 0. 1.) in
+  float_eq "pointed: nearest" 5. t;
+  Alcotest.(check int) "pointed: the last of equal depths" base part
+
+(* The ring 1 ≤ r ≤ 2 in the plane z = 0, normal +z: the canonical transform is the identity. *)
+let d1 = "disc { <0,0,0>, <0,0,1>, 2, 1 }"
+
+let test_disc () =
+  let s = setup d1 in
+  let t, _, n = hit s (v 1.5 0. (-3.)) (v 0. 0. 1.) in
+  float_eq "front" 3. t;
+  vec_eq "normal as given" (v 0. 0. 1.) n;
+  let t, _, _ = hit s (v 1.5 0. 3.) (v 0. 0. (-1.)) in
+  float_eq "from behind" 3. t;
+  hits_eq "through the hole" [] (all_hits s (v 0. 0. (-3.)) (v 0. 0. 1.));
+  hits_eq "on the hole's rim (r² = 1 = hole²)" [ (3., 0) ] (all_hits s (v 1. 0. (-3.)) (v 0. 0. 1.));
+  hits_eq "on the outer rim (r² = 4)" [ (3., 0) ] (all_hits s (v 2. 0. (-3.)) (v 0. 0. 1.));
+  hits_eq "just outside" [] (all_hits s (v 2.000001 0. (-3.)) (v 0. 0. 1.));
+  hits_eq "parallel, in its plane" [] (all_hits s (v (-5.) 1.5 0.) (v 1. 0. 0.));
+  (* world depth at most 1e-6 is not a hit *)
+  hits_eq "within 1e-6" [] (all_hits s (v 1.5 0. (-5e-7)) (v 0. 0. 1.));
+  (* the normal follows every modifier: the plane x + y = 0 scaled by <2,1,1> is x/2 + y = 0 *)
+  let d = disc_of (fst (setup "disc { 0, <1,1,0>, 1 scale <2,1,1> }")) in
+  vec_eq ~eps:1e-12 "moved normal" (Vec.scale (1. /. sqrt 1.25) (v 0.5 1. 0.)) (v d.dnx d.dny d.dnz);
+  (* a disc without a hole: hole² = 0 *)
+  let d = disc_of (fst (setup "disc { 0, y, 3 }")) in
+  float_eq "no hole" 0. d.ir2;
+  float_eq "radius²" 9. d.or2
+
+let test_inside () =
+  (* closed: shrunk by EPSILON *)
+  let c, _ = setup c1 in
+  Alcotest.(check bool) "centre" true (inside c (v 0. 0. 1.));
+  Alcotest.(check bool) "on the side: out when closed" false (inside c (v 1. 0. 1.));
+  Alcotest.(check bool) "on the cap: out when closed" false (inside c (v 0. 0. 2.));
+  Alcotest.(check bool) "just inside the side" false (inside c (v 0.99999999996 0. 1.));
+  Alcotest.(check bool) "inside the shrunk side" true (inside c (v 0.9999999999 0. 1.));
+  (* open: grown by EPSILON, and still solid *)
+  let o, _ = setup "cylinder { <0,0,2>, <0,0,0>, 1 open }" in
+  Alcotest.(check bool) "open centre" true (inside o (v 0. 0. 1.));
+  Alcotest.(check bool) "open: on the side is in" true (inside o (v 1. 0. 1.));
+  Alcotest.(check bool) "open: a hair below the base is in" true (inside o (v 0. 0. (-1e-10)));
+  Alcotest.(check bool) "open: beyond the growth" false (inside o (v 0. 0. (-1e-9)));
+  (* inverse negates *)
+  let i, _ = setup "cylinder { <0,0,2>, <0,0,0>, 1 inverse }" in
+  Alcotest.(check bool) "inverse centre" false (inside i (v 0. 0. 1.));
+  Alcotest.(check bool) "inverse outside" true (inside i (v 5. 0. 1.));
+  (* the cone: radius (z + 1)/2 at world z *)
+  let k, _ = setup k1 in
+  Alcotest.(check bool) "cone axis" true (inside k (v 0. 0. 0.5));
+  Alcotest.(check bool) "cone within" true (inside k (v 0.74 0. 0.5));
+  Alcotest.(check bool) "cone beyond" false (inside k (v 0.76 0. 0.5));
+  Alcotest.(check bool) "below the small end" false (inside k (v 0. 0. (-0.1)));
+  (* the disc: the open half-space behind the normal, unbounded *)
+  let d, _ = setup d1 in
+  Alcotest.(check bool) "behind" true (inside d (v 0. 0. (-1.)));
+  Alcotest.(check bool) "far behind, off the disc" true (inside d (v 100. 100. (-1.)));
+  Alcotest.(check bool) "on the plane: out" false (inside d (v 1.5 0. 0.));
+  Alcotest.(check bool) "in front" false (inside d (v 0. 0. 1.));
+  let di, _ = setup "disc { <0,0,0>, <0,0,1>, 2 inverse }" in
+  Alcotest.(check bool) "inverse disc in front" true (inside di (v 0. 0. 1.))
+
+let test_camera_start () =
+  (* §6.4: a camera inside a glass cylinder starts inside it; behind a disc but outside the disc's
+     box it does not (POV-Ray asks the box first) *)
+  let scene cam = compile (v37 ^ Printf.sprintf "camera { location %s look_at <0,0,5> }\n" cam ^ "cylinder { <0,0,-3>, <0,0,3>, 2 }\ndisc { <0,0,4>, z, 1 }\n") in
+  Alcotest.(check (list int)) "inside the cylinder" [ 0 ] (scene "<0,0,0>").start_interiors;
+  Alcotest.(check (list int)) "outside both" [] (scene "<0,5,0>").start_interiors;
+  Alcotest.(check (list int)) "within the disc's box, behind it" [ 1 ] (scene "<0.5,0,3.9995>").start_interiors
+
+let test_errors () =
+  expect_scene_error "degenerate cylinder" "cylinder { y, y, 1 }" ~line:1 ~col:1 ~sub:"degenerate cylinder";
+  expect_scene_error "almost degenerate cylinder" "cylinder { 0, 1e-11*x, 1 }" ~line:1 ~col:1 ~sub:"degenerate cylinder";
+  expect_scene_error "degenerate cone" "cone { y, 1, y, 2 }" ~line:1 ~col:1 ~sub:"degenerate cone";
+  expect_scene_error "zero disc normal" "disc { 0, 0, 1 }" ~line:1 ~col:11 ~sub:"degenerate disc normal";
+  expect_scene_error "inverse on a sphere" "sphere { 0, 1 inverse }" ~line:1 ~col:15 ~sub:"not supported yet";
+  (* a cylinder barely longer than 1e-10 is accepted *)
+  ignore (scene "cylinder { 0, 1e-9*x, 1 }")
+
+let test_stats () =
+  let ((_, ctx) as s) = setup c1 in
+  ignore (hit s (v 0. 0. (-5.)) (v 0. 0. 1.));
+  ignore (hit s (v (-5.) 5. 1.) (v 1. 0. 0.));
+  Alcotest.(check int) "tests" 2 ctx.stats.cone_tests;
+  Alcotest.(check int) "hits" 1 ctx.stats.cone_hits;
+  let ((_, ctx) as s) = setup d1 in
+  ignore (hit s (v 1.5 0. (-3.)) (v 0. 0. 1.));
+  ignore (hit s (v 0. 0. (-3.)) (v 0. 0. 1.));
+  Alcotest.(check int) "disc tests" 2 ctx.stats.disc_tests;
+  Alcotest.(check int) "disc hits" 1 ctx.stats.disc_hits
+
+let tests =
+  [
+    Alcotest.test_case "cylinder set-up" `Quick test_cylinder_setup;
+    Alcotest.test_case "cylinder hits" `Quick test_cylinder_hits;
+    Alcotest.test_case "cylinder grazing rays" `Quick test_cylinder_grazing;
+    Alcotest.test_case "cone set-up" `Quick test_cone_setup;
+    Alcotest.test_case "cone hits" `Quick test_cone_hits;
+    Alcotest.test_case "disc" `Quick test_disc;
+    Alcotest.test_case "inside" `Quick test_inside;
+    Alcotest.test_case "camera's starting interiors" `Quick test_camera_start;
+    Alcotest.test_case "errors" `Quick test_errors;
+    Alcotest.test_case "statistics" `Quick test_stats;
+  ]
