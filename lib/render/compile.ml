@@ -24,6 +24,7 @@ let shape_of (s : Scene.shape) =
   | Box { lo; hi; trans } -> (
       let bx = { x0 = lo.x; y0 = lo.y; z0 = lo.z; x1 = hi.x; y1 = hi.y; z1 = hi.z } in
       match trans with None -> Some (Box bx) | Some btr -> Some (Box_trans { bx; btr }))
+  | Torus { major; minor; sturm; inverse; trans } -> Some (Torus { Torus.major; minor; sturm; inverted = inverse; tr = trans })
 
 (* Box::Inside: a closed box, its surface included *)
 let in_box b (p : Vec.t) = not (p.x < b.x0 || p.x > b.x1 || p.y < b.y0 || p.y > b.y1 || p.z < b.z0 || p.z > b.z1)
@@ -32,6 +33,7 @@ let inside stack shape (p : Vec.t) =
   match shape with
   | Box b -> in_box b p
   | Box_trans { bx; btr } -> in_box bx (Transform.inv_point btr p)
+  | Torus t -> Torus.inside t p
   | Sphere s ->
       let dx = p.x -. s.cx and dy = p.y -. s.cy and dz = p.z -. s.cz in
       (dx *. dx) +. (dy *. dy) +. (dz *. dz) < s.r2
@@ -68,6 +70,7 @@ let bounds = function
   | Mesh m -> if m.moved then Some (Transform.bounds m.tr (Mesh.bounds m.mesh)) else Some (Mesh.bounds m.mesh)
   | Box b -> Some [| b.x0; b.y0; b.z0; b.x1; b.y1; b.z1 |]
   | Box_trans { bx = b; btr } -> Some (Transform.bounds btr [| b.x0; b.y0; b.z0; b.x1; b.y1; b.z1 |])
+  | Torus t -> Some (Transform.bounds t.tr (Torus.box t))
 
 (* The largest coordinate magnitude of a shape: its box, or for a plane its point nearest the origin. *)
 let magnitude shape =
@@ -78,7 +81,7 @@ let magnitude shape =
   | None, Plane_trans { pl; ptr; _ } ->
       let q = Transform.point ptr (Vec.make (-.pl.dist *. pl.nx) (-.pl.dist *. pl.ny) (-.pl.dist *. pl.nz)) in
       max_abs [| q.x; q.y; q.z |]
-  | None, (Sphere _ | Ellipsoid _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _) -> 0.
+  | None, (Sphere _ | Ellipsoid _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Torus _) -> 0.
 
 (* POV-Ray's box of a bounded shape (Compute_BBox, then Make_BBox or Make_BBox_from_min_max, which
    round the lower corner and the lengths to single precision): [| llx; lly; llz; lx; ly; lz |].
@@ -110,6 +113,11 @@ let pov_box shape =
       if m.moved then mapped m.tr b else b
   | Box b -> of_min_max [| b.x0; b.y0; b.z0 |] [| b.x1; b.y1; b.z1 |]
   | Box_trans { bx = b; btr } -> mapped btr (of_min_max [| b.x0; b.y0; b.z0 |] [| b.x1; b.y1; b.z1 |])
+  | Torus t ->
+      (* Torus::Compute_BBox: Make_BBox of the torus-space box, then Recompute_BBox through its
+         Trans, which every torus has (§15.5, §15.8) *)
+      let b = Torus.box t in
+      mapped t.tr (of_min_max (Array.sub b 0 3) (Array.sub b 3 3))
 
 let group objs =
   let unbounded = List.filter (fun o -> bounds o.shape = None) objs in
@@ -124,7 +132,7 @@ let group objs =
     (fun i o ->
       match o.shape with
       | Sphere s -> spheres.(4 * i) <- s.cx; spheres.((4 * i) + 1) <- s.cy; spheres.((4 * i) + 2) <- s.cz; spheres.((4 * i) + 3) <- s.r2
-      | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ -> ())
+      | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Torus _ -> ())
     bounded;
   { unbounded = Array.of_list unbounded; bounded; bvh; spheres }
 
@@ -220,7 +228,7 @@ let scene (s : Scene.t) : Compiled.t =
            let face_surfs =
              match o.shape with
              | Mesh m -> Array.map (surface ~legacy ~ambient_light:s.ambient_light) m.textures
-             | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Box _ -> [||]
+             | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Box _ | Torus _ -> [||]
            in
            {
              id;

@@ -26,6 +26,7 @@ type shape =
   | Mesh of mesh_inst
   | Box of box  (** §15.1, in world space; the side hit is left where a mesh leaves its face *)
   | Box_trans of { bx : box; btr : Transform.t }  (** §15.1, §14.5 (a): [bx] mapped by [btr] *)
+  | Torus of Torus.t  (** §15.5, §14.5 (b): always through its transform *)
 
 (** Everything about a surface that does not depend on the hit point, derived once from a
     plain pigment and its finish (§3.2, §3.5, §5). *)

@@ -15,10 +15,11 @@ type ctx = {
   min_depth : float;
   robust : bool;
   shadow_cache : int array;
+  torus : Torus.work;
 }
 (** What a trace reads: the compiled scene, the worker's statistics, scratch space (the last
     hit's depth and mesh face, traversal stacks) and POV-Ray's shadow cache (§4: per light, the
-    opaque object that last blocked it), all private to one worker; and the mode's limits: the
+    opaque object that last blocked it) and room for a torus's quartic, all private to one worker; and the mode's limits: the
     depths shapes accept, the nearest depth any ray accepts (1e-4, §2.1), and whether secondary
     rays leave from points lifted off the surface (robust mode). *)
 
@@ -33,6 +34,12 @@ val hit_shape : ctx -> Compiled.shape -> Vec.t -> Vec.t -> float -> float
     from [o] meets [shape] within the shape's own limits and at least [lo] (§2, §14.5), or
     infinity; for a mesh the face, for a box the side (1–6: X−, X+, Y−, Y+, Z−, Z+), is left in
     [ctx.sub.(0)]. *)
+
+val torus_hits : ctx -> Torus.t -> Vec.t -> Vec.t -> float array -> int
+(** [torus_hits ctx t o d out] writes every depth at which the ray from [o] along the unit [d]
+    crosses the torus [t] within its limits (beyond 1e-4 in world units, below 1e7; §15.5) into
+    [out] (room for 4), in POV-Ray's order, and returns their number; the torus statistics are
+    counted. For CSG, which needs every crossing. *)
 
 val normal : Compiled.obj -> int -> Vec.t -> Vec.t
 (** [normal obj face p] is the unit normal of [obj] at its surface point [p] ([face]: the mesh face

@@ -70,6 +70,10 @@ let shape = function
   | Smooth_triangle { p1; n1; p2; n2; p3; n3 } ->
       Printf.sprintf "smooth_triangle { %s, %s, %s, %s, %s, %s" (vec p1) (vec n1) (vec p2) (vec n2) (vec p3) (vec n3)
   | Box { lo; hi; trans = t } -> Printf.sprintf "box { %s, %s%s" (vec lo) (vec hi) (trans t)
+  | Torus { major; minor; sturm; inverse; trans = t } ->
+      Printf.sprintf "torus { %s, %s%s%s%s" (num major) (num minor) (if sturm then " sturm" else "")
+        (if inverse then " inverse" else "")
+        (trans (if Transform.is_identity t then None else Some t))
   | Mesh { mesh; trans = t; textures } ->
       let b = Mesh.bounds mesh in
       Printf.sprintf "mesh { // %d triangles within <%s, %s, %s> … <%s, %s, %s>%s%s" mesh.faces (num b.(0)) (num b.(1))

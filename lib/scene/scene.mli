@@ -56,6 +56,10 @@ type shape =
   | Box of { lo : Vec.t; hi : Vec.t; trans : Transform.t option }
       (** §15.1: the corners sorted per axis ([lo] ≤ [hi]); with [trans], the object-space box
           mapped by it *)
+  | Torus of { major : float; minor : float; sturm : bool; inverse : bool; trans : Transform.t }
+      (** §15.5: R and r as written, the tube's core circle in the XZ plane, mapped by [trans]
+          (a torus always has one: every modifier composes into it, §14.4); [inverse] negates
+          its inside *)
 
 (** A finished object: textured, with an interior (§2.7). *)
 type obj = {

@@ -21,6 +21,18 @@ and move_member op = function
   | V.Member_obj o -> V.Member_obj (move_obj op o)
   | V.Member_light l -> V.Member_light (move_light op l)
 
+(* §15.5: a torus takes [sturm] (solve with Sturm sequences) and [inverse] (inside out) among
+   its modifiers, wherever they stand *)
+let is_torus (o : V.obj) = match o.shape with Prim (Torus _) -> true | Prim _ | Union _ -> false
+
+let torus_flag kw (o : V.obj) =
+  match o.shape with
+  | Prim (Torus t) ->
+      (* Torus::Invert toggles the flag *)
+      let sturm, inverse = if kw = "sturm" then (true, t.inverse) else (t.sturm, not t.inverse) in
+      { o with shape = Prim (Torus { t with sturm; inverse }) }
+  | Prim _ | Union _ -> o
+
 let parse_object_mods st (o : V.obj) what : V.obj =
   let tex o = match o.V.texture with Some t -> t | None -> st.default_texture in
   let rec loop (o : V.obj) =
@@ -40,6 +52,7 @@ let parse_object_mods st (o : V.obj) what : V.obj =
     | Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") -> loop (move_obj (parse_op st) o)
     | Ident "no_shadow" -> advance st; loop { o with no_shadow = true }
     | Ident "hollow" -> advance st; ignore (parse_bool_opt st); loop o
+    | Ident ("sturm" | "inverse" as kw) when is_torus o -> advance st; loop (torus_flag kw o)
     | Ident s when is_unsupported s -> not_supported loc (Printf.sprintf "'%s'" s)
     | _ -> unexpected st (Printf.sprintf "an object modifier or '}' closing '%s'" what)
   in
@@ -51,7 +64,7 @@ let new_obj shape loc = new_obj_of (V.Prim shape) loc
 
 (* Objects povml does not render yet: inside a union they are reported as "not supported yet". *)
 let unsupported_objects =
-  [ "cylinder"; "cone"; "disc"; "torus"; "polygon"; "prism"; "lathe"; "sor"; "blob"; "text"; "height_field";
+  [ "cylinder"; "cone"; "disc"; "polygon"; "prism"; "lathe"; "sor"; "blob"; "text"; "height_field";
     "isosurface"; "superellipsoid"; "julia_fractal"; "parametric"; "bicubic_patch"; "ovus"; "quadric"; "cubic";
     "quartic"; "poly"; "intersection"; "difference"; "merge"; "sphere_sweep"; "lemon" ]
 
@@ -293,6 +306,15 @@ let rec parse_object st : V.obj =
       let lo = Vec.make (lo_of a.x b.x) (lo_of a.y b.y) (lo_of a.z b.z) in
       let hi = Vec.make (hi_of a.x b.x) (hi_of a.y b.y) (hi_of a.z b.z) in
       parse_object_mods st (new_obj (Box { lo; hi; trans = None }) loc) "box"
+  | Ident "torus" ->
+      (* §15.5: torus { R, r } (the comma optional), then its modifiers *)
+      advance st;
+      open_block st "torus";
+      let major = parse_float st in
+      ignore (accept st Comma);
+      let minor = parse_float st in
+      let shape = Scene.Torus { major; minor; sturm = false; inverse = false; trans = Transform.identity } in
+      parse_object_mods st (new_obj shape loc) "torus"
   | Ident "plane" ->
       advance st;
       open_block st "plane";
