@@ -24,6 +24,8 @@ let fidelity =
     "scenes/fidelity/box_shadows.pov";
     "scenes/fidelity/box_rotated_mirror.pov";
     "scenes/fidelity/box_glass.pov";
+    "scenes/fidelity/torus_shadows.pov";
+    "scenes/fidelity/torus_glass.pov";
     "scenes/course/10_everything_together.pov";
   ]
 
