@@ -19,6 +19,8 @@ let () =
       ("Transform", Test_transform.tests);
       ("Compile", Test_compile.tests);
       ("Box", Test_box.tests);
+      ("Polysolv", Test_polysolv.tests);
+      ("Torus", Test_torus.tests);
       ("Trace", Test_trace.tests);
       ("Render", Test_render.tests);
       ("Jitter", Test_jitter.tests);
