@@ -54,7 +54,10 @@ let cubic x i y j =
   let a0 = x.(i) in
   if a0 = 0. then quadratic x (i + 1) y j
   else begin
-    let a1, a2, a3 = if a0 <> 1. then (x.(i + 1) /. a0, x.(i + 2) /. a0, x.(i + 3) /. a0) else (x.(i + 1), x.(i + 2), x.(i + 3)) in
+    (* divided only when the leading coefficient is not already 1 (written per coefficient: no tuple) *)
+    let a1 = if a0 <> 1. then x.(i + 1) /. a0 else x.(i + 1) in
+    let a2 = if a0 <> 1. then x.(i + 2) /. a0 else x.(i + 2) in
+    let a3 = if a0 <> 1. then x.(i + 3) /. a0 else x.(i + 3) in
     let aa = a1 *. a1 in
     let q = (aa -. (3. *. a2)) /. 9. in
     let r = ((a1 *. (aa -. (4.5 *. a2))) +. (13.5 *. a3)) /. 27. in
@@ -78,15 +81,44 @@ let cubic x i y j =
     end
   end
 
+(* The two quadratic factors of Ferrari's method: their roots from y.(j), their number returned. A
+   factor whose discriminant is exactly 0 gives its double root with −q2 where the others add q2:
+   POV-Ray's slip, kept (§15.6). *)
+let[@inline] factors y j c1 z d1 d2 =
+  let q1 = d1 *. d1 and q2 = -0.25 *. c1 in
+  let n = ref 0 in
+  let p = q1 -. (4. *. (z -. d2)) in
+  if p = 0. then begin
+    y.(j) <- (-0.5 *. d1) -. q2;
+    n := 1
+  end
+  else if p > 0. then begin
+    let p = sqrt p in
+    y.(j) <- (-0.5 *. (d1 +. p)) +. q2;
+    y.(j + 1) <- (-0.5 *. (d1 -. p)) +. q2;
+    n := 2
+  end;
+  let p = q1 -. (4. *. (z +. d2)) in
+  if p = 0. then begin
+    y.(j + !n) <- (0.5 *. d1) -. q2;
+    n := !n + 1
+  end
+  else if p > 0. then begin
+    let p = sqrt p in
+    y.(j + !n) <- (0.5 *. (d1 +. p)) +. q2;
+    y.(j + !n + 1) <- (0.5 *. (d1 -. p)) +. q2;
+    n := !n + 2
+  end;
+  !n
+
 (* solve_quartic (the default build's, after Ferrari): the resolvent cubic's first root z splits
-   the depressed quartic into two quadratics. A factor whose discriminant is exactly 0 gives its
-   double root with −q2 where the others add q2: POV-Ray's slip, kept (§15.6). *)
+   the depressed quartic into two quadratics ([factors]). *)
 let quartic w x i y j =
   let c0 = x.(i) in
-  let c1, c2, c3, c4 =
-    if c0 <> 1. then (x.(i + 1) /. c0, x.(i + 2) /. c0, x.(i + 3) /. c0, x.(i + 4) /. c0)
-    else (x.(i + 1), x.(i + 2), x.(i + 3), x.(i + 4))
-  in
+  let c1 = if c0 <> 1. then x.(i + 1) /. c0 else x.(i + 1) in
+  let c2 = if c0 <> 1. then x.(i + 2) /. c0 else x.(i + 2) in
+  let c3 = if c0 <> 1. then x.(i + 3) /. c0 else x.(i + 3) in
+  let c4 = if c0 <> 1. then x.(i + 4) /. c0 else x.(i + 4) in
   let c12 = c1 *. c1 in
   let p = (-0.375 *. c12) +. c2 in
   let q = (0.125 *. c12 *. c1) -. (0.5 *. c1 *. c2) +. c3 in
@@ -102,37 +134,12 @@ let quartic w x i y j =
     let d1 = (2. *. z) -. p in
     let d1 = if d1 < 0. && d1 > -.small_enough then 0. else d1 in
     if d1 < 0. then 0
-    else begin
-      let ok, d1, d2 =
-        if d1 < small_enough then
-          let d2 = (z *. z) -. r in
-          if d2 < 0. then (false, d1, d2) else (true, d1, sqrt d2)
-        else
-          let d1 = sqrt d1 in
-          (true, d1, 0.5 *. q /. d1)
-      in
-      if not ok then 0
-      else begin
-        let q1 = d1 *. d1 and q2 = -0.25 *. c1 in
-        let n = ref 0 in
-        let push v = y.(j + !n) <- v; incr n in
-        let p = q1 -. (4. *. (z -. d2)) in
-        if p = 0. then push ((-0.5 *. d1) -. q2)
-        else if p > 0. then begin
-          let p = sqrt p in
-          push ((-0.5 *. (d1 +. p)) +. q2);
-          push ((-0.5 *. (d1 -. p)) +. q2)
-        end;
-        let p = q1 -. (4. *. (z +. d2)) in
-        if p = 0. then push ((0.5 *. d1) -. q2)
-        else if p > 0. then begin
-          let p = sqrt p in
-          push ((0.5 *. (d1 +. p)) +. q2);
-          push ((0.5 *. (d1 -. p)) +. q2)
-        end;
-        !n
-      end
-    end
+    else if d1 < small_enough then
+      let d2 = (z *. z) -. r in
+      if d2 < 0. then 0 else factors y j c1 z d1 (sqrt d2)
+    else
+      let d1 = sqrt d1 in
+      factors y j c1 z d1 (0.5 *. q /. d1)
   end
 
 (* difficult_coeffs of POV 1.0: "biggest" keeps the sign of the coefficient it came from *)
@@ -218,24 +225,34 @@ let buildsturm w ord =
   s.(5 * !sp) <- -.s.(5 * !sp);
   !sp
 
-(* sign changes along a list of values, a 0 counting as a change from it *)
-let changes np value =
+(* Sign changes along the sequence's values, a 0 counting as a change from it (numchanges, and
+   visible_roots at 0 and +∞); written as loops without closures: nothing is allocated. *)
+let numchanges w np a =
   let n = ref 0 in
-  let lf = ref (value 0) in
+  let lf = ref (seq_eval w 0 a) in
   for k = 1 to np do
-    let f = value k in
+    let f = seq_eval w k a in
     if !lf = 0. || !lf *. f < 0. then incr n;
     lf := f
   done;
   !n
 
-let numchanges w np a = changes np (fun k -> seq_eval w k a)
+(* the changes among the coefficients at [at k] of each member: its constant term (at 0) or its
+   leading one (at +∞) *)
+let coefficient_changes w np ~leading =
+  let s = w.seq in
+  let coef k = if leading then s.((5 * k) + w.ord.(k)) else s.(5 * k) in
+  let n = ref 0 in
+  let lf = ref (coef 0) in
+  for k = 1 to np do
+    let f = coef k in
+    if !lf = 0. || !lf *. f < 0. then incr n;
+    lf := f
+  done;
+  !n
 
-(* visible_roots: sign changes at +∞ (leading coefficients) minus … at 0 (constant terms) *)
-let visible_roots w np =
-  let atpos = changes np (fun k -> w.seq.((5 * k) + w.ord.(k))) in
-  let atzero = changes np (fun k -> w.seq.(5 * k)) in
-  atzero - atpos
+(* visible_roots: sign changes at 0 minus those at +∞ *)
+let visible_roots w np = coefficient_changes w np ~leading:false - coefficient_changes w np ~leading:true
 
 (* regula_falsa on polynomial 0 of the sequence, in [a, b]: Some root, or None when the ends have
    the same sign or 50 steps were not enough *)

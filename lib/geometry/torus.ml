@@ -38,7 +38,7 @@ let[@inline] wall px py pz vy a b rr h1 h2 =
   let d = sqrt d in
   on_wall py vy ((-.b +. d) /. a) h1 h2 || on_wall py vy ((-.b -. d) /. a) h1 h2
 
-let thick_cylinder_f px py pz vx vy vz h1 h2 r1 r2 =
+let[@inline] thick_cylinder_f px py pz vx vy vz h1 h2 r1 r2 =
   let parallel = Float.abs vy < epsilon in
   if parallel && (py < h1 || py > h2) then false
   else if (not parallel) && (on_cap px py pz vx vy vz h2 r1 r2 || on_cap px py pz vx vy vz h1 r1 r2) then true
