@@ -119,6 +119,14 @@ let pov_box shape =
       let b = Torus.box t in
       mapped t.tr (of_min_max (Array.sub b 0 3) (Array.sub b 3 3))
 
+(* Inside_BBox: whether [p] is within POV-Ray's box of an object (lower corner and lengths, as
+   stored); a plane's box is unbounded. POV-Ray asks it before Inside when it collects the
+   interiors around the camera (§6.4): an inverted shape's inside reaches beyond its box, but the
+   camera counts as inside it only within the box. *)
+let in_pov_box (b : float array) (p : Vec.t) =
+  Array.length b = 0
+  || not (p.x < b.(0) || p.y < b.(1) || p.z < b.(2) || p.x > b.(0) +. b.(3) || p.y > b.(1) +. b.(4) || p.z > b.(2) +. b.(5))
+
 let group objs =
   let unbounded = List.filter (fun o -> bounds o.shape = None) objs in
   let bounded = List.filter (fun o -> bounds o.shape <> None) objs in
@@ -275,7 +283,9 @@ let scene (s : Scene.t) : Compiled.t =
      is kept with the last entered first. *)
   let all = group (Array.to_list objects) in
   let start_interiors =
-    Array.fold_left (fun acc o -> if inside stack o.shape s.camera.location then o.id :: acc else acc) [] objects
+    Array.fold_left
+      (fun acc o -> if in_pov_box o.pbox s.camera.location && inside stack o.shape s.camera.location then o.id :: acc else acc)
+      [] objects
   in
   {
     objects;

@@ -178,6 +178,15 @@ let test_inside () =
   let obj, _ = setup "torus { 1, 0.25 scale 2 translate x }" in
   Alcotest.(check bool) "transformed: core" true (Compile.inside [||] obj.shape (v 3. 0. 0.))
 
+let test_camera_interiors () =
+  (* §6.4: the camera is inside an object only within its bounding box: in the hole of an inverse
+     torus it is, far outside the box it is not, though Inside holds there too *)
+  let start text = (compile (v37 ^ "camera { location <0, 0.4, 0> look_at z }\n" ^ text)).start_interiors in
+  Alcotest.(check (list int)) "in the hole of an inverse torus" [ 0 ] (start "torus { 4, 1 inverse }");
+  Alcotest.(check (list int)) "in the hole of a plain torus" [] (start "torus { 4, 1 }");
+  Alcotest.(check (list int)) "outside the box of an inverse torus" [] (start "torus { 0.5, 0.2 inverse translate 3*z }");
+  Alcotest.(check (list int)) "in the tube" [ 0 ] (start "torus { 0.4, 0.1 rotate x*90 }")
+
 let test_box_and_stats () =
   let obj, ctx = setup ring in
   (* Make_BBox of the torus-space box (single precision), through the identity Trans *)
@@ -203,5 +212,6 @@ let tests =
     Alcotest.test_case "from inside the tube" `Quick test_inside_tube;
     Alcotest.test_case "transformed" `Quick test_transformed;
     Alcotest.test_case "inside" `Quick test_inside;
+    Alcotest.test_case "interiors around the camera" `Quick test_camera_interiors;
     Alcotest.test_case "bounding box and statistics" `Quick test_box_and_stats;
   ]
