@@ -160,6 +160,24 @@ let test_transformed () =
   let d, n = hit t (v 0.8 5. 0.) (v 0. (-1.) 0.) in
   Alcotest.(check bool) "mirrored: hit from above" true (d < infinity);
   Alcotest.(check bool) "mirrored: normal up" true (n.y > 0.);
+  (* a tiny torus scaled up: R = 0.001, r = 0.0001 in torus space. From (−5, 0, 0) along +X the
+     origin is moved to x = −(R + 2r) = −0.0012, so k1 = 0.0012² − R² − r² = 4.3e-7, k2 = −0.0012,
+     and the constant term k1² − 4R²r² ≈ 1.45e-13 is more than 1e12 times smaller than 1:
+     difficult() hands the quartic to Sturm. The ring's crossings are at 3.9, 4.1, 5.9 and 6.1,
+     but the Sturm sequence of so small a polynomial loses its remainders' coefficients below
+     1e-10, and POV-Ray's solver returns 3 wrong roots: the nearest hit lies beyond 4.1 (the
+     scene torus_tiny shows the same pixels as POV-Ray, and 540 differ if difficult() is off) *)
+  let t = setup "torus { 0.001, 0.0001 scale 1000 }" in
+  let k1 = (0.0012 *. 0.0012) -. (0.001 *. 0.001) -. (0.0001 *. 0.0001) and k2 = -0.0012 in
+  let c = [| 1.; 4. *. k2; 2. *. (k1 +. (2. *. k2 *. k2)); 4. *. k2 *. k1; (k1 *. k1) -. (4. *. 1e-6 *. 1e-8) |] in
+  Alcotest.(check bool) "tiny torus: difficult" true (Polysolv.difficult c 0);
+  let depths = all t (v (-5.) 0. 0.) (v 1. 0. 0.) in
+  Alcotest.(check int) "tiny torus: 3 roots" 3 (List.length depths);
+  Alcotest.(check bool) "tiny torus: 3.9 and 4.1 lost" true (List.hd depths > 4.1);
+  (* the closed form, asked directly, finds the four (in shifted torus units: 1e-4 … 2.3e-3) *)
+  let r = Array.make 4 nan in
+  Alcotest.(check int) "tiny torus: the quartic finds 4" 4 (Polysolv.quartic (Polysolv.create ()) c 0 r 0);
+  List.iter2 (fun e a -> float_eq ~eps:1e-12 "tiny quartic root" e a) [ 0.0001; 0.0003; 0.0021; 0.0023 ] (List.sort compare (Array.to_list r));
   (* from 1000 units: the closer shift keeps the roots exact to 1e-9 *)
   let t = setup ring in
   check_depths ~eps:1e-9 "from far away" [ 999.25; 1000.75 ] (all t (v 1. 0. (-1000.)) (v 0. 0. 1.))
