@@ -77,6 +77,12 @@ let test_all_depths () =
   check_depths "along X, sturm" [ 3.75; 4.25; 5.75; 6.25 ] (all (setup "torus { 1, 0.25 sturm }") (v (-5.) 0. 0.) (v 1. 0. 0.));
   (* x = 1 along Z: (√(1 + z²) − 1)² ≤ 1/16 for |z| ≤ 0.75 *)
   check_depths "across the tube along Z" [ 4.25; 5.75 ] (all t (v 1. 0. (-5.)) (v 0. 0. 1.));
+  (* the geometry module's own entry points agree (for CSG, without statistics) *)
+  let obj, _ = t in
+  let w = Torus.create_work () and out = Array.make 4 nan in
+  let n = Torus.intersections w (tor obj) ~near:1e-4 (v (-5.) 0. 0.) (v 1. 0. 0.) out in
+  check_depths "Torus.intersections" [ 3.75; 4.25; 5.75; 6.25 ] (List.sort compare (Array.to_list (Array.sub out 0 n)));
+  float_eq "Torus.nearest beyond 4" 4.25 (Torus.nearest w (tor obj) ~near:1e-4 (v (-5.) 0. 0.) (v 1. 0. 0.) 4.);
   (* the nearest is the first *)
   let d, n = hit t (v (-5.) 0. 0.) (v 1. 0. 0.) in
   float_eq "nearest" 3.75 d;
@@ -84,6 +90,19 @@ let test_all_depths () =
   let d, n = hit ~lo:4. t (v (-5.) 0. 0.) (v 1. 0. 0.) in
   float_eq "nearest beyond lo" 4.25 d;
   vec_eq "inner wall's normal points to the axis" (v 1. 0. 0.) n
+
+let test_thick_cylinder () =
+  (* the annulus 0.75 ≤ √(x² + z²) ≤ 1.25, |y| ≤ 0.25 of the ring, squared radii 0.5625 and 1.5625 *)
+  let tc p d = Torus.thick_cylinder p (Vec.normalize d) (-0.25) 0.25 0.5625 1.5625 in
+  Alcotest.(check bool) "down onto the top cap" true (tc (v 1. 5. 0.) (v 0. (-1.) 0.));
+  Alcotest.(check bool) "down the hole" false (tc (v 0. 5. 0.) (v 0. (-1.) 0.));
+  Alcotest.(check bool) "down past the outside" false (tc (v 1.3 5. 0.) (v 0. (-1.) 0.));
+  Alcotest.(check bool) "level, through the walls" true (tc (v (-5.) 0. 0.) (v 1. 0. 0.));
+  Alcotest.(check bool) "level, above the slab" false (tc (v (-5.) 0.3 0.) (v 1. 0. 0.));
+  Alcotest.(check bool) "level, on the top plane (closed)" true (tc (v (-5.) 0.25 0.) (v 1. 0. 0.));
+  Alcotest.(check bool) "away from it" false (tc (v (-5.) 0. 0.) (v (-1.) 0. 0.));
+  Alcotest.(check bool) "from inside the hole, outwards" true (tc (v 0. 0. 0.) (v 1. 0. 0.));
+  Alcotest.(check bool) "from inside the slab material, upwards" true (tc (v 1. 0. 0.) (v 0. 1. 0.))
 
 let test_hole_and_axis () =
   let obj, ctx = setup ring in
@@ -225,6 +244,7 @@ let tests =
   [
     Alcotest.test_case "parse and place" `Quick test_parse;
     Alcotest.test_case "every depth" `Quick test_all_depths;
+    Alcotest.test_case "thick-cylinder pre-test" `Quick test_thick_cylinder;
     Alcotest.test_case "hole and axis" `Quick test_hole_and_axis;
     Alcotest.test_case "grazing rays" `Quick test_grazing;
     Alcotest.test_case "from inside the tube" `Quick test_inside_tube;
