@@ -81,7 +81,13 @@ let print_stats (r : Pipeline.result) (o : Render.options) =
   if s.triangle_tests > 0 then Printf.eprintf "Triangle                   %11d     %11d  %10.2f\n" s.triangle_tests s.triangle_hits (pct s.triangle_hits s.triangle_tests);
   if s.mesh_tests > 0 then Printf.eprintf "Mesh                       %11d     %11d  %10.2f\n" s.mesh_tests s.mesh_hits (pct s.mesh_hits s.mesh_tests);
   if s.sphere_tests > 0 then Printf.eprintf "Sphere                     %11d     %11d  %10.2f\n" s.sphere_tests s.sphere_hits (pct s.sphere_hits s.sphere_tests);
+  if s.torus_tests > 0 then begin
+    Printf.eprintf "Torus                      %11d     %11d  %10.2f\n" s.torus_tests s.torus_hits (pct s.torus_hits s.torus_tests);
+    Printf.eprintf "Torus Bound                %11d     %11d  %10.2f\n" s.torus_tests s.torus_bound_hits (pct s.torus_bound_hits s.torus_tests)
+  end;
   Printf.eprintf "%s\n" line;
+  if s.roots_tested > 0 then
+    Printf.eprintf "Roots tested:%22d   eliminated:%21d\n" s.roots_tested s.roots_eliminated;
   Printf.eprintf "Camera Rays:               %11d\n" s.camera_rays;
   Printf.eprintf "Shadow Ray Tests:          %11d\n" s.shadow_rays;
   Printf.eprintf "Reflected Rays:            %11d\n" s.reflected_rays;

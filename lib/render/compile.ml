@@ -36,6 +36,7 @@ let shape_of (s : Scene.shape) =
       if finite trans then
         Some (Disc { dtr = trans; dnx = normal.x; dny = normal.y; dnz = normal.z; or2 = radius *. radius; ir2 = hole *. hole; dinverted = inverted })
       else None
+  | Torus { major; minor; sturm; inverse; trans } -> Some (Torus { Torus.major; minor; sturm; inverted = inverse; tr = trans })
 
 (* Box::Inside: a closed box, its surface included *)
 let in_box b (p : Vec.t) = not (p.x < b.x0 || p.x > b.x1 || p.y < b.y0 || p.y > b.y1 || p.z < b.z0 || p.z > b.z1)
@@ -63,6 +64,7 @@ let inside stack shape (p : Vec.t) =
   | Disc d -> in_disc d p
   | Box b -> in_box b p
   | Box_trans { bx; btr } -> in_box bx (Transform.inv_point btr p)
+  | Torus t -> Torus.inside t p
   | Sphere s ->
       let dx = p.x -. s.cx and dy = p.y -. s.cy and dz = p.z -. s.cz in
       (dx *. dx) +. (dy *. dy) +. (dz *. dz) < s.r2
@@ -106,6 +108,7 @@ let bounds = function
   | Disc d ->
       let r = sqrt d.or2 in
       Some (Transform.bounds d.dtr [| -.r; -.r; -.small_tolerance; r; r; small_tolerance |])
+  | Torus t -> Some (Transform.bounds t.tr (Torus.box t))
 
 (* The largest coordinate magnitude of a shape: its box, or for a plane its point nearest the origin. *)
 let magnitude shape =
@@ -116,7 +119,7 @@ let magnitude shape =
   | None, Plane_trans { pl; ptr; _ } ->
       let q = Transform.point ptr (Vec.make (-.pl.dist *. pl.nx) (-.pl.dist *. pl.ny) (-.pl.dist *. pl.nz)) in
       max_abs [| q.x; q.y; q.z |]
-  | None, (Sphere _ | Ellipsoid _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _) -> 0.
+  | None, (Sphere _ | Ellipsoid _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _) -> 0.
 
 (* POV-Ray's box of a bounded shape (Compute_BBox, then Make_BBox or Make_BBox_from_min_max, which
    round the lower corner and the lengths to single precision): [| llx; lly; llz; lx; ly; lz |].
@@ -156,6 +159,12 @@ let pov_box shape =
       let r = sqrt d.or2 in
       mapped d.dtr [| f32 (-.r); f32 (-.r); f32 (-.small_tolerance); f32 (2. *. r); f32 (2. *. r); f32 (2. *. small_tolerance) |]
 
+  | Torus t ->
+      (* Torus::Compute_BBox: Make_BBox of the torus-space box, then Recompute_BBox through its
+         Trans, which every torus has (§15.5, §15.8) *)
+      let b = Torus.box t in
+      mapped t.tr (of_min_max (Array.sub b 0 3) (Array.sub b 3 3))
+
 (* Inside_BBox: whether [p] is in POV-Ray's box [b] of an object (faces included); an unbounded
    object's ([||]) holds every point. POV-Ray asks it before the object's own inside test when it
    fills the camera's interior list (§6.4), so a camera behind a disc is inside the disc's
@@ -183,7 +192,7 @@ let group objs =
     (fun i o ->
       match o.shape with
       | Sphere s -> spheres.(4 * i) <- s.cx; spheres.((4 * i) + 1) <- s.cy; spheres.((4 * i) + 2) <- s.cz; spheres.((4 * i) + 3) <- s.r2
-      | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ -> ())
+      | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ -> ())
     bounded;
   { unbounded = Array.of_list unbounded; bounded; bvh; spheres }
 
@@ -279,7 +288,7 @@ let scene (s : Scene.t) : Compiled.t =
            let face_surfs =
              match o.shape with
              | Mesh m -> Array.map (surface ~legacy ~ambient_light:s.ambient_light) m.textures
-             | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Box _ | Cone _ | Disc _ -> [||]
+             | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Box _ | Cone _ | Disc _ | Torus _ -> [||]
            in
            {
              id;

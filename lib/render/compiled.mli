@@ -50,6 +50,7 @@ type shape =
       (** §15.2, §15.3, §14.5 (b); the part hit is left where a mesh leaves its face: 1 the base (small
           end, z = dist), 2 the cap (z = 1), 3 the side *)
   | Disc of disc  (** §15.4, §14.5 (b) *)
+  | Torus of Torus.t  (** §15.5, §14.5 (b): always through its transform *)
 
 (** Everything about a surface that does not depend on the hit point, derived once from a
     plain pigment and its finish (§3.2, §3.5, §5). *)

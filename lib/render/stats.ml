@@ -17,6 +17,11 @@ type t = {
   mutable cone_hits : int;
   mutable disc_tests : int;
   mutable disc_hits : int;
+  mutable torus_tests : int;
+  mutable torus_hits : int;
+  mutable torus_bound_hits : int;
+  mutable roots_tested : int;
+  mutable roots_eliminated : int;
   mutable max_level : int;
   mutable samples : int;
 }
@@ -24,7 +29,8 @@ type t = {
 let create () =
   {
     camera_rays = 0; reflected_rays = 0; refracted_rays = 0; shadow_rays = 0; sphere_tests = 0;
-    sphere_hits = 0; plane_tests = 0; plane_hits = 0; triangle_tests = 0; triangle_hits = 0; mesh_tests = 0; mesh_hits = 0; box_tests = 0; box_hits = 0; cone_tests = 0; cone_hits = 0; disc_tests = 0; disc_hits = 0; max_level = 0; samples = 0;
+    sphere_hits = 0; plane_tests = 0; plane_hits = 0; triangle_tests = 0; triangle_hits = 0; mesh_tests = 0; mesh_hits = 0; box_tests = 0; box_hits = 0; cone_tests = 0; cone_hits = 0; disc_tests = 0; disc_hits = 0;
+    torus_tests = 0; torus_hits = 0; torus_bound_hits = 0; roots_tested = 0; roots_eliminated = 0; max_level = 0; samples = 0;
   }
 
 let merge a b =
@@ -47,6 +53,11 @@ let merge a b =
     cone_hits = a.cone_hits + b.cone_hits;
     disc_tests = a.disc_tests + b.disc_tests;
     disc_hits = a.disc_hits + b.disc_hits;
+    torus_tests = a.torus_tests + b.torus_tests;
+    torus_hits = a.torus_hits + b.torus_hits;
+    torus_bound_hits = a.torus_bound_hits + b.torus_bound_hits;
+    roots_tested = a.roots_tested + b.roots_tested;
+    roots_eliminated = a.roots_eliminated + b.roots_eliminated;
     max_level = max a.max_level b.max_level;
     samples = a.samples + b.samples;
   }

@@ -19,6 +19,11 @@ type t = {
   mutable cone_hits : int;
   mutable disc_tests : int;
   mutable disc_hits : int;
+  mutable torus_tests : int;
+  mutable torus_hits : int;  (** calls that found at least one root, whatever its depth (§15.5) *)
+  mutable torus_bound_hits : int;  (** calls that passed the thick-cylinder pre-test *)
+  mutable roots_tested : int;  (** quartics solved (POV-Ray's "Roots tested") *)
+  mutable roots_eliminated : int;  (** of which a root at 0 was dropped (§15.6) *)
   mutable max_level : int;  (** deepest trace level reached *)
   mutable samples : int;  (** antialiasing samples beyond the first per pixel *)
 }

@@ -26,6 +26,7 @@ type ctx = {
   robust : bool;  (* secondary rays leave from points lifted off the surface *)
   shadow_cache : int array;  (* §4: per light, the opaque object that last blocked it, or −1 *)
   hits : float array;  (* scratch: every hit of one cylinder, cone or disc, as (depth, part) pairs *)
+  torus : Torus.work;  (* room for a torus's quartic and its roots *)
 }
 
 (* POV-Ray keeps two cache slots per light: one for the shadow tests made while shading a hit at
@@ -47,6 +48,7 @@ let make_ctx ?(robust = false) scene stats =
     robust;
     shadow_cache = Array.make slots (-1);
     hits = Array.make max_hits 0.;
+    torus = Torus.create_work ();
   }
 let black = { r = 0.; g = 0.; b = 0.; tr = 0. }
 
@@ -353,6 +355,47 @@ let nearest_listed ctx n lo =
   if !best < infinity then ctx.sub.(0) <- !part;
   !best
 
+(* §15.5: one torus intersection, counted as POV-Ray counts it ("Torus", "Torus Bound", "Roots
+   tested … eliminated"); the raw depths are left in the torus work room. *)
+let torus_solve ctx (t : Torus.t) (o : Vec.t) (d : Vec.t) =
+  let stats = ctx.stats in
+  stats.torus_tests <- stats.torus_tests + 1;
+  let n = Torus.solve ctx.torus t o d in
+  if n >= 0 then begin
+    stats.torus_bound_hits <- stats.torus_bound_hits + 1;
+    stats.roots_tested <- stats.roots_tested + 1;
+    if Torus.eliminated ctx.torus then stats.roots_eliminated <- stats.roots_eliminated + 1;
+    if n > 0 then stats.torus_hits <- stats.torus_hits + 1
+  end;
+  n
+
+(* the torus's own depth limit, 1e-4 in world units (§15.5); the robust mode takes every depth *)
+let torus_near ctx = if ctx.robust then 0. else Torus.depth_tolerance
+
+let torus_hits ctx t o d out =
+  let n = torus_solve ctx t o d in
+  let near = torus_near ctx and ds = Torus.depths ctx.torus in
+  let k = ref 0 in
+  for i = 0 to n - 1 do
+    let x = ds.(i) in
+    if x > near && x < 1e7 then begin
+      out.(!k) <- x;
+      incr k
+    end
+  done;
+  !k
+
+(* §15.5: the nearest of a torus's depths within its limits and at least [lo] *)
+let torus_depth ctx t o d lo =
+  let n = torus_solve ctx t o d in
+  let near = torus_near ctx and ds = Torus.depths ctx.torus in
+  let best = ref infinity in
+  for i = 0 to n - 1 do
+    let x = ds.(i) in
+    if x > near && x < 1e7 && x >= lo && x < !best then best := x
+  done;
+  !best
+
 let hit_shape ctx shape (o : Vec.t) (d : Vec.t) lo =
   let stats = ctx.stats in
   match shape with
@@ -373,6 +416,7 @@ let hit_shape ctx shape (o : Vec.t) (d : Vec.t) lo =
   | Box_trans { bx; btr } -> box_trans_depth ctx bx btr o d lo
   | Cone c -> nearest_listed ctx (cone_hits ctx c o d ctx.hits) lo
   | Disc dc -> nearest_listed ctx (disc_hits ctx dc o d ctx.hits) lo
+  | Torus t -> torus_depth ctx t o d lo
   | Triangle t | Smooth_triangle t ->
       (* §2.4 *)
       stats.triangle_tests <- stats.triangle_tests + 1;
@@ -508,7 +552,7 @@ let surface_of obj sub =
       let t = Mesh.texture m.mesh sub in
       if t >= 0 then obj.face_surfs.(t) else obj.surf
   | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _
-  | Disc _ ->
+  | Disc _ | Torus _ ->
       obj.surf
 
 (* Box::Normal: the outward axis of the side hit (1–6). *)
@@ -539,6 +583,7 @@ let normal obj sub (p : Vec.t) : Vec.t =
   | Disc dc -> Vec.make dc.dnx dc.dny dc.dnz
   | Box _ -> box_side_normal sub
   | Box_trans { btr; _ } -> Transform.normalize (Transform.normal btr (box_side_normal sub))
+  | Torus t -> Torus.normal t p
   | Sphere s -> Vec.make ((p.x -. s.cx) /. s.radius) ((p.y -. s.cy) /. s.radius) ((p.z -. s.cz) /. s.radius)
   | Ellipsoid { sp = s; etr } ->
       (* Sphere::Normal: P' − C in object space, by the inverse transpose, normalised (§14.6) *)
@@ -566,7 +611,7 @@ let geometric_normal obj sub (p : Vec.t) =
   match obj.shape with
   | Smooth_triangle t -> Vec.make t.nx t.ny t.nz
   | Mesh m -> if m.moved then Transform.normalize (Transform.normal m.tr (Mesh.face_normal m.mesh sub)) else Mesh.face_normal m.mesh sub
-  | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Box _ | Box_trans _ | Cone _ | Disc _ -> normal obj sub p
+  | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ -> normal obj sub p
 
 (* A hit point put back onto a sphere: o + t·d is off by rounding errors of the size of the ray's
    length, a point projected from the centre by those of the centre and radius only. *)
@@ -579,7 +624,7 @@ let refine obj (p : Vec.t) =
   match obj.shape with
   | Sphere s -> onto s.cx s.cy s.cz s.radius p
   | Ellipsoid { sp = s; etr } -> Transform.point etr (onto s.cx s.cy s.cz s.radius (Transform.inv_point etr p))
-  | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ -> p
+  | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ -> p
 
 let norm_inf (v : Vec.t) = Float.max (Float.abs v.x) (Float.max (Float.abs v.y) (Float.abs v.z))
 

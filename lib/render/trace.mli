@@ -16,11 +16,11 @@ type ctx = {
   robust : bool;
   shadow_cache : int array;
   hits : float array;
+  torus : Torus.work;
 }
 (** What a trace reads: the compiled scene, the worker's statistics, scratch space (the last
     hit's depth and mesh face, traversal stacks) and POV-Ray's shadow cache (§4: per light, the
-    opaque object that last blocked it), room for the hits of one cylinder, cone or disc, all private
-    to one worker; and the mode's limits: the
+    opaque object that last blocked it) and room for a torus's quartic, all private to one worker; and the mode's limits: the
     depths shapes accept, the nearest depth any ray accepts (1e-4, §2.1), and whether secondary
     rays leave from points lifted off the surface (robust mode). *)
 
@@ -48,6 +48,12 @@ val cone_hits : ctx -> Compiled.cone -> Vec.t -> Vec.t -> float array -> int
 val disc_hits : ctx -> Compiled.disc -> Vec.t -> Vec.t -> float array -> int
 (** [disc_hits ctx dc o d out] is [cone_hits] for a disc (§15.4): 0 or 1 crossing, written as
     ([out.(0)] = world depth within 1e-6 … 1e7, [out.(1)] = 0.). *)
+
+val torus_hits : ctx -> Torus.t -> Vec.t -> Vec.t -> float array -> int
+(** [torus_hits ctx t o d out] writes every depth at which the ray from [o] along the unit [d]
+    crosses the torus [t] within its limits (beyond 1e-4 in world units, below 1e7; §15.5) into
+    [out] (room for 4), in POV-Ray's order, and returns their number; the torus statistics are
+    counted. For CSG, which needs every crossing. *)
 
 val normal : Compiled.obj -> int -> Vec.t -> Vec.t
 (** [normal obj face p] is the unit normal of [obj] at its surface point [p] ([face]: the mesh face

@@ -78,6 +78,10 @@ let shape = function
   | Disc { centre; normal; radius; hole; inverted; trans = t } ->
       Printf.sprintf "disc { %s, %s, %s, %s%s // centre as written, normal as moved%s" (vec centre) (vec normal) (num radius)
         (num hole) (if inverted then " inverse" else "") (trans (Some t))
+  | Torus { major; minor; sturm; inverse; trans = t } ->
+      Printf.sprintf "torus { %s, %s%s%s%s" (num major) (num minor) (if sturm then " sturm" else "")
+        (if inverse then " inverse" else "")
+        (trans (if Transform.is_identity t then None else Some t))
   | Mesh { mesh; trans = t; textures } ->
       let b = Mesh.bounds mesh in
       Printf.sprintf "mesh { // %d triangles within <%s, %s, %s> … <%s, %s, %s>%s%s" mesh.faces (num b.(0)) (num b.(1))

@@ -109,6 +109,9 @@ let shape (s : Scene.shape) op : Scene.shape =
           Box { lo; hi; trans = None }
       | Rotate _ | Transform _ -> Box { lo; hi; trans = Some (attach None op) })
   | Box { lo; hi; trans = Some _ as trans } -> Box { lo; hi; trans = Some (attach trans op) }
+  | Torus t ->
+      (* §15.5, Torus::Translate/Rotate/Scale all call Transform: composed into its Trans *)
+      Torus { t with trans = attach (Some t.trans) op }
   | Mesh { mesh; trans; textures } ->
       (* §2.6, Mesh::Translate/Rotate/Scale all call Transform *)
       Mesh { mesh; trans = Some (attach trans op); textures }
@@ -131,7 +134,7 @@ let scene ~scale ~translate (s : Scene.t) : Scene.t =
     (* a smooth triangle's Scale renormalises its vertex normals, which changes how they blend;
        as a matrix the uniform scale only multiplies all three by the same factor *)
     let scaling =
-      match o.shape with Smooth_triangle _ -> Transform (Transform.scale sv) | Sphere _ | Plane _ | Triangle _ | Mesh _ | Box _ | Cone _ | Disc _ -> Scale sv
+      match o.shape with Smooth_triangle _ -> Transform (Transform.scale sv) | Sphere _ | Plane _ | Triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ -> Scale sv
     in
     let sh = shape (shape o.shape scaling) (Translate translate) in
     { o with shape = sh; interior = { o.interior with fade_distance = o.interior.fade_distance *. scale } }

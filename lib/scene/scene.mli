@@ -75,6 +75,10 @@ type shape =
       inverted : bool;  (** [inverse]: the inside test is negated *)
       trans : Transform.t;  (** canonical space (the disc in z = 0) to world *)
     }  (** §15.4 *)
+  | Torus of { major : float; minor : float; sturm : bool; inverse : bool; trans : Transform.t }
+      (** §15.5: R and r as written, the tube's core circle in the XZ plane, mapped by [trans]
+          (a torus always has one: every modifier composes into it, §14.4); [inverse] negates
+          its inside *)
 
 (** A finished object: textured, with an interior (§2.7). *)
 type obj = {

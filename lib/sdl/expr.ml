@@ -31,7 +31,8 @@ let function_names =
 let unsupported_functions = [ "inside"; "trace"; "min_extent"; "max_extent"; "vturbulence"; "datetime"; "function" ]
 
 let function_set = set_of function_names
-let object_set = set_of [ "sphere"; "box"; "cylinder"; "cone"; "disc"; "plane"; "object"; "triangle"; "smooth_triangle"; "mesh"; "mesh2"; "union" ]
+let object_set =
+  set_of [ "sphere"; "box"; "cylinder"; "cone"; "disc"; "torus"; "plane"; "object"; "triangle"; "smooth_triangle"; "mesh"; "mesh2"; "union" ]
 
 let truth x = Float.abs x > 1e-10
 

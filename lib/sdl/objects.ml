@@ -32,6 +32,18 @@ and move_member op = function
   | V.Member_obj o -> V.Member_obj (move_obj op o)
   | V.Member_light l -> V.Member_light (move_light op l)
 
+(* §15.5: a torus takes [sturm] (solve with Sturm sequences) and [inverse] (inside out) among
+   its modifiers, wherever they stand *)
+let is_torus (o : V.obj) = match o.shape with Prim (Torus _) -> true | Prim _ | Union _ -> false
+
+let torus_flag kw (o : V.obj) =
+  match o.shape with
+  | Prim (Torus t) ->
+      (* Torus::Invert toggles the flag *)
+      let sturm, inverse = if kw = "sturm" then (true, t.inverse) else (t.sturm, not t.inverse) in
+      { o with shape = Prim (Torus { t with sturm; inverse }) }
+  | Prim _ | Union _ -> o
+
 let parse_object_mods st (o : V.obj) what : V.obj =
   let tex o = match o.V.texture with Some t -> t | None -> st.default_texture in
   let rec loop (o : V.obj) =
@@ -59,9 +71,11 @@ let parse_object_mods st (o : V.obj) what : V.obj =
         match o.shape with
         | Prim (Cone c) -> advance st; loop { o with shape = Prim (Cone { c with inverted = not c.inverted }) }
         | Prim (Disc d) -> advance st; loop { o with shape = Prim (Disc { d with inverted = not d.inverted }) }
+        | Prim (Torus _) -> advance st; loop (torus_flag "inverse" o)
         | Prim (Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _) | Union _ ->
-            not_supported loc (Printf.sprintf "'inverse' in a %s (only cylinders, cones and discs take it so far)" what))
+            not_supported loc (Printf.sprintf "'inverse' in a %s (only cylinders, cones, discs and tori take it so far)" what))
     | Ident "hollow" -> advance st; ignore (parse_bool_opt st); loop o
+    | Ident "sturm" when is_torus o -> advance st; loop (torus_flag "sturm" o)
     | Ident s when is_unsupported s -> not_supported loc (Printf.sprintf "'%s'" s)
     | _ -> unexpected st (Printf.sprintf "an object modifier or '}' closing '%s'" what)
   in
@@ -84,7 +98,7 @@ let new_obj shape loc = new_obj_of (V.Prim shape) loc
 
 (* Objects povml does not render yet: inside a union they are reported as "not supported yet". *)
 let unsupported_objects =
-  [ "torus"; "polygon"; "prism"; "lathe"; "sor"; "blob"; "text"; "height_field";
+  [ "polygon"; "prism"; "lathe"; "sor"; "blob"; "text"; "height_field";
     "isosurface"; "superellipsoid"; "julia_fractal"; "parametric"; "bicubic_patch"; "ovus"; "quadric"; "cubic";
     "quartic"; "poly"; "intersection"; "difference"; "merge"; "sphere_sweep"; "lemon" ]
 
@@ -439,6 +453,15 @@ let rec parse_object st : V.obj =
       let hole = if float_follows st then parse_float st else 0. in
       if Vec.length normal = 0. then Error.raise_at nloc "degenerate disc normal <0,0,0>";
       parse_object_mods st (new_obj (Quadric.disc ~centre ~normal ~radius ~hole) loc) "disc"
+  | Ident "torus" ->
+      (* §15.5: torus { R, r } (the comma optional), then its modifiers *)
+      advance st;
+      open_block st "torus";
+      let major = parse_float st in
+      ignore (accept st Comma);
+      let minor = parse_float st in
+      let shape = Scene.Torus { major; minor; sturm = false; inverse = false; trans = Transform.identity } in
+      parse_object_mods st (new_obj shape loc) "torus"
   | Ident "plane" ->
       advance st;
       open_block st "plane";

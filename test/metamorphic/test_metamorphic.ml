@@ -28,6 +28,8 @@ let fidelity =
     "scenes/fidelity/quadrics_cone_pointed.pov";
     "scenes/fidelity/quadrics_disc_hole.pov";
     "scenes/fidelity/quadrics_glass_cylinder.pov";
+    "scenes/fidelity/torus_shadows.pov";
+    "scenes/fidelity/torus_glass.pov";
     "scenes/course/10_everything_together.pov";
   ]
 

@@ -21,6 +21,8 @@ let () =
       ("Box", Test_box.tests);
       ("Lights, orthographic camera, flags", Test_lights.tests);
       ("Quadrics", Test_quadrics.tests);
+      ("Polysolv", Test_polysolv.tests);
+      ("Torus", Test_torus.tests);
       ("Trace", Test_trace.tests);
       ("Render", Test_render.tests);
       ("Jitter", Test_jitter.tests);

@@ -1,0 +1,62 @@
+(** The torus (POVRAY-3.7 §15.5): centred at the origin of its own space, symmetric about the Y
+    axis, the tube's core circle of radius [major] in the XZ plane, mapped to the world by its
+    transform (a torus always has one, §14.4). Rays are brought into torus space with the
+    direction renormalised (§14.5 (b)); depths are returned in world units. *)
+
+type t = {
+  major : float;  (** R, the core circle's radius *)
+  minor : float;  (** r, the tube's radius (R < r is a spindle torus) *)
+  sturm : bool;  (** always solve with Sturm sequences *)
+  inverted : bool;  (** [inverse]: the inside is the outside *)
+  tr : Transform.t;  (** torus space to world *)
+}
+
+type work
+(** Room for one intersection at a time: the quartic's coefficients, its roots and the solver's
+    room. One per render worker. *)
+
+val create_work : unit -> work
+(** [create_work ()] is fresh room. *)
+
+val depth_tolerance : float
+(** 1e-4: POV-Ray keeps a torus hit only beyond this world depth (§15.5, §20 item 10). *)
+
+val solve : work -> t -> Vec.t -> Vec.t -> int
+(** [solve w t o d] intersects the ray from [o] along the unit [d] (world space) with the torus,
+    as POV-Ray's [Torus::Intersect]: −1 when the thick-cylinder pre-test rejects the ray (the
+    solver is not called), else the number n of roots found, whose world depths
+    [(root + closer)/len] are in [depths w] [.(0 … n−1)], unfiltered, in POV-Ray's order (the
+    solver's roots from the last). *)
+
+val depths : work -> float array
+(** [depths w] is the array [solve] writes its depths into (room for 4). *)
+
+val eliminated : work -> bool
+(** [eliminated w] is true when the last [solve] dropped a root at 0 (a ray leaving the surface). *)
+
+val intersections : work -> t -> near:float -> Vec.t -> Vec.t -> float array -> int
+(** [intersections w t ~near o d out] writes every hit with [near] < depth < 1e7 into [out] (room
+    for 4), in POV-Ray's order ([All_Intersections] with [near] = 1e-4), and returns their number. *)
+
+val nearest : work -> t -> near:float -> Vec.t -> Vec.t -> float -> float
+(** [nearest w t ~near o d lo] is the smallest depth with [near] < depth < 1e7 and depth ≥ [lo], or
+    infinity. *)
+
+val thick_cylinder : Vec.t -> Vec.t -> float -> float -> float -> float -> bool
+(** [thick_cylinder p v h1 h2 r1 r2] is POV-Ray's [Test_Thick_Cylinder] in torus space: whether the
+    ray from [p] along the unit [v] meets (at a parameter in (1e-10, 1e7)) the caps [y = h1], [y = h2]
+    within [r1 ≤ x²+z² ≤ r2] or the cylinders [x²+z² = r1] or [r2] within [h1 ≤ y ≤ h2]. It only
+    rejects rays that cannot hit the torus. *)
+
+val normal : t -> Vec.t -> Vec.t
+(** [normal t p] is the unit outward normal at the world point [p] of the surface: in torus space
+    [P − R·(P.x, 0, P.z)/√(P.x²+P.z²)] (the core-circle point taken as 0 on the axis), by the
+    inverse transpose, normalised (§14.6). *)
+
+val inside : t -> Vec.t -> bool
+(** [inside t p] is POV-Ray's [Torus::Inside] of the world point [p]: within the tube, surface
+    included; negated for an inverted torus. *)
+
+val box : t -> float array
+(** [box t] is the torus-space box [[| −(R+r); −r; −(R+r); R+r; r; R+r |]] (lower corner, upper
+    corner), before the transform. *)
