@@ -108,7 +108,7 @@ type light_source = Lone of Scene.light | Shaped of V.obj
 
 (* light_source { centre, colour … } (§10.2, §18.2, §18.3, §19.2). radius, falloff and tightness
    need a spotlight or cylinder keyword written before them, point_at one of those or parallel;
-   [object] reads the object of a looks_like. *)
+   [object_] reads the object of a looks_like. *)
 let parse_light_with st ~object_ =
   let lloc = peek_loc st in
   advance st;
