@@ -186,7 +186,10 @@ let box_depth ctx (b : box) px py pz vx vy vz lo =
     end
     else if pz < b.z0 || pz > b.z1 then miss := true;
   if !miss || !tmax < ctx.lim.near then infinity
-  else if !tmin > ctx.lim.near && !tmin >= lo then begin
+  else if !tmin > ctx.lim.near && !tmin >= lo && (!tmin < !tmax || !tmax < lo) then begin
+    (* both crossings are candidates, the far one pushed last; POV-Ray takes candidates from the
+       top of its stack and keeps a strictly nearer one, so of two equal depths (a ray through an
+       edge) the far crossing's side wins *)
     stats.box_hits <- stats.box_hits + 1;
     ctx.sub.(0) <- !smin;
     !tmin

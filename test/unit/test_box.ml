@@ -130,6 +130,11 @@ let test_edges_and_corners () =
   Alcotest.(check int) "corner, steepest in y: Y-" 3 side;
   let _, side, _ = hit b (through (v 1. 1.01 1.02)) (v 1. 1.01 1.02) in
   Alcotest.(check int) "corner, steepest in z: Z-" 5 side;
+  (* a ray that only touches the edge x = −1, y = 1 enters and leaves at the same depth: of the two
+     equal crossings POV-Ray keeps the far one (pushed last, taken first), whose side is Y+ *)
+  let t, side, _ = hit b (v (-2.) 0. 0.) (v 1. 1. 0.) in
+  float_eq ~eps:1e-12 "touching an edge: depth" (sqrt 2.) t;
+  Alcotest.(check int) "touching an edge: the far crossing's Y+" 4 side;
   (* the robust mode decides the tie exactly: a ray that crosses the plane x = −1 1e-7 inside the
      front face's edge enters through X-, which POV-Ray gives to the steeper Z- *)
   let rb = setup ~robust:true unit_box in
