@@ -320,11 +320,18 @@ let scene (s : Scene.t) : Compiled.t =
   (* §6.4: the camera ray starts inside every object that contains the camera location; the list
      is kept with the last entered first. *)
   let all = group (Array.to_list objects) in
-  let start_interiors =
-    Array.fold_left
-      (fun acc o -> if in_pov_box o.pbox s.camera.location && inside stack o.shape s.camera.location then o.id :: acc else acc)
-      [] objects
+  let cam = s.camera.location in
+  let bounding = List.length s.objects + List.length s.lights >= 3 in
+  let candidates =
+    (* with its bounding tree POV-Ray meets the objects in the tree's order, else in scene order;
+       either way only those whose box holds the camera *)
+    if bounding then
+      let finite, infinite = List.partition (fun o -> Array.length o.pbox > 0) (Array.to_list objects) in
+      Slab_tree.walk (Slab_tree.build (List.map (fun o -> (o.id, o.pbox)) finite) (List.map (fun o -> o.id) infinite)) (fun b ->
+          in_pov_box b cam)
+    else List.filter (fun id -> in_pov_box objects.(id).pbox cam) (List.init (Array.length objects) Fun.id)
   in
+  let start_interiors = List.fold_left (fun acc id -> if inside stack objects.(id).shape cam then id :: acc else acc) [] candidates in
   {
     objects;
     all;
@@ -338,5 +345,5 @@ let scene (s : Scene.t) : Compiled.t =
     legacy;
     camera = s.camera;
     start_interiors;
-    bounding = List.length s.objects + List.length s.lights >= 3;
+    bounding;
   }
