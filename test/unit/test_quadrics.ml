@@ -135,6 +135,14 @@ let test_cone_setup () =
   let c = cone_of (fst (setup "cone { <0,0,2>, 0.5, <0,0,0>, 0.5 }")) in
   Alcotest.(check bool) "equal radii: a cylinder" true c.cyl;
   vec_eq "its radius" (v 0.5 0. 0.) (Transform.point c.ctr (v 1. 0. 0.));
+  (* radii 1e-11 apart: a cylinder; a taper of (rb − rs)·L/H = 1e-10 · 1e-9/(1 + 1e-9)… below
+     1e-10: a cylinder of the big radius too, although the radii differ by more than 1e-10 *)
+  let c = cone_of (fst (setup "cone { <0,0,2>, 0.5, <0,0,0>, 0.50000000001 }")) in
+  Alcotest.(check bool) "radii within 1e-10" true c.cyl;
+  let c = cone_of (fst (setup "cone { <0,0,1e-3>, 1, <0,0,0>, 0.9999999 }")) in
+  (* h = 0.9999999·1e-3/1e-7 ≈ 1e4, H ≈ 1e4, so the taper is 1e-7·1e-3/1e4 = 1e-14 *)
+  Alcotest.(check bool) "so thin a taper" true c.cyl;
+  vec_eq ~eps:1e-12 "of the big radius, from the small end" (v 1. 0. 0.) (Transform.point c.ctr (v 1. 0. 0.));
   (* r1 = 0: the point at the small end, dist = 0 *)
   let c = cone_of (fst (setup "cone { <0,0,0>, 0, <0,0,1>, 1 }")) in
   Alcotest.(check bool) "pointed: a cone" false c.cyl;
@@ -191,6 +199,9 @@ let test_disc () =
   (* the normal follows every modifier: the plane x + y = 0 scaled by <2,1,1> is x/2 + y = 0 *)
   let d = disc_of (fst (setup "disc { 0, <1,1,0>, 1 scale <2,1,1> }")) in
   vec_eq ~eps:1e-12 "moved normal" (Vec.scale (1. /. sqrt 1.25) (v 0.5 1. 0.)) (v d.dnx d.dny d.dnz);
+  (* a normal within 1e-10 of ±z (here z = −1/√(1 + 1e-10)) is snapped to it by the set-up *)
+  let d = disc_of (fst (setup "disc { 0, <1e-5, 0, -1>, 1 }")) in
+  float_eq ~eps:0. "snapped z" (-1.) d.dnz;
   (* a disc without a hole: hole² = 0 *)
   let d = disc_of (fst (setup "disc { 0, y, 3 }")) in
   float_eq "no hole" 0. d.ir2;
