@@ -356,7 +356,19 @@ let scene (s : Scene.t) : Compiled.t =
   let without keep =
     if Array.for_all keep flags then all else group (List.filter (fun (o : obj) -> keep flags.(o.id)) (Array.to_list objects))
   in
-  let start_interiors = interiors_at objects stack s.camera.location in
+  let cam = s.camera.location in
+  (* a light's looks_like shape belongs to the light's top-level object (§19.2) *)
+  let bounding = List.length (List.filter (fun (o : Scene.obj) -> not o.looks_like) s.objects) + List.length s.lights >= 3 in
+  let candidates =
+    (* with its bounding tree POV-Ray meets the objects in the tree's order, else in scene order;
+       either way only those whose box holds the camera *)
+    if bounding then
+      let finite, infinite = List.partition (fun o -> Array.length o.pbox > 0) (Array.to_list objects) in
+      Slab_tree.walk (Slab_tree.build (List.map (fun o -> (o.id, o.pbox)) finite) (List.map (fun o -> o.id) infinite)) (fun b ->
+          in_pov_box b cam)
+    else List.filter (fun id -> in_pov_box objects.(id).pbox cam) (List.init (Array.length objects) Fun.id)
+  in
+  let start_interiors = List.fold_left (fun acc id -> if inside stack objects.(id).shape cam then id :: acc else acc) [] candidates in
   {
     objects;
     all;
@@ -372,6 +384,5 @@ let scene (s : Scene.t) : Compiled.t =
     legacy;
     camera = s.camera;
     start_interiors;
-    (* a light's looks_like shape belongs to the light's top-level object (§19.2) *)
-    bounding = List.length (List.filter (fun (o : Scene.obj) -> not o.looks_like) s.objects) + List.length s.lights >= 3;
+    bounding;
   }

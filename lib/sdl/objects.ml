@@ -73,7 +73,7 @@ let parse_object_mods st (o : V.obj) what : V.obj =
         | Prim (Disc d) -> advance st; loop { o with shape = Prim (Disc { d with inverted = not d.inverted }) }
         | Prim (Torus _) -> advance st; loop (torus_flag "inverse" o)
         | Prim (Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _) | Union _ ->
-            not_supported loc (Printf.sprintf "'inverse' in a %s (only cylinders, cones, discs and tori take it so far)" what))
+            not_supported loc (Printf.sprintf "'inverse' in '%s' (only cylinders, cones, discs and tori take it so far)" what))
     | Ident "hollow" -> advance st; ignore (parse_bool_opt st); loop o
     | Ident "sturm" when is_torus o -> advance st; loop (torus_flag "sturm" o)
     | Ident s when is_unsupported s -> not_supported loc (Printf.sprintf "'%s'" s)
@@ -434,8 +434,10 @@ let rec parse_object st : V.obj =
       comma st;
       let p2 = parse_vector st in
       comma st;
+      let r2loc = peek_loc st in
       let r2 = parse_float st in
       let closed = not (accept_ident st "open") in
+      if r1 = 0. && r2 = 0. then warn st r2loc "both cone radii are 0: it cannot be seen";
       (match Quadric.cone ~p1 ~r1 ~p2 ~r2 ~closed with
       | Some shape -> parse_object_mods st (new_obj shape loc) "cone"
       | None -> Error.raise_at loc "degenerate cone: its end points %s and %s are the same point" (show_vec p1) (show_vec p2))

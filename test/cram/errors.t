@@ -102,7 +102,7 @@ A disc needs a normal, and inverse is taken by cylinders, cones and discs only s
   [1]
   $ printf 'sphere { 0, 1 inverse }\n' > inverse.pov
   $ povml inverse.pov +W10 +H10 -D
-  inverse.pov:1:15: error: not supported yet: 'inverse' in a sphere (only cylinders, cones, discs and tori take it so far)
+  inverse.pov:1:15: error: not supported yet: 'inverse' in 'sphere' (only cylinders, cones, discs and tori take it so far)
       1 | sphere { 0, 1 inverse }
         |               ^
   [1]

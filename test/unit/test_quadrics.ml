@@ -135,6 +135,14 @@ let test_cone_setup () =
   let c = cone_of (fst (setup "cone { <0,0,2>, 0.5, <0,0,0>, 0.5 }")) in
   Alcotest.(check bool) "equal radii: a cylinder" true c.cyl;
   vec_eq "its radius" (v 0.5 0. 0.) (Transform.point c.ctr (v 1. 0. 0.));
+  (* radii 1e-11 apart: a cylinder; a taper of (rb − rs)·L/H = 1e-10 · 1e-9/(1 + 1e-9)… below
+     1e-10: a cylinder of the big radius too, although the radii differ by more than 1e-10 *)
+  let c = cone_of (fst (setup "cone { <0,0,2>, 0.5, <0,0,0>, 0.50000000001 }")) in
+  Alcotest.(check bool) "radii within 1e-10" true c.cyl;
+  let c = cone_of (fst (setup "cone { <0,0,1e-3>, 1, <0,0,0>, 0.9999999 }")) in
+  (* h = 0.9999999·1e-3/1e-7 ≈ 1e4, H ≈ 1e4, so the taper is 1e-7·1e-3/1e4 = 1e-14 *)
+  Alcotest.(check bool) "so thin a taper" true c.cyl;
+  vec_eq ~eps:1e-12 "of the big radius, from the small end" (v 1. 0. 0.) (Transform.point c.ctr (v 1. 0. 0.));
   (* r1 = 0: the point at the small end, dist = 0 *)
   let c = cone_of (fst (setup "cone { <0,0,0>, 0, <0,0,1>, 1 }")) in
   Alcotest.(check bool) "pointed: a cone" false c.cyl;
@@ -191,6 +199,9 @@ let test_disc () =
   (* the normal follows every modifier: the plane x + y = 0 scaled by <2,1,1> is x/2 + y = 0 *)
   let d = disc_of (fst (setup "disc { 0, <1,1,0>, 1 scale <2,1,1> }")) in
   vec_eq ~eps:1e-12 "moved normal" (Vec.scale (1. /. sqrt 1.25) (v 0.5 1. 0.)) (v d.dnx d.dny d.dnz);
+  (* a normal within 1e-10 of ±z (here z = −1/√(1 + 1e-10)) is snapped to it by the set-up *)
+  let d = disc_of (fst (setup "disc { 0, <1e-5, 0, -1>, 1 }")) in
+  float_eq ~eps:0. "snapped z" (-1.) d.dnz;
   (* a disc without a hole: hole² = 0 *)
   let d = disc_of (fst (setup "disc { 0, y, 3 }")) in
   float_eq "no hole" 0. d.ir2;
@@ -237,6 +248,32 @@ let test_camera_start () =
   Alcotest.(check (list int)) "outside both" [] (scene "<0,5,0>").start_interiors;
   Alcotest.(check (list int)) "within the disc's box, behind it" [ 1 ] (scene "<0.5,0,3.9995>").start_interiors
 
+let test_slab_tree () =
+  (* three unit boxes along z, written out of order: find_axis picks z (its recorded spread is 4,
+     x's and y's 0), they are sorted by centre, and three fit one node *)
+  let b z = [| 0.; 0.; z; 1.; 1.; 1. |] in
+  let t = Slab_tree.build [ (0, b 4.); (1, b 0.); (2, b 2.) ] [ 7 ] in
+  Alcotest.(check (list int)) "sorted, the unbounded first" [ 7; 1; 2; 0 ] (Slab_tree.walk t (fun _ -> true));
+  Alcotest.(check (list int)) "a box that does not hold the point" [ 7; 1; 0 ] (Slab_tree.walk t (fun bx -> bx.(2) <> 2.));
+  (* six boxes along x, 10 apart: the surface-area rule splits after the third (costs 418, 298,
+     258, 298, 418 against 309 unsplit), so the first three share a node of box x 0 … 21 *)
+  let row = List.init 6 (fun i -> (5 - i, [| float_of_int (10 * (5 - i)); 0.; 0.; 1.; 1.; 1. |])) in
+  let t = Slab_tree.build row [] in
+  Alcotest.(check (list int)) "in x order" [ 0; 1; 2; 3; 4; 5 ] (Slab_tree.walk t (fun _ -> true));
+  Alcotest.(check (list int)) "the first node left out" [ 3; 4; 5 ] (Slab_tree.walk t (fun bx -> not (bx.(0) = 0. && bx.(3) = 21.)))
+
+let test_camera_order () =
+  (* §6.4: the camera inside a closed glass cylinder (written first) and an open one: POV-Ray's
+     tree sorts them along z, the open one (centre z = −1) before the closed one (z = −0.25), so
+     the closed one is found last: it is the last entered, whatever the order written *)
+  let text first second =
+    "camera { location <0, 1, -1> look_at <0, 0.8, 3> }\nsphere { <0.8, 0.8, 4>, 0.7 }\nbox { <-1.8, 0, 3.5>, <-0.6, 1.6, 4.5> }\nplane { y, 0 }\n"
+    ^ first ^ "\n" ^ second ^ "\n"
+  in
+  let closed = "cylinder { <0, 0.2, -2>, <0, 0.2, 1.5>, 1.5 }" and opened = "cylinder { <0, -1, -1>, <0, 3, -1>, 0.5 open }" in
+  Alcotest.(check (list int)) "closed written first" [ 3; 4 ] (compile (v37 ^ text closed opened)).start_interiors;
+  Alcotest.(check (list int)) "closed written last" [ 4; 3 ] (compile (v37 ^ text opened closed)).start_interiors
+
 let test_errors () =
   expect_scene_error "degenerate cylinder" "cylinder { y, y, 1 }" ~line:1 ~col:1 ~sub:"degenerate cylinder";
   expect_scene_error "almost degenerate cylinder" "cylinder { 0, 1e-11*x, 1 }" ~line:1 ~col:1 ~sub:"degenerate cylinder";
@@ -268,6 +305,8 @@ let tests =
     Alcotest.test_case "disc" `Quick test_disc;
     Alcotest.test_case "inside" `Quick test_inside;
     Alcotest.test_case "camera's starting interiors" `Quick test_camera_start;
+    Alcotest.test_case "POV-Ray's bounding-slab tree" `Quick test_slab_tree;
+    Alcotest.test_case "order of the camera's interiors" `Quick test_camera_order;
     Alcotest.test_case "errors" `Quick test_errors;
     Alcotest.test_case "statistics" `Quick test_stats;
   ]
