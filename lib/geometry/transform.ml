@@ -78,12 +78,9 @@ let rotate (a : Vec.t) =
   let m = mul m r and i = mul (transpose r) i in
   make m i
 
-(* Rotation by [deg] degrees about [axis] (Compute_Axis_Rotation_Transform, used by vaxis_rotate):
-   the axis divided by its length, the matrix built term by term, the inverse its transpose. *)
-let axis_rotate (axis : Vec.t) deg =
-  let l = sqrt ((axis.x *. axis.x) +. (axis.y *. axis.y) +. (axis.z *. axis.z)) in
-  let x = axis.x /. l and y = axis.y /. l and z = axis.z /. l in
-  let a = deg *. m_pi_180 in
+(* Compute_Axis_Rotation_Transform's matrix for the unit axis (x, y, z) and the angle [a] in
+   radians, built term by term; the inverse is its transpose. *)
+let axis_matrix x y z a =
   let c = cos a and s = sin a in
   let m = ident () in
   m.(0) <- (x *. x) +. (c *. (1.0 -. (x *. x)));
@@ -96,6 +93,12 @@ let axis_rotate (axis : Vec.t) deg =
   m.(9) <- (y *. z *. (1.0 -. c)) -. (x *. s);
   m.(10) <- (z *. z) +. (c *. (1.0 -. (z *. z)));
   make m (transpose m)
+
+(* Rotation by [deg] degrees about [axis] (Compute_Axis_Rotation_Transform, used by vaxis_rotate):
+   the axis divided by its length. *)
+let axis_rotate (axis : Vec.t) deg =
+  let l = sqrt ((axis.x *. axis.x) +. (axis.y *. axis.y) +. (axis.z *. axis.z)) in
+  axis_matrix (axis.x /. l) (axis.y /. l) (axis.z /. l) (deg *. m_pi_180)
 
 (* MInvers: cofactor expansion, with POV-Ray's term order; None when the determinant is 0. *)
 let invert (m : float array) =
@@ -225,19 +228,7 @@ let to_string t =
    the reciprocal of its length), the inverse the transpose. *)
 let axis_rotate_rad (axis : Vec.t) angle =
   let v = normalize axis in
-  let x = v.x and y = v.y and z = v.z in
-  let c = cos angle and s = sin angle in
-  let m = ident () in
-  m.(0) <- (x *. x) +. (c *. (1.0 -. (x *. x)));
-  m.(1) <- (x *. y *. (1.0 -. c)) +. (z *. s);
-  m.(2) <- (x *. z *. (1.0 -. c)) -. (y *. s);
-  m.(4) <- (x *. y *. (1.0 -. c)) -. (z *. s);
-  m.(5) <- (y *. y) +. (c *. (1.0 -. (y *. y)));
-  m.(6) <- (y *. z *. (1.0 -. c)) +. (x *. s);
-  m.(8) <- (x *. z *. (1.0 -. c)) +. (y *. s);
-  m.(9) <- (y *. z *. (1.0 -. c)) -. (x *. s);
-  m.(10) <- (z *. z) +. (c *. (1.0 -. (z *. z)));
-  make m (transpose m)
+  axis_matrix v.x v.y v.z angle
 
 (* Compute_Coordinate_Transform (§15.2): scale <radius, radius, length>, then the rotation taking
    +z to [up] (about (−up.y, up.x, 0) by acos up.z; about x when up is within EPSILON of ±z, with
