@@ -5,7 +5,7 @@ let f32 x = Int32.float_of_bits (Int32.bits_of_float x)
 
 (* A shape ready to trace; None for a triangle that POV-Ray never hits (no area, or a standalone
    smooth triangle whose vertex normals straddle its face). *)
-let shape_of (s : Scene.shape) =
+let prim_of (s : Scene.shape) =
   let sphere (c : Vec.t) r = { cx = c.x; cy = c.y; cz = c.z; radius = r; r2 = r *. r } in
   let plane (n : Vec.t) offset = { nx = n.x; ny = n.y; nz = n.z; dist = -.offset } in
   match s with
@@ -24,12 +24,17 @@ let shape_of (s : Scene.shape) =
   | Box { lo; hi; trans } -> (
       let bx = { x0 = lo.x; y0 = lo.y; z0 = lo.z; x1 = hi.x; y1 = hi.y; z1 = hi.z } in
       match trans with None -> Some (Box bx) | Some btr -> Some (Box_trans { bx; btr }))
+  | Csg _ -> None (* built by [scene], which numbers the members *)
 
 (* Box::Inside: a closed box, its surface included *)
 let in_box b (p : Vec.t) = not (p.x < b.x0 || p.x > b.x1 || p.y < b.y0 || p.y > b.y1 || p.z < b.z0 || p.z > b.z1)
 
-let inside stack shape (p : Vec.t) =
+let rec inside stack shape (p : Vec.t) =
   match shape with
+  | Csg { kind = Union | Merge; members } ->
+      (* §16.3: inside any member, or inside every member *)
+      Array.exists (fun m -> inside stack m.shape p <> m.inverted) members
+  | Csg { kind = Intersection; members } -> Array.for_all (fun m -> inside stack m.shape p <> m.inverted) members
   | Box b -> in_box b p
   | Box_trans { bx; btr } -> in_box bx (Transform.inv_point btr p)
   | Sphere s ->
@@ -56,7 +61,31 @@ let inside stack shape (p : Vec.t) =
 
 (* The box of a bounded shape; None for an unbounded one. A transformed shape's box is its
    object-space box with the corners mapped (Recompute_BBox, §15.8). *)
-let bounds = function
+let rec bounds = function
+  | Csg { kind = Union | Merge; members } ->
+      (* CSG::Compute_BBox: a union's or merge's box holds its members' boxes; an intersection's is
+         the overlap of its members' that are not inverted. A plane is unbounded here (POV-Ray
+         bounds an axis-aligned one on one side: that changes only equal-depth ties). *)
+      Array.fold_left
+        (fun acc m ->
+          match (acc, bounds m.shape) with
+          | Some a, Some b -> Some (Array.init 6 (fun i -> if i < 3 then Float.min a.(i) b.(i) else Float.max a.(i) b.(i)))
+          | None, _ | _, None -> None)
+        (Some [| infinity; infinity; infinity; neg_infinity; neg_infinity; neg_infinity |])
+        members
+      |> Option.map (fun b -> if b.(0) > b.(3) then [| 0.; 0.; 0.; 0.; 0.; 0. |] else b)
+  | Csg { kind = Intersection; members } ->
+      let b =
+        Array.fold_left
+          (fun acc m ->
+            match (m.inverted, acc, bounds m.shape) with
+            | false, None, Some b -> Some b
+            | false, Some a, Some b -> Some (Array.init 6 (fun i -> if i < 3 then Float.max a.(i) b.(i) else Float.min a.(i) b.(i)))
+            | false, acc, None | true, acc, _ -> acc)
+          None members
+      in
+      (* an empty overlap: nothing can be hit; POV-Ray then keeps its unbounded box *)
+      Option.bind b (fun b -> if b.(0) > b.(3) || b.(1) > b.(4) || b.(2) > b.(5) then None else Some b)
   | Sphere s ->
       let r = Float.abs s.radius in
       Some [| s.cx -. r; s.cy -. r; s.cz -. r; s.cx +. r; s.cy +. r; s.cz +. r |]
@@ -78,6 +107,7 @@ let magnitude shape =
   | None, Plane_trans { pl; ptr; _ } ->
       let q = Transform.point ptr (Vec.make (-.pl.dist *. pl.nx) (-.pl.dist *. pl.ny) (-.pl.dist *. pl.nz)) in
       max_abs [| q.x; q.y; q.z |]
+  | None, Csg { members; _ } -> Array.fold_left (fun m o -> Float.max m o.mag) 0. members
   | None, (Sphere _ | Ellipsoid _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _) -> 0.
 
 (* POV-Ray's box of a bounded shape (Compute_BBox, then Make_BBox or Make_BBox_from_min_max, which
@@ -110,6 +140,10 @@ let pov_box shape =
       if m.moved then mapped m.tr b else b
   | Box b -> of_min_max [| b.x0; b.y0; b.z0 |] [| b.x1; b.y1; b.z1 |]
   | Box_trans { bx = b; btr } -> mapped btr (of_min_max [| b.x0; b.y0; b.z0 |] [| b.x1; b.y1; b.z1 |])
+  | Csg _ -> (
+      (* CSG::Compute_BBox from the members' boxes, after the CSG's transforms (POV-Ray maps the
+         box computed before them: a difference in equal-depth ties only) *)
+      match bounds shape with None -> [||] | Some b -> of_min_max (Array.sub b 0 3) (Array.sub b 3 3))
 
 let group objs =
   let unbounded = List.filter (fun o -> bounds o.shape = None) objs in
@@ -124,7 +158,7 @@ let group objs =
     (fun i o ->
       match o.shape with
       | Sphere s -> spheres.(4 * i) <- s.cx; spheres.((4 * i) + 1) <- s.cy; spheres.((4 * i) + 2) <- s.cz; spheres.((4 * i) + 3) <- s.r2
-      | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ -> ())
+      | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Csg _ -> ())
     bounded;
   { unbounded = Array.of_list unbounded; bounded; bvh; spheres }
 
@@ -211,36 +245,70 @@ let scene (s : Scene.t) : Compiled.t =
         Texture_memo.add memo t sf;
         sf
   in
-  let visible = List.filter_map (fun (o : Scene.obj) -> Option.map (fun sh -> (o, sh)) (shape_of o.shape)) s.objects in
-  let objects =
-    Array.of_list
-      (List.mapi
-         (fun id ((o : Scene.obj), shape) ->
-           let surf = surface ~legacy ~ambient_light:s.ambient_light o.texture in
-           let face_surfs =
-             match o.shape with
-             | Mesh m -> Array.map (surface ~legacy ~ambient_light:s.ambient_light) m.textures
-             | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Box _ -> [||]
-           in
-           {
-             id;
-             shape;
-             surf;
-             face_surfs;
-             ior = f32 o.interior.ior;
-             fade_distance = f32 o.interior.fade_distance;
-             fade_power = f32 o.interior.fade_power;
-             fade_colour = rgb32 o.interior.fade_colour;
-             old_refract = f32 o.texture.finish.refraction;
-             opaque = (not surf.transparent) && Array.for_all (fun (f : surface) -> not f.transparent) face_surfs;
-             mag = magnitude shape;
-
-             pbox = pov_box shape;
-           })
-         visible)
+  let surface_of (t : Scene.texture) = surface ~legacy ~ambient_light:s.ambient_light t in
+  (* Objects are numbered in scene order, each CSG before its members (the numbering keeps the
+     scene order of top-level objects, which decides ties without a bounding hierarchy). *)
+  let next = ref 0 and built = ref [] in
+  let rec build ~top ~iid ~inverted (o : Scene.obj) : obj option =
+    let id = !next in
+    let top = if top < 0 then id else top and iid = if iid < 0 then id else iid in
+    let shape =
+      match o.shape with
+      | Csg { kind; members } ->
+          incr next;
+          let members =
+            List.filter_map
+              (fun (m : Scene.member) -> build ~top ~iid:(if m.own_interior then -1 else iid) ~inverted:m.inverted m.mobj)
+              members
+          in
+          Some (Csg { kind; members = Array.of_list members })
+      | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ ->
+          let sh = prim_of o.shape in
+          if sh <> None then incr next;
+          sh
+    in
+    match shape with
+    | None -> None
+    | Some shape ->
+        let surf = surface_of o.texture in
+        let face_surfs =
+          match o.shape with
+          | Mesh m -> Array.map surface_of m.textures
+          | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Box _ | Csg _ -> [||]
+        in
+        let opaque =
+          match shape with
+          | Csg { members; _ } -> Array.for_all (fun m -> m.opaque) members
+          | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ ->
+              (not surf.transparent) && Array.for_all (fun (f : surface) -> not f.transparent) face_surfs
+        in
+        let ob =
+          {
+            id;
+            iid;
+            top;
+            inverted;
+            shape;
+            surf;
+            face_surfs;
+            ior = f32 o.interior.ior;
+            fade_distance = f32 o.interior.fade_distance;
+            fade_power = f32 o.interior.fade_power;
+            fade_colour = rgb32 o.interior.fade_colour;
+            old_refract = f32 o.texture.finish.refraction;
+            opaque;
+            mag = magnitude shape;
+            pbox = pov_box shape;
+          }
+        in
+        built := ob :: !built;
+        Some ob
   in
-  let casts = Array.of_list (List.map (fun ((o : Scene.obj), _) -> not o.no_shadow) visible) in
-  let occluders = List.filter (fun (o : obj) -> casts.(o.id)) (Array.to_list objects) in
+  let visible = List.filter_map (fun (o : Scene.obj) -> Option.map (fun ob -> (o, ob)) (build ~top:(-1) ~iid:(-1) ~inverted:false o)) s.objects in
+  let objects = Array.of_list (List.sort (fun a b -> compare a.id b.id) !built) in
+  let tops = List.map snd visible in
+  let casts = List.filter_map (fun ((o : Scene.obj), ob) -> if o.no_shadow then None else Some ob) visible in
+  let occluders = casts in
   let shadow_mode =
     if occluders = [] then No_occluders
     else if List.for_all (fun o -> o.opaque) occluders then Any_hit
@@ -265,14 +333,14 @@ let scene (s : Scene.t) : Compiled.t =
   in
   (* §6.4: the camera ray starts inside every object that contains the camera location; the list
      is kept with the last entered first. *)
-  let all = group (Array.to_list objects) in
+  let all = group tops in
   let start_interiors =
-    Array.fold_left (fun acc o -> if inside stack o.shape s.camera.location then o.id :: acc else acc) [] objects
+    List.fold_left (fun acc o -> if inside stack o.shape s.camera.location then o.iid :: acc else acc) [] tops
   in
   {
     objects;
     all;
-    occluders = (if List.length occluders = Array.length objects then all else group occluders);
+    occluders = (if List.length occluders = List.length tops then all else group occluders);
     shadow_mode;
     lights;
     background = s.background;

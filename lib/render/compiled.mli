@@ -14,19 +14,6 @@ type box = { x0 : float; y0 : float; z0 : float; x1 : float; y1 : float; z1 : fl
     unmoved mesh is searched in world space as it is, like POV-Ray's mesh without a Trans (§2.6). *)
 type mesh_inst = { mesh : Mesh.t; tr : Transform.t; moved : bool }
 
-type shape =
-  | Sphere of sphere
-  | Ellipsoid of { sp : sphere; etr : Transform.t }
-      (** §2.2, §14.5 (b): the object-space sphere [sp] mapped by [etr] *)
-  | Plane of plane
-  | Plane_trans of { pl : plane; ptr : Transform.t; pnormal : Vec.t }
-      (** §2.3, §14.5 (a): [pl] mapped by [ptr]; [pnormal] its world normal, the same at every point *)
-  | Triangle of Triangle.t
-  | Smooth_triangle of Triangle.t
-  | Mesh of mesh_inst
-  | Box of box  (** §15.1, in world space; the side hit is left where a mesh leaves its face *)
-  | Box_trans of { bx : box; btr : Transform.t }  (** §15.1, §14.5 (a): [bx] mapped by [btr] *)
-
 (** Everything about a surface that does not depend on the hit point, derived once from a
     plain pigment and its finish (§3.2, §3.5, §5). *)
 type surface = {
@@ -48,9 +35,37 @@ type surface = {
   conserve : bool;
 }
 
-(** An object ready to trace. Its [id] is also the identity of its interior in interior lists. *)
-type obj = {
-  id : int;
+type shape =
+  | Sphere of sphere
+  | Ellipsoid of { sp : sphere; etr : Transform.t }
+      (** §2.2, §14.5 (b): the object-space sphere [sp] mapped by [etr] *)
+  | Plane of plane
+  | Plane_trans of { pl : plane; ptr : Transform.t; pnormal : Vec.t }
+      (** §2.3, §14.5 (a): [pl] mapped by [ptr]; [pnormal] its world normal, the same at every point *)
+  | Triangle of Triangle.t
+  | Smooth_triangle of Triangle.t
+  | Mesh of mesh_inst
+  | Box of box  (** §15.1, in world space; the side hit is left where a mesh leaves its face *)
+  | Box_trans of { bx : box; btr : Transform.t }  (** §15.1, §14.5 (a): [bx] mapped by [btr] *)
+  | Csg of csg
+      (** §16: a CSG kept whole, a top-level object or a member of one. The tracer never reports a
+          CSG as the object hit but the member primitive (a leaf), whose own surface is shaded.
+          A new primitive shape plugs into CSG by its cases in [Compile.inside] (Inside),
+          [Compile.bounds], and [Trace.all_hits] (every crossing of the ray, in the order POV-Ray's
+          All_Intersections pushes them); the exhaustive matches point at each. *)
+
+(** A CSG's members and how their hits are kept (§16.2, §16.3). *)
+and csg = { kind : Scene.csg_kind; members : obj array }
+
+(** An object ready to trace: a top-level object, or a member of a CSG. *)
+and obj = {
+  id : int;  (** its index in [t.objects]: top-level objects and their members in scene order *)
+  iid : int;
+      (** the identity of its interior in interior lists: its own id, or for a CSG member that
+          shares its parent's interior the parent's [iid] (§16.5). [t.objects.(iid)] carries
+          that interior's values. *)
+  top : int;  (** the id of the top-level object it belongs to (its own id at top level) *)
+  inverted : bool;  (** a CSG member whose Inside is negated (§16.3) *)
   shape : shape;
   surf : surface;  (** the object's own surface *)
   face_surfs : surface array;  (** meshes: the surfaces of the per-face textures *)
@@ -99,7 +114,9 @@ type group = {
 }
 
 type t = {
-  objects : obj array;  (** every object, in scene order; [id] indexes this array *)
+  objects : obj array;
+      (** every object, in scene order, each CSG followed by its members (depth first); [id]
+          indexes this array. The groups hold the top-level objects only. *)
   all : group;  (** every object *)
   occluders : group;  (** objects without no_shadow *)
   shadow_mode : shadow_mode;

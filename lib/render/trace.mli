@@ -15,12 +15,20 @@ type ctx = {
   min_depth : float;
   robust : bool;
   shadow_cache : int array;
+  slab : float array;
+  hits : hits;
+  leaf : int array;
 }
 (** What a trace reads: the compiled scene, the worker's statistics, scratch space (the last
-    hit's depth and mesh face, traversal stacks) and POV-Ray's shadow cache (§4: per light, the
+    hit's depth and mesh face, traversal stacks, a box's crossings, a CSG's hits and member hit) and POV-Ray's shadow cache (§4: per light, the
     opaque object that last blocked it), all private to one worker; and the mode's limits: the
     depths shapes accept, the nearest depth any ray accepts (1e-4, §2.1), and whether secondary
     rays leave from points lifted off the surface (robust mode). *)
+
+and hits = { mutable h : float array }
+(** Room for the hits of a CSG's members, [hit_width] floats per hit: depth, side or face, the
+    member's id, the hit point's x, y, z. It grows when a ray crosses more surfaces. *)
+
 
 val make_ctx : ?robust:bool -> Compiled.t -> Stats.t -> ctx
 (** [make_ctx ?robust scene stats] is a context for one render worker, with an empty shadow cache
@@ -33,6 +41,14 @@ val hit_shape : ctx -> Compiled.shape -> Vec.t -> Vec.t -> float -> float
     from [o] meets [shape] within the shape's own limits and at least [lo] (§2, §14.5), or
     infinity; for a mesh the face, for a box the side (1–6: X−, X+, Y−, Y+, Z−, Z+), is left in
     [ctx.sub.(0)]. *)
+
+val hit_width : int
+(** [hit_width] is the number of floats per hit in [ctx.hits]. *)
+
+val all_hits : ctx -> Compiled.obj -> Vec.t -> Vec.t -> float -> int -> int
+(** [all_hits ctx ob o d lo n] appends to [ctx.hits], after its first [n] hits, every crossing at
+    depth ≥ [lo] of the primitive or CSG [ob] along the ray that POV-Ray's All_Intersections
+    keeps (§16.2), in the order it pushes them; it returns the new number of hits. *)
 
 val normal : Compiled.obj -> int -> Vec.t -> Vec.t
 (** [normal obj face p] is the unit normal of [obj] at its surface point [p] ([face]: the mesh face

@@ -44,7 +44,7 @@ let move_point op (p : Vec.t) =
   | Scale s -> Vec.mul p s
   | Rotate _ | Transform _ -> Transform.point (op_transform op) p
 
-let shape (s : Scene.shape) op : Scene.shape =
+let rec shape (s : Scene.shape) op : Scene.shape =
   match s with
   | Sphere { centre; radius; trans = None } -> (
       (* §2.2, Sphere::Translate/Rotate/Scale/Transform *)
@@ -112,6 +112,9 @@ let shape (s : Scene.shape) op : Scene.shape =
   | Mesh { mesh; trans; textures } ->
       (* §2.6, Mesh::Translate/Rotate/Scale all call Transform *)
       Mesh { mesh; trans = Some (attach trans op); textures }
+  | Csg { kind; members } ->
+      (* §16: a CSG's transform moves every member *)
+      Csg { kind; members = List.map (fun (m : Scene.member) -> { m with mobj = { m.mobj with shape = shape m.mobj.shape op } }) members }
 
 (* ---------------------------------------------------------------------------------------------- *)
 (* The whole scene moved: every object, light and the camera scaled by [scale] about the origin and
@@ -120,13 +123,19 @@ let shape (s : Scene.shape) op : Scene.shape =
 
 let scene ~scale ~translate (s : Scene.t) : Scene.t =
   let sv = Vec.make scale scale scale in
-  let obj (o : Scene.obj) =
+  let rec obj (o : Scene.obj) =
     (* a smooth triangle's Scale renormalises its vertex normals, which changes how they blend;
        as a matrix the uniform scale only multiplies all three by the same factor *)
     let scaling =
-      match o.shape with Smooth_triangle _ -> Transform (Transform.scale sv) | Sphere _ | Plane _ | Triangle _ | Mesh _ | Box _ -> Scale sv
+      match o.shape with
+      | Smooth_triangle _ -> Transform (Transform.scale sv)
+      | Sphere _ | Plane _ | Triangle _ | Mesh _ | Box _ | Csg _ -> Scale sv
     in
-    let sh = shape (shape o.shape scaling) (Translate translate) in
+    let sh =
+      match o.shape with
+      | Csg { kind; members } -> Scene.Csg { kind; members = List.map (fun (m : Scene.member) -> { m with mobj = obj m.mobj }) members }
+      | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ -> shape (shape o.shape scaling) (Translate translate)
+    in
     { o with shape = sh; interior = { o.interior with fade_distance = o.interior.fade_distance *. scale } }
   in
   let light (l : Scene.light) =

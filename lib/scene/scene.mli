@@ -56,9 +56,26 @@ type shape =
   | Box of { lo : Vec.t; hi : Vec.t; trans : Transform.t option }
       (** §15.1: the corners sorted per axis ([lo] ≤ [hi]); with [trans], the object-space box
           mapped by it *)
+  | Csg of { kind : csg_kind; members : member list }
+      (** §16: a CSG kept whole (a merge, an intersection or difference, a union with
+          [split_union off]); its members are already moved by its transforms and carry the
+          texture passed down to them (§16.5) *)
+
+(** The kinds of CSG after parsing: a difference is an intersection whose later members are
+    inverted, and an inverted CSG has been morphed (§16.1, §16.3). *)
+and csg_kind = Union | Merge | Intersection
+
+(** A member of a CSG. *)
+and member = {
+  mobj : obj;  (** the member, its texture resolved (its own, else its parent's, §16.5) *)
+  inverted : bool;  (** its Inside test is negated (§16.3); only primitives are inverted, a CSG is morphed *)
+  own_interior : bool;
+      (** it has its own [interior {}]: otherwise it SHARES its parent's interior, the same
+          interior in interior lists (§16.5); [mobj.interior] then holds the parent's values *)
+}
 
 (** A finished object: textured, with an interior (§2.7). *)
-type obj = {
+and obj = {
   shape : shape;
   texture : texture;
   interior : interior;

@@ -31,7 +31,7 @@ let function_names =
 let unsupported_functions = [ "inside"; "trace"; "min_extent"; "max_extent"; "vturbulence"; "datetime"; "function" ]
 
 let function_set = set_of function_names
-let object_set = set_of [ "sphere"; "box"; "plane"; "object"; "triangle"; "smooth_triangle"; "mesh"; "mesh2"; "union" ]
+let object_set = set_of [ "sphere"; "box"; "plane"; "object"; "triangle"; "smooth_triangle"; "mesh"; "mesh2"; "union"; "merge"; "intersection"; "difference" ]
 
 let truth x = Float.abs x > 1e-10
 

@@ -15,11 +15,24 @@ let move_light op (l : Scene.light) = { l with position = Transform.point (Place
 let rec move_obj op (o : V.obj) =
   match o.shape with
   | Prim s -> { o with shape = Prim (move_shape op s) }
-  | Union ms -> { o with shape = Union (List.map (move_member op) ms) }
+  | Csg c -> { o with shape = Csg { c with members = List.map (move_member op) c.members } }
 
 and move_member op = function
   | V.Member_obj o -> V.Member_obj (move_obj op o)
   | V.Member_light l -> V.Member_light (move_light op l)
+
+(* §16.3, Invert_Object and Invert_CSG_Object: a plane turns over (normal and distance negated),
+   another primitive toggles its inverted flag, a CSG inverts every member and morphs by De
+   Morgan's rule: an inverted union or merge is an intersection, an inverted intersection a merge.
+   A light has no geometry to invert. *)
+let rec invert (o : V.obj) : V.obj =
+  match o.shape with
+  | Prim (Plane { normal; offset; trans }) -> { o with shape = Prim (Plane { normal = Vec.neg normal; offset = -.offset; trans }) }
+  | Prim (Sphere _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Csg _) -> { o with inverted = not o.inverted }
+  | Csg { kind; members; split } ->
+      let kind : Scene.csg_kind = match kind with Union | Merge -> Intersection | Intersection -> Merge in
+      let members = List.map (function V.Member_obj c -> V.Member_obj (invert c) | V.Member_light _ as l -> l) members in
+      { o with shape = Csg { kind; members; split } }
 
 let parse_object_mods st (o : V.obj) what : V.obj =
   let tex o = match o.V.texture with Some t -> t | None -> st.default_texture in
@@ -40,12 +53,22 @@ let parse_object_mods st (o : V.obj) what : V.obj =
     | Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") -> loop (move_obj (parse_op st) o)
     | Ident "no_shadow" -> advance st; loop { o with no_shadow = true }
     | Ident "hollow" -> advance st; ignore (parse_bool_opt st); loop o
+    | Ident "inverse" -> advance st; loop (invert o)
+    | Ident "split_union" -> (
+        advance st;
+        let on = parse_bool_opt st in
+        (* §16.4: only a union can be split; POV-Ray accepts the keyword on other CSG and ignores it *)
+        match o.shape with
+        | Csg ({ kind = Union; _ } as c) -> loop { o with shape = Csg { c with split = on } }
+        | Csg { kind = Merge | Intersection; _ } | Prim _ ->
+            warn st loc "split_union only applies to a union; ignored";
+            loop o)
     | Ident s when is_unsupported s -> not_supported loc (Printf.sprintf "'%s'" s)
     | _ -> unexpected st (Printf.sprintf "an object modifier or '}' closing '%s'" what)
   in
   loop o
 
-let new_obj_of shape loc = { V.shape; texture = None; interior = None; no_shadow = false; oloc = loc }
+let new_obj_of shape loc = { V.shape; texture = None; interior = None; no_shadow = false; oloc = loc; inverted = false }
 let new_obj shape loc = new_obj_of (V.Prim shape) loc
 
 
@@ -53,7 +76,7 @@ let new_obj shape loc = new_obj_of (V.Prim shape) loc
 let unsupported_objects =
   [ "cylinder"; "cone"; "disc"; "torus"; "polygon"; "prism"; "lathe"; "sor"; "blob"; "text"; "height_field";
     "isosurface"; "superellipsoid"; "julia_fractal"; "parametric"; "bicubic_patch"; "ovus"; "quadric"; "cubic";
-    "quartic"; "poly"; "intersection"; "difference"; "merge"; "sphere_sweep"; "lemon" ]
+    "quartic"; "poly"; "sphere_sweep"; "lemon" ]
 
 let parse_light st =
   let loc = peek_loc st in
@@ -251,6 +274,9 @@ let unsupported_rvalue_set = set_of (unsupported_objects @ unsupported_rvalues)
 
 let unsupported_object_set = set_of unsupported_objects
 
+(* A light where an object may stand: a union of the light alone, dissolved into the scene's lights. *)
+let light_union l = V.Csg { kind = Union; members = [ V.Member_light l ]; split = true }
+
 let rec parse_object st : V.obj =
   let loc = peek_loc st in
   match peek st with
@@ -313,18 +339,20 @@ let rec parse_object st : V.obj =
         | Ident s -> (
             match cur_value st s with
             | Some (V.Object o) -> advance st; { o with oloc = loc }
-            | Some (V.Light l) -> advance st; { (new_obj_of (V.Union [ V.Member_light l ]) loc) with oloc = loc }
+            | Some (V.Light l) -> advance st; { (new_obj_of (light_union l) loc) with oloc = loc }
             | Some (V.Unsupported u) -> unsupported_use iloc s u.what u.at
             | Some v -> Error.raise_at iloc "'%s' is %s, not an object" s (V.kind_name v)
             | None -> if is_keyword s then unexpected st "an object identifier" else unknown_identifier st iloc s)
         | _ -> unexpected st "an object identifier"
       in
       parse_object_mods st o "object"
-  | Ident "union" ->
-      (* §16.4: a union is dissolved into its members when it enters the scene; its texture,
-         interior and flags go to the members that have none *)
+  | Ident ("union" | "merge" | "intersection" | "difference" as kw) ->
+      (* §16.1: the members first, then the CSG's own modifiers; a difference is an intersection
+         whose members after the first are inverted. §16.4: a union is dissolved into its members
+         when it enters the scene unless split_union is off; its texture, interior and flags go to
+         the members that have none *)
       advance st;
-      open_block st "union";
+      open_block st kw;
       let rec members acc =
         match peek st with
         | Ident "light_source" -> members (V.Member_light (parse_light st) :: acc)
@@ -332,13 +360,18 @@ let rec parse_object st : V.obj =
         | _ -> List.rev acc
       in
       let ms = nest st loc (fun () -> members []) in
-      if List.length ms < 2 then warn st loc "a union should have at least two members";
-      parse_object_mods st (new_obj_of (V.Union ms) loc) "union"
-  | Ident "light_source" -> new_obj_of (V.Union [ V.Member_light (parse_light st) ]) loc
+      if List.length ms < 2 then warn st loc "a %s should have at least two members" kw;
+      let ms =
+        if kw <> "difference" then ms
+        else List.mapi (fun i m -> match m with V.Member_obj o when i > 0 -> V.Member_obj (invert o) | V.Member_obj _ | V.Member_light _ -> m) ms
+      in
+      let kind : Scene.csg_kind = match kw with "union" -> Union | "merge" -> Merge | _ -> Intersection in
+      parse_object_mods st (new_obj_of (V.Csg { kind; members = ms; split = kind = Union }) loc) kw
+  | Ident "light_source" -> new_obj_of (light_union (parse_light st)) loc
   | Ident s -> (
       match cur_value st s with
       | Some (V.Object o) -> advance st; { o with oloc = loc }
-      | Some (V.Light l) -> advance st; new_obj_of (V.Union [ V.Member_light l ]) loc
+      | Some (V.Light l) -> advance st; new_obj_of (light_union l) loc
       | Some (V.Unsupported u) -> unsupported_use loc s u.what u.at
       | _ -> unexpected st "an object")
   | _ -> unexpected st "an object"
@@ -512,21 +545,60 @@ and parse_mesh2 st loc =
   parse_object_mods st (new_obj shape loc) "mesh2"
 
 (* §2.7: every object gets a texture and an interior; a legacy finish ior goes into the interior. *)
-let finish_prim st (o : V.obj) shape : Scene.obj =
+let resolved st (o : V.obj) =
   let texture = match o.texture with Some t -> t | None -> st.default_texture in
   let interior = match o.interior with Some i -> i | None -> Defaults.interior in
   let interior = match texture.finish.legacy_ior with Some ior -> { interior with ior } | None -> interior in
   let interior = if interior.ior = 0. then { interior with ior = 1. } else interior in
+  (texture, interior)
+
+let finish_prim st (o : V.obj) shape : Scene.obj =
+  let texture, interior = resolved st o in
   { Scene.shape; texture; interior; no_shadow = o.no_shadow; loc = o.oloc }
 
-(* An object entering the scene (§16.4, §16.5): a union is dissolved, its members without a texture
-   or interior take the union's, and its no_shadow goes to every member; its lights join the scene's. *)
+(* A member's interior: its own, or its parent's shared (§16.5). *)
+let member_interior (c : V.obj) parent =
+  match c.interior with
+  | Some i -> ((if i.ior = 0. then { i with Scene.ior = 1. } else i), true)
+  | None -> (parent, false)
+
+(* A CSG kept whole (§16.4, §16.5, §19.1): every member gets the parent's texture unless it has its
+   own and shares the parent's interior unless it has its own; the parent's no_shadow goes to every
+   member (only the top level's is ever tested); lights join the scene's lights. *)
+let rec kept_obj st ~texture ~interior (o : V.obj) : Scene.obj =
+  match o.shape with
+  | Prim shape -> { Scene.shape; texture; interior; no_shadow = o.no_shadow; loc = o.oloc }
+  | Csg { kind; members; split = _ } ->
+      let members =
+        List.filter_map
+          (function
+            | V.Member_light l -> count_object st o.oloc; st.lights <- l :: st.lights; None
+            | V.Member_obj c ->
+                let texture = match c.texture with Some t -> t | None -> texture in
+                let interior, own_interior = member_interior c interior in
+                let c = { c with no_shadow = c.no_shadow || o.no_shadow } in
+                Some { Scene.mobj = kept_obj st ~texture ~interior c; inverted = c.inverted; own_interior })
+          members
+      in
+      (* §16.4: a union whose members all have no_shadow has it too *)
+      let no_shadow =
+        o.no_shadow
+        || (match kind with Union -> members <> [] && List.for_all (fun (m : Scene.member) -> m.mobj.no_shadow) members | Merge | Intersection -> false)
+      in
+      { Scene.shape = Csg { kind; members }; texture; interior; no_shadow; loc = o.oloc }
+
+(* An object entering the scene (§16.4, §16.5): a union that may be split is dissolved, its members
+   without a texture or interior take the union's, and its no_shadow goes to every member; its
+   lights join the scene's. Another CSG enters whole. An inverted primitive enters as an
+   intersection of itself alone, which has the same surface and the negated Inside (§16.3). *)
 let rec add_object st (o : V.obj) =
   match o.shape with
-  | Prim shape ->
+  | Prim shape when not o.inverted ->
       count_object st o.oloc;
       st.objects <- finish_prim st o shape :: st.objects
-  | Union ms ->
+  | Prim _ ->
+      add_object st { o with shape = Csg { kind = Intersection; members = [ V.Member_obj o ]; split = false }; texture = None; interior = None; inverted = false }
+  | Csg { kind = Union; members = ms; split = true } ->
       List.iter
         (function
           | V.Member_light l -> count_object st o.oloc; st.lights <- l :: st.lights
@@ -539,4 +611,8 @@ let rec add_object st (o : V.obj) =
                   no_shadow = c.no_shadow || o.no_shadow;
                 })
         ms
-
+  | Csg { kind = Union | Merge | Intersection; members = _; split = _ } ->
+      count_object st o.oloc;
+      let texture, interior = resolved st o in
+      let obj = kept_obj st ~texture ~interior o in
+      st.objects <- obj :: st.objects

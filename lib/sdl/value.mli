@@ -7,10 +7,12 @@ type obj = {
   interior : Scene.interior option;
   no_shadow : bool;
   oloc : Loc.t;
+  inverted : bool;  (** [inverse] on a primitive: its Inside test is negated (§16.3) *)
 }
 
-(** A primitive, or a union whose members are dissolved into the scene (POVRAY-3.7 §16.4). *)
-and shape = Prim of Scene.shape | Union of member list
+(** A primitive, or a CSG: a union with [split] on is dissolved into its members when it enters
+    the scene (POVRAY-3.7 §16.4); any other CSG is kept whole. *)
+and shape = Prim of Scene.shape | Csg of { kind : Scene.csg_kind; members : member list; split : bool }
 
 and member = Member_obj of obj | Member_light of Scene.light
 
