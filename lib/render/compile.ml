@@ -261,7 +261,8 @@ let scene (s : Scene.t) : Compiled.t =
               (fun (m : Scene.member) -> build ~top ~iid:(if m.own_interior then -1 else iid) ~inverted:m.inverted m.mobj)
               members
           in
-          Some (Csg { kind; members = Array.of_list members })
+          let members = Array.of_list members in
+          Some (Csg { kind; members; cbox = pov_box (Csg { kind; members; cbox = [||] }) })
       | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ ->
           let sh = prim_of o.shape in
           if sh <> None then incr next;

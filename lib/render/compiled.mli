@@ -55,7 +55,11 @@ type shape =
           All_Intersections pushes them); the exhaustive matches point at each. *)
 
 (** A CSG's members and how their hits are kept (§16.2, §16.3). *)
-and csg = { kind : Scene.csg_kind; members : obj array }
+and csg = {
+  kind : Scene.csg_kind;
+  members : obj array;
+  cbox : float array;  (** POV-Ray's box of the CSG, as [obj.pbox]; the ray is tested against it first *)
+}
 
 (** An object ready to trace: a top-level object, or a member of a CSG. *)
 and obj = {

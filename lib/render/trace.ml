@@ -224,10 +224,55 @@ let box_trans_depth ctx (b : box) (t : Transform.t) (o : Vec.t) (d : Vec.t) lo =
   let vz = (d.x *. t.i02) +. (d.y *. t.i12) +. (d.z *. t.i22) in
   box_depth ctx b px py pz vx vy vz lo
 
+(* Where the ray enters POV-Ray's box [b] of an object (Check_And_Enqueue, with the ray as Rayinfo
+   holds it: origin and reciprocal direction in single precision, and the slab arithmetic in single
+   precision too), or infinity when it misses the box. *)
+let pov_entry (b : float array) (o : Vec.t) (d : Vec.t) =
+  let bound_huge = 2e10 in
+  let exception Miss in
+  let slab ll len on dn =
+    (* the interval of the slab along the ray, or None for a direction parallel to it *)
+    if dn <> 0. then begin
+      let sd = f32 (1. /. dn) in
+      let near = f32 (f32 (ll -. f32 on) *. sd) in
+      let span = f32 (len *. sd) in
+      Some (if dn > 0. then (near, near +. span) else (near +. span, near))
+    end
+    else
+      let sn = f32 on in
+      if sn < ll || sn > f32 (len +. ll) then raise Miss else None
+  in
+  try
+    let dmin, dmax =
+      match slab b.(0) b.(3) o.x d.x with
+      | Some (lo, hi) -> if hi < epsilon || lo > hi then raise Miss else (lo, hi)
+      | None -> (-.bound_huge, bound_huge)
+    in
+    let narrow ~last (dmin, dmax) = function
+      | None -> (dmin, dmax)
+      | Some (tmin, tmax) ->
+          if tmax < dmax then begin
+            if tmax < epsilon then raise Miss;
+            let dmin =
+              if tmin > dmin then (if tmin > tmax then raise Miss; tmin) else if dmin > tmax then raise Miss else dmin
+            in
+            (* the Z step does not lower dmax: it is not used afterwards *)
+            (dmin, if last then dmax else tmax)
+          end
+          else if tmin > dmin then (if tmin > dmax then raise Miss; (tmin, dmax))
+          else (dmin, dmax)
+    in
+    let r = narrow ~last:false (dmin, dmax) (slab b.(1) b.(4) o.y d.y) in
+    fst (narrow ~last:true r (slab b.(2) b.(5) o.z d.z))
+  with Miss -> infinity
+
 let rec hit_shape ctx shape (o : Vec.t) (d : Vec.t) lo =
   let stats = ctx.stats in
   match shape with
-  | Csg c -> csg_depth ctx c o d lo
+  | Csg c ->
+      (* Trace::FindIntersection tests a CSG's single-precision box first (§15.8): a ray grazing
+         an edge of the box within its rounding misses the CSG *)
+      if Array.length c.cbox > 0 && pov_entry c.cbox o d = infinity then infinity else csg_depth ctx c o d lo
   | Sphere s -> sphere_depth stats ctx.lim s.cx s.cy s.cz s.r2 o d lo
   | Ellipsoid { sp; etr } -> ellipsoid_depth stats ctx.lim sp etr o d lo
   | Plane p ->
@@ -438,48 +483,6 @@ and csg_depth ctx (c : csg) o d lo =
     ctx.leaf.(0) <- int_of_float h.((!bj * hit_width) + 2)
   end;
   !best
-
-(* Where the ray enters POV-Ray's box [b] of an object (Check_And_Enqueue, with the ray as Rayinfo
-   holds it: origin and reciprocal direction in single precision, and the slab arithmetic in single
-   precision too), or infinity when it misses the box. *)
-let pov_entry (b : float array) (o : Vec.t) (d : Vec.t) =
-  let bound_huge = 2e10 in
-  let exception Miss in
-  let slab ll len on dn =
-    (* the interval of the slab along the ray, or None for a direction parallel to it *)
-    if dn <> 0. then begin
-      let sd = f32 (1. /. dn) in
-      let near = f32 (f32 (ll -. f32 on) *. sd) in
-      let span = f32 (len *. sd) in
-      Some (if dn > 0. then (near, near +. span) else (near +. span, near))
-    end
-    else
-      let sn = f32 on in
-      if sn < ll || sn > f32 (len +. ll) then raise Miss else None
-  in
-  try
-    let dmin, dmax =
-      match slab b.(0) b.(3) o.x d.x with
-      | Some (lo, hi) -> if hi < epsilon || lo > hi then raise Miss else (lo, hi)
-      | None -> (-.bound_huge, bound_huge)
-    in
-    let narrow ~last (dmin, dmax) = function
-      | None -> (dmin, dmax)
-      | Some (tmin, tmax) ->
-          if tmax < dmax then begin
-            if tmax < epsilon then raise Miss;
-            let dmin =
-              if tmin > dmin then (if tmin > tmax then raise Miss; tmin) else if dmin > tmax then raise Miss else dmin
-            in
-            (* the Z step does not lower dmax: it is not used afterwards *)
-            (dmin, if last then dmax else tmax)
-          end
-          else if tmin > dmin then (if tmin > dmax then raise Miss; (tmin, dmax))
-          else (dmin, dmax)
-    in
-    let r = narrow ~last:false (dmin, dmax) (slab b.(1) b.(4) o.y d.y) in
-    fst (narrow ~last:true r (slab b.(2) b.(5) o.z d.z))
-  with Miss -> infinity
 
 (* Whether [ob], hit at exactly the depth of the current best [cur], replaces it: POV-Ray keeps the
    first of equal depths it meets. Without its bounding hierarchy it tests the objects in scene
