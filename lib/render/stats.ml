@@ -15,12 +15,20 @@ type t = {
   mutable box_hits : int;
   mutable max_level : int;
   mutable samples : int;
+  mutable csg_union_tests : int;
+  mutable csg_union_hits : int;
+  mutable csg_intersection_tests : int;
+  mutable csg_intersection_hits : int;
+  mutable csg_merge_tests : int;
+  mutable csg_merge_hits : int;
 }
 
 let create () =
   {
     camera_rays = 0; reflected_rays = 0; refracted_rays = 0; shadow_rays = 0; sphere_tests = 0;
     sphere_hits = 0; plane_tests = 0; plane_hits = 0; triangle_tests = 0; triangle_hits = 0; mesh_tests = 0; mesh_hits = 0; box_tests = 0; box_hits = 0; max_level = 0; samples = 0;
+    csg_union_tests = 0; csg_union_hits = 0; csg_intersection_tests = 0; csg_intersection_hits = 0; csg_merge_tests = 0;
+    csg_merge_hits = 0;
   }
 
 let merge a b =
@@ -41,4 +49,10 @@ let merge a b =
     box_hits = a.box_hits + b.box_hits;
     max_level = max a.max_level b.max_level;
     samples = a.samples + b.samples;
+    csg_union_tests = a.csg_union_tests + b.csg_union_tests;
+    csg_union_hits = a.csg_union_hits + b.csg_union_hits;
+    csg_intersection_tests = a.csg_intersection_tests + b.csg_intersection_tests;
+    csg_intersection_hits = a.csg_intersection_hits + b.csg_intersection_hits;
+    csg_merge_tests = a.csg_merge_tests + b.csg_merge_tests;
+    csg_merge_hits = a.csg_merge_hits + b.csg_merge_hits;
   }

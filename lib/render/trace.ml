@@ -425,6 +425,11 @@ and box_pair ctx n lo id o d =
    is inside every other member; a merge one inside no other member. A member's surviving hits
    are taken off its own stack, so they are pushed in reverse (intersection and merge). *)
 and csg_hits ctx (c : csg) o d lo n =
+  let stats = ctx.stats and n0 = n in
+  (match c.kind with
+  | Union -> stats.csg_union_tests <- stats.csg_union_tests + 1
+  | Intersection -> stats.csg_intersection_tests <- stats.csg_intersection_tests + 1
+  | Merge -> stats.csg_merge_tests <- stats.csg_merge_tests + 1);
   let members = c.members in
   let nm = Array.length members in
   let n = ref n in
@@ -465,6 +470,11 @@ and csg_hits ctx (c : csg) o d lo n =
         done;
         n := !w
   done;
+  (if !n > n0 then
+     match c.kind with
+     | Union -> stats.csg_union_hits <- stats.csg_union_hits + 1
+     | Intersection -> stats.csg_intersection_hits <- stats.csg_intersection_hits + 1
+     | Merge -> stats.csg_merge_hits <- stats.csg_merge_hits + 1);
   !n
 
 (* §16.2: the nearest hit of a top-level CSG: its hits are popped from the stack, last pushed
