@@ -29,6 +29,8 @@ let rec invert (o : V.obj) : V.obj =
   match o.shape with
   | Prim (Plane { normal; offset; trans }) -> { o with shape = Prim (Plane { normal = Vec.neg normal; offset = -.offset; trans }) }
   | Prim (Sphere _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Csg _) -> { o with inverted = not o.inverted }
+  | Csg { members; _ } when List.for_all (function V.Member_light _ -> true | V.Member_obj _ -> false) members ->
+      o (* lights only (a light in object position): nothing to invert *)
   | Csg { kind; members; split } ->
       let kind : Scene.csg_kind = match kind with Union | Merge -> Intersection | Intersection -> Merge in
       let members = List.map (function V.Member_obj c -> V.Member_obj (invert c) | V.Member_light _ as l -> l) members in
@@ -57,12 +59,12 @@ let parse_object_mods st (o : V.obj) what : V.obj =
     | Ident "split_union" -> (
         advance st;
         let on = parse_bool_opt st in
-        (* §16.4: only a union can be split; POV-Ray accepts the keyword on other CSG and ignores it *)
+        (* §16.4: only a union is ever split; POV-Ray accepts the keyword on a merge (a kind of
+           union to it) without effect and stops on any other object *)
         match o.shape with
         | Csg ({ kind = Union; _ } as c) -> loop { o with shape = Csg { c with split = on } }
-        | Csg { kind = Merge | Intersection; _ } | Prim _ ->
-            warn st loc "split_union only applies to a union; ignored";
-            loop o)
+        | Csg { kind = Merge; _ } -> loop o
+        | Csg { kind = Intersection; _ } | Prim _ -> Error.raise_at loc "split_union found in a non-union object")
     | Ident s when is_unsupported s -> not_supported loc (Printf.sprintf "'%s'" s)
     | _ -> unexpected st (Printf.sprintf "an object modifier or '}' closing '%s'" what)
   in

@@ -98,9 +98,10 @@ let test_parse_warnings () =
   let w = warnings "difference { sphere { 0, 1 } }" in
   Alcotest.(check bool) "fewer than two members: a warning" true
     (List.exists (fun (e : Error.t) -> contains ~sub:"at least two members" e.msg) w);
-  let w = warnings "merge { sphere { 0, 1 } sphere { x, 1 } split_union off }" in
-  Alcotest.(check bool) "split_union on a merge: a warning" true
-    (List.exists (fun (e : Error.t) -> contains ~sub:"split_union only applies to a union" e.msg) w);
+  let kind, _ = members_of (the_object (scene "merge { sphere { 0, 1 } sphere { x, 1 } split_union on }")) in
+  check_kind "split_union on a merge: accepted, still a merge" Merge kind;
+  expect_scene_error "split_union on an intersection" "intersection { sphere { 0, 1 } sphere { x, 1 }\n split_union off }" ~line:2
+    ~col:2 ~sub:"split_union found in a non-union object";
   expect_scene_error "a non-object in a CSG" "difference { sphere { 0, 1 } 42 }" ~line:1 ~col:30 ~sub:"expected"
 
 (* ---------------------------------------------------------------------------------------------- *)
