@@ -357,7 +357,11 @@ let rec parse_object st : V.obj =
       open_block st kw;
       let rec members acc =
         match peek st with
-        | Ident "light_source" -> members (V.Member_light (parse_light st) :: acc)
+        | Ident "light_source" ->
+            (* POV-Ray warns (and keeps the light) in an intersection or difference (§19.1) *)
+            if kw = "intersection" || kw = "difference" then
+              warn st (peek_loc st) "a light_source (a patch object) is not allowed in an %s; it is kept as a light" kw;
+            members (V.Member_light (parse_light st) :: acc)
         | _ when object_follows st -> members (V.Member_obj (parse_object st) :: acc)
         | _ -> List.rev acc
       in
