@@ -74,6 +74,10 @@ let rec bounds = function
         (Some [| infinity; infinity; infinity; neg_infinity; neg_infinity; neg_infinity |])
         members
       |> Option.map (fun b -> if b.(0) > b.(3) then [| 0.; 0.; 0.; 0.; 0.; 0. |] else b)
+  | Csg { kind = Intersection; members = [| m |] } when m.inverted ->
+      (* an inverted primitive written alone enters as an intersection of itself (Objects); POV-Ray
+         keeps such a primitive's own box *)
+      bounds m.shape
   | Csg { kind = Intersection; members } ->
       let b =
         Array.fold_left

@@ -288,6 +288,9 @@ let test_compiled () =
   Alcotest.(check (list (float 0.))) "intersection box" [ 0.; -1.; -1.; 1.; 2.; 2. ] (Array.to_list c.objects.(0).pbox);
   let c, _ = setup ("union { " ^ two ^ " split_union off }") in
   Alcotest.(check (list (float 0.))) "union box" [ -1.5; -1.; -1.; 3.; 2.; 2. ] (Array.to_list c.objects.(0).pbox);
+  (* an inverted sphere alone keeps the sphere's box, as POV-Ray's inverted primitive does *)
+  let c, _ = setup "sphere { 0, 1 inverse }" in
+  Alcotest.(check (list (float 0.))) "inverse sphere box" [ -1.; -1.; -1.; 2.; 2.; 2. ] (Array.to_list c.objects.(0).pbox);
   (* a union with a plane is unbounded *)
   let c, _ = setup "union { plane { y, 0 } sphere { 0, 1 } split_union off }" in
   Alcotest.(check int) "union with a plane: unbounded" 1 (Array.length c.all.unbounded);
