@@ -686,8 +686,13 @@ let shadow ctx ~slot (p : Vec.t) (ng : Vec.t) e (l : Vec.t) dist interiors (lc :
       let in_cache =
         cached >= 0
         &&
-        if ctx.robust then hit_shape ctx sc.objects.(cached).shape o l lo < dist -. robust_margin p lp dist
-        else hit_shape ctx sc.objects.(cached).shape p l min_isect_depth < dist
+        (if ctx.robust then hit_shape ctx sc.objects.(cached).shape o l lo < dist -. robust_margin p lp dist
+         else hit_shape ctx sc.objects.(cached).shape p l min_isect_depth < dist)
+        &&
+        (* a cached CSG shadows only if the member hit is opaque *)
+        match sc.objects.(cached).shape with
+        | Csg _ -> sc.objects.(ctx.leaf.(0)).opaque
+        | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ -> true
       in
       if in_cache then Rgb.black
       else
@@ -698,8 +703,9 @@ let shadow ctx ~slot (p : Vec.t) (ng : Vec.t) e (l : Vec.t) dist interiors (lc :
         else
           let obj = sc.objects.(i) in
           if obj.opaque then begin
-            (* the cache holds the top-level object (a CSG, not its member) *)
-            if first then ctx.shadow_cache.(slot) <- obj.top;
+            (* the cache holds the top-level object (a CSG, not its member), and a CSG only when
+               its own texture is opaque: POV-Ray tests the OPAQUE flag of Intersection.Csg *)
+            if first && not sc.objects.(obj.top).surf.transparent then ctx.shadow_cache.(slot) <- obj.top;
             Rgb.black
           end
           else

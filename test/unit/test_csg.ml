@@ -317,7 +317,19 @@ let test_shadow_cache () =
   let c = compile (v37 ^ "light_source { <0, 10, 0>, 1 } intersection { box { -1, 1 } sphere { 0, 1.2 } translate y*3 } plane { y, 0 }") in
   let ctx = Trace.make_ctx c (Stats.create ()) in
   ignore (Trace.trace ctx ~level:0 ~weight:1. ~interiors:[] ~continued:false (v 0. 1. (-5.)) (Vec.normalize (v 0. (-1.) 5.)));
-  Alcotest.(check bool) "cached: the CSG" true (Array.exists (fun i -> i = 0) ctx.shadow_cache)
+  Alcotest.(check bool) "cached: the CSG" true (Array.exists (fun i -> i = 0) ctx.shadow_cache);
+  (* opaque members but a transparent texture on the CSG itself: POV-Ray tests the CSG's OPAQUE
+     flag before caching, so nothing is cached, though the shadow is full *)
+  let c =
+    compile
+      (v37
+     ^ "light_source { <0, 10, 0>, 1 } intersection { box { -1, 1 pigment { rgb 1 } } sphere { 0, 1.2 pigment { rgb 1 } } \
+        pigment { rgbt <1, 1, 1, 0.5> } translate y*3 } plane { y, 0 finish { ambient 0 } }")
+  in
+  let ctx = Trace.make_ctx c (Stats.create ()) in
+  let r = Trace.trace ctx ~level:0 ~weight:1. ~interiors:[] ~continued:false (v 0. 1. (-5.)) (Vec.normalize (v 0. (-1.) 5.)) in
+  result_eq "full shadow" (0., 0., 0.) r;
+  Alcotest.(check bool) "not cached" true (Array.for_all (fun i -> i < 0) ctx.shadow_cache)
 
 let tests =
   [
