@@ -271,8 +271,9 @@ let rec hit_shape ctx shape (o : Vec.t) (d : Vec.t) lo =
   match shape with
   | Csg c ->
       (* Trace::FindIntersection tests a CSG's single-precision box first (§15.8): a ray grazing
-         an edge of the box within its rounding misses the CSG *)
-      if Array.length c.cbox > 0 && pov_entry c.cbox o d = infinity then infinity else csg_depth ctx c o d lo
+         an edge of the box within its rounding misses the CSG. The robust mode decides by the
+         geometry alone. *)
+      if (not ctx.robust) && Array.length c.cbox > 0 && pov_entry c.cbox o d = infinity then infinity else csg_depth ctx c o d lo
   | Sphere s -> sphere_depth stats ctx.lim s.cx s.cy s.cz s.r2 o d lo
   | Ellipsoid { sp; etr } -> ellipsoid_depth stats ctx.lim sp etr o d lo
   | Plane p ->
