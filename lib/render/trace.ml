@@ -747,7 +747,10 @@ let light_terms ctx ~slot (s : surface) (p : Vec.t) (n : Vec.t) ng e (d : Vec.t)
   let acc = Rgb.black in
   let lvx = lt.lx -. p.x and lvy = lt.ly -. p.y and lvz = lt.lz -. p.z in
   let dist = sqrt ((lvx *. lvx) +. (lvy *. lvy) +. (lvz *. lvz)) in
-  let l = Vec.make (lvx /. dist) (lvy /. dist) (lvz /. dist) in
+  (* ComputeOneWhiteLightRay: VInverseScaleEq, times the reciprocal of the distance; the last bit
+     decides knife-edge shadow rays, such as one through faces shared by CSG members *)
+  let k = 1. /. dist in
+  let l = Vec.make (lvx *. k) (lvy *. k) (lvz *. k) in
   let lc =
     if lt.fade then
       let a = 2. /. (1. +. Float.pow (dist /. lt.lfade_distance) lt.lfade_power) in
