@@ -33,8 +33,8 @@ let rec inside stack shape (p : Vec.t) =
   match shape with
   | Csg { kind = Union | Merge; members } ->
       (* §16.3: inside any member, or inside every member *)
-      Array.exists (fun m -> inside stack m.shape p <> m.inverted) members
-  | Csg { kind = Intersection; members } -> Array.for_all (fun m -> inside stack m.shape p <> m.inverted) members
+      Array.exists (fun m -> inside_member stack m p) members
+  | Csg { kind = Intersection; members } -> Array.for_all (fun m -> inside_member stack m p) members
   | Box b -> in_box b p
   | Box_trans { bx; btr } -> in_box bx (Transform.inv_point btr p)
   | Sphere s ->
@@ -59,12 +59,21 @@ let rec inside stack shape (p : Vec.t) =
         | None -> false
         | Some d -> Mesh.inside_along m.mesh stack (Transform.inv_point m.tr p) (Transform.normalize (Transform.inv_direction m.tr d)))
 
+(* A CSG member's Inside: a primitive's negated when it is inverted; an inverted CSG was morphed
+   and its own Inside already holds the inversion (§16.3). *)
+and inside_member stack (m : obj) p =
+  match m.shape with
+  | Csg _ -> inside stack m.shape p
+  | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ ->
+      inside stack m.shape p <> m.inverted
+
 (* The box of a bounded shape; None for an unbounded one. A transformed shape's box is its
    object-space box with the corners mapped (Recompute_BBox, §15.8). *)
 let rec bounds = function
   | Csg { kind = Union | Merge; members } ->
       (* CSG::Compute_BBox: a union's or merge's box holds its members' boxes; an intersection's is
-         the overlap of its members' that are not inverted. A plane is unbounded here (POV-Ray
+         the overlap of its members' that are not inverted (an inverted CSG, morphed, counts as
+         inverted: its surfaces are bounded, its inside is not). A plane is unbounded here (POV-Ray
          bounds an axis-aligned one on one side: that changes only equal-depth ties). *)
       Array.fold_left
         (fun acc m ->
@@ -74,7 +83,8 @@ let rec bounds = function
         (Some [| infinity; infinity; infinity; neg_infinity; neg_infinity; neg_infinity |])
         members
       |> Option.map (fun b -> if b.(0) > b.(3) then [| 0.; 0.; 0.; 0.; 0.; 0. |] else b)
-  | Csg { kind = Intersection; members = [| m |] } when m.inverted ->
+  | Csg { kind = Intersection; members = [| ({ shape = Sphere _ | Ellipsoid _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _; _ } as m) |] }
+    when m.inverted ->
       (* an inverted primitive written alone enters as an intersection of itself (Objects); POV-Ray
          keeps such a primitive's own box *)
       bounds m.shape

@@ -449,7 +449,7 @@ and csg_hits ctx (c : csg) o d lo n =
           while !keep && !i < nm do
             (if !i <> k then
                let m = members.(!i) in
-               if Compile.inside ctx.mstack m.shape p <> m.inverted <> want then keep := false);
+               if Compile.inside_member ctx.mstack m p <> want then keep := false);
             incr i
           done;
           if !keep then begin

@@ -68,7 +68,10 @@ and csg_kind = Union | Merge | Intersection
 (** A member of a CSG. *)
 and member = {
   mobj : obj;  (** the member, its texture resolved (its own, else its parent's, §16.5) *)
-  inverted : bool;  (** its Inside test is negated (§16.3); only primitives are inverted, a CSG is morphed *)
+  inverted : bool;
+      (** a primitive: its Inside test is negated (§16.3); a CSG: it was inverted, which morphed it
+          (its Inside already holds the inversion) and leaves it out of an enclosing
+          intersection's bounding box *)
   own_interior : bool;
       (** it has its own [interior {}]: otherwise it SHARES its parent's interior, the same
           interior in interior lists (§16.5); [mobj.interior] then holds the parent's values *)

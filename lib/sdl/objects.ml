@@ -34,7 +34,8 @@ let rec invert (o : V.obj) : V.obj =
   | Csg { kind; members; split } ->
       let kind : Scene.csg_kind = match kind with Union | Merge -> Intersection | Intersection -> Merge in
       let members = List.map (function V.Member_obj c -> V.Member_obj (invert c) | V.Member_light _ as l -> l) members in
-      { o with shape = Csg { kind; members; split } }
+      (* the CSG keeps an inverted flag too: an enclosing intersection leaves it out of its box *)
+      { o with shape = Csg { kind; members; split }; inverted = not o.inverted }
 
 let parse_object_mods st (o : V.obj) what : V.obj =
   let tex o = match o.V.texture with Some t -> t | None -> st.default_texture in
@@ -603,6 +604,7 @@ let rec add_object st (o : V.obj) =
       count_object st o.oloc;
       st.objects <- finish_prim st o shape :: st.objects
   | Prim _ ->
+      (* an inverted primitive *)
       add_object st { o with shape = Csg { kind = Intersection; members = [ V.Member_obj o ]; split = false }; texture = None; interior = None; inverted = false }
   | Csg { kind = Union; members = ms; split = true } ->
       List.iter

@@ -7,7 +7,7 @@ type obj = {
   interior : Scene.interior option;
   no_shadow : bool;
   oloc : Loc.t;
-  inverted : bool;  (** [inverse] on a primitive: its Inside test is negated (§16.3) *)
+  inverted : bool;  (** [inverse] was applied: a primitive's Inside is negated, a CSG was morphed (§16.3) *)
 }
 
 (** A primitive, or a CSG: a union with [split] on is dissolved into its members when it enters

@@ -288,6 +288,13 @@ let test_compiled () =
   Alcotest.(check (list (float 0.))) "intersection box" [ 0.; -1.; -1.; 1.; 2.; 2. ] (Array.to_list c.objects.(0).pbox);
   let c, _ = setup ("union { " ^ two ^ " split_union off }") in
   Alcotest.(check (list (float 0.))) "union box" [ -1.5; -1.; -1.; 3.; 2.; 2. ] (Array.to_list c.objects.(0).pbox);
+  (* an inverted CSG (morphed) is left out of an enclosing intersection's box: ¬(box ∩ ¬S) is not
+     bounded by its members' boxes; the intersection's box is the outer box's *)
+  let c, _ = setup "intersection { difference { box { -0.5, 0.5 } sphere { 0, 0.4 } inverse } box { -0.7, 0.7 } }" in
+  Alcotest.(check (list (float 1e-7))) "inverted CSG member" [ -0.7; -0.7; -0.7; 1.4; 1.4; 1.4 ] (Array.to_list c.objects.(0).pbox);
+  (* … and its Inside is the morphed CSG's own: outside the inner box, or in the sphere *)
+  Alcotest.(check (list bool)) "inverted CSG member: Inside" [ true; true; false ]
+    (List.map (inside_of c 1) [ v 0.6 0. 0.; Vec.zero; v 0.45 0. 0. ]);
   (* an inverted sphere alone keeps the sphere's box, as POV-Ray's inverted primitive does *)
   let c, _ = setup "sphere { 0, 1 inverse }" in
   Alcotest.(check (list (float 0.))) "inverse sphere box" [ -1.; -1.; -1.; 2.; 2.; 2. ] (Array.to_list c.objects.(0).pbox);
