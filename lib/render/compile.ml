@@ -34,7 +34,9 @@ let rec inside stack shape (p : Vec.t) =
   | Csg { kind = Union | Merge; members } ->
       (* §16.3: inside any member, or inside every member *)
       Array.exists (fun m -> inside_member stack m p) members
-  | Csg { kind = Intersection; members } -> Array.for_all (fun m -> inside_member stack m p) members
+  | Csg { kind = Intersection | Clipped; members } ->
+      (* a clipped object's Inside asks its clip objects too (Inside_Object) *)
+      Array.for_all (fun m -> inside_member stack m p) members
   | Box b -> in_box b p
   | Box_trans { bx; btr } -> in_box bx (Transform.inv_point btr p)
   | Sphere s ->
@@ -88,7 +90,7 @@ let rec bounds = function
       (* an inverted primitive written alone enters as an intersection of itself (Objects); POV-Ray
          keeps such a primitive's own box *)
       bounds m.shape
-  | Csg { kind = Intersection; members } ->
+  | Csg { kind = Intersection | Clipped; members } ->
       let b =
         Array.fold_left
           (fun acc m ->

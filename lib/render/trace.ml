@@ -430,17 +430,21 @@ and csg_hits ctx (c : csg) o d lo n =
   (match c.kind with
   | Union -> stats.csg_union_tests <- stats.csg_union_tests + 1
   | Intersection -> stats.csg_intersection_tests <- stats.csg_intersection_tests + 1
-  | Merge -> stats.csg_merge_tests <- stats.csg_merge_tests + 1);
+  | Merge -> stats.csg_merge_tests <- stats.csg_merge_tests + 1
+  | Clipped -> ());
   let members = c.members in
   let nm = Array.length members in
   let n = ref n in
-  for k = 0 to nm - 1 do
+  (* a clipped object: only the first member's hits, inside every clip object, in their order
+     (Point_In_Clip as each hit is pushed) *)
+  let last = match c.kind with Clipped -> min 0 (nm - 1) | Union | Intersection | Merge -> nm - 1 in
+  for k = 0 to last do
     let start = !n in
     let e = all_hits ctx members.(k) o d lo start in
     match c.kind with
     | Union -> n := e
-    | Intersection | Merge ->
-        let want = match c.kind with Intersection -> true | Union | Merge -> false in
+    | Intersection | Merge | Clipped ->
+        let want = match c.kind with Intersection | Clipped -> true | Union | Merge -> false in
         let w = ref start in
         for j = start to e - 1 do
           let h = ctx.hits.h and b = j * hit_width in
@@ -459,7 +463,7 @@ and csg_hits ctx (c : csg) o d lo n =
         done;
         (* reverse the kept hits [start, w) *)
         let h = ctx.hits.h in
-        let a = ref start and z = ref (!w - 1) in
+        let a = ref start and z = ref (match c.kind with Clipped -> start | Union | Intersection | Merge -> !w - 1) in
         while !a < !z do
           for f = 0 to hit_width - 1 do
             let x = h.((!a * hit_width) + f) in
@@ -475,7 +479,8 @@ and csg_hits ctx (c : csg) o d lo n =
      match c.kind with
      | Union -> stats.csg_union_hits <- stats.csg_union_hits + 1
      | Intersection -> stats.csg_intersection_hits <- stats.csg_intersection_hits + 1
-     | Merge -> stats.csg_merge_hits <- stats.csg_merge_hits + 1);
+     | Merge -> stats.csg_merge_hits <- stats.csg_merge_hits + 1
+     | Clipped -> ());
   !n
 
 (* §16.2: the nearest hit of a top-level CSG: its hits are popped from the stack, last pushed

@@ -82,7 +82,8 @@ let rec shape = function
         ^ (if m.inverted then " inverse" else "")
         ^ if m.own_interior then "" else " shared interior"
       in
-      Printf.sprintf "%s {\n  %s" (match kind with Union -> "union" | Merge -> "merge" | Intersection -> "intersection")
+      Printf.sprintf "%s {\n  %s"
+        (match kind with Union -> "union" | Merge -> "merge" | Intersection -> "intersection" | Clipped -> "clipped (the first by the others)")
         (String.concat "\n  " (List.map member members))
 
 and obj (o : obj) =

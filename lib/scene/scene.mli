@@ -62,8 +62,10 @@ type shape =
           texture passed down to them (§16.5) *)
 
 (** The kinds of CSG after parsing: a difference is an intersection whose later members are
-    inverted, and an inverted CSG has been morphed (§16.1, §16.3). *)
-and csg_kind = Union | Merge | Intersection
+    inverted, and an inverted CSG has been morphed (§16.1, §16.3). [Clipped] is an object with
+    [clipped_by]: its first member is the object, the others the clip objects, whose surfaces are
+    not seen; the object's hits are kept inside every clip object (§15.8). *)
+and csg_kind = Union | Merge | Intersection | Clipped
 
 (** A member of a CSG. *)
 and member = {

@@ -31,45 +31,15 @@ let rec invert (o : V.obj) : V.obj =
   | Prim (Sphere _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Csg _) -> { o with inverted = not o.inverted }
   | Csg { members; _ } when List.for_all (function V.Member_light _ -> true | V.Member_obj _ -> false) members ->
       o (* lights only (a light in object position): nothing to invert *)
-  | Csg { kind; members; split } ->
-      let kind : Scene.csg_kind = match kind with Union | Merge -> Intersection | Intersection -> Merge in
+  | Csg { kind = Clipped; members = V.Member_obj c :: clips; split } ->
+      (* the object is inverted, its clip objects are not *)
+      { o with shape = Csg { kind = Clipped; members = V.Member_obj (invert c) :: clips; split } }
+  | Csg { kind = (Union | Merge | Intersection | Clipped) as kind; members; split } ->
+      let kind : Scene.csg_kind = match kind with Union | Merge -> Intersection | Intersection | Clipped -> Merge in
       let members = List.map (function V.Member_obj c -> V.Member_obj (invert c) | V.Member_light _ as l -> l) members in
       (* the CSG keeps an inverted flag too: an enclosing intersection leaves it out of its box *)
       { o with shape = Csg { kind; members; split }; inverted = not o.inverted }
 
-let parse_object_mods st (o : V.obj) what : V.obj =
-  let tex o = match o.V.texture with Some t -> t | None -> st.default_texture in
-  let rec loop (o : V.obj) =
-    let loc = peek_loc st in
-    match peek st with
-    | RBrace -> advance st; o
-    | Ident "pigment" -> advance st; let t = tex o in loop { o with texture = Some { t with pigment = parse_pigment st t.pigment } }
-    | Ident "finish" -> advance st; let t = tex o in loop { o with texture = Some { t with finish = parse_finish st t.finish } }
-    | Ident "texture" ->
-        advance st;
-        if o.texture <> None then not_supported loc "layered textures (a texture added to an object that has one)";
-        loop { o with texture = Some (parse_texture st st.default_texture) }
-    | Ident "interior" ->
-        advance st;
-        let base = match o.interior with Some i -> i | None -> Defaults.interior in
-        loop { o with interior = Some (parse_interior st base) }
-    | Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") -> loop (move_obj (parse_op st) o)
-    | Ident "no_shadow" -> advance st; loop { o with no_shadow = true }
-    | Ident "hollow" -> advance st; ignore (parse_bool_opt st); loop o
-    | Ident "inverse" -> advance st; loop (invert o)
-    | Ident "split_union" -> (
-        advance st;
-        let on = parse_bool_opt st in
-        (* §16.4: only a union is ever split; POV-Ray accepts the keyword on a merge (a kind of
-           union to it) without effect and stops on any other object *)
-        match o.shape with
-        | Csg ({ kind = Union; _ } as c) -> loop { o with shape = Csg { c with split = on } }
-        | Csg { kind = Merge; _ } -> loop o
-        | Csg { kind = Intersection; _ } | Prim _ -> Error.raise_at loc "split_union found in a non-union object")
-    | Ident s when is_unsupported s -> not_supported loc (Printf.sprintf "'%s'" s)
-    | _ -> unexpected st (Printf.sprintf "an object modifier or '}' closing '%s'" what)
-  in
-  loop o
 
 let new_obj_of shape loc = { V.shape; texture = None; interior = None; no_shadow = false; oloc = loc; inverted = false }
 let new_obj shape loc = new_obj_of (V.Prim shape) loc
@@ -383,6 +353,64 @@ let rec parse_object st : V.obj =
       | _ -> unexpected st "an object")
   | _ -> unexpected st "an object"
 
+(* The modifiers of an object, up to its closing brace. *)
+and parse_object_mods st (o : V.obj) what : V.obj =
+  let tex o = match o.V.texture with Some t -> t | None -> st.default_texture in
+  let rec loop (o : V.obj) =
+    let loc = peek_loc st in
+    match peek st with
+    | RBrace -> advance st; o
+    | Ident "pigment" -> advance st; let t = tex o in loop { o with texture = Some { t with pigment = parse_pigment st t.pigment } }
+    | Ident "finish" -> advance st; let t = tex o in loop { o with texture = Some { t with finish = parse_finish st t.finish } }
+    | Ident "texture" ->
+        advance st;
+        if o.texture <> None then not_supported loc "layered textures (a texture added to an object that has one)";
+        loop { o with texture = Some (parse_texture st st.default_texture) }
+    | Ident "interior" ->
+        advance st;
+        let base = match o.interior with Some i -> i | None -> Defaults.interior in
+        loop { o with interior = Some (parse_interior st base) }
+    | Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") -> loop (move_obj (parse_op st) o)
+    | Ident "no_shadow" -> advance st; loop { o with no_shadow = true }
+    | Ident "hollow" -> advance st; ignore (parse_bool_opt st); loop o
+    | Ident "inverse" -> advance st; loop (invert o)
+    | Ident "split_union" -> (
+        advance st;
+        let on = parse_bool_opt st in
+        (* §16.4: only a union is ever split; POV-Ray accepts the keyword on a merge (a kind of
+           union to it) without effect and stops on any other object *)
+        match o.shape with
+        | Csg ({ kind = Union; _ } as c) -> loop { o with shape = Csg { c with split = on } }
+        | Csg { kind = Merge; _ } | Csg { kind = Clipped; members = V.Member_obj { shape = Csg { kind = Union | Merge; _ }; _ } :: _; _ } ->
+            loop o (* a merge, or a clipped union, is never split *)
+        | Csg { kind = Intersection | Clipped; _ } | Prim _ -> Error.raise_at loc "split_union found in a non-union object")
+    | Ident "clipped_by" ->
+        (* §15.8: clipped_by { OBJECT … }: the object's hits are kept inside every clip object, and
+           so is its Inside. The clip objects move with the object's later transforms; its
+           texture, interior and flags stay on the clipped object. *)
+        advance st;
+        open_block st "clipped_by";
+        let rec clips acc =
+          match peek st with
+          | Ident "bounded_by" -> not_supported (peek_loc st) "'clipped_by { bounded_by }'"
+          | _ when object_follows st -> clips (V.Member_obj (parse_object st) :: acc)
+          | _ -> List.rev acc
+        in
+        let cl = nest st loc (fun () -> clips []) in
+        if cl = [] then unexpected st "an object in clipped_by";
+        close_block st "clipped_by";
+        let members =
+          match o.shape with
+          | Csg { kind = Clipped; members; _ } -> members @ cl
+          | Csg { kind = Union | Merge | Intersection; _ } | Prim _ ->
+              V.Member_obj { o with texture = None; interior = None; no_shadow = false } :: cl
+        in
+        loop { o with shape = Csg { kind = Clipped; members; split = false }; inverted = false }
+    | Ident s when is_unsupported s -> not_supported loc (Printf.sprintf "'%s'" s)
+    | _ -> unexpected st (Printf.sprintf "an object modifier or '}' closing '%s'" what)
+  in
+  loop o
+
 (* Does an object (a keyword or an identifier of one) come next? *)
 and object_follows st =
   match peek st with
@@ -590,7 +618,7 @@ let rec kept_obj st ~texture ~interior (o : V.obj) : Scene.obj =
       (* §16.4: a union whose members all have no_shadow has it too *)
       let no_shadow =
         o.no_shadow
-        || (match kind with Union -> members <> [] && List.for_all (fun (m : Scene.member) -> m.mobj.no_shadow) members | Merge | Intersection -> false)
+        || (match kind with Union -> members <> [] && List.for_all (fun (m : Scene.member) -> m.mobj.no_shadow) members | Merge | Intersection | Clipped -> false)
       in
       { Scene.shape = Csg { kind; members }; texture; interior; no_shadow; loc = o.oloc }
 
@@ -619,7 +647,7 @@ let rec add_object st (o : V.obj) =
                   no_shadow = c.no_shadow || o.no_shadow;
                 })
         ms
-  | Csg { kind = Union | Merge | Intersection; members = _; split = _ } ->
+  | Csg { kind = Union | Merge | Intersection | Clipped; members = _; split = _ } ->
       count_object st o.oloc;
       let texture, interior = resolved st o in
       let obj = kept_obj st ~texture ~interior o in

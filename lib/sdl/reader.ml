@@ -111,7 +111,7 @@ let keywords =
     "degrees"; "vlength"; "vnormalize"; "vdot"; "vcross"; "select"; "triangle"; "smooth_triangle"; "mesh";
     "mesh2"; "vertex_vectors"; "normal_vectors"; "uv_vectors"; "texture_list"; "face_indices"; "normal_indices";
     "uv_indices"; "inside_vector"; "box"; "union"; "merge"; "intersection"; "difference"; "inverse";
-    "split_union" ]
+    "split_union"; "clipped_by" ]
 
 (* POV-Ray keywords that a later povml will read; meeting one is a located "not supported yet". *)
 let unsupported =
@@ -125,7 +125,7 @@ let unsupported =
     "projected_through"; "orthographic"; "fisheye"; "panoramic"; "ultra_wide_angle"; "omnimax";
     "cylindrical"; "spherical"; "aperture"; "focal_point"; "blur_samples"; "radiosity"; "photons";
     "media"; "fog"; "rainbow"; "irid"; "crand"; "dispersion"; "dispersion_samples"; "caustics";
-    "bounded_by"; "clipped_by"; "uv_mapping"; "srgb"; "srgbf"; "srgbt"; "srgbft"; "subsurface";
+    "bounded_by"; "uv_mapping"; "srgb"; "srgbf"; "srgbt"; "srgbft"; "subsurface";
     "interior_texture"; "light_group"; "no_radiosity"; "cutaway_textures"; "sturm";
     "open"; "phong_albedo"; "metallic_albedo"; "translucency" ]
 

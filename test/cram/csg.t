@@ -91,3 +91,18 @@ Something that is not an object among the members is an error:
       2 | union { sphere { 0, 1 } P }
         |                         ^
   [1]
+
+clipped_by needs at least one object; clipped_by { bounded_by } is not read yet:
+
+  $ printf 'sphere { 0, 1 clipped_by { } }\n' > clip.pov
+  $ povml clip.pov +W4 +H4 -D
+  clip.pov:1:28: error: expected an object in clipped_by but found '}'
+      1 | sphere { 0, 1 clipped_by { } }
+        |                            ^
+  [1]
+  $ printf 'sphere { 0, 1 clipped_by { bounded_by } }\n' > clip2.pov
+  $ povml clip2.pov +W4 +H4 -D
+  clip2.pov:1:28: error: not supported yet: 'clipped_by { bounded_by }'
+      1 | sphere { 0, 1 clipped_by { bounded_by } }
+        |                            ^
+  [1]

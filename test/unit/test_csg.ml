@@ -13,7 +13,8 @@ let members_of (o : Scene.obj) =
   | Csg { kind; members } -> (kind, members)
   | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ -> Alcotest.fail "expected a CSG"
 
-let kind_name : Scene.csg_kind -> string = function Union -> "union" | Merge -> "merge" | Intersection -> "intersection"
+let kind_name : Scene.csg_kind -> string = function
+  | Union -> "union" | Merge -> "merge" | Intersection -> "intersection" | Clipped -> "clipped"
 let check_kind msg e a = Alcotest.(check string) msg (kind_name e) (kind_name a)
 let inverted_flags ms = List.map (fun (m : Scene.member) -> m.inverted) ms
 
@@ -103,6 +104,36 @@ let test_parse_warnings () =
   expect_scene_error "split_union on an intersection" "intersection { sphere { 0, 1 } sphere { x, 1 }\n split_union off }" ~line:2
     ~col:2 ~sub:"split_union found in a non-union object";
   expect_scene_error "a non-object in a CSG" "difference { sphere { 0, 1 } 42 }" ~line:1 ~col:30 ~sub:"expected"
+
+let test_parse_clipped_by () =
+  (* clipped_by makes a Clipped node: the object first, then the clip objects; the texture stays on
+     the node (a later pigment reaches the object), later transforms move the clip objects too *)
+  let o = the_object (scene "sphere { 0, 1 clipped_by { plane { y, 0 } box { -1, 1 } } pigment { rgb x } translate y }") in
+  let kind, ms = members_of o in
+  check_kind "clipped" Clipped kind;
+  Alcotest.(check int) "object and two clip objects" 3 (List.length ms);
+  float_eq "the node's pigment" 1. (pigment_of o).red;
+  (match ms with
+  | [ s; { mobj = { shape = Plane { offset; _ }; _ }; _ }; _ ] ->
+      float_eq "the object takes the node's pigment" 1. (pigment_of s.mobj).red;
+      float_eq "the clip plane moved by the later translate" 1. offset
+  | _ -> Alcotest.fail "expected sphere, plane, box");
+  (* a second clipped_by adds clip objects *)
+  let _, ms = members_of (the_object (scene "sphere { 0, 1 clipped_by { plane { y, 0 } } clipped_by { box { -1, 1 } } }")) in
+  Alcotest.(check int) "two clipped_by" 3 (List.length ms);
+  (* a union with clipped_by is kept whole (§16.4) *)
+  let kind, _ = members_of (the_object (scene "union { sphere { 0, 1 } sphere { x, 1 } clipped_by { plane { y, 0 } } }")) in
+  check_kind "clipped union kept" Clipped kind;
+  (* inverse inverts the object, not its clip objects *)
+  let _, ms = members_of (the_object (scene "sphere { 0, 1 clipped_by { plane { y, 0 } } inverse }")) in
+  (match ms with
+  | [ s; { mobj = { shape = Plane { normal; _ }; _ }; inverted; _ } ] ->
+      Alcotest.(check bool) "the sphere inverted" true s.inverted;
+      Alcotest.(check bool) "the plane not" false inverted;
+      vec_eq "the plane not turned over" (v 0. 1. 0.) normal
+  | _ -> Alcotest.fail "expected sphere, plane");
+  expect_scene_error "empty clipped_by" "sphere { 0, 1 clipped_by { } }" ~line:1 ~col:28 ~sub:"expected an object in clipped_by";
+  expect_scene_error "clipped_by { bounded_by }" "sphere { 0, 1 clipped_by { bounded_by } }" ~line:1 ~col:28 ~sub:"not supported yet"
 
 (* ---------------------------------------------------------------------------------------------- *)
 (* All hits of each primitive *)
@@ -236,6 +267,21 @@ let test_csg_hits () =
   check_hits "nested" [ (6.5, 3); (4.5, 3); (3.5, 2); (5.8, 4); (5.2, 4) ]
     (hits (setup ("difference { union { " ^ two ^ " } sphere { <0.5, 0, 0>, 0.3 } }")) ray_o ray_d)
 
+let test_clipped_hits () =
+  (* the unit sphere clipped by y ≤ 0 (plane { y, 0 }): the ray along +z at y = −0.5 crosses both
+     halves' surface below the plane; at y = 0.5 nothing is left *)
+  let s = setup "sphere { 0, 1 clipped_by { plane { y, 0 } } }" in
+  let h = sqrt 0.75 in
+  check_hits "below: both crossings" [ (5. -. h, 1); (5. +. h, 1) ] (hits s (v 0. (-0.5) (-5.)) (v 0. 0. 1.));
+  check_hits "above: clipped away" [] (hits s (v 0. 0.5 (-5.)) (v 0. 0. 1.));
+  (* an open shell: through the cut, the far inside surface is seen *)
+  (* from y = 2 down: the top crossing (y = 1, depth 1) is clipped, the bottom one (y = −1) seen *)
+  check_hits "through the opening" [ (3., 1) ] (hits s (v 0. 2. 0.) (v 0. (-1.) 0.));
+  (* the clip objects' own surfaces are never hits, and the Inside asks them *)
+  let c, _ = s in
+  Alcotest.(check (list bool)) "Inside: in the sphere and below the plane" [ true; false; false ]
+    (List.map (inside_of c 0) [ v 0. (-0.5) 0.; v 0. 0.5 0.; v 0. (-2.) 0. ])
+
 let nearest_leaf (c, ctx) o d =
   let t = Trace.hit_shape ctx c.Compiled.objects.(0).shape o (Vec.normalize d) 1e-4 in
   (t, ctx.Trace.leaf.(0))
@@ -345,6 +391,8 @@ let tests =
     Alcotest.test_case "parse: textures and interiors" `Quick test_parse_textures_interiors;
     Alcotest.test_case "parse: lights and transforms" `Quick test_parse_lights_and_transforms;
     Alcotest.test_case "parse: warnings and errors" `Quick test_parse_warnings;
+    Alcotest.test_case "parse: clipped_by" `Quick test_parse_clipped_by;
+    Alcotest.test_case "clipped_by: hits and Inside" `Quick test_clipped_hits;
     Alcotest.test_case "all hits: sphere, ellipsoid" `Quick test_all_hits_sphere;
     Alcotest.test_case "all hits: box, plane" `Quick test_all_hits_box_plane;
     Alcotest.test_case "all hits: triangle, mesh" `Quick test_all_hits_triangle_mesh;
