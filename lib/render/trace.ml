@@ -677,6 +677,11 @@ let robust_margin (p : Vec.t) (lp : Vec.t) remaining = (1e-9 *. remaining) +. er
 let shadow ctx ~slot (p : Vec.t) (ng : Vec.t) e (l : Vec.t) dist interiors (lc : Rgb.t) : Rgb.t =
   let sc = ctx.scene in
   ctx.stats.shadow_rays <- ctx.stats.shadow_rays + 1;
+  (* a light at an infinite distance (a coordinate beyond the float range) has no direction: a
+     filtered walk towards it would never end (a NaN ray from inside a box's slabs meets the box
+     at 2e10 again and again) *)
+  if not (Float.is_finite dist) then lc
+  else
   match sc.shadow_mode with
   | No_occluders -> lc
   | Any_hit | Filtered ->

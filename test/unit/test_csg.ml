@@ -384,6 +384,17 @@ let test_shadow_cache () =
   result_eq "full shadow" (0., 0., 0.) r;
   Alcotest.(check bool) "not cached" true (Array.for_all (fun i -> i < 0) ctx.shadow_cache)
 
+let test_light_at_infinity () =
+  (* a light written at -1e400 (−infinity) over a transparent merge: the shadow walk ends *)
+  let c =
+    compile
+      (v37
+     ^ "light_source { <-1e400, 8, -5>, rgb 1 } merge { box { <-0.5, 0, -0.5>, <0.5, 1, 0.5> } sphere { <0, 1, 0>, 0.5 } \
+        pigment { rgbf <0.8, 1, 0.8, 0.9> } } plane { y, 0 }")
+  in
+  let ctx = Trace.make_ctx c (Stats.create ()) in
+  ignore (Trace.trace ctx ~level:0 ~weight:1. ~interiors:[] ~continued:false (v 0. 0.5 (-5.)) (v 0. 0. 1.))
+
 let tests =
   [
     Alcotest.test_case "parse: kinds" `Quick test_parse_kinds;
@@ -404,4 +415,5 @@ let tests =
     Alcotest.test_case "compiled ids, interiors, boxes" `Quick test_compiled;
     Alcotest.test_case "shading the primitive hit" `Quick test_shading;
     Alcotest.test_case "shadow cache" `Quick test_shadow_cache;
+    Alcotest.test_case "a light at infinity" `Quick test_light_at_infinity;
   ]
