@@ -422,66 +422,93 @@ and box_pair ctx n lo id o d =
   let n = if tmin > ctx.lim.near then push_ray ctx n lo tmin smin id o d else n in
   push_ray ctx n lo tmax smax id o d
 
+(* Keeps the hits [start, e) of member [skip] whose point is Inside ([want]) or outside every other
+   member, in place; [reverse]d when they come off a local stack. Returns the new end. *)
+and keep_hits ctx (members : obj array) ~skip ~want ~reverse start e =
+  let nm = Array.length members in
+  let w = ref start in
+  for j = start to e - 1 do
+    let h = ctx.hits.h and b = j * hit_width in
+    let p = Vec.make h.(b + 3) h.(b + 4) h.(b + 5) in
+    let keep = ref true and i = ref 0 in
+    while !keep && !i < nm do
+      if !i <> skip && Compile.inside_member ctx.mstack members.(!i) p <> want then keep := false;
+      incr i
+    done;
+    if !keep then begin
+      if !w <> j then Array.blit h b h (!w * hit_width) hit_width;
+      incr w
+    end
+  done;
+  if reverse then begin
+    let h = ctx.hits.h in
+    let a = ref start and z = ref (!w - 1) in
+    while !a < !z do
+      for f = 0 to hit_width - 1 do
+        let x = h.((!a * hit_width) + f) in
+        h.((!a * hit_width) + f) <- h.((!z * hit_width) + f);
+        h.((!z * hit_width) + f) <- x
+      done;
+      incr a;
+      decr z
+    done
+  end;
+  !w
+
 (* §16.2: a union keeps every hit of its members; an intersection a hit of member k whose point
    is inside every other member; a merge one inside no other member. A member's surviving hits
-   are taken off its own stack, so they are pushed in reverse (intersection and merge). *)
+   are taken off its own stack, so they are pushed in reverse (intersection and merge). A clipped
+   object keeps its hits inside every clip object, in the order it pushes them (Point_In_Clip);
+   a clipped union, like an intersection, takes each member's hits off a stack of its own. *)
 and csg_hits ctx (c : csg) o d lo n =
   let stats = ctx.stats and n0 = n in
-  (match c.kind with
-  | Union -> stats.csg_union_tests <- stats.csg_union_tests + 1
-  | Intersection -> stats.csg_intersection_tests <- stats.csg_intersection_tests + 1
-  | Merge -> stats.csg_merge_tests <- stats.csg_merge_tests + 1
-  | Clipped -> ());
   let members = c.members in
   let nm = Array.length members in
-  let n = ref n in
-  (* a clipped object: only the first member's hits, inside every clip object, in their order
-     (Point_In_Clip as each hit is pushed) *)
-  let last = match c.kind with Clipped -> min 0 (nm - 1) | Union | Intersection | Merge -> nm - 1 in
-  for k = 0 to last do
-    let start = !n in
-    let e = all_hits ctx members.(k) o d lo start in
+  let n =
     match c.kind with
-    | Union -> n := e
-    | Intersection | Merge | Clipped ->
-        let want = match c.kind with Intersection | Clipped -> true | Union | Merge -> false in
-        let w = ref start in
-        for j = start to e - 1 do
-          let h = ctx.hits.h and b = j * hit_width in
-          let p = Vec.make h.(b + 3) h.(b + 4) h.(b + 5) in
-          let keep = ref true and i = ref 0 in
-          while !keep && !i < nm do
-            (if !i <> k then
-               let m = members.(!i) in
-               if Compile.inside_member ctx.mstack m p <> want then keep := false);
-            incr i
-          done;
-          if !keep then begin
-            if !w <> j then Array.blit h b h (!w * hit_width) hit_width;
-            incr w
-          end
+    | Union ->
+        stats.csg_union_tests <- stats.csg_union_tests + 1;
+        let n = ref n in
+        Array.iter (fun m -> n := all_hits ctx m o d lo !n) members;
+        !n
+    | Intersection | Merge ->
+        (match c.kind with
+        | Intersection -> stats.csg_intersection_tests <- stats.csg_intersection_tests + 1
+        | Merge | Union | Clipped -> stats.csg_merge_tests <- stats.csg_merge_tests + 1);
+        let want = match c.kind with Intersection -> true | Merge | Union | Clipped -> false in
+        let n = ref n in
+        for k = 0 to nm - 1 do
+          let start = !n in
+          let e = all_hits ctx members.(k) o d lo start in
+          n := keep_hits ctx members ~skip:k ~want ~reverse:true start e
         done;
-        (* reverse the kept hits [start, w) *)
-        let h = ctx.hits.h in
-        let a = ref start and z = ref (match c.kind with Clipped -> start | Union | Intersection | Merge -> !w - 1) in
-        while !a < !z do
-          for f = 0 to hit_width - 1 do
-            let x = h.((!a * hit_width) + f) in
-            h.((!a * hit_width) + f) <- h.((!z * hit_width) + f);
-            h.((!z * hit_width) + f) <- x
-          done;
-          incr a;
-          decr z
-        done;
-        n := !w
-  done;
-  (if !n > n0 then
+        !n
+    | Clipped when nm = 0 -> n
+    | Clipped -> (
+        match members.(0).shape with
+        | Csg { kind = Union; members = um; _ } ->
+            stats.csg_union_tests <- stats.csg_union_tests + 1;
+            let n = ref n in
+            Array.iter
+              (fun u ->
+                let start = !n in
+                let e = all_hits ctx u o d lo start in
+                n := keep_hits ctx members ~skip:0 ~want:true ~reverse:true start e)
+              um;
+            if !n > n0 then stats.csg_union_hits <- stats.csg_union_hits + 1;
+            !n
+        | Csg { kind = Merge | Intersection | Clipped; _ }
+        | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ ->
+            let e = all_hits ctx members.(0) o d lo n in
+            keep_hits ctx members ~skip:0 ~want:true ~reverse:false n e)
+  in
+  (if n > n0 then
      match c.kind with
      | Union -> stats.csg_union_hits <- stats.csg_union_hits + 1
      | Intersection -> stats.csg_intersection_hits <- stats.csg_intersection_hits + 1
      | Merge -> stats.csg_merge_hits <- stats.csg_merge_hits + 1
      | Clipped -> ());
-  !n
+  n
 
 (* §16.2: the nearest hit of a top-level CSG: its hits are popped from the stack, last pushed
    first, and the first of the smallest depth wins. The leaf hit is left in [ctx.leaf.(0)], its

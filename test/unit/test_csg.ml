@@ -277,6 +277,12 @@ let test_clipped_hits () =
   (* an open shell: through the cut, the far inside surface is seen *)
   (* from y = 2 down: the top crossing (y = 1, depth 1) is clipped, the bottom one (y = −1) seen *)
   check_hits "through the opening" [ (3., 1) ] (hits s (v 0. 2. 0.) (v 0. (-1.) 0.));
+  (* order: a clipped primitive keeps its own order; a clipped union takes each member's hits off a
+     stack of its own, reversed (objects: 0 the clipped node, 1 the union, 2 A, 3 B, 4 the box) *)
+  check_hits "clipped sphere: in order" [ (3.5, 1); (5.5, 1) ]
+    (hits (setup "sphere { <-0.5, 0, 0>, 1 clipped_by { box { -3, 3 } } }") ray_o ray_d);
+  check_hits "clipped union: reversed per member" [ (5.5, 2); (3.5, 2); (6.5, 3); (4.5, 3) ]
+    (hits (setup ("union { " ^ two ^ " clipped_by { box { -3, 3 } } }")) ray_o ray_d);
   (* the clip objects' own surfaces are never hits, and the Inside asks them *)
   let c, _ = s in
   Alcotest.(check (list bool)) "Inside: in the sphere and below the plane" [ true; false; false ]
