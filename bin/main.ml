@@ -77,6 +77,10 @@ let print_stats (r : Pipeline.result) (o : Render.options) =
   if s.box_tests > 0 then Printf.eprintf "Box                        %11d     %11d  %10.2f\n" s.box_tests s.box_hits (pct s.box_hits s.box_tests);
   if s.cone_tests > 0 then Printf.eprintf "Cone/Cylinder              %11d     %11d  %10.2f\n" s.cone_tests s.cone_hits (pct s.cone_hits s.cone_tests);
   if s.disc_tests > 0 then Printf.eprintf "Disc                       %11d     %11d  %10.2f\n" s.disc_tests s.disc_hits (pct s.disc_hits s.disc_tests);
+  let row name t h = if t > 0 then Printf.eprintf "%-27s%11d     %11d  %10.2f\n" name t h (pct h t) in
+  row "CSG Intersection" s.csg_intersection_tests s.csg_intersection_hits;
+  row "CSG Merge" s.csg_merge_tests s.csg_merge_hits;
+  row "CSG Union" s.csg_union_tests s.csg_union_hits;
   if s.plane_tests > 0 then Printf.eprintf "Plane                      %11d     %11d  %10.2f\n" s.plane_tests s.plane_hits (pct s.plane_hits s.plane_tests);
   if s.triangle_tests > 0 then Printf.eprintf "Triangle                   %11d     %11d  %10.2f\n" s.triangle_tests s.triangle_hits (pct s.triangle_hits s.triangle_tests);
   if s.mesh_tests > 0 then Printf.eprintf "Mesh                       %11d     %11d  %10.2f\n" s.mesh_tests s.mesh_hits (pct s.mesh_hits s.mesh_tests);

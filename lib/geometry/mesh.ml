@@ -153,6 +153,13 @@ let nearest_within lim m stack (o : Vec.t) (d : Vec.t) lo hit =
 
 let nearest m stack o d lo hit = nearest_within Limits.pov m stack o d lo hit
 
+(* Every face crossed, in the order the hierarchy is walked (Mesh::All_Intersections). *)
+let iter_hits lim m stack (o : Vec.t) (d : Vec.t) f =
+  Bvh.walk m.bvh stack o.x o.y o.z d.x d.y d.z infinity (fun k ->
+      let t = face_depth lim m k o.x o.y o.z d.x d.y d.z in
+      if t < infinity then f k t;
+      infinity)
+
 (* Whether some face is hit with lo ≤ depth < hi. *)
 let any_hit m stack (o : Vec.t) (d : Vec.t) lo hi =
   let found = ref false in

@@ -39,6 +39,10 @@ val nearest : t -> float array -> Vec.t -> Vec.t -> float -> float array -> int
 val nearest_within : Limits.t -> t -> float array -> Vec.t -> Vec.t -> float -> float array -> int
 (** [nearest_within lim m stack o d lo hit] is [nearest] with the faces' depth limits [lim]. *)
 
+val iter_hits : Limits.t -> t -> float array -> Vec.t -> Vec.t -> (int -> float -> unit) -> unit
+(** [iter_hits lim m stack o d f] calls [f face depth] for every face the ray crosses within the
+    limits [lim], in the order the mesh's hierarchy is walked (for CSG, §16.2). *)
+
 val any_hit : t -> float array -> Vec.t -> Vec.t -> float -> float -> bool
 (** [any_hit m stack o d lo hi] tells whether a face is hit at a depth in [lo, hi). *)
 

@@ -10,7 +10,7 @@ let finite (t : Transform.t) =
 
 (* A shape ready to trace; None for a triangle that POV-Ray never hits (no area, or a standalone
    smooth triangle whose vertex normals straddle its face). *)
-let shape_of (s : Scene.shape) =
+let prim_of (s : Scene.shape) =
   let sphere (c : Vec.t) r = { cx = c.x; cy = c.y; cz = c.z; radius = r; r2 = r *. r } in
   let plane (n : Vec.t) offset = { nx = n.x; ny = n.y; nz = n.z; dist = -.offset } in
   match s with
@@ -37,6 +37,7 @@ let shape_of (s : Scene.shape) =
         Some (Disc { dtr = trans; dnx = normal.x; dny = normal.y; dnz = normal.z; or2 = radius *. radius; ir2 = hole *. hole; dinverted = inverted })
       else None
   | Torus { major; minor; sturm; inverse; trans } -> Some (Torus { Torus.major; minor; sturm; inverted = inverse; tr = trans })
+  | Csg _ -> None (* built by [scene], which numbers the members *)
 
 (* Box::Inside: a closed box, its surface included *)
 let in_box b (p : Vec.t) = not (p.x < b.x0 || p.x > b.x1 || p.y < b.y0 || p.y > b.y1 || p.z < b.z0 || p.z > b.z1)
@@ -58,8 +59,14 @@ let in_disc d (p : Vec.t) =
   let q = Transform.inv_point d.dtr p in
   (q.z >= 0.0) = d.dinverted
 
-let inside stack shape (p : Vec.t) =
+let rec inside stack shape (p : Vec.t) =
   match shape with
+  | Csg { kind = Union | Merge; members } ->
+      (* §16.3: inside any member, or inside every member *)
+      Array.exists (fun m -> inside_member stack m p) members
+  | Csg { kind = Intersection | Clipped; members } ->
+      (* a clipped object's Inside asks its clip objects too (Inside_Object) *)
+      Array.for_all (fun m -> inside_member stack m p) members
   | Cone c -> in_cone c p
   | Disc d -> in_disc d p
   | Box b -> in_box b p
@@ -87,12 +94,51 @@ let inside stack shape (p : Vec.t) =
         | None -> false
         | Some d -> Mesh.inside_along m.mesh stack (Transform.inv_point m.tr p) (Transform.normalize (Transform.inv_direction m.tr d)))
 
+(* A CSG member's Inside: a primitive's negated when it is inverted; an inverted CSG was morphed
+   and its own Inside already holds the inversion (§16.3). *)
+and inside_member stack (m : obj) p =
+  match m.shape with
+  | Csg _ -> inside stack m.shape p
+  | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _
+  | Disc _ | Torus _ ->
+      inside stack m.shape p <> m.inverted
+
 (* The box of a bounded shape; None for an unbounded one. A transformed shape's box is its
    object-space box with the corners mapped (Recompute_BBox, §15.8). *)
 (* SMALL_TOLERANCE: a disc's box is this thick on each side of its plane (§15.4) *)
 let small_tolerance = 1e-3
 
-let bounds = function
+let rec bounds = function
+  | Csg { kind = Union | Merge; members } ->
+      (* CSG::Compute_BBox: a union's or merge's box holds its members' boxes; an intersection's is
+         the overlap of its members' that are not inverted (an inverted CSG, morphed, counts as
+         inverted: its surfaces are bounded, its inside is not). A plane is unbounded here (POV-Ray
+         bounds an axis-aligned one on one side: that changes only equal-depth ties). *)
+      Array.fold_left
+        (fun acc m ->
+          match (acc, bounds m.shape) with
+          | Some a, Some b -> Some (Array.init 6 (fun i -> if i < 3 then Float.min a.(i) b.(i) else Float.max a.(i) b.(i)))
+          | None, _ | _, None -> None)
+        (Some [| infinity; infinity; infinity; neg_infinity; neg_infinity; neg_infinity |])
+        members
+      |> Option.map (fun b -> if b.(0) > b.(3) then [| 0.; 0.; 0.; 0.; 0.; 0. |] else b)
+  | Csg { kind = Intersection; members = [| ({ shape = Sphere _ | Ellipsoid _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _; _ } as m) |] }
+    when m.inverted ->
+      (* an inverted primitive written alone enters as an intersection of itself (Objects); POV-Ray
+         keeps such a primitive's own box *)
+      bounds m.shape
+  | Csg { kind = Intersection | Clipped; members } ->
+      let b =
+        Array.fold_left
+          (fun acc m ->
+            match (m.inverted, acc, bounds m.shape) with
+            | false, None, Some b -> Some b
+            | false, Some a, Some b -> Some (Array.init 6 (fun i -> if i < 3 then Float.max a.(i) b.(i) else Float.min a.(i) b.(i)))
+            | false, acc, None | true, acc, _ -> acc)
+          None members
+      in
+      (* an empty overlap: nothing can be hit; POV-Ray then keeps its unbounded box *)
+      Option.bind b (fun b -> if b.(0) > b.(3) || b.(1) > b.(4) || b.(2) > b.(5) then None else Some b)
   | Sphere s ->
       let r = Float.abs s.radius in
       Some [| s.cx -. r; s.cy -. r; s.cz -. r; s.cx +. r; s.cy +. r; s.cz +. r |]
@@ -119,6 +165,7 @@ let magnitude shape =
   | None, Plane_trans { pl; ptr; _ } ->
       let q = Transform.point ptr (Vec.make (-.pl.dist *. pl.nx) (-.pl.dist *. pl.ny) (-.pl.dist *. pl.nz)) in
       max_abs [| q.x; q.y; q.z |]
+  | None, Csg { members; _ } -> Array.fold_left (fun m o -> Float.max m o.mag) 0. members
   | None, (Sphere _ | Ellipsoid _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _) -> 0.
 
 (* POV-Ray's box of a bounded shape (Compute_BBox, then Make_BBox or Make_BBox_from_min_max, which
@@ -127,7 +174,7 @@ let magnitude shape =
    widened by EPSILON; a mesh's its single-precision vertices' extent; a transformed sphere or
    mesh's the box of its untransformed box's mapped corners (Recompute_BBox; POV-Ray does that once
    per transformation, here once for their composition). *)
-let pov_box shape =
+let rec pov_box shape =
   let of_min_max (lo : float array) (hi : float array) = Array.init 6 (fun i -> if i < 3 then f32 lo.(i) else f32 (hi.(i - 3) -. lo.(i - 3))) in
   let corners (b : float array) = ([| b.(0); b.(1); b.(2) |], [| b.(0) +. b.(3); b.(1) +. b.(4); b.(2) +. b.(5) |]) in
   let mapped tr b =
@@ -164,6 +211,14 @@ let pov_box shape =
          Trans, which every torus has (§15.5, §15.8) *)
       let b = Torus.box t in
       mapped t.tr (of_min_max (Array.sub b 0 3) (Array.sub b 3 3))
+  | Csg { kind = Intersection; members = [| ({ shape = Sphere _ | Ellipsoid _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _; _ } as m) |]; _ }
+    when m.inverted ->
+      (* an inverted primitive written alone: POV-Ray's box is the primitive's own *)
+      pov_box m.shape
+  | Csg _ -> (
+      (* CSG::Compute_BBox from the members' boxes, after the CSG's transforms (POV-Ray maps the
+         box computed before them: a difference in equal-depth ties only) *)
+      match bounds shape with None -> [||] | Some b -> of_min_max (Array.sub b 0 3) (Array.sub b 3 3))
 
 (* Inside_BBox: whether [p] is in POV-Ray's box [b] of an object (faces included); an unbounded
    object's ([||]) holds every point. POV-Ray asks it before the object's own inside test when it
@@ -177,7 +232,9 @@ let in_pov_box (b : float array) (p : Vec.t) =
 (* §6.4: the objects whose bounding box and inside both hold [p], the last one first (the order of
    the interior list of a ray that starts at [p]). *)
 let interiors_at (objects : obj array) stack p =
-  Array.fold_left (fun acc o -> if in_pov_box o.pbox p && inside stack o.shape p then o.id :: acc else acc) [] objects
+  Array.fold_left
+    (fun acc o -> if o.top = o.id && in_pov_box o.pbox p && inside stack o.shape p then o.iid :: acc else acc)
+    [] objects
 
 let group objs =
   let unbounded = List.filter (fun o -> bounds o.shape = None) objs in
@@ -192,7 +249,7 @@ let group objs =
     (fun i o ->
       match o.shape with
       | Sphere s -> spheres.(4 * i) <- s.cx; spheres.((4 * i) + 1) <- s.cy; spheres.((4 * i) + 2) <- s.cz; spheres.((4 * i) + 3) <- s.r2
-      | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ -> ())
+      | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Csg _ -> ())
     bounded;
   { unbounded = Array.of_list unbounded; bounded; bvh; spheres }
 
@@ -279,37 +336,73 @@ let scene (s : Scene.t) : Compiled.t =
         Texture_memo.add memo t sf;
         sf
   in
-  let visible = List.filter_map (fun (o : Scene.obj) -> Option.map (fun sh -> (o, sh)) (shape_of o.shape)) s.objects in
-  let objects =
-    Array.of_list
-      (List.mapi
-         (fun id ((o : Scene.obj), shape) ->
-           let surf = surface ~legacy ~ambient_light:s.ambient_light o.texture in
-           let face_surfs =
-             match o.shape with
-             | Mesh m -> Array.map (surface ~legacy ~ambient_light:s.ambient_light) m.textures
-             | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Box _ | Cone _ | Disc _ | Torus _ -> [||]
-           in
-           {
-             id;
-             shape;
-             surf;
-             face_surfs;
-             ior = f32 o.interior.ior;
-             fade_distance = f32 o.interior.fade_distance;
-             fade_power = f32 o.interior.fade_power;
-             fade_colour = rgb32 o.interior.fade_colour;
-             old_refract = f32 o.texture.finish.refraction;
-             opaque = (not surf.transparent) && Array.for_all (fun (f : surface) -> not f.transparent) face_surfs;
-             mag = magnitude shape;
-
-             pbox = pov_box shape;
-             double_illuminate = o.double_illuminate;
-           })
-         visible)
+  let surface_of (t : Scene.texture) = surface ~legacy ~ambient_light:s.ambient_light t in
+  (* Objects are numbered in scene order, each CSG before its members (the numbering keeps the
+     scene order of top-level objects, which decides ties without a bounding hierarchy). *)
+  let next = ref 0 and built = ref [] in
+  let rec build ~top ~iid ~inverted (o : Scene.obj) : obj option =
+    let id = !next in
+    let top = if top < 0 then id else top and iid = if iid < 0 then id else iid in
+    let shape =
+      match o.shape with
+      | Csg { kind; members } ->
+          incr next;
+          let members =
+            List.filter_map
+              (fun (m : Scene.member) -> build ~top ~iid:(if m.own_interior then -1 else iid) ~inverted:m.inverted m.mobj)
+              members
+          in
+          let members = Array.of_list members in
+          Some (Csg { kind; members; cbox = pov_box (Csg { kind; members; cbox = [||] }) })
+      | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ ->
+          let sh = prim_of o.shape in
+          if sh <> None then incr next;
+          sh
+    in
+    match shape with
+    | None -> None
+    | Some shape ->
+        let surf = surface_of o.texture in
+        let face_surfs =
+          match o.shape with
+          | Mesh m -> Array.map surface_of m.textures
+          | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Box _ | Cone _ | Disc _ | Torus _ | Csg _ -> [||]
+        in
+        let opaque =
+          match shape with
+          | Csg { members; _ } -> Array.for_all (fun m -> m.opaque) members
+          | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _
+          | Disc _ | Torus _ ->
+              (not surf.transparent) && Array.for_all (fun (f : surface) -> not f.transparent) face_surfs
+        in
+        let ob =
+          {
+            id;
+            iid;
+            top;
+            inverted;
+            shape;
+            surf;
+            face_surfs;
+            ior = f32 o.interior.ior;
+            fade_distance = f32 o.interior.fade_distance;
+            fade_power = f32 o.interior.fade_power;
+            fade_colour = rgb32 o.interior.fade_colour;
+            old_refract = f32 o.texture.finish.refraction;
+            opaque;
+            mag = magnitude shape;
+            pbox = pov_box shape;
+            double_illuminate = o.double_illuminate;
+          }
+        in
+        built := ob :: !built;
+        Some ob
   in
-  let casts = Array.of_list (List.map (fun ((o : Scene.obj), _) -> not o.no_shadow) visible) in
-  let occluders = List.filter (fun (o : obj) -> casts.(o.id)) (Array.to_list objects) in
+  let visible = List.filter_map (fun (o : Scene.obj) -> Option.map (fun ob -> (o, ob)) (build ~top:(-1) ~iid:(-1) ~inverted:false o)) s.objects in
+  let objects = Array.of_list (List.sort (fun a b -> compare a.id b.id) !built) in
+  let tops = List.map snd visible in
+  let casts = List.filter_map (fun ((o : Scene.obj), ob) -> if o.no_shadow then None else Some ob) visible in
+  let occluders = casts in
   let shadow_mode =
     if occluders = [] then No_occluders
     else if List.for_all (fun o -> o.opaque) occluders then Any_hit
@@ -349,12 +442,13 @@ let scene (s : Scene.t) : Compiled.t =
   in
   (* §6.4: the camera ray starts inside every object that contains the camera location; the list
      is kept with the last entered first. *)
-  let all = group (Array.to_list objects) in
-  (* §16.6: image rays never meet no_image objects, reflection rays never meet no_reflection ones;
-     a scene without those flags searches one group for every ray *)
-  let flags = Array.of_list (List.map (fun ((o : Scene.obj), _) -> (o.no_image, o.no_reflection)) visible) in
+  let all = group tops in
+  (* §16.6: image rays never meet no_image objects, reflection rays never meet no_reflection ones
+     (tested on top-level objects, §16.4); a scene without those flags searches one group for every
+     ray *)
   let without keep =
-    if Array.for_all keep flags then all else group (List.filter (fun (o : obj) -> keep flags.(o.id)) (Array.to_list objects))
+    if List.for_all (fun ((o : Scene.obj), _) -> keep o) visible then all
+    else group (List.filter_map (fun ((o : Scene.obj), ob) -> if keep o then Some ob else None) visible)
   in
   let cam = s.camera.location in
   (* a light's looks_like shape belongs to the light's top-level object (§19.2) *)
@@ -363,18 +457,21 @@ let scene (s : Scene.t) : Compiled.t =
     (* with its bounding tree POV-Ray meets the objects in the tree's order, else in scene order;
        either way only those whose box holds the camera *)
     if bounding then
-      let finite, infinite = List.partition (fun o -> Array.length o.pbox > 0) (Array.to_list objects) in
+      let finite, infinite = List.partition (fun o -> Array.length o.pbox > 0) tops in
       Slab_tree.walk (Slab_tree.build (List.map (fun o -> (o.id, o.pbox)) finite) (List.map (fun o -> o.id) infinite)) (fun b ->
           in_pov_box b cam)
-    else List.filter (fun id -> in_pov_box objects.(id).pbox cam) (List.init (Array.length objects) Fun.id)
+    else List.filter_map (fun o -> if in_pov_box o.pbox cam then Some o.id else None) tops
   in
-  let start_interiors = List.fold_left (fun acc id -> if inside stack objects.(id).shape cam then id :: acc else acc) [] candidates in
+  (* the list holds interiors: a CSG's members share theirs (§16.5) *)
+  let start_interiors =
+    List.fold_left (fun acc id -> if inside stack objects.(id).shape cam then objects.(id).iid :: acc else acc) [] candidates
+  in
   {
     objects;
     all;
-    seen = without (fun (no_image, _) -> not no_image);
-    mirrored = without (fun (_, no_reflection) -> not no_reflection);
-    occluders = (if List.length occluders = Array.length objects then all else group occluders);
+    seen = without (fun o -> not o.no_image);
+    mirrored = without (fun o -> not o.no_reflection);
+    occluders = (if List.length occluders = List.length tops then all else group occluders);
     shadow_mode;
     lights;
     background = s.background;

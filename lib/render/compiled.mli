@@ -34,24 +34,6 @@ type disc = {
   dinverted : bool;  (** [inverse]: the inside test is negated *)
 }
 
-type shape =
-  | Sphere of sphere
-  | Ellipsoid of { sp : sphere; etr : Transform.t }
-      (** §2.2, §14.5 (b): the object-space sphere [sp] mapped by [etr] *)
-  | Plane of plane
-  | Plane_trans of { pl : plane; ptr : Transform.t; pnormal : Vec.t }
-      (** §2.3, §14.5 (a): [pl] mapped by [ptr]; [pnormal] its world normal, the same at every point *)
-  | Triangle of Triangle.t
-  | Smooth_triangle of Triangle.t
-  | Mesh of mesh_inst
-  | Box of box  (** §15.1, in world space; the side hit is left where a mesh leaves its face *)
-  | Box_trans of { bx : box; btr : Transform.t }  (** §15.1, §14.5 (a): [bx] mapped by [btr] *)
-  | Cone of cone
-      (** §15.2, §15.3, §14.5 (b); the part hit is left where a mesh leaves its face: 1 the base (small
-          end, z = dist), 2 the cap (z = 1), 3 the side *)
-  | Disc of disc  (** §15.4, §14.5 (b) *)
-  | Torus of Torus.t  (** §15.5, §14.5 (b): always through its transform *)
-
 (** Everything about a surface that does not depend on the hit point, derived once from a
     plain pigment and its finish (§3.2, §3.5, §5). *)
 type surface = {
@@ -73,9 +55,46 @@ type surface = {
   conserve : bool;
 }
 
-(** An object ready to trace. Its [id] is also the identity of its interior in interior lists. *)
-type obj = {
-  id : int;
+type shape =
+  | Sphere of sphere
+  | Ellipsoid of { sp : sphere; etr : Transform.t }
+      (** §2.2, §14.5 (b): the object-space sphere [sp] mapped by [etr] *)
+  | Plane of plane
+  | Plane_trans of { pl : plane; ptr : Transform.t; pnormal : Vec.t }
+      (** §2.3, §14.5 (a): [pl] mapped by [ptr]; [pnormal] its world normal, the same at every point *)
+  | Triangle of Triangle.t
+  | Smooth_triangle of Triangle.t
+  | Mesh of mesh_inst
+  | Box of box  (** §15.1, in world space; the side hit is left where a mesh leaves its face *)
+  | Box_trans of { bx : box; btr : Transform.t }  (** §15.1, §14.5 (a): [bx] mapped by [btr] *)
+  | Cone of cone
+      (** §15.2, §15.3, §14.5 (b); the part hit is left where a mesh leaves its face: 1 the base (small
+          end, z = dist), 2 the cap (z = 1), 3 the side *)
+  | Disc of disc  (** §15.4, §14.5 (b) *)
+  | Torus of Torus.t  (** §15.5, §14.5 (b): always through its transform *)
+  | Csg of csg
+      (** §16: a CSG kept whole, a top-level object or a member of one. The tracer never reports a
+          CSG as the object hit but the member primitive (a leaf), whose own surface is shaded.
+          A new primitive shape plugs into CSG by its cases in [Compile.inside] (Inside),
+          [Compile.bounds], and [Trace.all_hits] (every crossing of the ray, in the order POV-Ray's
+          All_Intersections pushes them); the exhaustive matches point at each. *)
+
+(** A CSG's members and how their hits are kept (§16.2, §16.3). *)
+and csg = {
+  kind : Scene.csg_kind;
+  members : obj array;
+  cbox : float array;  (** POV-Ray's box of the CSG, as [obj.pbox]; the ray is tested against it first *)
+}
+
+(** An object ready to trace: a top-level object, or a member of a CSG. *)
+and obj = {
+  id : int;  (** its index in [t.objects]: top-level objects and their members in scene order *)
+  iid : int;
+      (** the identity of its interior in interior lists: its own id, or for a CSG member that
+          shares its parent's interior the parent's [iid] (§16.5). [t.objects.(iid)] carries
+          that interior's values. *)
+  top : int;  (** the id of the top-level object it belongs to (its own id at top level) *)
+  inverted : bool;  (** a CSG member whose Inside is negated (§16.3) *)
   shape : shape;
   surf : surface;  (** the object's own surface *)
   face_surfs : surface array;  (** meshes: the surfaces of the per-face textures *)
@@ -136,7 +155,9 @@ type group = {
 }
 
 type t = {
-  objects : obj array;  (** every object, in scene order; [id] indexes this array *)
+  objects : obj array;
+      (** every object, in scene order, each CSG followed by its members (depth first); [id]
+          indexes this array. The groups hold the top-level objects only. *)
   all : group;  (** every object *)
   seen : group;  (** what image rays can hit: the objects without no_image ([all] when none has it) *)
   mirrored : group;

@@ -24,6 +24,12 @@ type t = {
   mutable roots_eliminated : int;
   mutable max_level : int;
   mutable samples : int;
+  mutable csg_union_tests : int;
+  mutable csg_union_hits : int;
+  mutable csg_intersection_tests : int;
+  mutable csg_intersection_hits : int;
+  mutable csg_merge_tests : int;
+  mutable csg_merge_hits : int;
 }
 
 let create () =
@@ -31,6 +37,8 @@ let create () =
     camera_rays = 0; reflected_rays = 0; refracted_rays = 0; shadow_rays = 0; sphere_tests = 0;
     sphere_hits = 0; plane_tests = 0; plane_hits = 0; triangle_tests = 0; triangle_hits = 0; mesh_tests = 0; mesh_hits = 0; box_tests = 0; box_hits = 0; cone_tests = 0; cone_hits = 0; disc_tests = 0; disc_hits = 0;
     torus_tests = 0; torus_hits = 0; torus_bound_hits = 0; roots_tested = 0; roots_eliminated = 0; max_level = 0; samples = 0;
+    csg_union_tests = 0; csg_union_hits = 0; csg_intersection_tests = 0; csg_intersection_hits = 0; csg_merge_tests = 0;
+    csg_merge_hits = 0;
   }
 
 let merge a b =
@@ -60,4 +68,10 @@ let merge a b =
     roots_eliminated = a.roots_eliminated + b.roots_eliminated;
     max_level = max a.max_level b.max_level;
     samples = a.samples + b.samples;
+    csg_union_tests = a.csg_union_tests + b.csg_union_tests;
+    csg_union_hits = a.csg_union_hits + b.csg_union_hits;
+    csg_intersection_tests = a.csg_intersection_tests + b.csg_intersection_tests;
+    csg_intersection_hits = a.csg_intersection_hits + b.csg_intersection_hits;
+    csg_merge_tests = a.csg_merge_tests + b.csg_merge_tests;
+    csg_merge_hits = a.csg_merge_hits + b.csg_merge_hits;
   }

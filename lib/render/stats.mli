@@ -26,6 +26,12 @@ type t = {
   mutable roots_eliminated : int;  (** of which a root at 0 was dropped (§15.6) *)
   mutable max_level : int;  (** deepest trace level reached *)
   mutable samples : int;  (** antialiasing samples beyond the first per pixel *)
+  mutable csg_union_tests : int;  (** kept unions searched (§16.2) *)
+  mutable csg_union_hits : int;
+  mutable csg_intersection_tests : int;  (** intersections and differences searched *)
+  mutable csg_intersection_hits : int;
+  mutable csg_merge_tests : int;
+  mutable csg_merge_hits : int;
 }
 
 val create : unit -> t

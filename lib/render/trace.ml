@@ -25,9 +25,18 @@ type ctx = {
   min_depth : float;  (* the nearest depth any ray accepts *)
   robust : bool;  (* secondary rays leave from points lifted off the surface *)
   shadow_cache : int array;  (* §4: per light, the opaque object that last blocked it, or −1 *)
-  hits : float array;  (* scratch: every hit of one cylinder, cone or disc, as (depth, part) pairs *)
+  slab : float array;  (* scratch: a box's crossings and sides (tmin, tmax, smin, smax) *)
+  hits : hits;  (* scratch: the hits of a CSG's members (§16.2) *)
+  leaf : int array;  (* scratch: the member hit in a CSG *)
+  qhits : float array;  (* scratch: every hit of one cylinder, cone or disc, as (depth, part) pairs *)
   torus : Torus.work;  (* room for a torus's quartic and its roots *)
 }
+
+(* Room for the hits of a CSG's members: [hit_width] floats per hit (depth, sub, leaf id, and the
+   hit point x, y, z), grown when a ray crosses more surfaces than it holds. *)
+and hits = { mutable h : float array }
+
+let hit_width = 6
 
 (* POV-Ray keeps two cache slots per light: one for the shadow tests made while shading a hit at
    trace level 2 (lightSourceLevel1ShadowCache) and one for every other level. *)
@@ -47,7 +56,10 @@ let make_ctx ?(robust = false) scene stats =
     min_depth = (if robust then 0. else min_isect_depth);
     robust;
     shadow_cache = Array.make slots (-1);
-    hits = Array.make max_hits 0.;
+    slab = Array.make 4 0.;
+    hits = { h = Array.make (64 * hit_width) 0. };
+    leaf = [| -1 |];
+    qhits = Array.make max_hits 0.;
     torus = Torus.create_work ();
   }
 let black = { r = 0.; g = 0.; b = 0.; tr = 0. }
@@ -132,9 +144,10 @@ let plane_trans_depth (stats : Stats.t) (lim : Limits.t) (p : plane) (t : Transf
    comparisons; the Y and Z slabs keep the side already found when a crossing is within
    [ctx.lim.close] (1e-6) of it,
    unless the ray is steeper towards the new side. Sides are 1–6 for X−, X+, Y−, Y+, Z−, Z+ (0: none
-   yet). The near crossing counts beyond the near limit, the far one always; the nearest at least
-   [lo] is returned and its side left in [ctx.sub.(0)]. *)
-let box_depth ctx (b : box) px py pz vx vy vz lo =
+   yet). Whether the box is hit (the far crossing beyond the near limit); the crossings and their
+   sides are left in [ctx.slab]. The near crossing counts beyond the near limit, the far one
+   always. *)
+let box_slabs ctx (b : box) px py pz vx vy vz =
   let stats = ctx.stats in
   stats.box_tests <- stats.box_tests + 1;
   let box_close = ctx.lim.close in
@@ -185,21 +198,31 @@ let box_depth ctx (b : box) px py pz vx vy vz lo =
       end
     end
     else if pz < b.z0 || pz > b.z1 then miss := true;
-  if !miss || !tmax < ctx.lim.near then infinity
-  else if !tmin > ctx.lim.near && !tmin >= lo && (!tmin < !tmax || !tmax < lo) then begin
-    (* both crossings are candidates, the far one pushed last; POV-Ray takes candidates from the
-       top of its stack and keeps a strictly nearer one, so of two equal depths (a ray through an
-       edge) the far crossing's side wins *)
-    stats.box_hits <- stats.box_hits + 1;
-    ctx.sub.(0) <- !smin;
-    !tmin
-  end
-  else if !tmax >= lo then begin
-    stats.box_hits <- stats.box_hits + 1;
-    ctx.sub.(0) <- !smax;
-    !tmax
-  end
-  else infinity
+  ctx.slab.(0) <- !tmin;
+  ctx.slab.(1) <- !tmax;
+  ctx.slab.(2) <- Float.of_int !smin;
+  ctx.slab.(3) <- Float.of_int !smax;
+  not (!miss || !tmax < ctx.lim.near)
+
+(* The nearest crossing of the box at least [lo] (see [box_slabs]); its side in [ctx.sub.(0)]. *)
+let box_depth ctx (b : box) px py pz vx vy vz lo =
+  if not (box_slabs ctx b px py pz vx vy vz) then infinity
+  else
+    let stats = ctx.stats and tmin = ctx.slab.(0) and tmax = ctx.slab.(1) in
+    if tmin > ctx.lim.near && tmin >= lo && (tmin < tmax || tmax < lo) then begin
+      (* both crossings are candidates, the far one pushed last; POV-Ray takes candidates from the
+         top of its stack and keeps a strictly nearer one, so of two equal depths (a ray through an
+         edge) the far crossing's side wins *)
+      stats.box_hits <- stats.box_hits + 1;
+      ctx.sub.(0) <- int_of_float ctx.slab.(2);
+      tmin
+    end
+    else if tmax >= lo then begin
+      stats.box_hits <- stats.box_hits + 1;
+      ctx.sub.(0) <- int_of_float ctx.slab.(3);
+      tmax
+    end
+    else infinity
 
 (* §15.1: the box [b] mapped by [t]: the ray brought into object space, direction not renormalised. *)
 let box_trans_depth ctx (b : box) (t : Transform.t) (o : Vec.t) (d : Vec.t) lo =
@@ -342,11 +365,11 @@ let disc_hits ctx (dc : disc) (o : Vec.t) (d : Vec.t) (out : float array) =
   end
   else 0
 
-(* The nearest of the [n] hits in [ctx.hits] at least [lo], its part left in [ctx.sub.(0)]; or
+(* The nearest of the [n] hits in [ctx.qhits] at least [lo], its part left in [ctx.sub.(0)]; or
    infinity. POV-Ray takes them from the top of its intersection stack, the last found first,
    keeping a strictly nearer one: of equal depths the last found wins. *)
 let nearest_listed ctx n lo =
-  let h = ctx.hits in
+  let h = ctx.qhits in
   let best = ref infinity and part = ref 0 in
   for i = n - 1 downto 0 do
     let t = h.(2 * i) in
@@ -399,53 +422,6 @@ let torus_depth ctx t o d lo =
   done;
   !best
 
-let hit_shape ctx shape (o : Vec.t) (d : Vec.t) lo =
-  let stats = ctx.stats in
-  match shape with
-  | Sphere s -> sphere_depth stats ctx.lim s.cx s.cy s.cz s.r2 o d lo
-  | Ellipsoid { sp; etr } -> ellipsoid_depth stats ctx.lim sp etr o d lo
-  | Plane p ->
-      (* §2.3 *)
-      stats.plane_tests <- stats.plane_tests + 1;
-      let ndd = (p.nx *. d.x) +. (p.ny *. d.y) +. (p.nz *. d.z) in
-      if Float.abs ndd < epsilon then infinity
-      else
-        let ndo = (p.nx *. o.x) +. (p.ny *. o.y) +. (p.nz *. o.z) in
-        let t = -.(ndo +. p.dist) /. ndd in
-        if t >= ctx.lim.near && t <= ctx.lim.far && t >= lo then (stats.plane_hits <- stats.plane_hits + 1; t)
-        else infinity
-  | Plane_trans { pl; ptr; _ } -> plane_trans_depth stats ctx.lim pl ptr o d lo
-  | Box b -> box_depth ctx b o.x o.y o.z d.x d.y d.z lo
-  | Box_trans { bx; btr } -> box_trans_depth ctx bx btr o d lo
-  | Cone c -> nearest_listed ctx (cone_hits ctx c o d ctx.hits) lo
-  | Disc dc -> nearest_listed ctx (disc_hits ctx dc o d ctx.hits) lo
-  | Torus t -> torus_depth ctx t o d lo
-  | Triangle t | Smooth_triangle t ->
-      (* §2.4 *)
-      stats.triangle_tests <- stats.triangle_tests + 1;
-      let depth = Triangle.intersect_within ctx.lim t o d in
-      if depth >= lo && depth < infinity then (stats.triangle_hits <- stats.triangle_hits + 1; depth) else infinity
-  | Mesh m ->
-      (* §2.6, Mesh::Intersect: a moved mesh is searched in its own space with the direction
-         renormalised (times the reciprocal length), and the depth is divided by that length *)
-      stats.mesh_tests <- stats.mesh_tests + 1;
-      let k, depth =
-        if not m.moved then
-          let k = Mesh.nearest_within ctx.lim m.mesh ctx.mstack o d lo ctx.depth in
-          (k, ctx.depth.(0))
-        else
-          let v = Transform.inv_direction m.tr d in
-          let len = Vec.length v in
-          let k = Mesh.nearest_within ctx.lim m.mesh ctx.mstack (Transform.inv_point m.tr o) (Vec.scale (1. /. len) v) (lo *. len) ctx.depth in
-          (k, ctx.depth.(0) /. len)
-      in
-      if k >= 0 && depth >= lo then begin
-        stats.mesh_hits <- stats.mesh_hits + 1;
-        ctx.sub.(0) <- k;
-        depth
-      end
-      else infinity
-
 (* Where the ray enters POV-Ray's box [b] of an object (Check_And_Enqueue, with the ray as Rayinfo
    holds it: origin and reciprocal direction in single precision, and the slab arithmetic in single
    precision too), or infinity when it misses the box. *)
@@ -488,6 +464,291 @@ let pov_entry (b : float array) (o : Vec.t) (d : Vec.t) =
     fst (narrow ~last:true r (slab b.(2) b.(5) o.z d.z))
   with Miss -> infinity
 
+let rec hit_shape ctx shape (o : Vec.t) (d : Vec.t) lo =
+  let stats = ctx.stats in
+  match shape with
+  | Csg c ->
+      (* Trace::FindIntersection tests a CSG's single-precision box first (§15.8): a ray grazing
+         an edge of the box within its rounding misses the CSG. The robust mode decides by the
+         geometry alone. *)
+      if (not ctx.robust) && Array.length c.cbox > 0 && pov_entry c.cbox o d = infinity then infinity else csg_depth ctx c o d lo
+  | Sphere s -> sphere_depth stats ctx.lim s.cx s.cy s.cz s.r2 o d lo
+  | Ellipsoid { sp; etr } -> ellipsoid_depth stats ctx.lim sp etr o d lo
+  | Plane p ->
+      (* §2.3 *)
+      stats.plane_tests <- stats.plane_tests + 1;
+      let ndd = (p.nx *. d.x) +. (p.ny *. d.y) +. (p.nz *. d.z) in
+      if Float.abs ndd < epsilon then infinity
+      else
+        let ndo = (p.nx *. o.x) +. (p.ny *. o.y) +. (p.nz *. o.z) in
+        let t = -.(ndo +. p.dist) /. ndd in
+        if t >= ctx.lim.near && t <= ctx.lim.far && t >= lo then (stats.plane_hits <- stats.plane_hits + 1; t)
+        else infinity
+  | Plane_trans { pl; ptr; _ } -> plane_trans_depth stats ctx.lim pl ptr o d lo
+  | Box b -> box_depth ctx b o.x o.y o.z d.x d.y d.z lo
+  | Box_trans { bx; btr } -> box_trans_depth ctx bx btr o d lo
+  | Cone c -> nearest_listed ctx (cone_hits ctx c o d ctx.qhits) lo
+  | Disc dc -> nearest_listed ctx (disc_hits ctx dc o d ctx.qhits) lo
+  | Torus t -> torus_depth ctx t o d lo
+  | Triangle t | Smooth_triangle t ->
+      (* §2.4 *)
+      stats.triangle_tests <- stats.triangle_tests + 1;
+      let depth = Triangle.intersect_within ctx.lim t o d in
+      if depth >= lo && depth < infinity then (stats.triangle_hits <- stats.triangle_hits + 1; depth) else infinity
+  | Mesh m ->
+      (* §2.6, Mesh::Intersect: a moved mesh is searched in its own space with the direction
+         renormalised (times the reciprocal length), and the depth is divided by that length *)
+      stats.mesh_tests <- stats.mesh_tests + 1;
+      let k, depth =
+        if not m.moved then
+          let k = Mesh.nearest_within ctx.lim m.mesh ctx.mstack o d lo ctx.depth in
+          (k, ctx.depth.(0))
+        else
+          let v = Transform.inv_direction m.tr d in
+          let len = Vec.length v in
+          let k = Mesh.nearest_within ctx.lim m.mesh ctx.mstack (Transform.inv_point m.tr o) (Vec.scale (1. /. len) v) (lo *. len) ctx.depth in
+          (k, ctx.depth.(0) /. len)
+      in
+      if k >= 0 && depth >= lo then begin
+        stats.mesh_hits <- stats.mesh_hits + 1;
+        ctx.sub.(0) <- k;
+        depth
+      end
+      else infinity
+
+(* ---------------------------------------------------------------------------------------------- *)
+(* CSG (§16.2): every crossing of every member, kept by the CSG's rule *)
+
+(* Appends a hit of the leaf [id] at depth [t] (side or face [sub]) at the point (px, py, pz) to
+   the scratch after [n] hits; returns the new count. *)
+and push_hit ctx n t sub id px py pz =
+  let w = hit_width in
+  if (n + 1) * w > Array.length ctx.hits.h then begin
+    let bigger = Array.make (2 * Array.length ctx.hits.h) 0. in
+    Array.blit ctx.hits.h 0 bigger 0 (n * w);
+    ctx.hits.h <- bigger
+  end;
+  let h = ctx.hits.h and j = n * w in
+  h.(j) <- t;
+  h.(j + 1) <- Float.of_int sub;
+  h.(j + 2) <- Float.of_int id;
+  h.(j + 3) <- px;
+  h.(j + 4) <- py;
+  h.(j + 5) <- pz;
+  n + 1
+
+(* A world-space hit at depth [t] along the ray, if at least [lo]. *)
+and push_ray ctx n lo t sub id (o : Vec.t) (d : Vec.t) =
+  if t >= lo then push_hit ctx n t sub id (o.x +. (t *. d.x)) (o.y +. (t *. d.y)) (o.z +. (t *. d.z)) else n
+
+(* Every crossing at least [lo] of the object [ob] (a primitive or a CSG) along the ray, appended
+   after the [n] hits in the scratch in the order POV-Ray's All_Intersections pushes them; returns
+   the new count. A new primitive shape gets its case here. *)
+and all_hits ctx (ob : obj) (o : Vec.t) (d : Vec.t) lo n =
+  let stats = ctx.stats and lim = ctx.lim and id = ob.id in
+  match ob.shape with
+  | Csg c -> csg_hits ctx c o d lo n
+  | Sphere s ->
+      (* Sphere::All_Intersections: both roots within the limits *)
+      stats.sphere_tests <- stats.sphere_tests + 1;
+      let ocx = s.cx -. o.x and ocy = s.cy -. o.y and ocz = s.cz -. o.z in
+      let ocs = (ocx *. ocx) +. (ocy *. ocy) +. (ocz *. ocz) in
+      let tca = (ocx *. d.x) +. (ocy *. d.y) +. (ocz *. d.z) in
+      if ocs >= s.r2 && tca < lim.tangent then n
+      else
+        let h2 = s.r2 -. ocs +. (tca *. tca) in
+        if h2 <= lim.tangent then n
+        else
+          let h = sqrt h2 in
+          let t1 = tca -. h and t2 = tca +. h in
+          let n0 = n in
+          let n = if t1 > lim.near && t1 < lim.far then push_ray ctx n lo t1 (-1) id o d else n in
+          let n = if t2 > lim.near && t2 < lim.far then push_ray ctx n lo t2 (-1) id o d else n in
+          if n > n0 then stats.sphere_hits <- stats.sphere_hits + 1;
+          n
+  | Ellipsoid { sp = s; etr = t } ->
+      (* in object space, the direction renormalised; the hit point is the object-space point
+         mapped back *)
+      stats.sphere_tests <- stats.sphere_tests + 1;
+      let q = Transform.inv_point t o and v = Transform.inv_direction t d in
+      let len = Vec.length v in
+      let k = 1. /. len in
+      let v = Vec.scale k v in
+      let ocx = s.cx -. q.x and ocy = s.cy -. q.y and ocz = s.cz -. q.z in
+      let ocs = (ocx *. ocx) +. (ocy *. ocy) +. (ocz *. ocz) in
+      let tca = (ocx *. v.x) +. (ocy *. v.y) +. (ocz *. v.z) in
+      if ocs >= s.r2 && tca < lim.tangent then n
+      else
+        let h2 = s.r2 -. ocs +. (tca *. tca) in
+        if h2 <= lim.tangent then n
+        else
+          let h = sqrt h2 in
+          let root n t0 =
+            if t0 > lim.near && t0 < lim.far && t0 /. len >= lo then
+              let p = Transform.point t (Vec.madd q t0 v) in
+              push_hit ctx n (t0 /. len) (-1) id p.x p.y p.z
+            else n
+          in
+          let n0 = n in
+          let n = root (root n (tca -. h)) (tca +. h) in
+          if n > n0 then stats.sphere_hits <- stats.sphere_hits + 1;
+          n
+  | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ ->
+      (* one crossing at most *)
+      let t = hit_shape ctx ob.shape o d lo in
+      if t < infinity then push_ray ctx n lo t (-1) id o d else n
+  | Box b ->
+      if box_slabs ctx b o.x o.y o.z d.x d.y d.z then box_pair ctx n lo id o d else n
+  | Box_trans { bx; btr = t } ->
+      let q = Transform.inv_point t o and v = Transform.inv_direction t d in
+      if box_slabs ctx bx q.x q.y q.z v.x v.y v.z then box_pair ctx n lo id o d else n
+  | Mesh m ->
+      stats.mesh_tests <- stats.mesh_tests + 1;
+      let count = ref n in
+      let n0 = n in
+      (if not m.moved then Mesh.iter_hits lim m.mesh ctx.mstack o d (fun k t -> count := push_ray ctx !count lo t k id o d)
+       else
+         let v = Transform.inv_direction m.tr d in
+         let len = Vec.length v in
+         Mesh.iter_hits lim m.mesh ctx.mstack (Transform.inv_point m.tr o) (Vec.scale (1. /. len) v) (fun k t ->
+             count := push_ray ctx !count lo (t /. len) k id o d));
+      if !count > n0 then stats.mesh_hits <- stats.mesh_hits + 1;
+      !count
+
+  | Cone c ->
+      (* Cone::All_Intersections: the listed crossings in their order, each with its part *)
+      let k = cone_hits ctx c o d ctx.qhits in
+      let q = ctx.qhits in
+      let n = ref n in
+      for i = 0 to k - 1 do
+        n := push_ray ctx !n lo q.(2 * i) (int_of_float q.((2 * i) + 1)) id o d
+      done;
+      !n
+  | Disc dc ->
+      let k = disc_hits ctx dc o d ctx.qhits in
+      if k > 0 then push_ray ctx n lo ctx.qhits.(0) 0 id o d else n
+  | Torus t ->
+      (* Torus::All_Intersections: the roots within the limits, in the solver's order *)
+      let k = torus_hits ctx t o d ctx.qhits in
+      let n = ref n in
+      for i = 0 to k - 1 do
+        n := push_ray ctx !n lo ctx.qhits.(i) (-1) id o d
+      done;
+      !n
+
+(* Box::All_Intersections: the near crossing beyond the near limit, then the far one. *)
+and box_pair ctx n lo id o d =
+  let tmin = ctx.slab.(0) and tmax = ctx.slab.(1) in
+  let smin = int_of_float ctx.slab.(2) and smax = int_of_float ctx.slab.(3) in
+  ctx.stats.box_hits <- ctx.stats.box_hits + 1;
+  let n = if tmin > ctx.lim.near then push_ray ctx n lo tmin smin id o d else n in
+  push_ray ctx n lo tmax smax id o d
+
+(* Keeps the hits [start, e) of member [skip] whose point is Inside ([want]) or outside every other
+   member, in place; [reverse]d when they come off a local stack. Returns the new end. *)
+and keep_hits ctx (members : obj array) ~skip ~want ~reverse start e =
+  let nm = Array.length members in
+  let w = ref start in
+  for j = start to e - 1 do
+    let h = ctx.hits.h and b = j * hit_width in
+    let p = Vec.make h.(b + 3) h.(b + 4) h.(b + 5) in
+    let keep = ref true and i = ref 0 in
+    while !keep && !i < nm do
+      if !i <> skip && Compile.inside_member ctx.mstack members.(!i) p <> want then keep := false;
+      incr i
+    done;
+    if !keep then begin
+      if !w <> j then Array.blit h b h (!w * hit_width) hit_width;
+      incr w
+    end
+  done;
+  if reverse then begin
+    let h = ctx.hits.h in
+    let a = ref start and z = ref (!w - 1) in
+    while !a < !z do
+      for f = 0 to hit_width - 1 do
+        let x = h.((!a * hit_width) + f) in
+        h.((!a * hit_width) + f) <- h.((!z * hit_width) + f);
+        h.((!z * hit_width) + f) <- x
+      done;
+      incr a;
+      decr z
+    done
+  end;
+  !w
+
+(* §16.2: a union keeps every hit of its members; an intersection a hit of member k whose point
+   is inside every other member; a merge one inside no other member. A member's surviving hits
+   are taken off its own stack, so they are pushed in reverse (intersection and merge). A clipped
+   object keeps its hits inside every clip object, in the order it pushes them (Point_In_Clip);
+   a clipped union, like an intersection, takes each member's hits off a stack of its own. *)
+and csg_hits ctx (c : csg) o d lo n =
+  let stats = ctx.stats and n0 = n in
+  let members = c.members in
+  let nm = Array.length members in
+  let n =
+    match c.kind with
+    | Union ->
+        stats.csg_union_tests <- stats.csg_union_tests + 1;
+        let n = ref n in
+        Array.iter (fun m -> n := all_hits ctx m o d lo !n) members;
+        !n
+    | Intersection | Merge ->
+        (match c.kind with
+        | Intersection -> stats.csg_intersection_tests <- stats.csg_intersection_tests + 1
+        | Merge | Union | Clipped -> stats.csg_merge_tests <- stats.csg_merge_tests + 1);
+        let want = match c.kind with Intersection -> true | Merge | Union | Clipped -> false in
+        let n = ref n in
+        for k = 0 to nm - 1 do
+          let start = !n in
+          let e = all_hits ctx members.(k) o d lo start in
+          n := keep_hits ctx members ~skip:k ~want ~reverse:true start e
+        done;
+        !n
+    | Clipped when nm = 0 -> n
+    | Clipped -> (
+        match members.(0).shape with
+        | Csg { kind = Union; members = um; _ } ->
+            stats.csg_union_tests <- stats.csg_union_tests + 1;
+            let n = ref n in
+            Array.iter
+              (fun u ->
+                let start = !n in
+                let e = all_hits ctx u o d lo start in
+                n := keep_hits ctx members ~skip:0 ~want:true ~reverse:true start e)
+              um;
+            if !n > n0 then stats.csg_union_hits <- stats.csg_union_hits + 1;
+            !n
+        | Csg { kind = Merge | Intersection | Clipped; _ }
+        | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ ->
+            let e = all_hits ctx members.(0) o d lo n in
+            keep_hits ctx members ~skip:0 ~want:true ~reverse:false n e)
+  in
+  (if n > n0 then
+     match c.kind with
+     | Union -> stats.csg_union_hits <- stats.csg_union_hits + 1
+     | Intersection -> stats.csg_intersection_hits <- stats.csg_intersection_hits + 1
+     | Merge -> stats.csg_merge_hits <- stats.csg_merge_hits + 1
+     | Clipped -> ());
+  n
+
+(* §16.2: the nearest hit of a top-level CSG: its hits are popped from the stack, last pushed
+   first, and the first of the smallest depth wins. The leaf hit is left in [ctx.leaf.(0)], its
+   side or face in [ctx.sub.(0)]. *)
+and csg_depth ctx (c : csg) o d lo =
+  let n = csg_hits ctx c o d lo 0 in
+  let h = ctx.hits.h in
+  let best = ref infinity and bj = ref (-1) in
+  for j = n - 1 downto 0 do
+    let t = h.(j * hit_width) in
+    if t < !best then begin best := t; bj := j end
+  done;
+  if !bj >= 0 then begin
+    ctx.sub.(0) <- int_of_float h.((!bj * hit_width) + 1);
+    ctx.leaf.(0) <- int_of_float h.((!bj * hit_width) + 2)
+  end;
+  !best
+
 (* Whether [ob], hit at exactly the depth of the current best [cur], replaces it: POV-Ray keeps the
    first of equal depths it meets. Without its bounding hierarchy it tests the objects in scene
    order. With it, it tests planes first, then bounded objects in the order the ray enters their
@@ -496,7 +757,8 @@ let pov_entry (b : float array) (o : Vec.t) (d : Vec.t) =
 let wins_tie ctx ob cur (o : Vec.t) (d : Vec.t) =
   if not ctx.scene.bounding then ob.id < cur
   else
-    let pb = ctx.scene.objects.(cur).pbox in
+    (* [cur] may be a CSG member: its top-level object's box counts *)
+    let pb = ctx.scene.objects.(ctx.scene.objects.(cur).top).pbox in
     if Array.length pb = 0 then false
     else Array.length ob.pbox = 0 || pov_entry ob.pbox o d < pov_entry pb o d
 
@@ -523,7 +785,8 @@ let nearest ctx (g : group) (o : Vec.t) (d : Vec.t) lo hi =
     let t = hit_shape ctx ob.shape o d lo in
     if replaces ctx ob t !best !id o d then begin
       best := t;
-      id := ob.id;
+      (* a CSG reports the member hit *)
+      id := (match ob.shape with Csg _ -> ctx.leaf.(0) | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ -> ob.id);
       sub := ctx.sub.(0)
     end
   in
@@ -555,7 +818,7 @@ let surface_of obj sub =
       let t = Mesh.texture m.mesh sub in
       if t >= 0 then obj.face_surfs.(t) else obj.surf
   | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _
-  | Disc _ | Torus _ ->
+  | Disc _ | Torus _ | Csg _ ->
       obj.surf
 
 (* Box::Normal: the outward axis of the side hit (1–6). *)
@@ -584,6 +847,7 @@ let normal obj sub (p : Vec.t) : Vec.t =
   match obj.shape with
   | Cone c -> cone_normal c sub p
   | Disc dc -> Vec.make dc.dnx dc.dny dc.dnz
+  | Csg _ -> Vec.make 0. 0. 1. (* never hit: the member primitive is *)
   | Box _ -> box_side_normal sub
   | Box_trans { btr; _ } -> Transform.normalize (Transform.normal btr (box_side_normal sub))
   | Torus t -> Torus.normal t p
@@ -614,7 +878,7 @@ let geometric_normal obj sub (p : Vec.t) =
   match obj.shape with
   | Smooth_triangle t -> Vec.make t.nx t.ny t.nz
   | Mesh m -> if m.moved then Transform.normalize (Transform.normal m.tr (Mesh.face_normal m.mesh sub)) else Mesh.face_normal m.mesh sub
-  | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ -> normal obj sub p
+  | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Csg _ -> normal obj sub p
 
 (* A hit point put back onto a sphere: o + t·d is off by rounding errors of the size of the ray's
    length, a point projected from the centre by those of the centre and radius only. *)
@@ -627,7 +891,7 @@ let refine obj (p : Vec.t) =
   match obj.shape with
   | Sphere s -> onto s.cx s.cy s.cz s.radius p
   | Ellipsoid { sp = s; etr } -> Transform.point etr (onto s.cx s.cy s.cz s.radius (Transform.inv_point etr p))
-  | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ -> p
+  | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Csg _ -> p
 
 let norm_inf (v : Vec.t) = Float.max (Float.abs v.x) (Float.max (Float.abs v.y) (Float.abs v.z))
 
@@ -679,6 +943,11 @@ let robust_margin (p : Vec.t) (lp : Vec.t) remaining = (1e-9 *. remaining) +. er
 let shadow ctx ~slot (p : Vec.t) (ng : Vec.t) e (l : Vec.t) dist interiors (lc : Rgb.t) : Rgb.t =
   let sc = ctx.scene in
   ctx.stats.shadow_rays <- ctx.stats.shadow_rays + 1;
+  (* a light at an infinite distance (a coordinate beyond the float range) has no direction: a
+     filtered walk towards it would never end (a NaN ray from inside a box's slabs meets the box
+     at 2e10 again and again) *)
+  if not (Float.is_finite dist) then lc
+  else
   match sc.shadow_mode with
   | No_occluders -> lc
   | Any_hit | Filtered ->
@@ -694,8 +963,13 @@ let shadow ctx ~slot (p : Vec.t) (ng : Vec.t) e (l : Vec.t) dist interiors (lc :
       let in_cache =
         cached >= 0
         &&
-        if ctx.robust then hit_shape ctx sc.objects.(cached).shape o l lo < dist -. robust_margin p lp dist
-        else hit_shape ctx sc.objects.(cached).shape p l min_isect_depth < dist
+        (if ctx.robust then hit_shape ctx sc.objects.(cached).shape o l lo < dist -. robust_margin p lp dist
+         else hit_shape ctx sc.objects.(cached).shape p l min_isect_depth < dist)
+        &&
+        (* a cached CSG shadows only if the member hit is opaque *)
+        match sc.objects.(cached).shape with
+        | Csg _ -> sc.objects.(ctx.leaf.(0)).opaque
+        | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ -> true
       in
       if in_cache then Rgb.black
       else
@@ -706,18 +980,20 @@ let shadow ctx ~slot (p : Vec.t) (ng : Vec.t) e (l : Vec.t) dist interiors (lc :
         else
           let obj = sc.objects.(i) in
           if obj.opaque then begin
-            if first then ctx.shadow_cache.(slot) <- i;
+            (* the cache holds the top-level object (a CSG, not its member), and a CSG only when
+               its own texture is opaque: POV-Ray tests the OPAQUE flag of Intersection.Csg *)
+            if first && not sc.objects.(obj.top).surf.transparent then ctx.shadow_cache.(slot) <- obj.top;
             Rgb.black
           end
           else
             let f = (surface_of obj ctx.sub.(0)).filcol in
             let f =
-              if List.mem obj.id interiors && obj.fade_power > 0. && Float.abs obj.fade_distance > epsilon then
+              if List.mem obj.iid interiors && obj.fade_power > 0. && Float.abs obj.fade_distance > epsilon then
                 fade_factor obj.fade_colour obj.fade_distance obj.fade_power t f
               else f
             in
             let lc = Rgb.make (f32 (lc.r *. f.r)) (f32 (lc.g *. f.g)) (f32 (lc.b *. f.b)) in
-            let interiors = if List.mem obj.id interiors then remove obj.id interiors else obj.id :: interiors in
+            let interiors = if List.mem obj.iid interiors then remove obj.iid interiors else obj.iid :: interiors in
             let q = Vec.madd o t l in
             if not ctx.robust then walk false q l (remaining -. t) interiors lc
             else
@@ -785,7 +1061,10 @@ let light_terms ctx ~slot ~di (s : surface) (p : Vec.t) (n : Vec.t) ng e (d : Ve
   let acc = Rgb.black in
   let lvx = lt.lx -. p.x and lvy = lt.ly -. p.y and lvz = lt.lz -. p.z in
   let dist = sqrt ((lvx *. lvx) +. (lvy *. lvy) +. (lvz *. lvz)) in
-  let l = Vec.make (lvx /. dist) (lvy /. dist) (lvz /. dist) in
+  (* ComputeOneWhiteLightRay: VInverseScaleEq, times the reciprocal of the distance; the last bit
+     decides knife-edge shadow rays, such as one through faces shared by CSG members *)
+  let k = 1. /. dist in
+  let l = Vec.make (lvx *. k) (lvy *. k) (lvz *. k) in
   (* §18.3: a parallel light's ray runs along −dir, as far as the plane through the centre *)
   let dist = if lt.parallel then parallel_depth lt l dist else dist in
   let l = if lt.parallel then Vec.make (-.lt.dx) (-.lt.dy) (-.lt.dz) else l in
@@ -859,7 +1138,7 @@ let fresnel_ior sc obj interiors =
   match interiors with
   | [] -> obj.ior
   | last :: rest ->
-      if List.mem obj.id interiors then if rest = [] then 1. /. obj.ior else sc.objects.(last).ior /. obj.ior
+      if List.mem obj.iid interiors then if rest = [] then 1. /. obj.ior else sc.objects.(last).ior /. obj.ior
       else obj.ior /. sc.objects.(last).ior
 
 (* k·hi + (1 − k)·lo in single precision *)
@@ -977,7 +1256,7 @@ and shade ctx ~reflected obj sub depth ~level ~weight ~interiors (o : Vec.t) (d 
           let ct, tir = refract ctx ~reflected obj ~level ~weight:w ~interiors p ng e d n in
           let att = Rgb.grey obj.old_refract in
           let att =
-            if Float.abs obj.fade_distance > epsilon && List.mem obj.id interiors then
+            if Float.abs obj.fade_distance > epsilon && List.mem obj.iid interiors then
               fade_factor obj.fade_colour obj.fade_distance obj.fade_power depth att
             else att
           in
@@ -1009,10 +1288,10 @@ and refract ctx ~reflected obj ~level ~weight ~interiors p ng e d n : result * b
   let sc = ctx.scene in
   let ior, inner =
     match interiors with
-    | [] -> (1. /. obj.ior, [ obj.id ])
-    | last :: rest when last = obj.id -> (obj.ior /. (match rest with [] -> 1. | l :: _ -> sc.objects.(l).ior), rest)
-    | _ when List.mem obj.id interiors -> (1., remove obj.id interiors)
-    | last :: _ -> (sc.objects.(last).ior /. obj.ior, obj.id :: interiors)
+    | [] -> (1. /. obj.ior, [ obj.iid ])
+    | last :: rest when last = obj.iid -> (obj.ior /. (match rest with [] -> 1. | l :: _ -> sc.objects.(l).ior), rest)
+    | _ when List.mem obj.iid interiors -> (1., remove obj.iid interiors)
+    | last :: _ -> (sc.objects.(last).ior /. obj.ior, obj.iid :: interiors)
   in
   ctx.stats.refracted_rays <- ctx.stats.refracted_rays + 1;
   if Float.abs (ior -. 1.) < epsilon then

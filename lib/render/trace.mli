@@ -15,14 +15,23 @@ type ctx = {
   min_depth : float;
   robust : bool;
   shadow_cache : int array;
-  hits : float array;
+  slab : float array;
+  hits : hits;
+  leaf : int array;
+  qhits : float array;
   torus : Torus.work;
 }
 (** What a trace reads: the compiled scene, the worker's statistics, scratch space (the last
-    hit's depth and mesh face, traversal stacks) and POV-Ray's shadow cache (§4: per light, the
-    opaque object that last blocked it) and room for a torus's quartic, all private to one worker; and the mode's limits: the
+    hit's depth and mesh face, traversal stacks, a box's crossings, a CSG's hits and member hit,
+    the hits of one cylinder, cone or disc, a torus's quartic) and POV-Ray's shadow cache (§4: per
+    light, the opaque object that last blocked it), all private to one worker; and the mode's limits: the
     depths shapes accept, the nearest depth any ray accepts (1e-4, §2.1), and whether secondary
     rays leave from points lifted off the surface (robust mode). *)
+
+and hits = { mutable h : float array }
+(** Room for the hits of a CSG's members, [hit_width] floats per hit: depth, side or face, the
+    member's id, the hit point's x, y, z. It grows when a ray crosses more surfaces. *)
+
 
 val make_ctx : ?robust:bool -> Compiled.t -> Stats.t -> ctx
 (** [make_ctx ?robust scene stats] is a context for one render worker, with an empty shadow cache
@@ -54,6 +63,14 @@ val torus_hits : ctx -> Torus.t -> Vec.t -> Vec.t -> float array -> int
     crosses the torus [t] within its limits (beyond 1e-4 in world units, below 1e7; §15.5) into
     [out] (room for 4), in POV-Ray's order, and returns their number; the torus statistics are
     counted. For CSG, which needs every crossing. *)
+
+val hit_width : int
+(** [hit_width] is the number of floats per hit in [ctx.hits]. *)
+
+val all_hits : ctx -> Compiled.obj -> Vec.t -> Vec.t -> float -> int -> int
+(** [all_hits ctx ob o d lo n] appends to [ctx.hits], after its first [n] hits, every crossing at
+    depth ≥ [lo] of the primitive or CSG [ob] along the ray that POV-Ray's All_Intersections
+    keeps (§16.2), in the order it pushes them; it returns the new number of hits. *)
 
 val normal : Compiled.obj -> int -> Vec.t -> Vec.t
 (** [normal obj face p] is the unit normal of [obj] at its surface point [p] ([face]: the mesh face

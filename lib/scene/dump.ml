@@ -63,7 +63,7 @@ let interior (i : interior) =
 
 let trans = function None -> "" | Some t -> "\n  " ^ matrix t
 
-let shape = function
+let rec shape = function
   | Sphere { centre; radius; trans = t } -> Printf.sprintf "sphere { %s, %s%s" (vec centre) (num radius) (trans t)
   | Plane { normal; offset; trans = t } -> Printf.sprintf "plane { %s, %s%s" (vec normal) (num offset) (trans t)
   | Triangle { p1; p2; p3 } -> Printf.sprintf "triangle { %s, %s, %s" (vec p1) (vec p2) (vec p3)
@@ -88,8 +88,17 @@ let shape = function
         (num b.(2)) (num b.(3)) (num b.(4)) (num b.(5))
         (if Array.length textures > 0 then Printf.sprintf ", %d face textures" (Array.length textures) else "")
         (trans t)
+  | Csg { kind; members } ->
+      let member (m : member) =
+        String.concat "\n  " (String.split_on_char '\n' (String.trim (obj m.mobj)))
+        ^ (if m.inverted then " inverse" else "")
+        ^ if m.own_interior then "" else " shared interior"
+      in
+      Printf.sprintf "%s {\n  %s"
+        (match kind with Union -> "union" | Merge -> "merge" | Intersection -> "intersection" | Clipped -> "clipped (the first by the others)")
+        (String.concat "\n  " (List.map member members))
 
-let obj (o : obj) =
+and obj (o : obj) =
   Printf.sprintf "%s\n  %s%s%s\n} // %s\n" (shape o.shape) (texture o.texture) (interior o.interior)
     (String.concat ""
        (List.map

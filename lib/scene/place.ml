@@ -44,7 +44,7 @@ let move_point op (p : Vec.t) =
   | Scale s -> Vec.mul p s
   | Rotate _ | Transform _ -> Transform.point (op_transform op) p
 
-let shape (s : Scene.shape) op : Scene.shape =
+let rec shape (s : Scene.shape) op : Scene.shape =
   match s with
   | Sphere { centre; radius; trans = None } -> (
       (* §2.2, Sphere::Translate/Rotate/Scale/Transform *)
@@ -122,6 +122,9 @@ let shape (s : Scene.shape) op : Scene.shape =
       (* §15.4, Disc::Transform: the normal by the inverse transpose, normalised, at every step *)
       let t = op_transform op in
       Disc { d with normal = Transform.normalize (Transform.normal t d.normal); trans = Transform.compose d.trans t }
+  | Csg { kind; members } ->
+      (* §16: a CSG's transform moves every member *)
+      Csg { kind; members = List.map (fun (m : Scene.member) -> { m with mobj = { m.mobj with shape = shape m.mobj.shape op } }) members }
 
 (* ---------------------------------------------------------------------------------------------- *)
 (* The whole scene moved: every object, light and the camera scaled by [scale] about the origin and
@@ -130,13 +133,19 @@ let shape (s : Scene.shape) op : Scene.shape =
 
 let scene ~scale ~translate (s : Scene.t) : Scene.t =
   let sv = Vec.make scale scale scale in
-  let obj (o : Scene.obj) =
+  let rec obj (o : Scene.obj) =
     (* a smooth triangle's Scale renormalises its vertex normals, which changes how they blend;
        as a matrix the uniform scale only multiplies all three by the same factor *)
     let scaling =
-      match o.shape with Smooth_triangle _ -> Transform (Transform.scale sv) | Sphere _ | Plane _ | Triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ -> Scale sv
+      match o.shape with
+      | Smooth_triangle _ -> Transform (Transform.scale sv)
+      | Sphere _ | Plane _ | Triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Csg _ -> Scale sv
     in
-    let sh = shape (shape o.shape scaling) (Translate translate) in
+    let sh =
+      match o.shape with
+      | Csg { kind; members } -> Scene.Csg { kind; members = List.map (fun (m : Scene.member) -> { m with mobj = obj m.mobj }) members }
+      | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ -> shape (shape o.shape scaling) (Translate translate)
+    in
     { o with shape = sh; interior = { o.interior with fade_distance = o.interior.fade_distance *. scale } }
   in
   let light (l : Scene.light) =

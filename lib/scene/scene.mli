@@ -79,9 +79,31 @@ type shape =
       (** §15.5: R and r as written, the tube's core circle in the XZ plane, mapped by [trans]
           (a torus always has one: every modifier composes into it, §14.4); [inverse] negates
           its inside *)
+  | Csg of { kind : csg_kind; members : member list }
+      (** §16: a CSG kept whole (a merge, an intersection or difference, a union with
+          [split_union off]); its members are already moved by its transforms and carry the
+          texture passed down to them (§16.5) *)
+
+(** The kinds of CSG after parsing: a difference is an intersection whose later members are
+    inverted, and an inverted CSG has been morphed (§16.1, §16.3). [Clipped] is an object with
+    [clipped_by]: its first member is the object, the others the clip objects, whose surfaces are
+    not seen; the object's hits are kept inside every clip object (§15.8). *)
+and csg_kind = Union | Merge | Intersection | Clipped
+
+(** A member of a CSG. *)
+and member = {
+  mobj : obj;  (** the member, its texture resolved (its own, else its parent's, §16.5) *)
+  inverted : bool;
+      (** a primitive: its Inside test is negated (§16.3); a CSG: it was inverted, which morphed it
+          (its Inside already holds the inversion) and leaves it out of an enclosing
+          intersection's bounding box *)
+  own_interior : bool;
+      (** it has its own [interior {}]: otherwise it SHARES its parent's interior, the same
+          interior in interior lists (§16.5); [mobj.interior] then holds the parent's values *)
+}
 
 (** A finished object: textured, with an interior (§2.7). *)
-type obj = {
+and obj = {
   shape : shape;
   texture : texture;
   interior : interior;

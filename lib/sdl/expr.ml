@@ -32,7 +32,9 @@ let unsupported_functions = [ "inside"; "trace"; "min_extent"; "max_extent"; "vt
 
 let function_set = set_of function_names
 let object_set =
-  set_of [ "sphere"; "box"; "cylinder"; "cone"; "disc"; "torus"; "plane"; "object"; "triangle"; "smooth_triangle"; "mesh"; "mesh2"; "union" ]
+  set_of
+    [ "sphere"; "box"; "cylinder"; "cone"; "disc"; "torus"; "plane"; "object"; "triangle"; "smooth_triangle"; "mesh"; "mesh2";
+      "union"; "merge"; "intersection"; "difference" ]
 
 let truth x = Float.abs x > 1e-10
 

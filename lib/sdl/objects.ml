@@ -19,14 +19,14 @@ let move_light op (l : Scene.light) =
 let rec set_double_illuminate b (o : V.obj) =
   match o.shape with
   | Prim _ -> { o with double_illuminate = b }
-  | Union ms ->
+  | Csg c ->
       let member = function V.Member_obj c -> V.Member_obj (set_double_illuminate b c) | V.Member_light _ as m -> m in
-      { o with double_illuminate = b; shape = Union (List.map member ms) }
+      { o with double_illuminate = b; shape = Csg { c with members = List.map member c.members } }
 
 let rec move_obj op (o : V.obj) =
   match o.shape with
   | Prim s -> { o with shape = Prim (move_shape op s) }
-  | Union ms -> { o with shape = Union (List.map (move_member op) ms) }
+  | Csg c -> { o with shape = Csg { c with members = List.map (move_member op) c.members } }
 
 and move_member op = function
   | V.Member_obj o -> V.Member_obj (move_obj op o)
@@ -34,7 +34,7 @@ and move_member op = function
 
 (* §15.5: a torus takes [sturm] (solve with Sturm sequences) and [inverse] (inside out) among
    its modifiers, wherever they stand *)
-let is_torus (o : V.obj) = match o.shape with Prim (Torus _) -> true | Prim _ | Union _ -> false
+let is_torus (o : V.obj) = match o.shape with Prim (Torus _) -> true | Prim _ | Csg _ -> false
 
 let torus_flag kw (o : V.obj) =
   match o.shape with
@@ -42,44 +42,26 @@ let torus_flag kw (o : V.obj) =
       (* Torus::Invert toggles the flag *)
       let sturm, inverse = if kw = "sturm" then (true, t.inverse) else (t.sturm, not t.inverse) in
       { o with shape = Prim (Torus { t with sturm; inverse }) }
-  | Prim _ | Union _ -> o
+  | Prim _ | Csg _ -> o
 
-let parse_object_mods st (o : V.obj) what : V.obj =
-  let tex o = match o.V.texture with Some t -> t | None -> st.default_texture in
-  let rec loop (o : V.obj) =
-    let loc = peek_loc st in
-    match peek st with
-    | RBrace -> advance st; o
-    | Ident "pigment" -> advance st; let t = tex o in loop { o with texture = Some { t with pigment = parse_pigment st t.pigment } }
-    | Ident "finish" -> advance st; let t = tex o in loop { o with texture = Some { t with finish = parse_finish st t.finish } }
-    | Ident "texture" ->
-        advance st;
-        if o.texture <> None then not_supported loc "layered textures (a texture added to an object that has one)";
-        loop { o with texture = Some (parse_texture st st.default_texture) }
-    | Ident "interior" ->
-        advance st;
-        let base = match o.interior with Some i -> i | None -> Defaults.interior in
-        loop { o with interior = Some (parse_interior st base) }
-    | Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") -> loop (move_obj (parse_op st) o)
-    | Ident "no_shadow" -> advance st; loop { o with no_shadow = true }
-    (* §16.6: the flags take an optional boolean; hollow only matters to media, which povml lacks *)
-    | Ident "no_image" -> advance st; loop { o with no_image = parse_bool_opt st }
-    | Ident "no_reflection" -> advance st; loop { o with no_reflection = parse_bool_opt st }
-    | Ident "double_illuminate" -> advance st; loop (set_double_illuminate (parse_bool_opt st) o)
-    | Ident "inverse" -> (
-        (* §15.2–§15.4, Invert: the primitive's inside test is negated *)
-        match o.shape with
-        | Prim (Cone c) -> advance st; loop { o with shape = Prim (Cone { c with inverted = not c.inverted }) }
-        | Prim (Disc d) -> advance st; loop { o with shape = Prim (Disc { d with inverted = not d.inverted }) }
-        | Prim (Torus _) -> advance st; loop (torus_flag "inverse" o)
-        | Prim (Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _) | Union _ ->
-            not_supported loc (Printf.sprintf "'inverse' in '%s' (only cylinders, cones, discs and tori take it so far)" what))
-    | Ident "hollow" -> advance st; ignore (parse_bool_opt st); loop o
-    | Ident "sturm" when is_torus o -> advance st; loop (torus_flag "sturm" o)
-    | Ident s when is_unsupported s -> not_supported loc (Printf.sprintf "'%s'" s)
-    | _ -> unexpected st (Printf.sprintf "an object modifier or '}' closing '%s'" what)
-  in
-  loop o
+(* §16.3, Invert_Object and Invert_CSG_Object: a plane turns over (normal and distance negated),
+   another primitive toggles its inverted flag, a CSG inverts every member and morphs by De
+   Morgan's rule: an inverted union or merge is an intersection, an inverted intersection a merge.
+   A light has no geometry to invert. *)
+let rec invert (o : V.obj) : V.obj =
+  match o.shape with
+  | Prim (Plane { normal; offset; trans }) -> { o with shape = Prim (Plane { normal = Vec.neg normal; offset = -.offset; trans }) }
+  | Prim (Sphere _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Csg _) -> { o with inverted = not o.inverted }
+  | Csg { members; _ } when List.for_all (function V.Member_light _ -> true | V.Member_obj _ -> false) members ->
+      o (* lights only (a light in object position): nothing to invert *)
+  | Csg { kind = Clipped; members = V.Member_obj c :: clips; split } ->
+      (* the object is inverted, its clip objects are not *)
+      { o with shape = Csg { kind = Clipped; members = V.Member_obj (invert c) :: clips; split } }
+  | Csg { kind = (Union | Merge | Intersection | Clipped) as kind; members; split } ->
+      let kind : Scene.csg_kind = match kind with Union | Merge -> Intersection | Intersection | Clipped -> Merge in
+      let members = List.map (function V.Member_obj c -> V.Member_obj (invert c) | V.Member_light _ as l -> l) members in
+      (* the CSG keeps an inverted flag too: an enclosing intersection leaves it out of its box *)
+      { o with shape = Csg { kind; members; split }; inverted = not o.inverted }
 
 let new_obj_of shape loc =
   {
@@ -92,6 +74,7 @@ let new_obj_of shape loc =
     no_reflection = false;
     double_illuminate = false;
     looks_like = false;
+    inverted = false;
   }
 let new_obj shape loc = new_obj_of (V.Prim shape) loc
 
@@ -100,7 +83,7 @@ let new_obj shape loc = new_obj_of (V.Prim shape) loc
 let unsupported_objects =
   [ "polygon"; "prism"; "lathe"; "sor"; "blob"; "text"; "height_field";
     "isosurface"; "superellipsoid"; "julia_fractal"; "parametric"; "bicubic_patch"; "ovus"; "quadric"; "cubic";
-    "quartic"; "poly"; "intersection"; "difference"; "merge"; "sphere_sweep"; "lemon" ]
+    "quartic"; "poly"; "sphere_sweep"; "lemon" ]
 
 (* A light source as read: a light alone, or a light with its looks_like object, which is kept
    as a union of the two so that later transforms move both and the scene dissolves it (§19.2). *)
@@ -109,7 +92,7 @@ type light_source = Lone of Scene.light | Shaped of V.obj
 (* light_source { centre, colour … } (§10.2, §18.2, §18.3, §19.2). radius, falloff and tightness
    need a spotlight or cylinder keyword written before them, point_at one of those or parallel;
    [object_] reads the object of a looks_like. *)
-let parse_light_with st ~object_ =
+let parse_light_with st ~object_ ~mods =
   let lloc = peek_loc st in
   advance st;
   open_block st "light_source";
@@ -131,7 +114,7 @@ let parse_light_with st ~object_ =
         match looks with
         | None -> Lone l
         | Some o ->
-            Shaped (new_obj_of (V.Union [ V.Member_light l; V.Member_obj o ]) lloc))
+            Shaped (new_obj_of (V.Csg { kind = Union; members = [ V.Member_light l; V.Member_obj o ]; split = true }) lloc))
     (* §19.2: the object is written about the origin and moved to the centre, then its own
        modifiers apply; it never casts a shadow *)
     | Ident "looks_like" ->
@@ -139,7 +122,7 @@ let parse_light_with st ~object_ =
         advance st;
         open_block st "looks_like";
         let o = move_obj (Place.Translate l.position) (object_ st) in
-        let o = parse_object_mods st o "looks_like" in
+        let o = mods st o "looks_like" in
         loop_with l (Some { o with no_shadow = true; looks_like = true })
     | Ident "shadowless" -> advance st; loop { l with shadowless = true }
     | Ident "fade_distance" -> advance st; loop { l with fade_distance = parse_float st }
@@ -367,6 +350,9 @@ let unsupported_rvalue_set = set_of (unsupported_objects @ unsupported_rvalues)
 
 let unsupported_object_set = set_of unsupported_objects
 
+(* A light where an object may stand: a union of the light alone, dissolved into the scene's lights. *)
+let light_union l = V.Csg { kind = Union; members = [ V.Member_light l ]; split = true }
+
 let rec parse_object st : V.obj =
   let loc = peek_loc st in
   match peek st with
@@ -484,41 +470,114 @@ let rec parse_object st : V.obj =
         | Ident s -> (
             match cur_value st s with
             | Some (V.Object o) -> advance st; { o with oloc = loc }
-            | Some (V.Light l) -> advance st; { (new_obj_of (V.Union [ V.Member_light l ]) loc) with oloc = loc }
+            | Some (V.Light l) -> advance st; { (new_obj_of (light_union l) loc) with oloc = loc }
             | Some (V.Unsupported u) -> unsupported_use iloc s u.what u.at
             | Some v -> Error.raise_at iloc "'%s' is %s, not an object" s (V.kind_name v)
             | None -> if is_keyword s then unexpected st "an object identifier" else unknown_identifier st iloc s)
         | _ -> unexpected st "an object identifier"
       in
       parse_object_mods st o "object"
-  | Ident "union" ->
-      (* §16.4: a union is dissolved into its members when it enters the scene; its texture,
-         interior and flags go to the members that have none *)
+  | Ident ("union" | "merge" | "intersection" | "difference" as kw) ->
+      (* §16.1: the members first, then the CSG's own modifiers; a difference is an intersection
+         whose members after the first are inverted. §16.4: a union is dissolved into its members
+         when it enters the scene unless split_union is off; its texture, interior and flags go to
+         the members that have none *)
       advance st;
-      open_block st "union";
+      open_block st kw;
       let rec members acc =
         match peek st with
         | Ident "light_source" ->
+            (* POV-Ray warns (and keeps the light) in an intersection or difference (§19.1) *)
+            if kw = "intersection" || kw = "difference" then
+              warn st (peek_loc st) "a light_source (a patch object) is not allowed in an %s; it is kept as a light" kw;
             let m = match parse_light_source st with Lone l -> V.Member_light l | Shaped o -> V.Member_obj o in
             members (m :: acc)
         | _ when object_follows st -> members (V.Member_obj (parse_object st) :: acc)
         | _ -> List.rev acc
       in
       let ms = nest st loc (fun () -> members []) in
-      if List.length ms < 2 then warn st loc "a union should have at least two members";
-      parse_object_mods st (new_obj_of (V.Union ms) loc) "union"
+      if List.length ms < 2 then warn st loc "a %s should have at least two members" kw;
+      let ms =
+        if kw <> "difference" then ms
+        else List.mapi (fun i m -> match m with V.Member_obj o when i > 0 -> V.Member_obj (invert o) | V.Member_obj _ | V.Member_light _ -> m) ms
+      in
+      let kind : Scene.csg_kind = match kw with "union" -> Union | "merge" -> Merge | _ -> Intersection in
+      parse_object_mods st (new_obj_of (V.Csg { kind; members = ms; split = kind = Union }) loc) kw
   | Ident "light_source" -> (
-      match parse_light_source st with Lone l -> new_obj_of (V.Union [ V.Member_light l ]) loc | Shaped o -> o)
+      match parse_light_source st with Lone l -> new_obj_of (light_union l) loc | Shaped o -> o)
   | Ident s -> (
       match cur_value st s with
       | Some (V.Object o) -> advance st; { o with oloc = loc }
-      | Some (V.Light l) -> advance st; new_obj_of (V.Union [ V.Member_light l ]) loc
+      | Some (V.Light l) -> advance st; new_obj_of (light_union l) loc
       | Some (V.Unsupported u) -> unsupported_use loc s u.what u.at
       | _ -> unexpected st "an object")
   | _ -> unexpected st "an object"
 
 (* A light_source, its looks_like object read by [parse_object] (§19.2). *)
-and parse_light_source st = parse_light_with st ~object_:parse_object
+and parse_light_source st = parse_light_with st ~object_:parse_object ~mods:parse_object_mods
+
+(* The modifiers of an object, up to its closing brace. *)
+and parse_object_mods st (o : V.obj) what : V.obj =
+  let tex o = match o.V.texture with Some t -> t | None -> st.default_texture in
+  let rec loop (o : V.obj) =
+    let loc = peek_loc st in
+    match peek st with
+    | RBrace -> advance st; o
+    | Ident "pigment" -> advance st; let t = tex o in loop { o with texture = Some { t with pigment = parse_pigment st t.pigment } }
+    | Ident "finish" -> advance st; let t = tex o in loop { o with texture = Some { t with finish = parse_finish st t.finish } }
+    | Ident "texture" ->
+        advance st;
+        if o.texture <> None then not_supported loc "layered textures (a texture added to an object that has one)";
+        loop { o with texture = Some (parse_texture st st.default_texture) }
+    | Ident "interior" ->
+        advance st;
+        let base = match o.interior with Some i -> i | None -> Defaults.interior in
+        loop { o with interior = Some (parse_interior st base) }
+    | Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") -> loop (move_obj (parse_op st) o)
+    | Ident "no_shadow" -> advance st; loop { o with no_shadow = true }
+    (* §16.6: the flags take an optional boolean; hollow only matters to media, which povml lacks *)
+    | Ident "no_image" -> advance st; loop { o with no_image = parse_bool_opt st }
+    | Ident "no_reflection" -> advance st; loop { o with no_reflection = parse_bool_opt st }
+    | Ident "double_illuminate" -> advance st; loop (set_double_illuminate (parse_bool_opt st) o)
+    | Ident "sturm" when is_torus o -> advance st; loop (torus_flag "sturm" o)
+    | Ident "hollow" -> advance st; ignore (parse_bool_opt st); loop o
+    | Ident "inverse" -> advance st; loop (invert o)
+    | Ident "split_union" -> (
+        advance st;
+        let on = parse_bool_opt st in
+        (* §16.4: only a union is ever split; POV-Ray accepts the keyword on a merge (a kind of
+           union to it) without effect and stops on any other object *)
+        match o.shape with
+        | Csg ({ kind = Union; _ } as c) -> loop { o with shape = Csg { c with split = on } }
+        | Csg { kind = Merge; _ } | Csg { kind = Clipped; members = V.Member_obj { shape = Csg { kind = Union | Merge; _ }; _ } :: _; _ } ->
+            loop o (* a merge, or a clipped union, is never split *)
+        | Csg { kind = Intersection | Clipped; _ } | Prim _ -> Error.raise_at loc "split_union found in a non-union object")
+    | Ident "clipped_by" ->
+        (* §15.8: clipped_by { OBJECT … }: the object's hits are kept inside every clip object, and
+           so is its Inside. The clip objects move with the object's later transforms; its
+           texture, interior and flags stay on the clipped object. *)
+        advance st;
+        open_block st "clipped_by";
+        let rec clips acc =
+          match peek st with
+          | Ident "bounded_by" -> not_supported (peek_loc st) "'clipped_by { bounded_by }'"
+          | _ when object_follows st -> clips (V.Member_obj (parse_object st) :: acc)
+          | _ -> List.rev acc
+        in
+        let cl = nest st loc (fun () -> clips []) in
+        if cl = [] then unexpected st "an object in clipped_by";
+        close_block st "clipped_by";
+        let members =
+          match o.shape with
+          | Csg { kind = Clipped; members; _ } -> members @ cl
+          | Csg { kind = Union | Merge | Intersection; _ } | Prim _ ->
+              V.Member_obj { o with texture = None; interior = None; no_shadow = false } :: cl
+        in
+        loop { o with shape = Csg { kind = Clipped; members; split = false }; inverted = false }
+    | Ident s when is_unsupported s -> not_supported loc (Printf.sprintf "'%s'" s)
+    | _ -> unexpected st (Printf.sprintf "an object modifier or '}' closing '%s'" what)
+  in
+  loop o
 
 (* Does an object (a keyword or an identifier of one) come next? *)
 and object_follows st =
@@ -689,32 +748,71 @@ and parse_mesh2 st loc =
   parse_object_mods st (new_obj shape loc) "mesh2"
 
 (* §2.7: every object gets a texture and an interior; a legacy finish ior goes into the interior. *)
-let finish_prim st (o : V.obj) shape : Scene.obj =
+let resolved st (o : V.obj) =
   let texture = match o.texture with Some t -> t | None -> st.default_texture in
   let interior = match o.interior with Some i -> i | None -> Defaults.interior in
   let interior = match texture.finish.legacy_ior with Some ior -> { interior with ior } | None -> interior in
   let interior = if interior.ior = 0. then { interior with ior = 1. } else interior in
-  {
-    Scene.shape;
-    texture;
-    interior;
-    no_shadow = o.no_shadow;
-    loc = o.oloc;
-    no_image = o.no_image;
-    no_reflection = o.no_reflection;
-    double_illuminate = o.double_illuminate;
-    looks_like = o.looks_like;
-  }
+  (texture, interior)
 
-(* An object entering the scene (§16.4, §16.5): a union is dissolved, its members without a texture
-   or interior take the union's, and its no_shadow, no_image and no_reflection go to every member
-   (double_illuminate went down when it was parsed); its lights join the scene's. *)
+let finish_prim st (o : V.obj) shape : Scene.obj =
+  let texture, interior = resolved st o in
+  { Scene.shape; texture; interior; no_shadow = o.no_shadow; loc = o.oloc; no_image = o.no_image; no_reflection = o.no_reflection; double_illuminate = o.double_illuminate; looks_like = o.looks_like }
+
+(* A member's interior: its own, or its parent's shared (§16.5). *)
+let member_interior (c : V.obj) parent =
+  match c.interior with
+  | Some i -> ((if i.ior = 0. then { i with Scene.ior = 1. } else i), true)
+  | None -> (parent, false)
+
+(* A CSG kept whole (§16.4, §16.5, §19.1): every member gets the parent's texture unless it has its
+   own and shares the parent's interior unless it has its own; the parent's no_shadow goes to every
+   member (only the top level's is ever tested); lights join the scene's lights. *)
+let rec kept_obj st ~texture ~interior (o : V.obj) : Scene.obj =
+  match o.shape with
+  | Prim shape -> { Scene.shape; texture; interior; no_shadow = o.no_shadow; loc = o.oloc; no_image = o.no_image; no_reflection = o.no_reflection; double_illuminate = o.double_illuminate; looks_like = o.looks_like }
+  | Csg { kind; members; split = _ } ->
+      let members =
+        List.filter_map
+          (function
+            | V.Member_light l -> count_object st o.oloc; st.lights <- l :: st.lights; None
+            | V.Member_obj c ->
+                let texture = match c.texture with Some t -> t | None -> texture in
+                let interior, own_interior = member_interior c interior in
+                (* §16.5: the flags pass down to every member *)
+                let c =
+                  {
+                    c with
+                    no_shadow = c.no_shadow || o.no_shadow;
+                    no_image = c.no_image || o.no_image;
+                    no_reflection = c.no_reflection || o.no_reflection;
+                  }
+                in
+                Some { Scene.mobj = kept_obj st ~texture ~interior c; inverted = c.inverted; own_interior })
+          members
+      in
+      (* §16.4: a union whose members all have no_shadow has it too *)
+      let no_shadow =
+        o.no_shadow
+        || (match kind with Union -> members <> [] && List.for_all (fun (m : Scene.member) -> m.mobj.no_shadow) members | Merge | Intersection | Clipped -> false)
+      in
+      { Scene.shape = Csg { kind; members }; texture; interior; no_shadow; loc = o.oloc; no_image = o.no_image; no_reflection = o.no_reflection; double_illuminate = o.double_illuminate; looks_like = o.looks_like }
+
+(* An object entering the scene (§16.4, §16.5): a union that may be split is dissolved, its members
+   without a texture or interior take the union's, and its no_shadow goes to every member; its
+   lights join the scene's. Another CSG enters whole. An inverted primitive enters as an
+   intersection of itself alone, which has the same surface and the negated Inside (§16.3). *)
 let rec add_object st (o : V.obj) =
   match o.shape with
-  | Prim shape ->
+  | Prim shape when not o.inverted ->
       count_object st o.oloc;
       st.objects <- finish_prim st o shape :: st.objects
-  | Union ms ->
+  | Prim _ ->
+      (* an inverted primitive: the intersection holds its texture and interior, so the camera's
+         interior list and the hits name the same interior, as for POV-Ray's one object *)
+      let m = V.Member_obj { o with texture = None; interior = None } in
+      add_object st { o with shape = Csg { kind = Intersection; members = [ m ]; split = false }; inverted = false }
+  | Csg { kind = Union; members = ms; split = true } ->
       List.iter
         (function
           | V.Member_light l -> count_object st o.oloc; st.lights <- l :: st.lights
@@ -730,4 +828,8 @@ let rec add_object st (o : V.obj) =
                   looks_like = c.looks_like || o.looks_like;
                 })
         ms
-
+  | Csg { kind = Union | Merge | Intersection | Clipped; members = _; split = _ } ->
+      count_object st o.oloc;
+      let texture, interior = resolved st o in
+      let obj = kept_obj st ~texture ~interior o in
+      st.objects <- obj :: st.objects

@@ -113,22 +113,22 @@ let keywords =
     "mesh2"; "vertex_vectors"; "normal_vectors"; "uv_vectors"; "texture_list"; "face_indices"; "normal_indices";
     "uv_indices"; "inside_vector"; "box"; "no_image"; "no_reflection"; "double_illuminate"; "spotlight";
     "parallel"; "point_at"; "radius"; "tightness"; "orthographic"; "looks_like"; "cylinder"; "cone"; "disc";
-    "open"; "torus" ]
+    "open"; "torus"; "union"; "merge"; "intersection"; "difference"; "inverse"; "split_union"; "clipped_by" ]
 
 (* POV-Ray keywords that a later povml will read; meeting one is a located "not supported yet". *)
 let unsupported =
   [ "polygon";
     "prism"; "lathe"; "sor"; "blob"; "text"; "height_field"; "isosurface"; "superellipsoid"; "julia_fractal";
-    "parametric"; "bicubic_patch"; "ovus"; "quadric"; "cubic"; "quartic"; "poly"; "intersection";
-    "difference"; "merge"; "rotate"; "scale"; "matrix"; "transform"; "inverse"; "normal"; "material"; "checker"; "gradient"; "hexagon"; "brick"; "image_map";
+    "parametric"; "bicubic_patch"; "ovus"; "quadric"; "cubic"; "quartic"; "poly"; "rotate"; "scale"; "matrix"; "transform";
+    "normal"; "material"; "checker"; "gradient"; "hexagon"; "brick"; "image_map";
     "bozo"; "marble"; "wood"; "agate"; "granite"; "spotted"; "leopard"; "onion"; "radial"; "spiral1";
     "spiral2"; "ripples"; "waves"; "wrinkles"; "bumps"; "dents"; "crackle"; "color_map"; "colour_map";
     "pigment_map"; "texture_map"; "area_light";
     "projected_through"; "fisheye"; "panoramic"; "ultra_wide_angle"; "omnimax";
     "cylindrical"; "spherical"; "aperture"; "focal_point"; "blur_samples"; "radiosity"; "photons";
     "media"; "fog"; "rainbow"; "irid"; "crand"; "dispersion"; "dispersion_samples"; "caustics";
-    "bounded_by"; "clipped_by"; "uv_mapping"; "srgb"; "srgbf"; "srgbt"; "srgbft"; "subsurface";
-    "interior_texture"; "light_group"; "no_radiosity"; "split_union"; "cutaway_textures"; "sturm";
+    "bounded_by"; "uv_mapping"; "srgb"; "srgbf"; "srgbt"; "srgbft"; "subsurface";
+    "interior_texture"; "light_group"; "no_radiosity"; "cutaway_textures"; "sturm";
     "phong_albedo"; "metallic_albedo"; "translucency" ]
 
 let set_of l =

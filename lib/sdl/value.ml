@@ -8,10 +8,12 @@ type obj = {
   no_reflection : bool;
   double_illuminate : bool;
   looks_like : bool;  (** a light's looks_like object (§19.2) *)
+  inverted : bool;  (** [inverse] was applied: a primitive's Inside is negated, a CSG was morphed (§16.3) *)
 }
 
-(** A primitive, or a union whose members are dissolved into the scene (POVRAY-3.7 §16.4). *)
-and shape = Prim of Scene.shape | Union of member list
+(** A primitive, or a CSG: a union with [split] on is dissolved into its members when it enters
+    the scene (POVRAY-3.7 §16.4); any other CSG is kept whole. *)
+and shape = Prim of Scene.shape | Csg of { kind : Scene.csg_kind; members : member list; split : bool }
 
 and member = Member_obj of obj | Member_light of Scene.light
 

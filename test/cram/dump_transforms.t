@@ -105,12 +105,12 @@ a cone's apex at z = 0, its big end at z = 1), and a disc's normal as the modifi
   > cone { <0, 0, 1>, 1, <0, 0, 0>, 0.5 inverse }
   > disc { 0, <1, 1, 0>, 1, 0.5 scale <2, 1, 1> }
   > POV
-  $ povml q.pov --dump 2>&1 | grep -A1 -E '^(cylinder|cone|disc)'
+  $ povml q.pov --dump 2>&1 | grep -A1 -E '^ *(cylinder|cone|disc)'
   cylinder { <0, 2, 0>, <0, 0, 0>, 0.5 open // canonical cylinder
     matrix <0.5, 0, 0, 0, 3.061616998e-17, -0.5, 0, 2, 1.224646799e-16, 1, 0, 0>
   --
-  cone { <0, 0, 1>, 1, <0, 0, 0>, 0.5 inverse // canonical cone from z = 0.5
-    matrix <1, 0, 0, 0, 1, 0, 0, 0, 2, 0, 0, -1>
+    cone { <0, 0, 1>, 1, <0, 0, 0>, 0.5 // canonical cone from z = 0.5
+      matrix <1, 0, 0, 0, 1, 0, 0, 0, 2, 0, 0, -1>
   --
   disc { <0, 0, 0>, <0.4472135955, 0.894427191, 0>, 1, 0.5 // centre as written, normal as moved
     matrix <1, -0.5, -0.7071067812, -1, 0.5, -0.7071067812, 1.414213562, 0.7071067812, 6.123233996e-17, 0, 0, 0>

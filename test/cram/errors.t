@@ -92,19 +92,13 @@ A cylinder or cone whose end points coincide is refused, as POV-Ray refuses it (
         | ^
   [1]
 
-A disc needs a normal, and inverse is taken by cylinders, cones and discs only so far:
+A disc needs a normal:
 
   $ printf 'disc { 0, <0,0,0>, 1 }\n' > disc.pov
   $ povml disc.pov +W10 +H10 -D
   disc.pov:1:11: error: degenerate disc normal <0,0,0>
       1 | disc { 0, <0,0,0>, 1 }
         |           ^
-  [1]
-  $ printf 'sphere { 0, 1 inverse }\n' > inverse.pov
-  $ povml inverse.pov +W10 +H10 -D
-  inverse.pov:1:15: error: not supported yet: 'inverse' in 'sphere' (only cylinders, cones, discs and tori take it so far)
-      1 | sphere { 0, 1 inverse }
-        |               ^
   [1]
 
 A cylinder of radius 0 is accepted with a warning and never seen:

@@ -38,10 +38,12 @@ sturm is read only by the torus so far:
 The dump shows the radii, the flags and the transform every modifier is composed into:
 
   $ printf '#version 3.7;\nglobal_settings { assumed_gamma 1 }\ntorus { 1 0.25 sturm }\ntorus { 2, 0.5 inverse scale <1,2,1> translate x }\n' > dump.pov
-  $ povml --dump dump.pov 2>&1 | grep -A2 torus
+  $ povml --dump dump.pov 2>&1 | grep -A3 torus
   torus { 1, 0.25 sturm
     texture { pigment { rgb <0, 0, 0> } }
   } // dump.pov:3:1
-  torus { 2, 0.5 inverse
-    matrix <1, 0, 0, 0, 2, 0, 0, 0, 1, 1, 0, 0>
-    texture { pigment { rgb <0, 0, 0> } }
+  intersection {
+    torus { 2, 0.5
+      matrix <1, 0, 0, 0, 2, 0, 0, 0, 1, 1, 0, 0>
+      texture { pigment { rgb <0, 0, 0> } }
+    } // dump.pov:4:1 inverse shared interior

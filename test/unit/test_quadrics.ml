@@ -279,7 +279,6 @@ let test_errors () =
   expect_scene_error "almost degenerate cylinder" "cylinder { 0, 1e-11*x, 1 }" ~line:1 ~col:1 ~sub:"degenerate cylinder";
   expect_scene_error "degenerate cone" "cone { y, 1, y, 2 }" ~line:1 ~col:1 ~sub:"degenerate cone";
   expect_scene_error "zero disc normal" "disc { 0, 0, 1 }" ~line:1 ~col:11 ~sub:"degenerate disc normal";
-  expect_scene_error "inverse on a sphere" "sphere { 0, 1 inverse }" ~line:1 ~col:15 ~sub:"not supported yet";
   (* a cylinder barely longer than 1e-10 is accepted *)
   ignore (scene "cylinder { 0, 1e-9*x, 1 }")
 

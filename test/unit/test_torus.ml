@@ -9,10 +9,15 @@ open Helpers
 
 let v37 = "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"
 
-let torus_of (o : Scene.obj) =
+(* A torus's parameters and whether it is inside out: an inverted primitive enters the scene as an
+   intersection of itself alone with the member inverted (§16.3). *)
+let rec torus_of (o : Scene.obj) =
   match o.shape with
   | Torus { major; minor; sturm; inverse; trans } -> (major, minor, sturm, inverse, trans)
-  | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ -> Alcotest.fail "expected a torus"
+  | Csg { kind = Intersection; members = [ m ] } ->
+      let major, minor, sturm, inverse, trans = torus_of m.mobj in
+      (major, minor, sturm, inverse <> m.inverted, trans)
+  | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Csg _ -> Alcotest.fail "expected a torus"
 
 let vec_eq ?(eps = 1e-12) msg (e : Vec.t) (a : Vec.t) =
   float_eq ~eps (msg ^ " x") e.x a.x;

@@ -23,6 +23,7 @@ let () =
       ("Quadrics", Test_quadrics.tests);
       ("Polysolv", Test_polysolv.tests);
       ("Torus", Test_torus.tests);
+      ("CSG", Test_csg.tests);
       ("Trace", Test_trace.tests);
       ("Render", Test_render.tests);
       ("Jitter", Test_jitter.tests);
