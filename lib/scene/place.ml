@@ -44,6 +44,9 @@ let move_point op (p : Vec.t) =
   | Scale s -> Vec.mul p s
   | Rotate _ | Transform _ -> Transform.point (op_transform op) p
 
+(* §14.7: a texture attached before a transform moves with the object *)
+let texture (t : Scene.texture) op = { t with pigment = Pigment.transform t.pigment (op_transform op) }
+
 let shape (s : Scene.shape) op : Scene.shape =
   match s with
   | Sphere { centre; radius; trans = None } -> (
@@ -111,7 +114,7 @@ let shape (s : Scene.shape) op : Scene.shape =
   | Box { lo; hi; trans = Some _ as trans } -> Box { lo; hi; trans = Some (attach trans op) }
   | Mesh { mesh; trans; textures } ->
       (* §2.6, Mesh::Translate/Rotate/Scale all call Transform *)
-      Mesh { mesh; trans = Some (attach trans op); textures }
+      Mesh { mesh; trans = Some (attach trans op); textures = Array.map (fun t -> texture t op) textures }
 
 (* ---------------------------------------------------------------------------------------------- *)
 (* The whole scene moved: every object, light and the camera scaled by [scale] about the origin and
@@ -127,7 +130,8 @@ let scene ~scale ~translate (s : Scene.t) : Scene.t =
       match o.shape with Smooth_triangle _ -> Transform (Transform.scale sv) | Sphere _ | Plane _ | Triangle _ | Mesh _ | Box _ -> Scale sv
     in
     let sh = shape (shape o.shape scaling) (Translate translate) in
-    { o with shape = sh; interior = { o.interior with fade_distance = o.interior.fade_distance *. scale } }
+    let texture = texture (texture o.texture (Scale sv)) (Translate translate) in
+    { o with shape = sh; texture; interior = { o.interior with fade_distance = o.interior.fade_distance *. scale } }
   in
   let light (l : Scene.light) =
     { l with position = Vec.add (Vec.scale scale l.position) translate; fade_distance = l.fade_distance *. scale }

@@ -1,8 +1,32 @@
 (** The immutable scene: what the interpreter produces and the compile step reads.
     Every value reachable from [t] is immutable. *)
 
-(** A pigment. Only plain colours so far. *)
-type pigment = Solid of Colour.t
+(** A pattern: a function from a point in pattern space to a value (POVRAY-3.7 §17.4–§17.7). *)
+type pattern =
+  | Checker  (** §17.4: 0 or 1 by the parity of the unit cell *)
+  | Gradient of Vec.t  (** §17.5: the direction, normalised when parsed *)
+  | Hexagon  (** §17.6: 0, 1 or 2 in the XZ plane *)
+  | Brick of { size : Vec.t; mortar : float }  (** §17.7: 0 in the mortar, 1 in a brick; [mortar] as stored (m − 2e-10) *)
+
+(** How the wrapped pattern value is shaped before the map lookup (§17.1). *)
+type wave = Ramp | Triangle_wave | Sine_wave | Scallop_wave | Cubic_wave | Poly_wave of float
+
+(** One entry of a colour map: its value (single precision, §17.2) and colour. *)
+type map_entry = { value : float; colour : Colour.t }
+
+(** A pattern pigment: the pattern, its modifiers, its map (entries in the order written, at least
+    one) and its transform (pigment and object transforms composed, §14.7, §17.1). *)
+type patterned = {
+  pattern : pattern;
+  frequency : float;
+  phase : float;
+  wave : wave;
+  map : map_entry array;
+  ptrans : Transform.t option;
+}
+
+(** A pigment: a plain colour, or a pattern evaluated at each point (§17). *)
+type pigment = Solid of Colour.t | Pattern of patterned
 
 (** [reflection {…}] of a finish (POVRAY-3.7 §5.1). *)
 type reflection = {
@@ -83,8 +107,8 @@ type gamma =
   | Gamma_off  (** legacy scene without assumed_gamma: output = clip(linear) *)
   | Working of float  (** working gamma G (1.0 neutral); the file is sRGB-encoded *)
 
-(** A sky_sphere with plain pigments, listed in the order written (§18.1). *)
-type sky = { sky_pigments : pigment list; sky_emission : Rgb.t }
+(** A sky_sphere: its pigments in the order written, its emission and its own transform (§18.1). *)
+type sky = { sky_pigments : pigment list; sky_emission : Rgb.t; sky_trans : Transform.t option }
 
 (** The whole scene. *)
 type t = {

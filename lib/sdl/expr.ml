@@ -482,7 +482,8 @@ and parse_colour st : Colour.t =
   let rec loop () =
     let loc = peek_loc st in
     match peek st with
-    | Ident ("color" | "colour") -> advance st; keyword_seen := true; loop ()
+    (* a second 'color' starts the next colour (the old color_map entry [a b color C1 color C2]) *)
+    | Ident ("color" | "colour") when not !keyword_seen -> advance st; keyword_seen := true; loop ()
     | Ident "rgb" -> advance st; keyword_seen := true; ignore (set_terms loc 3 (parse_expr st)); loop ()
     | Ident "rgbf" ->
         advance st; keyword_seen := true;

@@ -11,6 +11,93 @@ let ident_of_kind st f =
   | Ident s -> ( match cur_value st s with Some v -> (match f v with Some r -> advance st; Some r | None -> None) | None -> None)
   | _ -> None
 
+(* color_map { [v COLOUR] … } or color_map { Id } (POVRAY-3.7 §17.3): entries in the order written,
+   the old form [v1 v2 COLOUR1 COLOUR2] giving two; values and colours in single precision. *)
+let parse_colour_map st what : Scene.map_entry array =
+  let loc = peek_loc st in
+  open_block st what;
+  match ident_of_kind st (function V.Colour_map m -> Some m | _ -> None) with
+  | Some m -> close_block st what; m
+  | None ->
+      let colour () =
+        if is_colour_start st then parse_colour st
+        else unexpected st (Printf.sprintf "a colour ('rgb …', 'color …' or a colour identifier) in a %s entry" what)
+      in
+      let rec entries acc n =
+        match peek st with
+        | RBrace -> advance st; List.rev acc
+        | LBracket ->
+            let el = peek_loc st in
+            if n >= 256 then Error.raise_at el "a %s has at most 256 entries" what;
+            advance st;
+            let v = parse_float st in
+            ignore (accept st Comma);
+            let acc, n =
+              if is_colour_start st then (Pigment.f32_entry v (colour ()) :: acc, n + 1)
+              else if float_follows st then begin
+                (* the old two-entry form *)
+                let v2 = parse_float st in
+                ignore (accept st Comma);
+                let c1 = colour () in
+                ignore (accept st Comma);
+                let c2 = colour () in
+                (Pigment.f32_entry v2 c2 :: Pigment.f32_entry v c1 :: acc, n + 2)
+              end
+              else (ignore (colour ()); (acc, n))
+            in
+            expect st RBracket (Printf.sprintf "']' closing a %s entry" what);
+            entries acc n
+        | _ -> unexpected st (Printf.sprintf "'[' starting a %s entry, or '}'" what)
+      in
+      let es = entries [] 0 in
+      if es = [] then Error.raise_at loc "a %s needs at least one entry" what;
+      if List.length es > 256 then Error.raise_at loc "a %s has at most 256 entries" what;
+      Array.of_list es
+
+(* A pigment while it is read: what POV-Ray edits in place (§17.9). [pat] is None for a plain
+   colour; [map] is None until colours or a color_map are given. *)
+type pig = {
+  solid : Colour.t;
+  pat : Scene.pattern option;
+  map : Scene.map_entry array option;
+  frequency : float;
+  phase : float;
+  wave : Scene.wave;
+  trans : Transform.t option;
+}
+
+let pig_of (p : Scene.pigment) =
+  match p with
+  | Solid c -> { solid = c; pat = None; map = None; frequency = 1.; phase = 0.; wave = Ramp; trans = None }
+  | Pattern pp ->
+      { solid = Colour.black; pat = Some pp.pattern; map = Some pp.map; frequency = pp.frequency; phase = pp.phase; wave = pp.wave; trans = pp.ptrans }
+
+let pigment_of (g : pig) : Scene.pigment =
+  match g.pat with
+  | None -> Solid g.solid
+  | Some pattern ->
+      let map = match g.map with Some m -> m | None -> Pigment.default_map pattern in
+      Pattern { pattern; frequency = g.frequency; phase = g.phase; wave = g.wave; map; ptrans = g.trans }
+
+(* The colours listed after checker, hexagon or brick (up to [n], commas optional) replace the
+   first entries of the pattern's default map (§17.4, §17.6, §17.7). *)
+let list_colours st pattern n =
+  let map = Array.copy (Pigment.default_map pattern) in
+  let rec go i =
+    if i < n then begin
+      if i > 0 then ignore (accept st Comma);
+      if is_colour_start st then begin
+        map.(i) <- Pigment.f32_entry (float_of_int i) (parse_colour st);
+        go (i + 1)
+      end
+      else if is_ident st "pigment" then not_supported (peek_loc st) "a pattern of pigments (checker pigment {…}, …)"
+    end
+  in
+  go 0;
+  map
+
+let default_brick = Scene.Brick { size = Vec.make 8. 3. 4.5; mortar = 0.5 -. 2e-10 }
+
 let parse_pigment st (base : Scene.pigment) : Scene.pigment =
   open_block st "pigment";
   let p =
@@ -18,20 +105,58 @@ let parse_pigment st (base : Scene.pigment) : Scene.pigment =
     | Some p -> p
     | None -> base
   in
-  let rec loop p =
+  let rec loop (g : pig) =
     let loc = peek_loc st in
     match peek st with
-    | RBrace -> advance st; p
-    | Ident s when is_colour_start st -> ignore s; loop (Scene.Solid (parse_colour st))
+    | RBrace -> advance st; pigment_of g
+    | Ident s when is_colour_start st -> ignore s; loop { g with solid = parse_colour st; pat = None; map = None }
+    | Ident "checker" ->
+        (* §17.1: checker, hexagon and brick turn the value wrap off *)
+        advance st;
+        loop { g with pat = Some Checker; map = Some (list_colours st Checker 2); frequency = 0. }
+    | Ident "hexagon" -> advance st; loop { g with pat = Some Hexagon; map = Some (list_colours st Hexagon 3); frequency = 0. }
+    | Ident "brick" -> advance st; loop { g with pat = Some default_brick; map = Some (list_colours st default_brick 2); frequency = 0. }
+    | Ident "gradient" ->
+        advance st;
+        let vl = peek_loc st in
+        let v = parse_vector st in
+        (* §17.5: the direction is normalised when parsed *)
+        if Vec.length v = 0. then Error.raise_at vl "the gradient vector is <0,0,0>";
+        loop { g with pat = Some (Gradient (Vec.normalize v)); map = None }
+    | Ident "brick_size" -> (
+        advance st;
+        let v = parse_vector st in
+        match g.pat with
+        | Some (Brick b) -> loop { g with pat = Some (Brick { b with size = v }) }
+        | Some (Checker | Gradient _ | Hexagon) | None -> Error.raise_at loc "'brick_size' is only valid in a brick pattern")
+    | Ident "mortar" -> (
+        advance st;
+        let m = parse_float st in
+        match g.pat with
+        | Some (Brick b) -> loop { g with pat = Some (Brick { b with mortar = m -. 2e-10 }) }
+        | Some (Checker | Gradient _ | Hexagon) | None -> Error.raise_at loc "'mortar' is only valid in a brick pattern")
+    | Ident (("color_map" | "colour_map") as kw) -> (
+        advance st;
+        match g.pat with
+        | Some (Checker | Hexagon | Brick _) -> Error.raise_at loc "cannot use %s with this pattern type" kw
+        | Some (Gradient _) | None -> loop { g with map = Some (parse_colour_map st kw) })
+    | Ident "frequency" -> advance st; loop { g with frequency = parse_float st }
+    | Ident "phase" -> advance st; loop { g with phase = parse_float st }
+    | Ident "ramp_wave" -> advance st; loop { g with wave = Ramp }
+    | Ident "triangle_wave" -> advance st; loop { g with wave = Triangle_wave }
+    | Ident "sine_wave" -> advance st; loop { g with wave = Sine_wave }
+    | Ident "scallop_wave" -> advance st; loop { g with wave = Scallop_wave }
+    | Ident "cubic_wave" -> advance st; loop { g with wave = Cubic_wave }
+    | Ident "poly_wave" -> advance st; loop { g with wave = Poly_wave (if float_follows st then parse_float st else 1.) }
     | Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") ->
-        (* a plain colour is the same everywhere: the pattern transform changes nothing yet *)
-        ignore (parse_op st);
-        loop p
-    | Ident ("quick_color" | "quick_colour") -> advance st; ignore (parse_colour st); loop p
+        (* §17.1: pigment transforms compose into the pigment's own transform *)
+        let t = Place.op_transform (parse_op st) in
+        loop { g with trans = Some (Transform.compose (Option.value g.trans ~default:Transform.identity) t) }
+    | Ident ("quick_color" | "quick_colour") -> advance st; ignore (parse_colour st); loop g
     | Ident s when is_unsupported s -> not_supported loc (Printf.sprintf "'%s' in a pigment" s)
-    | _ -> unexpected st "a colour or '}' in a pigment"
+    | _ -> unexpected st "a colour, a pattern or '}' in a pigment"
   in
-  loop p
+  loop (pig_of p)
 
 let parse_reflection_block st (r : Scene.reflection) : Scene.reflection =
   (* reflection { MIN [, MAX] [fresnel [b]] [falloff F] [exponent E] [metallic [M]] } (§5.1) *)
@@ -129,7 +254,7 @@ let parse_texture st (base : Scene.texture) : Scene.texture =
     | RBrace -> advance st; t
     | Ident "pigment" -> advance st; loop { t with pigment = parse_pigment st t.pigment }
     | Ident "finish" -> advance st; loop { t with finish = parse_finish st t.finish }
-    | Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") -> ignore (parse_op st); loop t
+    | Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") -> loop (Place.texture t (parse_op st))
     | Ident s when is_unsupported s -> not_supported loc (Printf.sprintf "'%s' in a texture" s)
     | _ -> unexpected st "'pigment', 'finish' or '}' in a texture"
   in

@@ -12,10 +12,12 @@ let move_shape op s = Place.shape s op
 (* §14.8: a light's position moves as a point *)
 let move_light op (l : Scene.light) = { l with position = Transform.point (Place.op_transform op) l.position }
 
+(* §14.7: an object's texture, if it has one yet, moves with it; members' textures with them *)
 let rec move_obj op (o : V.obj) =
+  let texture = Option.map (fun t -> Place.texture t op) o.texture in
   match o.shape with
-  | Prim s -> { o with shape = Prim (move_shape op s) }
-  | Union ms -> { o with shape = Union (List.map (move_member op) ms) }
+  | Prim s -> { o with shape = Prim (move_shape op s); texture }
+  | Union ms -> { o with shape = Union (List.map (move_member op) ms); texture }
 
 and move_member op = function
   | V.Member_obj o -> V.Member_obj (move_obj op o)
@@ -244,7 +246,7 @@ let parse_texture_in_block st =
 
 (* Values povml cannot make yet; a declaration of one is kept as [V.Unsupported]. *)
 let unsupported_rvalues =
-  [ "material"; "normal"; "color_map"; "colour_map"; "pigment_map"; "normal_map"; "texture_map"; "slope_map";
+  [ "material"; "normal"; "pigment_map"; "normal_map"; "texture_map"; "slope_map";
     "function"; "spline"; "media"; "density"; "fog"; "rainbow"; "sky_sphere"; "isosurface" ]
 
 let unsupported_rvalue_set = set_of (unsupported_objects @ unsupported_rvalues)

@@ -111,6 +111,9 @@ let keywords =
     "degrees"; "vlength"; "vnormalize"; "vdot"; "vcross"; "select"; "triangle"; "smooth_triangle"; "mesh";
     "mesh2"; "vertex_vectors"; "normal_vectors"; "uv_vectors"; "texture_list"; "face_indices"; "normal_indices";
     "uv_indices"; "inside_vector"; "box" ]
+  (* pigment patterns (POVRAY-3.7 §17) *)
+  @ [ "checker"; "gradient"; "hexagon"; "brick"; "brick_size"; "mortar"; "color_map"; "colour_map"; "frequency";
+      "phase"; "ramp_wave"; "triangle_wave"; "sine_wave"; "scallop_wave"; "cubic_wave"; "poly_wave" ]
 
 (* POV-Ray keywords that a later povml will read; meeting one is a located "not supported yet". *)
 let unsupported =
@@ -118,9 +121,9 @@ let unsupported =
     "prism"; "lathe"; "sor"; "blob"; "text"; "height_field"; "isosurface"; "superellipsoid"; "julia_fractal";
     "parametric"; "bicubic_patch"; "ovus"; "quadric"; "cubic"; "quartic"; "poly"; "intersection";
     "difference"; "merge"; "rotate"; "scale"; "matrix"; "transform"; "inverse"; "no_image"; "no_reflection";
-    "double_illuminate"; "normal"; "material"; "checker"; "gradient"; "hexagon"; "brick"; "image_map";
+    "double_illuminate"; "normal"; "material"; "image_map";
     "bozo"; "marble"; "wood"; "agate"; "granite"; "spotted"; "leopard"; "onion"; "radial"; "spiral1";
-    "spiral2"; "ripples"; "waves"; "wrinkles"; "bumps"; "dents"; "crackle"; "color_map"; "colour_map";
+    "spiral2"; "ripples"; "waves"; "wrinkles"; "bumps"; "dents"; "crackle";
     "pigment_map"; "texture_map"; "spotlight"; "parallel"; "area_light"; "cylinder"; "looks_like";
     "projected_through"; "orthographic"; "fisheye"; "panoramic"; "ultra_wide_angle"; "omnimax";
     "cylindrical"; "spherical"; "aperture"; "focal_point"; "blur_samples"; "radiosity"; "photons";
