@@ -153,6 +153,7 @@ let parse_pigment st (base : Scene.pigment) : Scene.pigment =
         let t = Place.op_transform (parse_op st) in
         loop { g with trans = Some (Transform.compose (Option.value g.trans ~default:Transform.identity) t) }
     | Ident ("quick_color" | "quick_colour") -> advance st; ignore (parse_colour st); loop g
+    | Ident ("noise_generator" as s) -> not_supported loc (Printf.sprintf "'%s' in a pigment" s)
     | Ident s when is_unsupported s -> not_supported loc (Printf.sprintf "'%s' in a pigment" s)
     | _ -> unexpected st "a colour, a pattern or '}' in a pigment"
   in

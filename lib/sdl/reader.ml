@@ -131,6 +131,10 @@ let unsupported =
     "bounded_by"; "clipped_by"; "uv_mapping"; "srgb"; "srgbf"; "srgbt"; "srgbft"; "subsurface";
     "interior_texture"; "light_group"; "no_radiosity"; "split_union"; "cutaway_textures"; "sturm";
     "open"; "phong_albedo"; "metallic_albedo"; "translucency" ]
+  (* patterns and pattern modifiers not read yet (POVRAY-3.7 §17) *)
+  @ [ "turbulence"; "octaves"; "omega"; "lambda"; "warp"; "agate_turb"; "mandel"; "julia"; "magnet"; "quilted";
+      "control0"; "control1"; "tiling"; "pavement"; "square"; "triangular"; "facets"; "cells"; "boxed"; "planar";
+      "aoi"; "slope"; "pigment_pattern"; "image_pattern"; "density_file"; "average"; "object_pattern"; "color_list" ]
 
 let set_of l =
   let h = Names.create 64 in
