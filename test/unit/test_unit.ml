@@ -19,6 +19,7 @@ let () =
       ("Transform", Test_transform.tests);
       ("Compile", Test_compile.tests);
       ("Box", Test_box.tests);
+      ("Patterns", Test_patterns.tests);
       ("Trace", Test_trace.tests);
       ("Render", Test_render.tests);
       ("Jitter", Test_jitter.tests);
