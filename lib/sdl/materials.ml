@@ -47,6 +47,9 @@ let parse_colour_map st what : Scene.map_entry array =
             in
             expect st RBracket (Printf.sprintf "']' closing a %s entry" what);
             entries acc n
+        | Ident s when acc = [] && (match cur_value st s with Some (V.Unsupported _) | None -> false | Some _ -> true) ->
+            let v = Option.get (cur_value st s) in
+            Error.raise_at (peek_loc st) "'%s' is %s, not a color_map" s (V.kind_name v)
         | _ -> unexpected st (Printf.sprintf "'[' starting a %s entry, or '}'" what)
       in
       let es = entries [] 0 in
