@@ -49,7 +49,7 @@ let finish (f : finish) =
   String.concat " " (List.rev !items)
 
 (* A pattern pigment with its whole map and its composed transform (POVRAY-3.7 §17). *)
-let pigment = function
+let rec pigment = function
   | Solid c -> colour c
   | Pattern p ->
       let pat =
@@ -68,9 +68,15 @@ let pigment = function
         | Cubic_wave -> " cubic_wave"
         | Poly_wave e -> " poly_wave " ^ num e
       in
-      let entries = Array.to_list (Array.map (fun (e : map_entry) -> Printf.sprintf "[%s %s]" (num e.value) (colour e.colour)) p.map) in
-      Printf.sprintf "%s frequency %s phase %s%s color_map { %s }%s" pat (num p.frequency) (num p.phase) wave
-        (String.concat " " entries)
+      let map =
+        if Array.length p.pigments = 0 then
+          let entries = Array.to_list (Array.map (fun (e : map_entry) -> Printf.sprintf "[%s %s]" (num e.value) (colour e.colour)) p.map) in
+          Printf.sprintf "color_map { %s }" (String.concat " " entries)
+        else
+          let entries = Array.to_list (Array.map (fun (e : pigment_entry) -> Printf.sprintf "[%s %s]" (num e.pvalue) (pigment e.pigment)) p.pigments) in
+          Printf.sprintf "pigment_map { %s }" (String.concat " " entries)
+      in
+      Printf.sprintf "%s frequency %s phase %s%s %s%s" pat (num p.frequency) (num p.phase) wave map
         (match p.ptrans with None -> "" | Some t -> " " ^ matrix t)
 
 let texture (t : texture) =

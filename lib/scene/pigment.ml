@@ -101,16 +101,55 @@ let lookup (map : Scene.map_entry array) v =
         transmit = mix p.transmit c.transmit;
       }
 
-let eval (p : Scene.patterned) (x : Vec.t) =
-  let q = match p.ptrans with None -> x | Some t -> Transform.inv_point t x in
-  lookup p.map (shape_value ~frequency:p.frequency ~phase:p.phase p.wave (pattern_value p.pattern q))
+let f32_colour (c : Colour.t) =
+  { Colour.red = f32 c.red; green = f32 c.green; blue = f32 c.blue; filter = f32 c.filter; transmit = f32 c.transmit }
+
+(* §17.2 for a pigment map: the same search; the entries' pigments are evaluated at the point the
+   outer pattern saw, each through its own transform, and their colours blended *)
+let rec at_pattern_point (p : Scene.patterned) q =
+  let v = shape_value ~frequency:p.frequency ~phase:p.phase p.wave (pattern_value p.pattern q) in
+  if Array.length p.pigments = 0 then lookup p.map v
+  else
+    let map = p.pigments in
+    let n = Array.length map in
+    let last = map.(n - 1) in
+    if v >= last.pvalue then inner last.pigment q
+    else
+      let rec search (prev : Scene.pigment_entry) i =
+        let cur = map.(i) in
+        if v > cur.pvalue then search cur (i + 1) else (prev, cur)
+      in
+      let prev, cur = search map.(0) 0 in
+      if v = cur.pvalue || prev == cur then inner cur.pigment q
+      else
+        let f = (v -. prev.pvalue) /. (cur.pvalue -. prev.pvalue) in
+        let mix a b = f32 (a +. f32 (f *. f32 (b -. a))) in
+        let c = inner cur.pigment q and p = inner prev.pigment q in
+        {
+          Colour.red = mix p.red c.red;
+          green = mix p.green c.green;
+          blue = mix p.blue c.blue;
+          filter = mix p.filter c.filter;
+          transmit = mix p.transmit c.transmit;
+        }
+
+and inner (pg : Scene.pigment) q =
+  match pg with
+  | Solid c -> f32_colour c
+  | Pattern p -> at_pattern_point p (match p.ptrans with None -> q | Some t -> Transform.inv_point t q)
+
+let eval (p : Scene.patterned) (x : Vec.t) = at_pattern_point p (match p.ptrans with None -> x | Some t -> Transform.inv_point t x)
 
 let colour_at (p : Scene.pigment) x = match p with Solid c -> c | Pattern pp -> eval pp x
 
 let clear (c : Colour.t) = Float.abs c.filter <= small_tolerance && Float.abs c.transmit <= small_tolerance
 
-let opaque (p : Scene.pigment) =
-  match p with Solid c -> clear c | Pattern pp -> Array.for_all (fun (e : Scene.map_entry) -> clear e.colour) pp.map
+let rec opaque (p : Scene.pigment) =
+  match p with
+  | Solid c -> clear c
+  | Pattern pp ->
+      if Array.length pp.pigments = 0 then Array.for_all (fun (e : Scene.map_entry) -> clear e.colour) pp.map
+      else Array.for_all (fun (e : Scene.pigment_entry) -> opaque e.pigment) pp.pigments
 
 let f32_entry v (c : Colour.t) : Scene.map_entry =
   {

@@ -23,10 +23,17 @@ type patterned = {
   wave : wave;
   map : map_entry array;
   ptrans : Transform.t option;
+  pigments : pigment_entry array;
+      (** a [pigment_map] or [checker pigment {…}, pigment {…}] (§17.3): when not empty, these
+          entries are looked up instead of [map], their pigments evaluated at the same
+          pattern-space point and blended *)
 }
 
+(** One entry of a pigment map: its value (single precision) and pigment. *)
+and pigment_entry = { pvalue : float; pigment : pigment }
+
 (** A pigment: a plain colour, or a pattern evaluated at each point (§17). *)
-type pigment = Solid of Colour.t | Pattern of patterned
+and pigment = Solid of Colour.t | Pattern of patterned
 
 (** [reflection {…}] of a finish (POVRAY-3.7 §5.1). *)
 type reflection = {

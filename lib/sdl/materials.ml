@@ -58,11 +58,13 @@ let parse_colour_map st what : Scene.map_entry array =
       Array.of_list es
 
 (* A pigment while it is read: what POV-Ray edits in place (§17.9). [pat] is None for a plain
-   colour; [map] is None until colours or a color_map are given. *)
+   colour; [map] is None until colours or a color_map are given; [pigments] is not empty for a
+   pigment_map or a list of pigments. *)
 type pig = {
   solid : Colour.t;
   pat : Scene.pattern option;
   map : Scene.map_entry array option;
+  pigments : Scene.pigment_entry array;
   frequency : float;
   phase : float;
   wave : Scene.wave;
@@ -71,61 +73,92 @@ type pig = {
 
 let pig_of (p : Scene.pigment) =
   match p with
-  | Solid c -> { solid = c; pat = None; map = None; frequency = 1.; phase = 0.; wave = Ramp; trans = None }
+  | Solid c -> { solid = c; pat = None; map = None; pigments = [||]; frequency = 1.; phase = 0.; wave = Ramp; trans = None }
   | Pattern pp ->
-      { solid = Colour.black; pat = Some pp.pattern; map = Some pp.map; frequency = pp.frequency; phase = pp.phase; wave = pp.wave; trans = pp.ptrans }
+      {
+        solid = Colour.black;
+        pat = Some pp.pattern;
+        map = Some pp.map;
+        pigments = pp.pigments;
+        frequency = pp.frequency;
+        phase = pp.phase;
+        wave = pp.wave;
+        trans = pp.ptrans;
+      }
 
 let pigment_of (g : pig) : Scene.pigment =
   match g.pat with
   | None -> Solid g.solid
   | Some pattern ->
       let map = match g.map with Some m -> m | None -> Pigment.default_map pattern in
-      Pattern { pattern; frequency = g.frequency; phase = g.phase; wave = g.wave; map; ptrans = g.trans }
-
-(* The colours listed after checker, hexagon or brick (up to [n], commas optional) replace the
-   first entries of the pattern's default map (§17.4, §17.6, §17.7). *)
-let list_colours st pattern n =
-  let map = Array.copy (Pigment.default_map pattern) in
-  let rec go i =
-    if i < n then begin
-      if i > 0 then ignore (accept st Comma);
-      if is_colour_start st then begin
-        map.(i) <- Pigment.f32_entry (float_of_int i) (parse_colour st);
-        go (i + 1)
-      end
-      else if is_ident st "pigment" then not_supported (peek_loc st) "a pattern of pigments (checker pigment {…}, …)"
-    end
-  in
-  go 0;
-  map
+      Pattern { pattern; frequency = g.frequency; phase = g.phase; wave = g.wave; map; ptrans = g.trans; pigments = g.pigments }
 
 let default_brick = Scene.Brick { size = Vec.make 8. 3. 4.5; mortar = 0.5 -. 2e-10 }
 
-let parse_pigment st (base : Scene.pigment) : Scene.pigment =
-  open_block st "pigment";
+let f32 x = Int32.float_of_bits (Int32.bits_of_float x)
+
+(* The pigment body read up to [close] ('}' of a pigment block, or ']' of a pigment_map entry),
+   editing [base] (§17.9). *)
+let rec parse_pigment_body st ~close (base : Scene.pigment) : Scene.pigment =
   let p =
     match ident_of_kind st (function V.Pigment p -> Some p | _ -> None) with
     | Some p -> p
     | None -> base
   in
+  (* checker, hexagon and brick: up to [n] colours (commas optional) replacing the first entries of
+     the default map, or [n] pigments { … } (§17.4, §17.6, §17.7) *)
+  let listed (g : pig) pattern n =
+    let g = { g with pat = Some pattern; frequency = 0. (* §17.1: no value wrap *) } in
+    if is_ident st "pigment" then begin
+      let rec go i acc =
+        if i < n && (i = 0 || (ignore (accept st Comma); is_ident st "pigment")) then begin
+          advance st;
+          let pg = parse_pigment st st.default_texture.pigment in
+          go (i + 1) ({ Scene.pvalue = float_of_int i; pigment = pg } :: acc)
+        end
+        else List.rev acc
+      in
+      let given = go 0 [] in
+      (* missing pigments are the default colours *)
+      let defaults = Pigment.default_map pattern in
+      let pigments =
+        Array.init (Array.length defaults) (fun i ->
+            match List.nth_opt given i with
+            | Some e -> e
+            | None -> { Scene.pvalue = float_of_int i; pigment = Solid defaults.(i).colour })
+      in
+      { g with map = None; pigments }
+    end
+    else begin
+      let map = Array.copy (Pigment.default_map pattern) in
+      let rec go i =
+        if i < n then begin
+          if i > 0 then ignore (accept st Comma);
+          if is_colour_start st then begin
+            map.(i) <- Pigment.f32_entry (float_of_int i) (parse_colour st);
+            go (i + 1)
+          end
+        end
+      in
+      go 0;
+      { g with map = Some map; pigments = [||] }
+    end
+  in
   let rec loop (g : pig) =
     let loc = peek_loc st in
     match peek st with
-    | RBrace -> advance st; pigment_of g
-    | Ident s when is_colour_start st -> ignore s; loop { g with solid = parse_colour st; pat = None; map = None }
-    | Ident "checker" ->
-        (* §17.1: checker, hexagon and brick turn the value wrap off *)
-        advance st;
-        loop { g with pat = Some Checker; map = Some (list_colours st Checker 2); frequency = 0. }
-    | Ident "hexagon" -> advance st; loop { g with pat = Some Hexagon; map = Some (list_colours st Hexagon 3); frequency = 0. }
-    | Ident "brick" -> advance st; loop { g with pat = Some default_brick; map = Some (list_colours st default_brick 2); frequency = 0. }
+    | k when k == close -> advance st; pigment_of g
+    | Ident s when is_colour_start st -> ignore s; loop { g with solid = parse_colour st; pat = None; map = None; pigments = [||] }
+    | Ident "checker" -> advance st; loop (listed g Checker 2)
+    | Ident "hexagon" -> advance st; loop (listed g Hexagon 3)
+    | Ident "brick" -> advance st; loop (listed g default_brick 2)
     | Ident "gradient" ->
         advance st;
         let vl = peek_loc st in
         let v = parse_vector st in
         (* §17.5: the direction is normalised when parsed *)
         if Vec.length v = 0. then Error.raise_at vl "the gradient vector is <0,0,0>";
-        loop { g with pat = Some (Gradient (Vec.normalize v)); map = None }
+        loop { g with pat = Some (Gradient (Vec.normalize v)); map = None; pigments = [||] }
     | Ident "brick_size" -> (
         advance st;
         let v = parse_vector st in
@@ -142,7 +175,12 @@ let parse_pigment st (base : Scene.pigment) : Scene.pigment =
         advance st;
         match g.pat with
         | Some (Checker | Hexagon | Brick _) -> Error.raise_at loc "cannot use %s with this pattern type" kw
-        | Some (Gradient _) | None -> loop { g with map = Some (parse_colour_map st kw) })
+        | Some (Gradient _) | None -> loop { g with map = Some (parse_colour_map st kw); pigments = [||] })
+    | Ident "pigment_map" -> (
+        advance st;
+        match g.pat with
+        | Some (Checker | Hexagon | Brick _) -> Error.raise_at loc "cannot use pigment_map with this pattern type"
+        | Some (Gradient _) | None -> loop { g with pigments = parse_pigment_map st })
     | Ident "frequency" -> advance st; loop { g with frequency = parse_float st }
     | Ident "phase" -> advance st; loop { g with phase = parse_float st }
     | Ident "ramp_wave" -> advance st; loop { g with wave = Ramp }
@@ -158,9 +196,34 @@ let parse_pigment st (base : Scene.pigment) : Scene.pigment =
     | Ident ("quick_color" | "quick_colour") -> advance st; ignore (parse_colour st); loop g
     | Ident ("noise_generator" as s) -> not_supported loc (Printf.sprintf "'%s' in a pigment" s)
     | Ident s when is_unsupported s -> not_supported loc (Printf.sprintf "'%s' in a pigment" s)
-    | _ -> unexpected st "a colour, a pattern or '}' in a pigment"
+    | _ -> unexpected st (if close == RBrace then "a colour, a pattern or '}' in a pigment" else "a colour, a pattern or ']' in a pigment_map entry")
   in
   loop (pig_of p)
+
+(* pigment_map { [v PIGMENT_BODY] … } (§17.3): entries in the order written, values single precision. *)
+and parse_pigment_map st : Scene.pigment_entry array =
+  let loc = peek_loc st in
+  open_block st "pigment_map";
+  let rec entries acc n =
+    match peek st with
+    | RBrace -> advance st; List.rev acc
+    | LBracket ->
+        let el = peek_loc st in
+        if n >= 256 then Error.raise_at el "a pigment_map has at most 256 entries";
+        advance st;
+        let v = parse_float st in
+        ignore (accept st Comma);
+        let pg = parse_pigment_body st ~close:RBracket st.default_texture.pigment in
+        entries ({ Scene.pvalue = f32 v; pigment = pg } :: acc) (n + 1)
+    | _ -> unexpected st "'[' starting a pigment_map entry, or '}'"
+  in
+  let es = entries [] 0 in
+  if es = [] then Error.raise_at loc "a pigment_map needs at least one entry";
+  Array.of_list es
+
+and parse_pigment st (base : Scene.pigment) : Scene.pigment =
+  open_block st "pigment";
+  parse_pigment_body st ~close:RBrace base
 
 let parse_reflection_block st (r : Scene.reflection) : Scene.reflection =
   (* reflection { MIN [, MAX] [fresnel [b]] [falloff F] [exponent E] [metallic [M]] } (§5.1) *)

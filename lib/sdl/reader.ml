@@ -113,7 +113,7 @@ let keywords =
     "uv_indices"; "inside_vector"; "box" ]
   (* pigment patterns (POVRAY-3.7 §17) *)
   @ [ "checker"; "gradient"; "hexagon"; "brick"; "brick_size"; "mortar"; "color_map"; "colour_map"; "frequency";
-      "phase"; "ramp_wave"; "triangle_wave"; "sine_wave"; "scallop_wave"; "cubic_wave"; "poly_wave" ]
+      "phase"; "ramp_wave"; "triangle_wave"; "sine_wave"; "scallop_wave"; "cubic_wave"; "poly_wave"; "pigment_map" ]
 
 (* POV-Ray keywords that a later povml will read; meeting one is a located "not supported yet". *)
 let unsupported =
@@ -124,7 +124,7 @@ let unsupported =
     "double_illuminate"; "normal"; "material"; "image_map";
     "bozo"; "marble"; "wood"; "agate"; "granite"; "spotted"; "leopard"; "onion"; "radial"; "spiral1";
     "spiral2"; "ripples"; "waves"; "wrinkles"; "bumps"; "dents"; "crackle";
-    "pigment_map"; "texture_map"; "spotlight"; "parallel"; "area_light"; "cylinder"; "looks_like";
+    "texture_map"; "spotlight"; "parallel"; "area_light"; "cylinder"; "looks_like";
     "projected_through"; "orthographic"; "fisheye"; "panoramic"; "ultra_wide_angle"; "omnimax";
     "cylindrical"; "spherical"; "aperture"; "focal_point"; "blur_samples"; "radiosity"; "photons";
     "media"; "fog"; "rainbow"; "irid"; "crand"; "dispersion"; "dispersion_samples"; "caustics";

@@ -89,3 +89,24 @@ composed after the pigment's own:
   > POV
   $ povml dump.pov --dump 2>&1 | grep pigment
     texture { pigment { checker frequency 0 phase 0 color_map { [0 rgb <1, 1, 1>] [1 rgb <0, 1, 0>] } matrix <2, 0, 0, 0, 2, 0, 0, 0, 2, 1, 0, 0> } }
+
+Pigment maps follow the same rules: not on checker (which lists its pigments), at least one entry:
+
+  $ printf 'plane { y, 0 pigment { checker pigment_map { [0 rgb 1] } } }\n' > pmap.pov
+  $ povml pmap.pov +W10 +H10 -D
+  pmap.pov:1:32: error: cannot use pigment_map with this pattern type
+      1 | plane { y, 0 pigment { checker pigment_map { [0 rgb 1] } } }
+        |                                ^
+  [1]
+  $ printf 'plane { y, 0 pigment { gradient y pigment_map { } } }\n' > pempty.pov
+  $ povml pempty.pov +W10 +H10 -D
+  pempty.pov:1:47: error: a pigment_map needs at least one entry
+      1 | plane { y, 0 pigment { gradient y pigment_map { } } }
+        |                                               ^
+  [1]
+  $ printf 'plane { y, 0 pigment { gradient y pigment_map { [0 rgb 1 } } }\n' > pclose.pov
+  $ povml pclose.pov +W10 +H10 -D
+  pclose.pov:1:58: error: expected a colour, a pattern or ']' in a pigment_map entry but found '}'
+      1 | plane { y, 0 pigment { gradient y pigment_map { [0 rgb 1 } } }
+        |                                                          ^
+  [1]

@@ -210,6 +210,32 @@ let test_parse_errors () =
     ~sub:"only valid in a brick pattern";
   expect_scene_error "zero gradient" "plane { y, 0 pigment { gradient 0 } }" ~line:1 ~col:33 ~sub:"gradient vector"
 
+let test_pigment_maps () =
+  (* checker pigment {…}, pigment {…}: the cells take whole pigments, evaluated at the checker's
+     own pattern-space point and then through each pigment's transform *)
+  let o =
+    the_object
+      (scene (v37 ^ "plane { y, 0 pigment { checker pigment { checker rgb 1, rgb 0 scale 0.5 }, pigment { rgb <1,0,0> } scale 2 } }"))
+  in
+  (* world <0.5,0.5,0.5> is <0.25,0.25,0.25> for the outer checker (cell 0), <0.5,0.5,0.5> for the
+     inner one (cell 0); world z = 1.5 is inner z = 1.5 (cell 1). An inner point computed from the
+     world point instead (z = 3) would give cell 0. *)
+  colour_eq "outer 0, inner 0" (rgb 1. 1. 1.) (Pigment.colour_at o.texture.pigment (v 0.5 0.5 0.5));
+  colour_eq "outer 0, inner 1" Colour.black (Pigment.colour_at o.texture.pigment (v 0.5 0.5 1.5));
+  colour_eq "outer 1" red (Pigment.colour_at o.texture.pigment (v 2.5 0.5 0.5));
+  (* one pigment given: the second cell keeps the default green *)
+  let o = the_object (scene (v37 ^ "plane { y, 0 pigment { checker pigment { rgb 1 } } }")) in
+  colour_eq "default second pigment" green (Pigment.colour_at o.texture.pigment (v 1.5 0.5 0.5));
+  (* pigment_map: blended like a colour map, all five channels *)
+  let o =
+    the_object (scene (v37 ^ "plane { y, 0 pigment { gradient x pigment_map { [0.25 rgb <1,0,0>] [0.75 rgbt <0,0,1,1>] } } }"))
+  in
+  colour_eq ~eps:0. "pigment_map halfway" (colour5 0.5 0. 0.5 0. 0.5) (Pigment.colour_at o.texture.pigment (v 0.5 0. 0.));
+  colour_eq ~eps:0. "pigment_map below the first" red (Pigment.colour_at o.texture.pigment (v 0.1 0. 0.));
+  Alcotest.(check bool) "a transparent entry pigment: not opaque" false (Pigment.opaque o.texture.pigment);
+  expect_scene_error "pigment_map on checker" "plane { y, 0 pigment { checker pigment_map { [0 rgb 1] } } }" ~line:1 ~col:32
+    ~sub:"cannot use pigment_map with this pattern type"
+
 (* ---------------------------------------------------------------------------------------------- *)
 (* Transforms (§14.7, §17.1, §17.9) *)
 
@@ -305,6 +331,7 @@ let tests =
     Alcotest.test_case "map lookup" `Quick test_lookup;
     Alcotest.test_case "parsing maps" `Quick test_parse_maps;
     Alcotest.test_case "parse errors" `Quick test_parse_errors;
+    Alcotest.test_case "pigment maps" `Quick test_pigment_maps;
     Alcotest.test_case "transforms" `Quick test_transforms;
     Alcotest.test_case "compile" `Quick test_compile;
     Alcotest.test_case "trace" `Quick test_trace;
