@@ -205,7 +205,7 @@ let surface ~legacy ~ambient_light (t : Scene.texture) =
     }
   in
   match t.pigment with
-  | Solid c -> coloured ~legacy ~ambient_light f base (colour32 c)
+  | Solid c | Solid_placed { colour = c; _ } -> coloured ~legacy ~ambient_light f base (colour32 c)
   | Pattern p ->
       (* §17.1: the map colours are single precision already, and so is their blend *)
       let at x = coloured ~legacy ~ambient_light f base (Pigment.eval p x) in
@@ -214,7 +214,7 @@ let surface ~legacy ~ambient_light (t : Scene.texture) =
 (* An object stops a shadow ray at once when none of its pigments lets light through (§4, §17.8). *)
 let pigment_opaque (p : Scene.pigment) =
   match p with
-  | Solid c ->
+  | Solid c | Solid_placed { colour = c; _ } ->
       let c = colour32 c in
       c.filter = 0. && c.transmit = 0.
   | Pattern _ -> Pigment.opaque p

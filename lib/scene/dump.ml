@@ -50,7 +50,7 @@ let finish (f : finish) =
 
 (* A pattern pigment with its whole map and its composed transform (POVRAY-3.7 §17). *)
 let rec pigment = function
-  | Solid c -> colour c
+  | Solid c | Solid_placed { colour = c; _ } -> colour c
   | Pattern p ->
       let pat =
         match p.pattern with

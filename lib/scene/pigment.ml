@@ -135,18 +135,18 @@ let rec at_pattern_point (p : Scene.patterned) q =
 
 and inner (pg : Scene.pigment) q =
   match pg with
-  | Solid c -> f32_colour c
+  | Solid c | Solid_placed { colour = c; _ } -> f32_colour c
   | Pattern p -> at_pattern_point p (match p.ptrans with None -> q | Some t -> Transform.inv_point t q)
 
 let eval (p : Scene.patterned) (x : Vec.t) = at_pattern_point p (match p.ptrans with None -> x | Some t -> Transform.inv_point t x)
 
-let colour_at (p : Scene.pigment) x = match p with Solid c -> c | Pattern pp -> eval pp x
+let colour_at (p : Scene.pigment) x = match p with Solid c | Solid_placed { colour = c; _ } -> c | Pattern pp -> eval pp x
 
 let clear (c : Colour.t) = Float.abs c.filter <= small_tolerance && Float.abs c.transmit <= small_tolerance
 
 let rec opaque (p : Scene.pigment) =
   match p with
-  | Solid c -> clear c
+  | Solid c | Solid_placed { colour = c; _ } -> clear c
   | Pattern pp ->
       if Array.length pp.pigments = 0 then Array.for_all (fun (e : Scene.map_entry) -> clear e.colour) pp.map
       else Array.for_all (fun (e : Scene.pigment_entry) -> opaque e.pigment) pp.pigments
@@ -167,9 +167,11 @@ let default_map (p : Scene.pattern) =
   | Gradient _ -> [| f32_entry 0. (rgb 0. 0. 0.); f32_entry 1. (rgb 1. 1. 1.) |]
 
 let transform (p : Scene.pigment) t : Scene.pigment =
+  (* Transform_Tpattern: composed into the head transform, created on the identity first; a plain
+     colour keeps its transform too, for an edit that gives it a pattern (§17.9) *)
   match p with
-  | Solid _ -> p
+  | Solid colour -> Solid_placed { colour; strans = Transform.compose Transform.identity t }
+  | Solid_placed { colour; strans } -> Solid_placed { colour; strans = Transform.compose strans t }
   | Pattern pp ->
-      (* Transform_Tpattern: composed into the head transform, created on the identity first *)
       let base = match pp.ptrans with None -> Transform.identity | Some m -> m in
       Pattern { pp with ptrans = Some (Transform.compose base t) }

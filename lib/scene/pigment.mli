@@ -42,5 +42,5 @@ val default_map : Scene.pattern -> Scene.map_entry array
     red for hexagon, grey 0.5 and <0.6,0.15,0.15> for brick, black to white for gradient (§17.3–§17.7). *)
 
 val transform : Scene.pigment -> Transform.t -> Scene.pigment
-(** [transform p t] is [p] with [t] composed after its transform (§14.7, §17.1); a plain colour is
-    unchanged. *)
+(** [transform p t] is [p] with [t] composed after its transform (§14.7, §17.1); a plain colour
+    keeps the same colour and records the transform ([Solid_placed]). *)

@@ -33,7 +33,12 @@ type patterned = {
 and pigment_entry = { pvalue : float; pigment : pigment }
 
 (** A pigment: a plain colour, or a pattern evaluated at each point (§17). *)
-and pigment = Solid of Colour.t | Pattern of patterned
+and pigment =
+  | Solid of Colour.t
+  | Pattern of patterned
+  | Solid_placed of { colour : Colour.t; strans : Transform.t }
+      (** a plain colour that was transformed: the same everywhere, but a later edit that gives
+          it a pattern keeps the transform (§17.9) *)
 
 (** [reflection {…}] of a finish (POVRAY-3.7 §5.1). *)
 type reflection = {

@@ -74,6 +74,8 @@ type pig = {
 let pig_of (p : Scene.pigment) =
   match p with
   | Solid c -> { solid = c; pat = None; map = None; pigments = [||]; frequency = 1.; phase = 0.; wave = Ramp; trans = None }
+  | Solid_placed { colour; strans } ->
+      { solid = colour; pat = None; map = None; pigments = [||]; frequency = 1.; phase = 0.; wave = Ramp; trans = Some strans }
   | Pattern pp ->
       {
         solid = Colour.black;
@@ -88,7 +90,7 @@ let pig_of (p : Scene.pigment) =
 
 let pigment_of (g : pig) : Scene.pigment =
   match g.pat with
-  | None -> Solid g.solid
+  | None -> ( match g.trans with None -> Solid g.solid | Some strans -> Solid_placed { colour = g.solid; strans })
   | Some pattern ->
       let map = match g.map with Some m -> m | None -> Pigment.default_map pattern in
       Pattern { pattern; frequency = g.frequency; phase = g.phase; wave = g.wave; map; ptrans = g.trans; pigments = g.pigments }

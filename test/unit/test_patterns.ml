@@ -8,7 +8,7 @@ open Helpers
 let v37 = "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"
 
 let pattern_of (o : Scene.obj) =
-  match o.texture.pigment with Pattern p -> p | Solid _ -> Alcotest.fail "expected a pattern pigment"
+  match o.texture.pigment with Pattern p -> p | Solid _ | Solid_placed _ -> Alcotest.fail "expected a pattern pigment"
 
 let the_pattern text = pattern_of (the_object (scene (v37 ^ text)))
 
@@ -266,6 +266,15 @@ let test_transforms () =
   in
   colour_eq "copy keeps scale 0.5·2" blue (eval_at o (v 0.5 0.5 0.5));
   colour_eq "copy: next cell at 1" green (eval_at o (v 1.5 0.5 0.5));
+  (* a plain colour keeps the transforms it received, for an edit that gives it a pattern *)
+  let o = the_object (scene (v37 ^ "sphere { 0, 1 finish { phong 1 } scale 2 pigment { checker rgb 1, rgb 0 } }")) in
+  colour_eq "plain, scaled, then checker: scaled" (rgb 1. 1. 1.) (eval_at o (v 1.5 0.5 0.5));
+  let o = the_object (scene (v37 ^ "sphere { 0, 1 pigment { rgb <1,0,0> } translate x }")) in
+  (match o.texture.pigment with
+  | Solid_placed { colour; strans } ->
+      colour_eq "placed colour" red colour;
+      vec_eq "placed transform" (v 1. 0. 0.) (Transform.point strans Vec.zero)
+  | Solid _ | Pattern _ -> Alcotest.fail "a placed plain colour expected");
   (* a mesh's face textures move with the mesh *)
   let s =
     scene
