@@ -146,10 +146,21 @@ let rec parse_pigment_body st ~close (base : Scene.pigment) : Scene.pigment =
       { g with map = Some map; pigments = [||] }
     end
   in
+  (* POV-Ray reads the colour or pattern first (after an identifier), then only modifiers: a
+     colour or pattern keyword after anything else ends the pigment, an error (checked) *)
+  let first = ref true in
   let rec loop (g : pig) =
     let loc = peek_loc st in
-    match peek st with
+    let item = peek st in
+    let started = not !first in
+    first := false;
+    match item with
     | k when k == close -> advance st; pigment_of g
+    | Ident s when (is_colour_start st || List.mem s [ "checker"; "hexagon"; "brick"; "gradient" ]) && started ->
+        Error.raise_at loc "expected %s but found '%s': the colour or pattern comes first in a %s"
+          (if close == RBrace then "'}' closing the pigment" else "']' closing the pigment_map entry")
+          s
+          (if close == RBrace then "pigment" else "pigment_map entry")
     | Ident s when is_colour_start st -> ignore s; loop { g with solid = parse_colour st; pat = None; map = None; pigments = [||] }
     | Ident "checker" -> advance st; loop (listed g Checker 2)
     | Ident "hexagon" -> advance st; loop (listed g Hexagon 3)

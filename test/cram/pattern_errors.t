@@ -110,3 +110,19 @@ Pigment maps follow the same rules: not on checker (which lists its pigments), a
       1 | plane { y, 0 pigment { gradient y pigment_map { [0 rgb 1 } } }
         |                                                          ^
   [1]
+
+The colour or pattern comes first in a pigment (after an identifier), then only modifiers; a
+second rgb… keyword starts a new colour, so two colours in a pigment are an error, as in POV-Ray:
+
+  $ printf 'plane { y, 0 pigment { scale 2 checker } }\n' > order.pov
+  $ povml order.pov +W10 +H10 -D
+  order.pov:1:32: error: expected '}' closing the pigment but found 'checker': the colour or pattern comes first in a pigment
+      1 | plane { y, 0 pigment { scale 2 checker } }
+        |                                ^
+  [1]
+  $ printf 'plane { y, 0 pigment { rgb <1,0,0> rgb <0,1,0> } }\n' > twice.pov
+  $ povml twice.pov +W10 +H10 -D
+  twice.pov:1:36: error: expected '}' closing the pigment but found 'rgb': the colour or pattern comes first in a pigment
+      1 | plane { y, 0 pigment { rgb <1,0,0> rgb <0,1,0> } }
+        |                                    ^
+  [1]

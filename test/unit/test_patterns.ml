@@ -196,6 +196,10 @@ let test_parse_maps () =
   let p = the_pattern "plane { y, 0 pigment { checker rgb <1,0,0> } }" in
   colour_eq "one colour" red p.map.(0).colour;
   colour_eq "default second" green p.map.(1).colour;
+  (* a second rgb keyword starts the next colour: rgb 1 rgb <1,0,0> is two colours (checked) *)
+  let p = the_pattern "plane { y, 0 pigment { checker rgb 1 rgb <1,0,0> } }" in
+  colour_eq "no comma: first" (rgb 1. 1. 1.) p.map.(0).colour;
+  colour_eq "no comma: second" red p.map.(1).colour;
   let p = the_pattern "plane { y, 0 pigment { hexagon rgb 1, rgb 0 } }" in
   colour_eq "hexagon default third: red" red p.map.(2).colour;
   colour_eq "hexagon second" Colour.black p.map.(1).colour
@@ -208,6 +212,9 @@ let test_parse_errors () =
   expect_scene_error "empty map" "plane { y, 0 pigment { gradient x color_map { } } }" ~line:1 ~col:45 ~sub:"at least one entry";
   expect_scene_error "mortar outside brick" "plane { y, 0 pigment { checker mortar 0.1 } }" ~line:1 ~col:32
     ~sub:"only valid in a brick pattern";
+  expect_scene_error "pattern after a modifier" "plane { y, 0 pigment { scale 2 checker } }" ~line:1 ~col:32
+    ~sub:"the colour or pattern comes first";
+  expect_scene_error "two colours" "plane { y, 0 pigment { rgb 1 rgb 0 } }" ~line:1 ~col:30 ~sub:"the colour or pattern comes first";
   expect_scene_error "zero gradient" "plane { y, 0 pigment { gradient 0 } }" ~line:1 ~col:33 ~sub:"gradient vector"
 
 let test_pigment_maps () =
