@@ -217,22 +217,25 @@ let rec parse_pigment_body st ~close (base : Scene.pigment) : Scene.pigment =
 and parse_pigment_map st : Scene.pigment_entry array =
   let loc = peek_loc st in
   open_block st "pigment_map";
-  let rec entries acc n =
-    match peek st with
-    | RBrace -> advance st; List.rev acc
-    | LBracket ->
-        let el = peek_loc st in
-        if n >= 256 then Error.raise_at el "a pigment_map has at most 256 entries";
-        advance st;
-        let v = parse_float st in
-        ignore (accept st Comma);
-        let pg = parse_pigment_body st ~close:RBracket st.default_texture.pigment in
-        entries ({ Scene.pvalue = f32 v; pigment = pg } :: acc) (n + 1)
-    | _ -> unexpected st "'[' starting a pigment_map entry, or '}'"
-  in
-  let es = entries [] 0 in
-  if es = [] then Error.raise_at loc "a pigment_map needs at least one entry";
-  Array.of_list es
+  match ident_of_kind st (function V.Pigment_map m -> Some m | _ -> None) with
+  | Some m -> close_block st "pigment_map"; m
+  | None ->
+      let rec entries acc n =
+        match peek st with
+        | RBrace -> advance st; List.rev acc
+        | LBracket ->
+            let el = peek_loc st in
+            if n >= 256 then Error.raise_at el "a pigment_map has at most 256 entries";
+            advance st;
+            let v = parse_float st in
+            ignore (accept st Comma);
+            let pg = parse_pigment_body st ~close:RBracket st.default_texture.pigment in
+            entries ({ Scene.pvalue = f32 v; pigment = pg } :: acc) (n + 1)
+        | _ -> unexpected st "'[' starting a pigment_map entry, or '}'"
+      in
+      let es = entries [] 0 in
+      if es = [] then Error.raise_at loc "a pigment_map needs at least one entry";
+      Array.of_list es
 
 and parse_pigment st (base : Scene.pigment) : Scene.pigment =
   open_block st "pigment";

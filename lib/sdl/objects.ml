@@ -246,7 +246,7 @@ let parse_texture_in_block st =
 
 (* Values povml cannot make yet; a declaration of one is kept as [V.Unsupported]. *)
 let unsupported_rvalues =
-  [ "material"; "normal"; "pigment_map"; "normal_map"; "texture_map"; "slope_map";
+  [ "material"; "normal"; "normal_map"; "texture_map"; "slope_map";
     "function"; "spline"; "media"; "density"; "fog"; "rainbow"; "sky_sphere"; "isosurface" ]
 
 let unsupported_rvalue_set = set_of (unsupported_objects @ unsupported_rvalues)

@@ -240,6 +240,12 @@ let test_pigment_maps () =
   colour_eq ~eps:0. "pigment_map halfway" (colour5 0.5 0. 0.5 0. 0.5) (Pigment.colour_at o.texture.pigment (v 0.5 0. 0.));
   colour_eq ~eps:0. "pigment_map below the first" red (Pigment.colour_at o.texture.pigment (v 0.1 0. 0.));
   Alcotest.(check bool) "a transparent entry pigment: not opaque" false (Pigment.opaque o.texture.pigment);
+  (* a declared pigment_map *)
+  let o =
+    the_object
+      (scene (v37 ^ "#declare PM = pigment_map { [0 rgb <1,0,0>] [1 rgb <0,0,1>] }\nplane { y, 0 pigment { gradient x pigment_map { PM } } }"))
+  in
+  colour_eq ~eps:0. "declared pigment_map" (rgb 0.5 0. 0.5) (Pigment.colour_at o.texture.pigment (v 0.5 0. 0.));
   expect_scene_error "pigment_map on checker" "plane { y, 0 pigment { checker pigment_map { [0 rgb 1] } } }" ~line:1 ~col:32
     ~sub:"cannot use pigment_map with this pattern type"
 
