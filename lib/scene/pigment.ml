@@ -61,6 +61,10 @@ let pattern_value (p : Scene.pattern) q =
 
 let two_pi = 2. *. Float.pi
 
+(* sin(2π·frac v) as POV-Ray computes it, the fraction scaled by 50000 and back first (v ≥ 0 here,
+   after the wrap of §17.1) *)
+let cycloidal v = sin (((v -. floor v) *. 50000.) /. 50000. *. two_pi)
+
 let shape_value ~frequency ~phase (w : Scene.wave) v =
   (* §17.1: C fmod with the modulus 1.00001, not 1 *)
   let v = if frequency <> 0. then Float.rem ((v *. frequency) +. phase) 1.00001 else v in
@@ -70,10 +74,8 @@ let shape_value ~frequency ~phase (w : Scene.wave) v =
   | Triangle_wave ->
       let f = v -. floor v in
       if f < 0.5 then 2. *. f else 2. *. (1. -. f)
-  | Sine_wave -> (1. +. sin (two_pi *. (v -. floor v))) /. 2.
-  | Scallop_wave ->
-      let h = v /. 2. in
-      Float.abs (sin (two_pi *. (h -. floor h)))
+  | Sine_wave -> (1. +. cycloidal v) *. 0.5
+  | Scallop_wave -> Float.abs (cycloidal (v *. 0.5))
   | Cubic_wave -> v *. v *. (3. -. (2. *. v))
   | Poly_wave e -> Float.pow v e
 
