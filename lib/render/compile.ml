@@ -263,9 +263,33 @@ let colour32 (c : Colour.t) =
 let reflection32 (r : Scene.reflection) =
   { r with rmin = rgb32 r.rmin; rmax = rgb32 r.rmax; falloff = f32 r.falloff; refl_metallic = f32 r.refl_metallic }
 
+(* The fields of a surface that depend on its pigment colour [c] (single precision), the others
+   taken from [base]. *)
+let coloured ~legacy ~ambient_light (f : Scene.finish) base (c : Colour.t) =
+  let colour = Colour.rgb c in
+  (* §3.2: the legacy "att" formula applies below language version 3.70 *)
+  let att =
+    if legacy then 1. -. ((c.filter *. Rgb.max3 colour) +. c.transmit) else 1. -. c.filter -. c.transmit
+  in
+  (* §3.2, in single precision as POV-Ray sums it: ((C·ambient)·ambient_light)·att, then + (C·emission)·att *)
+  let mul a b = f32 (a *. b) in
+  let term c a l = mul (mul (mul c a) l) att in
+  let emitted =
+    Rgb.make
+      (f32 (term colour.r f.ambient.r ambient_light.Rgb.r +. mul (mul colour.r f.emission.r) att))
+      (f32 (term colour.g f.ambient.g ambient_light.g +. mul (mul colour.g f.emission.g) att))
+      (f32 (term colour.b f.ambient.b ambient_light.b +. mul (mul colour.b f.emission.b) att))
+  in
+  {
+    base with
+    colour;
+    att;
+    emitted;
+    filcol = Rgb.make (f32 (f32 (c.red *. c.filter) +. c.transmit)) (f32 (f32 (c.green *. c.filter) +. c.transmit)) (f32 (f32 (c.blue *. c.filter) +. c.transmit));
+    transparent = c.filter <> 0. || c.transmit <> 0.;
+  }
+
 let surface ~legacy ~ambient_light (t : Scene.texture) =
-  let (Scene.Solid c) = t.pigment in
-  let c = colour32 c in
   let f0 = t.finish in
   (* finish scalars are single precision too *)
   let f =
@@ -283,39 +307,44 @@ let surface ~legacy ~ambient_light (t : Scene.texture) =
     }
   in
   let ambient_light = rgb32 ambient_light in
-  let colour = Colour.rgb c in
-  (* §3.2: the legacy "att" formula applies below language version 3.70 *)
-  let att =
-    if legacy then 1. -. ((c.filter *. Rgb.max3 colour) +. c.transmit) else 1. -. c.filter -. c.transmit
-  in
-  (* §3.2, in single precision as POV-Ray sums it: ((C·ambient)·ambient_light)·att, then + (C·emission)·att *)
-  let mul a b = f32 (a *. b) in
-  let term c a l = mul (mul (mul c a) l) att in
-  let emitted =
-    Rgb.make
-      (f32 (term colour.r f.ambient.r ambient_light.r +. mul (mul colour.r f.emission.r) att))
-      (f32 (term colour.g f.ambient.g ambient_light.g +. mul (mul colour.g f.emission.g) att))
-      (f32 (term colour.b f.ambient.b ambient_light.b +. mul (mul colour.b f.emission.b) att))
-  in
   let r = f.reflection in
-  {
-    colour;
-    att;
-    emitted;
-    lit = f.diffuse <> 0. || f.phong <> 0. || f.specular <> 0.;
-    diffuse = f.diffuse;
-    brilliance = f.brilliance;
-    phong = f.phong;
-    phong_size = f.phong_size;
-    specular = f.specular;
-    spec_exp = (if f.roughness = 0. then 0. else f32 (1. /. f.roughness));
-    metallic = f.metallic;
-    refl = r;
-    reflects = not (Rgb.is_zero r.rmin && Rgb.is_zero r.rmax);
-    filcol = Rgb.make (f32 (f32 (c.red *. c.filter) +. c.transmit)) (f32 (f32 (c.green *. c.filter) +. c.transmit)) (f32 (f32 (c.blue *. c.filter) +. c.transmit));
-    transparent = c.filter <> 0. || c.transmit <> 0.;
-    conserve = f.conserve_energy;
-  }
+  let base =
+    {
+      colour = Rgb.black;
+      att = 1.;
+      emitted = Rgb.black;
+      lit = f.diffuse <> 0. || f.phong <> 0. || f.specular <> 0.;
+      diffuse = f.diffuse;
+      brilliance = f.brilliance;
+      phong = f.phong;
+      phong_size = f.phong_size;
+      specular = f.specular;
+      spec_exp = (if f.roughness = 0. then 0. else f32 (1. /. f.roughness));
+      metallic = f.metallic;
+      refl = r;
+      reflects = not (Rgb.is_zero r.rmin && Rgb.is_zero r.rmax);
+      filcol = Rgb.black;
+      transparent = false;
+      conserve = f.conserve_energy;
+      paint = Fixed;
+    }
+  in
+  match t.pigment with
+  | Solid c | Solid_placed { colour = c; _ } -> coloured ~legacy ~ambient_light f base (colour32 c)
+  | Pattern p ->
+      (* §17.1: the map colours are single precision already, and so is their blend *)
+      let at x = coloured ~legacy ~ambient_light f base (Pigment.eval p x) in
+      (* shading takes the surface at the point; [transparent] here says whether any colour of the
+         pattern lets light through, which the shadow cache asks of a CSG's own texture *)
+      { base with paint = Varying at; transparent = not (Pigment.opaque t.pigment) }
+
+(* An object stops a shadow ray at once when none of its pigments lets light through (§4, §17.8). *)
+let pigment_opaque (p : Scene.pigment) =
+  match p with
+  | Solid c | Solid_placed { colour = c; _ } ->
+      let c = colour32 c in
+      c.filter = 0. && c.transmit = 0.
+  | Pattern _ -> Pigment.opaque p
 
 (* Objects that share a texture (a declared one) share its compiled surface. *)
 module Texture_memo = Hashtbl.Make (struct
@@ -372,8 +401,13 @@ let scene (s : Scene.t) : Compiled.t =
           match shape with
           | Csg { members; _ } -> Array.for_all (fun m -> m.opaque) members
           | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _
-          | Disc _ | Torus _ ->
-              (not surf.transparent) && Array.for_all (fun (f : surface) -> not f.transparent) face_surfs
+          | Disc _ | Torus _ -> (
+              (* §17.8: opaque only if no colour the pigment can give is transparent *)
+              pigment_opaque o.texture.pigment
+              &&
+              match o.shape with
+              | Mesh m -> Array.for_all (fun (t : Scene.texture) -> pigment_opaque t.pigment) m.textures
+              | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Box _ | Cone _ | Disc _ | Torus _ | Csg _ -> true)
         in
         let ob =
           {

@@ -35,7 +35,8 @@ type disc = {
 }
 
 (** Everything about a surface that does not depend on the hit point, derived once from a
-    plain pigment and its finish (§3.2, §3.5, §5). *)
+    plain pigment and its finish (§3.2, §3.5, §5). A pattern pigment's surface holds the finish's
+    quantities, and its [paint] gives the whole surface at each hit point (§17.1). *)
 type surface = {
   colour : Rgb.t;  (** pigment rgb *)
   att : float;  (** 1 − f − t (or the legacy formula) *)
@@ -53,7 +54,15 @@ type surface = {
   filcol : Rgb.t;  (** rgb·filter + transmit (§3.5) *)
   transparent : bool;  (** filter or transmit non-zero: a transmitted ray may be traced *)
   conserve : bool;
+  paint : paint;
 }
+
+(** Whether a surface's colour depends on the point. *)
+and paint =
+  | Fixed  (** a plain pigment: the surface is the same everywhere *)
+  | Varying of (Vec.t -> surface)
+      (** a pattern pigment: the surface at a world point, its colour-dependent fields (colour, att,
+          emitted, filcol, transparent) computed from the pigment there *)
 
 type shape =
   | Sphere of sphere

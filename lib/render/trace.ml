@@ -986,7 +986,9 @@ let shadow ctx ~slot (p : Vec.t) (ng : Vec.t) e (l : Vec.t) dist interiors (lc :
             Rgb.black
           end
           else
-            let f = (surface_of obj ctx.sub.(0)).filcol in
+            let sf = surface_of obj ctx.sub.(0) in
+            (* §4, §17.8: a patterned pigment is evaluated where the shadow ray crosses it *)
+            let f = match sf.paint with Fixed -> sf.filcol | Varying at -> (at (Vec.madd o t l)).filcol in
             let f =
               if List.mem obj.iid interiors && obj.fade_power > 0. && Float.abs obj.fade_distance > epsilon then
                 fade_factor obj.fade_colour obj.fade_distance obj.fade_power t f
@@ -1168,12 +1170,15 @@ let reflectivity sc (s : surface) obj interiors ci : Rgb.t =
 (* ---------------------------------------------------------------------------------------------- *)
 (* Sky and background (§8.4, §18.1) *)
 
-let sky_colour sc : result =
+let sky_colour sc (d : Vec.t) : result =
   let bg = sc.background in
   match sc.sky with
   | None -> if sc.legacy then { r = bg.red; g = bg.green; b = bg.blue; tr = bg.transmit } else { r = bg.red; g = bg.green; b = bg.blue; tr = 0. }
   | Some sky ->
-      let pigs = List.rev_map (fun (Scene.Solid c) -> c) sky.sky_pigments in
+      (* §18.1: the pigments are evaluated at the ray direction taken as a point, brought back
+         through the sky's own transform *)
+      let p = match sky.sky_trans with None -> d | Some t -> Transform.inv_point t d in
+      let pigs = List.rev_map (fun pg -> Pigment.colour_at pg p) sky.sky_pigments in
       let e = sky.sky_emission in
       if not sc.legacy then
         let col, fil =
@@ -1211,7 +1216,7 @@ let rec trace_ray ctx ~reflected ~level ~weight ~interiors ~continued (o : Vec.t
   if level >= sc.max_trace_level || weight < sc.adc_bailout then black
   else
     let i = nearest ctx (if reflected then sc.mirrored else sc.seen) o d ctx.min_depth infinity in
-    if i < 0 then sky_colour sc
+    if i < 0 then sky_colour sc d
     else
       let level = if continued then level else level + 1 in
       if level > ctx.stats.max_level then ctx.stats.max_level <- level;
@@ -1219,12 +1224,14 @@ let rec trace_ray ctx ~reflected ~level ~weight ~interiors ~continued (o : Vec.t
 
 and shade ctx ~reflected obj sub depth ~level ~weight ~interiors (o : Vec.t) (d : Vec.t) : result =
   let sc = ctx.scene in
-  let s = surface_of obj sub in
   (* §3.2: the layer loop runs while the remaining translucency (1 at the start) exceeds adc_bailout *)
   if not (1. > sc.adc_bailout) then black
   else
     let p = Vec.madd o depth d in
     let p = if ctx.robust then refine obj p else p in
+    let s = surface_of obj sub in
+    (* §17.1: a pattern pigment is evaluated at the hit point *)
+    let s = match s.paint with Fixed -> s | Varying at -> at p in
     let n = normal obj sub p in
     let n = if Vec.dot n d > 0. then Vec.neg n else n in
     (* §3.1 *)

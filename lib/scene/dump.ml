@@ -48,10 +48,40 @@ let finish (f : finish) =
   (match f.legacy_ior with Some i -> add true ("ior " ^ num i) | None -> ());
   String.concat " " (List.rev !items)
 
+(* A pattern pigment with its whole map and its composed transform (POVRAY-3.7 §17). *)
+let rec pigment = function
+  | Solid c | Solid_placed { colour = c; _ } -> colour c
+  | Pattern p ->
+      let pat =
+        match p.pattern with
+        | Checker -> "checker"
+        | Gradient v -> "gradient " ^ vec v
+        | Hexagon -> "hexagon"
+        | Brick { size; mortar } -> Printf.sprintf "brick brick_size %s mortar %s" (vec size) (num mortar)
+      in
+      let wave =
+        match p.wave with
+        | Ramp -> ""
+        | Triangle_wave -> " triangle_wave"
+        | Sine_wave -> " sine_wave"
+        | Scallop_wave -> " scallop_wave"
+        | Cubic_wave -> " cubic_wave"
+        | Poly_wave e -> " poly_wave " ^ num e
+      in
+      let map =
+        if Array.length p.pigments = 0 then
+          let entries = Array.to_list (Array.map (fun (e : map_entry) -> Printf.sprintf "[%s %s]" (num e.value) (colour e.colour)) p.map) in
+          Printf.sprintf "color_map { %s }" (String.concat " " entries)
+        else
+          let entries = Array.to_list (Array.map (fun (e : pigment_entry) -> Printf.sprintf "[%s %s]" (num e.pvalue) (pigment e.pigment)) p.pigments) in
+          Printf.sprintf "pigment_map { %s }" (String.concat " " entries)
+      in
+      Printf.sprintf "%s frequency %s phase %s%s %s%s" pat (num p.frequency) (num p.phase) wave map
+        (match p.ptrans with None -> "" | Some t -> " " ^ matrix t)
+
 let texture (t : texture) =
-  let (Solid c) = t.pigment in
   let f = finish t.finish in
-  Printf.sprintf "texture { pigment { %s }%s }" (colour c) (if f = "" then "" else Printf.sprintf " finish { %s }" f)
+  Printf.sprintf "texture { pigment { %s }%s }" (pigment t.pigment) (if f = "" then "" else Printf.sprintf " finish { %s }" f)
 
 let interior (i : interior) =
   if i = Defaults.interior then ""
@@ -141,9 +171,10 @@ let scene (s : t) =
   | None -> ()
   | Some sk ->
       add
-        (Printf.sprintf "sky_sphere { %s emission %s }\n"
-           (String.concat " " (List.map (fun (Solid c) -> Printf.sprintf "pigment { %s }" (colour c)) sk.sky_pigments))
-           (rgb sk.sky_emission)));
+        (Printf.sprintf "sky_sphere { %s emission %s%s }\n"
+           (String.concat " " (List.map (fun p -> Printf.sprintf "pigment { %s }" (pigment p)) sk.sky_pigments))
+           (rgb sk.sky_emission)
+           (match sk.sky_trans with None -> "" | Some t -> " " ^ matrix t)));
   List.iter (fun l -> add (light l)) s.lights;
   List.iter (fun o -> add (obj o)) s.objects;
   add (Printf.sprintf "// %d objects, %d lights\n" (List.length s.objects) (List.length s.lights));

@@ -44,6 +44,9 @@ let move_point op (p : Vec.t) =
   | Scale s -> Vec.mul p s
   | Rotate _ | Transform _ -> Transform.point (op_transform op) p
 
+(* §14.7: a texture attached before a transform moves with the object *)
+let texture (t : Scene.texture) op = { t with pigment = Pigment.transform t.pigment (op_transform op) }
+
 let rec shape (s : Scene.shape) op : Scene.shape =
   match s with
   | Sphere { centre; radius; trans = None } -> (
@@ -114,7 +117,7 @@ let rec shape (s : Scene.shape) op : Scene.shape =
       Torus { t with trans = attach (Some t.trans) op }
   | Mesh { mesh; trans; textures } ->
       (* §2.6, Mesh::Translate/Rotate/Scale all call Transform *)
-      Mesh { mesh; trans = Some (attach trans op); textures }
+      Mesh { mesh; trans = Some (attach trans op); textures = Array.map (fun t -> texture t op) textures }
   | Cone c ->
       (* §14.4, Cone::Translate/Rotate/Scale/Transform: every modifier is composed into Trans *)
       Cone { c with trans = attach (Some c.trans) op }
@@ -124,7 +127,7 @@ let rec shape (s : Scene.shape) op : Scene.shape =
       Disc { d with normal = Transform.normalize (Transform.normal t d.normal); trans = Transform.compose d.trans t }
   | Csg { kind; members } ->
       (* §16: a CSG's transform moves every member *)
-      Csg { kind; members = List.map (fun (m : Scene.member) -> { m with mobj = { m.mobj with shape = shape m.mobj.shape op } }) members }
+      Csg { kind; members = List.map (fun (m : Scene.member) -> { m with mobj = { m.mobj with shape = shape m.mobj.shape op; texture = texture m.mobj.texture op } }) members }
 
 (* ---------------------------------------------------------------------------------------------- *)
 (* The whole scene moved: every object, light and the camera scaled by [scale] about the origin and
@@ -146,7 +149,8 @@ let scene ~scale ~translate (s : Scene.t) : Scene.t =
       | Csg { kind; members } -> Scene.Csg { kind; members = List.map (fun (m : Scene.member) -> { m with mobj = obj m.mobj }) members }
       | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ -> shape (shape o.shape scaling) (Translate translate)
     in
-    { o with shape = sh; interior = { o.interior with fade_distance = o.interior.fade_distance *. scale } }
+    let texture = texture (texture o.texture (Scale sv)) (Translate translate) in
+    { o with shape = sh; texture; interior = { o.interior with fade_distance = o.interior.fade_distance *. scale } }
   in
   let light (l : Scene.light) =
     let radius, falloff =

@@ -9,9 +9,13 @@ type op = Translate of Vec.t | Rotate of Vec.t | Scale of Vec.t | Transform of T
 val op_transform : op -> Transform.t
 (** [op_transform op] is the transform [op] stands for (rotations in degrees, §14.2). *)
 
+val texture : Scene.texture -> op -> Scene.texture
+(** [texture t op] is [t] moved by [op]: its pattern pigment's transform gets [op] composed after it
+    (§14.7); a plain colour is unchanged. *)
+
 val shape : Scene.shape -> op -> Scene.shape
 (** [shape s op] is [s] after [op]: baked into a sphere, plane or triangle while it has no
-    transform of its own, composed into its transform otherwise (§14.4). A degenerate triangle
+    transform of its own, composed into its transform otherwise (§14.4); a mesh's face textures move with it. A degenerate triangle
     (or a standalone smooth triangle POV-Ray hides) is left as it is. *)
 
 val scene : scale:float -> translate:Vec.t -> Scene.t -> Scene.t

@@ -1,8 +1,44 @@
 (** The immutable scene: what the interpreter produces and the compile step reads.
     Every value reachable from [t] is immutable. *)
 
-(** A pigment. Only plain colours so far. *)
-type pigment = Solid of Colour.t
+(** A pattern: a function from a point in pattern space to a value (POVRAY-3.7 §17.4–§17.7). *)
+type pattern =
+  | Checker  (** §17.4: 0 or 1 by the parity of the unit cell *)
+  | Gradient of Vec.t  (** §17.5: the direction, normalised when parsed *)
+  | Hexagon  (** §17.6: 0, 1 or 2 in the XZ plane *)
+  | Brick of { size : Vec.t; mortar : float }  (** §17.7: 0 in the mortar, 1 in a brick; [mortar] as stored (m − 2e-10) *)
+
+(** How the wrapped pattern value is shaped before the map lookup (§17.1). *)
+type wave = Ramp | Triangle_wave | Sine_wave | Scallop_wave | Cubic_wave | Poly_wave of float
+
+(** One entry of a colour map: its value (single precision, §17.2) and colour. *)
+type map_entry = { value : float; colour : Colour.t }
+
+(** A pattern pigment: the pattern, its modifiers, its map (entries in the order written, at least
+    one) and its transform (pigment and object transforms composed, §14.7, §17.1). *)
+type patterned = {
+  pattern : pattern;
+  frequency : float;
+  phase : float;
+  wave : wave;
+  map : map_entry array;
+  ptrans : Transform.t option;
+  pigments : pigment_entry array;
+      (** a [pigment_map] or [checker pigment {…}, pigment {…}] (§17.3): when not empty, these
+          entries are looked up instead of [map], their pigments evaluated at the same
+          pattern-space point and blended *)
+}
+
+(** One entry of a pigment map: its value (single precision) and pigment. *)
+and pigment_entry = { pvalue : float; pigment : pigment }
+
+(** A pigment: a plain colour, or a pattern evaluated at each point (§17). *)
+and pigment =
+  | Solid of Colour.t
+  | Pattern of patterned
+  | Solid_placed of { colour : Colour.t; strans : Transform.t }
+      (** a plain colour that was transformed: the same everywhere, but a later edit that gives
+          it a pattern keeps the transform (§17.9) *)
 
 (** [reflection {…}] of a finish (POVRAY-3.7 §5.1). *)
 type reflection = {
@@ -151,8 +187,8 @@ type gamma =
   | Gamma_off  (** legacy scene without assumed_gamma: output = clip(linear) *)
   | Working of float  (** working gamma G (1.0 neutral); the file is sRGB-encoded *)
 
-(** A sky_sphere with plain pigments, listed in the order written (§18.1). *)
-type sky = { sky_pigments : pigment list; sky_emission : Rgb.t }
+(** A sky_sphere: its pigments in the order written, its emission and its own transform (§18.1). *)
+type sky = { sky_pigments : pigment list; sky_emission : Rgb.t; sky_trans : Transform.t option }
 
 (** The whole scene. *)
 type t = {

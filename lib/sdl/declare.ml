@@ -18,6 +18,8 @@ let rec parse_rvalue ?(store = ignore) st : V.t * bool =
   | Ident s when Names.mem object_set s -> (V.Object (parse_object st), false)
   | Ident "pigment" -> advance st; (V.Pigment (parse_pigment st (Scene.Solid Colour.black)), false)
   | Ident "finish" -> advance st; (V.Finish (parse_finish st Defaults.finish), false)
+  | Ident (("color_map" | "colour_map") as kw) -> advance st; (V.Colour_map (parse_colour_map st kw), false)
+  | Ident "pigment_map" -> advance st; (V.Pigment_map (parse_pigment_map st), false)
   | Ident "texture" ->
       advance st;
       let t = parse_texture st st.default_texture in
@@ -35,7 +37,7 @@ let rec parse_rvalue ?(store = ignore) st : V.t * bool =
   | Ident s -> (
       match cur_value st s with
       | Some (V.Object o) -> advance st; (V.Object { o with oloc = loc }, false)
-      | Some ((V.Pigment _ | V.Finish _ | V.Texture _ | V.Interior _ | V.Light _ | V.Camera _ | V.Transform _ | V.Unsupported _) as v) ->
+      | Some ((V.Pigment _ | V.Finish _ | V.Texture _ | V.Interior _ | V.Light _ | V.Camera _ | V.Transform _ | V.Unsupported _ | V.Colour_map _ | V.Pigment_map _) as v) ->
           advance st; (v, false)
       | Some (V.Array a) -> advance st; (V.Array { a with cells = Array.copy a.cells }, false)
       | Some (V.String _) -> (parse_string st, false)

@@ -7,8 +7,6 @@ open Expr
 open Materials
 open Declare
 
-let block_openers = [ "if"; "ifdef"; "ifndef"; "while"; "for"; "switch"; "macro" ]
-
 (* Skip raw tokens of the current frame (a branch not taken, a loop that ends, a macro definition)
    up to the #end at this level, or up to one of [stops] at this level; returns what it stopped at. *)
 let skip st ~stops open_loc what =
@@ -17,7 +15,9 @@ let skip st ~stops open_loc what =
     let t = Lexer.next f.lx in
     match t.kind with
     | Eof -> Error.raise_at open_loc "%s has no matching #end" what
-    | Directive d when List.mem d block_openers -> go (depth + 1)
+    (* the directives that open a block, matched directly rather than searched in a list: skipping
+       is the hot path of a guarded include read again in a loop *)
+    | Directive ("if" | "ifdef" | "ifndef" | "while" | "for" | "switch" | "macro") -> go (depth + 1)
     | Directive "end" -> if depth = 0 then `End else go (depth - 1)
     | Directive d when depth = 0 && List.mem d stops -> `Stop (d, t.loc)
     | _ -> go depth

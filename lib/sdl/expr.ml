@@ -485,20 +485,25 @@ and parse_colour st : Colour.t =
     | v -> Error.raise_at loc "expected a colour but found %s" (V.kind_name v)
   in
   let keyword_seen = ref false in
+  (* one body (rgb…, a colour identifier or an expression) per colour: a second 'color' or rgb…
+     keyword starts the next colour, as in [checker rgb 1 rgb 0] or the old color_map entry
+     [a b color C1 color C2] (checked against POV-Ray) *)
+  let body_seen = ref false in
+  let body () = keyword_seen := true; body_seen := true in
   let rec loop () =
     let loc = peek_loc st in
     match peek st with
-    | Ident ("color" | "colour") -> advance st; keyword_seen := true; loop ()
-    | Ident "rgb" -> advance st; keyword_seen := true; ignore (set_terms loc 3 (parse_expr st)); loop ()
-    | Ident "rgbf" ->
-        advance st; keyword_seen := true;
+    | Ident ("color" | "colour") when not !keyword_seen -> advance st; keyword_seen := true; loop ()
+    | Ident "rgb" when not !body_seen -> advance st; body (); ignore (set_terms loc 3 (parse_expr st)); loop ()
+    | Ident "rgbf" when not !body_seen ->
+        advance st; body ();
         let a = set_terms loc 4 (parse_expr st) in
         c.(3) <- a.(3); loop ()
-    | Ident "rgbt" ->
-        advance st; keyword_seen := true;
+    | Ident "rgbt" when not !body_seen ->
+        advance st; body ();
         let a = set_terms loc 4 (parse_expr st) in
         c.(3) <- 0.; c.(4) <- a.(3); loop ()
-    | Ident "rgbft" -> advance st; keyword_seen := true; ignore (set_terms loc 5 (parse_expr st)); loop ()
+    | Ident "rgbft" when not !body_seen -> advance st; body (); ignore (set_terms loc 5 (parse_expr st)); loop ()
     | Ident (("red" | "green" | "blue" | "filter" | "transmit") as k) ->
         advance st; keyword_seen := true;
         let i = match component_index k with Some i -> i | None -> assert false in
@@ -515,10 +520,10 @@ and parse_colour st : Colour.t =
       keyword_seen := true;
       (match peek st with
       | Ident s when Names.mem colour_set s -> ()
-      | _ -> let loc = peek_loc st in ignore (set_terms loc 5 (parse_expr st)))
+      | _ -> let loc = peek_loc st in ignore (set_terms loc 5 (parse_expr st)); body ())
   | Ident s when not (Names.mem colour_set s) -> (
       match cur_value st s with
-      | Some (V.Colour _) -> let loc = peek_loc st in ignore (set_terms loc 5 (parse_expr st)); keyword_seen := true
+      | Some (V.Colour _) -> let loc = peek_loc st in ignore (set_terms loc 5 (parse_expr st)); body ()
       | _ -> ())
   | _ -> ());
   loop ();

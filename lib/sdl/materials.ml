@@ -11,27 +11,236 @@ let ident_of_kind st f =
   | Ident s -> ( match cur_value st s with Some v -> (match f v with Some r -> advance st; Some r | None -> None) | None -> None)
   | _ -> None
 
-let parse_pigment st (base : Scene.pigment) : Scene.pigment =
-  open_block st "pigment";
+(* color_map { [v COLOUR] … } or color_map { Id } (POVRAY-3.7 §17.3): entries in the order written,
+   the old form [v1 v2 COLOUR1 COLOUR2] giving two; values and colours in single precision. *)
+let parse_colour_map st what : Scene.map_entry array =
+  let loc = peek_loc st in
+  open_block st what;
+  match ident_of_kind st (function V.Colour_map m -> Some m | _ -> None) with
+  | Some m -> close_block st what; m
+  | None ->
+      let colour () =
+        if is_colour_start st then parse_colour st
+        else unexpected st (Printf.sprintf "a colour ('rgb …', 'color …' or a colour identifier) in a %s entry" what)
+      in
+      let rec entries acc n =
+        match peek st with
+        | RBrace -> advance st; List.rev acc
+        | LBracket ->
+            let el = peek_loc st in
+            if n >= 256 then Error.raise_at el "a %s has at most 256 entries" what;
+            advance st;
+            let v = parse_float st in
+            ignore (accept st Comma);
+            let acc, n =
+              if is_colour_start st then (Pigment.f32_entry v (colour ()) :: acc, n + 1)
+              else if float_follows st then begin
+                (* the old two-entry form *)
+                let v2 = parse_float st in
+                ignore (accept st Comma);
+                let c1 = colour () in
+                ignore (accept st Comma);
+                let c2 = colour () in
+                (Pigment.f32_entry v2 c2 :: Pigment.f32_entry v c1 :: acc, n + 2)
+              end
+              else (ignore (colour ()); (acc, n))
+            in
+            expect st RBracket (Printf.sprintf "']' closing a %s entry" what);
+            entries acc n
+        | Ident s when acc = [] && (match cur_value st s with Some (V.Unsupported _) | None -> false | Some _ -> true) ->
+            let v = Option.get (cur_value st s) in
+            Error.raise_at (peek_loc st) "'%s' is %s, not a color_map" s (V.kind_name v)
+        | _ -> unexpected st (Printf.sprintf "'[' starting a %s entry, or '}'" what)
+      in
+      let es = entries [] 0 in
+      if es = [] then Error.raise_at loc "a %s needs at least one entry" what;
+      if List.length es > 256 then Error.raise_at loc "a %s has at most 256 entries" what;
+      Array.of_list es
+
+(* A pigment while it is read: what POV-Ray edits in place (§17.9). [pat] is None for a plain
+   colour; [map] is None until colours or a color_map are given; [pigments] is not empty for a
+   pigment_map or a list of pigments. *)
+type pig = {
+  solid : Colour.t;
+  pat : Scene.pattern option;
+  map : Scene.map_entry array option;
+  pigments : Scene.pigment_entry array;
+  frequency : float;
+  phase : float;
+  wave : Scene.wave;
+  trans : Transform.t option;
+}
+
+let pig_of (p : Scene.pigment) =
+  match p with
+  | Solid c -> { solid = c; pat = None; map = None; pigments = [||]; frequency = 1.; phase = 0.; wave = Ramp; trans = None }
+  | Solid_placed { colour; strans } ->
+      { solid = colour; pat = None; map = None; pigments = [||]; frequency = 1.; phase = 0.; wave = Ramp; trans = Some strans }
+  | Pattern pp ->
+      {
+        solid = Colour.black;
+        pat = Some pp.pattern;
+        map = Some pp.map;
+        pigments = pp.pigments;
+        frequency = pp.frequency;
+        phase = pp.phase;
+        wave = pp.wave;
+        trans = pp.ptrans;
+      }
+
+let pigment_of (g : pig) : Scene.pigment =
+  match g.pat with
+  | None -> ( match g.trans with None -> Solid g.solid | Some strans -> Solid_placed { colour = g.solid; strans })
+  | Some pattern ->
+      let map = match g.map with Some m -> m | None -> Pigment.default_map pattern in
+      Pattern { pattern; frequency = g.frequency; phase = g.phase; wave = g.wave; map; ptrans = g.trans; pigments = g.pigments }
+
+let default_brick = Scene.Brick { size = Vec.make 8. 3. 4.5; mortar = Int32.float_of_bits (Int32.bits_of_float (0.5 -. 2e-10)) }
+
+let f32 x = Int32.float_of_bits (Int32.bits_of_float x)
+
+(* The pigment body read up to [close] ('}' of a pigment block, or ']' of a pigment_map entry),
+   editing [base] (§17.9). *)
+let rec parse_pigment_body st ~close (base : Scene.pigment) : Scene.pigment =
   let p =
     match ident_of_kind st (function V.Pigment p -> Some p | _ -> None) with
     | Some p -> p
     | None -> base
   in
-  let rec loop p =
-    let loc = peek_loc st in
-    match peek st with
-    | RBrace -> advance st; p
-    | Ident s when is_colour_start st -> ignore s; loop (Scene.Solid (parse_colour st))
-    | Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") ->
-        (* a plain colour is the same everywhere: the pattern transform changes nothing yet *)
-        ignore (parse_op st);
-        loop p
-    | Ident ("quick_color" | "quick_colour") -> advance st; ignore (parse_colour st); loop p
-    | Ident s when is_unsupported s -> not_supported loc (Printf.sprintf "'%s' in a pigment" s)
-    | _ -> unexpected st "a colour or '}' in a pigment"
+  (* checker, hexagon and brick: up to [n] colours (commas optional) replacing the first entries of
+     the default map, or [n] pigments { … } (§17.4, §17.6, §17.7) *)
+  let listed (g : pig) pattern n =
+    let g = { g with pat = Some pattern; frequency = 0. (* §17.1: no value wrap *) } in
+    if is_ident st "pigment" then begin
+      let rec go i acc =
+        if i < n && (i = 0 || (ignore (accept st Comma); is_ident st "pigment")) then begin
+          advance st;
+          let pg = parse_pigment st st.default_texture.pigment in
+          go (i + 1) ({ Scene.pvalue = float_of_int i; pigment = pg } :: acc)
+        end
+        else List.rev acc
+      in
+      let given = go 0 [] in
+      (* missing pigments are the default colours *)
+      let defaults = Pigment.default_map pattern in
+      let pigments =
+        Array.init (Array.length defaults) (fun i ->
+            match List.nth_opt given i with
+            | Some e -> e
+            | None -> { Scene.pvalue = float_of_int i; pigment = Solid defaults.(i).colour })
+      in
+      { g with map = None; pigments }
+    end
+    else begin
+      let map = Array.copy (Pigment.default_map pattern) in
+      let rec go i =
+        if i < n then begin
+          if i > 0 then ignore (accept st Comma);
+          if is_colour_start st then begin
+            map.(i) <- Pigment.f32_entry (float_of_int i) (parse_colour st);
+            go (i + 1)
+          end
+        end
+      in
+      go 0;
+      { g with map = Some map; pigments = [||] }
+    end
   in
-  loop p
+  (* POV-Ray reads the colour or pattern first (after an identifier), then only modifiers: a
+     colour or pattern keyword after anything else ends the pigment, an error (checked) *)
+  let first = ref true in
+  let rec loop (g : pig) =
+    let loc = peek_loc st in
+    let item = peek st in
+    let started = not !first in
+    first := false;
+    match item with
+    | k when k == close -> advance st; pigment_of g
+    | Ident s when (is_colour_start st || List.mem s [ "checker"; "hexagon"; "brick"; "gradient" ]) && started ->
+        Error.raise_at loc "expected %s but found '%s': the colour or pattern comes first in a %s"
+          (if close == RBrace then "'}' closing the pigment" else "']' closing the pigment_map entry")
+          s
+          (if close == RBrace then "pigment" else "pigment_map entry")
+    | Ident s when is_colour_start st -> ignore s; loop { g with solid = parse_colour st; pat = None; map = None; pigments = [||] }
+    | Ident "checker" -> advance st; loop (listed g Checker 2)
+    | Ident "hexagon" -> advance st; loop (listed g Hexagon 3)
+    | Ident "brick" -> advance st; loop (listed g default_brick 2)
+    | Ident "gradient" ->
+        advance st;
+        let vl = peek_loc st in
+        let v = parse_vector st in
+        (* §17.5: the direction is normalised when parsed *)
+        if Vec.length v = 0. then Error.raise_at vl "the gradient vector is <0,0,0>";
+        loop { g with pat = Some (Gradient (Vec.normalize v)); map = None; pigments = [||] }
+    | Ident "brick_size" -> (
+        advance st;
+        let v = parse_vector st in
+        match g.pat with
+        | Some (Brick b) -> loop { g with pat = Some (Brick { b with size = v }) }
+        | Some (Checker | Gradient _ | Hexagon) | None -> Error.raise_at loc "'brick_size' is only valid in a brick pattern")
+    | Ident "mortar" -> (
+        advance st;
+        let m = parse_float st in
+        match g.pat with
+        | Some (Brick b) -> loop { g with pat = Some (Brick { b with mortar = f32 (m -. 2e-10) }) }
+        | Some (Checker | Gradient _ | Hexagon) | None -> Error.raise_at loc "'mortar' is only valid in a brick pattern")
+    | Ident (("color_map" | "colour_map") as kw) -> (
+        advance st;
+        match g.pat with
+        | Some (Checker | Hexagon | Brick _) -> Error.raise_at loc "cannot use %s with this pattern type" kw
+        | Some (Gradient _) | None -> loop { g with map = Some (parse_colour_map st kw); pigments = [||] })
+    | Ident "pigment_map" -> (
+        advance st;
+        match g.pat with
+        | Some (Checker | Hexagon | Brick _) -> Error.raise_at loc "cannot use pigment_map with this pattern type"
+        | Some (Gradient _) | None -> loop { g with pigments = parse_pigment_map st })
+    (* §17.1: frequency, phase, the poly_wave exponent and the mortar are stored in single precision *)
+    | Ident "frequency" -> advance st; loop { g with frequency = f32 (parse_float st) }
+    | Ident "phase" -> advance st; loop { g with phase = f32 (parse_float st) }
+    | Ident "ramp_wave" -> advance st; loop { g with wave = Ramp }
+    | Ident "triangle_wave" -> advance st; loop { g with wave = Triangle_wave }
+    | Ident "sine_wave" -> advance st; loop { g with wave = Sine_wave }
+    | Ident "scallop_wave" -> advance st; loop { g with wave = Scallop_wave }
+    | Ident "cubic_wave" -> advance st; loop { g with wave = Cubic_wave }
+    | Ident "poly_wave" -> advance st; loop { g with wave = Poly_wave (if float_follows st then f32 (parse_float st) else 1.) }
+    | Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") ->
+        (* §17.1: pigment transforms compose into the pigment's own transform *)
+        let t = Place.op_transform (parse_op st) in
+        loop { g with trans = Some (Transform.compose (Option.value g.trans ~default:Transform.identity) t) }
+    | Ident ("quick_color" | "quick_colour") -> advance st; ignore (parse_colour st); loop g
+    | Ident ("noise_generator" as s) -> not_supported loc (Printf.sprintf "'%s' in a pigment" s)
+    | Ident s when is_unsupported s -> not_supported loc (Printf.sprintf "'%s' in a pigment" s)
+    | _ -> unexpected st (if close == RBrace then "a colour, a pattern or '}' in a pigment" else "a colour, a pattern or ']' in a pigment_map entry")
+  in
+  loop (pig_of p)
+
+(* pigment_map { [v PIGMENT_BODY] … } (§17.3): entries in the order written, values single precision. *)
+and parse_pigment_map st : Scene.pigment_entry array =
+  let loc = peek_loc st in
+  open_block st "pigment_map";
+  match ident_of_kind st (function V.Pigment_map m -> Some m | _ -> None) with
+  | Some m -> close_block st "pigment_map"; m
+  | None ->
+      let rec entries acc n =
+        match peek st with
+        | RBrace -> advance st; List.rev acc
+        | LBracket ->
+            let el = peek_loc st in
+            if n >= 256 then Error.raise_at el "a pigment_map has at most 256 entries";
+            advance st;
+            let v = parse_float st in
+            ignore (accept st Comma);
+            let pg = parse_pigment_body st ~close:RBracket st.default_texture.pigment in
+            entries ({ Scene.pvalue = f32 v; pigment = pg } :: acc) (n + 1)
+        | _ -> unexpected st "'[' starting a pigment_map entry, or '}'"
+      in
+      let es = entries [] 0 in
+      if es = [] then Error.raise_at loc "a pigment_map needs at least one entry";
+      Array.of_list es
+
+and parse_pigment st (base : Scene.pigment) : Scene.pigment =
+  open_block st "pigment";
+  parse_pigment_body st ~close:RBrace base
 
 let parse_reflection_block st (r : Scene.reflection) : Scene.reflection =
   (* reflection { MIN [, MAX] [fresnel [b]] [falloff F] [exponent E] [metallic [M]] } (§5.1) *)
@@ -129,7 +338,7 @@ let parse_texture st (base : Scene.texture) : Scene.texture =
     | RBrace -> advance st; t
     | Ident "pigment" -> advance st; loop { t with pigment = parse_pigment st t.pigment }
     | Ident "finish" -> advance st; loop { t with finish = parse_finish st t.finish }
-    | Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") -> ignore (parse_op st); loop t
+    | Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") -> loop (Place.texture t (parse_op st))
     | Ident s when is_unsupported s -> not_supported loc (Printf.sprintf "'%s' in a texture" s)
     | _ -> unexpected st "'pigment', 'finish' or '}' in a texture"
   in

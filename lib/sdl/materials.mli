@@ -3,6 +3,13 @@
 val ident_of_kind : Reader.st -> (Value.t -> 'a option) -> 'a option
 (** [ident_of_kind st f] consumes an identifier whose value [f] accepts, and returns [f]'s result. *)
 
+val parse_colour_map : Reader.st -> string -> Scene.map_entry array
+(** [parse_colour_map st kw] reads the block of a [color_map] (written [kw]) after the keyword. *)
+
+val parse_pigment_map : Reader.st -> Scene.pigment_entry array
+(** [parse_pigment_map st] reads the block of a [pigment_map] after the keyword: entries, or a
+    declared map's identifier. *)
+
 val parse_pigment : Reader.st -> Scene.pigment -> Scene.pigment
 (** [parse_pigment st base] reads a pigment block that modifies [base]. *)
 

@@ -23,10 +23,12 @@ let rec set_double_illuminate b (o : V.obj) =
       let member = function V.Member_obj c -> V.Member_obj (set_double_illuminate b c) | V.Member_light _ as m -> m in
       { o with double_illuminate = b; shape = Csg { c with members = List.map member c.members } }
 
+(* §14.7: an object's texture, if it has one yet, moves with it; members' textures with them *)
 let rec move_obj op (o : V.obj) =
+  let texture = Option.map (fun t -> Place.texture t op) o.texture in
   match o.shape with
-  | Prim s -> { o with shape = Prim (move_shape op s) }
-  | Csg c -> { o with shape = Csg { c with members = List.map (move_member op) c.members } }
+  | Prim s -> { o with shape = Prim (move_shape op s); texture }
+  | Csg c -> { o with shape = Csg { c with members = List.map (move_member op) c.members }; texture }
 
 and move_member op = function
   | V.Member_obj o -> V.Member_obj (move_obj op o)
@@ -343,7 +345,7 @@ let parse_texture_in_block st =
 
 (* Values povml cannot make yet; a declaration of one is kept as [V.Unsupported]. *)
 let unsupported_rvalues =
-  [ "material"; "normal"; "color_map"; "colour_map"; "pigment_map"; "normal_map"; "texture_map"; "slope_map";
+  [ "material"; "normal"; "normal_map"; "texture_map"; "slope_map";
     "function"; "spline"; "media"; "density"; "fog"; "rainbow"; "sky_sphere"; "isosurface" ]
 
 let unsupported_rvalue_set = set_of (unsupported_objects @ unsupported_rvalues)

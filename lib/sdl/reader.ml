@@ -114,22 +114,29 @@ let keywords =
     "uv_indices"; "inside_vector"; "box"; "no_image"; "no_reflection"; "double_illuminate"; "spotlight";
     "parallel"; "point_at"; "radius"; "tightness"; "orthographic"; "looks_like"; "cylinder"; "cone"; "disc";
     "open"; "torus"; "union"; "merge"; "intersection"; "difference"; "inverse"; "split_union"; "clipped_by" ]
+  (* pigment patterns (POVRAY-3.7 §17) *)
+  @ [ "checker"; "gradient"; "hexagon"; "brick"; "brick_size"; "mortar"; "color_map"; "colour_map"; "frequency";
+      "phase"; "ramp_wave"; "triangle_wave"; "sine_wave"; "scallop_wave"; "cubic_wave"; "poly_wave"; "pigment_map" ]
 
 (* POV-Ray keywords that a later povml will read; meeting one is a located "not supported yet". *)
 let unsupported =
   [ "polygon";
     "prism"; "lathe"; "sor"; "blob"; "text"; "height_field"; "isosurface"; "superellipsoid"; "julia_fractal";
     "parametric"; "bicubic_patch"; "ovus"; "quadric"; "cubic"; "quartic"; "poly"; "rotate"; "scale"; "matrix"; "transform";
-    "normal"; "material"; "checker"; "gradient"; "hexagon"; "brick"; "image_map";
+    "normal"; "material"; "image_map";
     "bozo"; "marble"; "wood"; "agate"; "granite"; "spotted"; "leopard"; "onion"; "radial"; "spiral1";
-    "spiral2"; "ripples"; "waves"; "wrinkles"; "bumps"; "dents"; "crackle"; "color_map"; "colour_map";
-    "pigment_map"; "texture_map"; "area_light";
+    "spiral2"; "ripples"; "waves"; "wrinkles"; "bumps"; "dents"; "crackle";
+    "texture_map"; "area_light";
     "projected_through"; "fisheye"; "panoramic"; "ultra_wide_angle"; "omnimax";
     "cylindrical"; "spherical"; "aperture"; "focal_point"; "blur_samples"; "radiosity"; "photons";
     "media"; "fog"; "rainbow"; "irid"; "crand"; "dispersion"; "dispersion_samples"; "caustics";
     "bounded_by"; "uv_mapping"; "srgb"; "srgbf"; "srgbt"; "srgbft"; "subsurface";
     "interior_texture"; "light_group"; "no_radiosity"; "cutaway_textures"; "sturm";
     "phong_albedo"; "metallic_albedo"; "translucency" ]
+  (* patterns and pattern modifiers not read yet (POVRAY-3.7 §17) *)
+  @ [ "turbulence"; "octaves"; "omega"; "lambda"; "warp"; "agate_turb"; "mandel"; "julia"; "magnet"; "quilted";
+      "control0"; "control1"; "tiling"; "pavement"; "square"; "triangular"; "facets"; "cells"; "boxed"; "planar";
+      "aoi"; "slope"; "pigment_pattern"; "image_pattern"; "density_file"; "average"; "object_pattern"; "color_list" ]
 
 let set_of l =
   let h = Names.create 64 in

@@ -130,20 +130,24 @@ let parse_sky_sphere st =
   advance st;
   open_block st "sky_sphere";
   if st.sky <> None then warn st loc "a second sky_sphere replaces the first";
-  let rec loop pigs emission =
+  (* §18.1: the sky's transforms compose into its own transform, which the lookup point goes
+     through before each pigment's *)
+  let rec loop pigs emission trans =
     let l = peek_loc st in
     match peek st with
     | RBrace ->
         advance st;
         if pigs = [] then Error.raise_at loc "a sky_sphere needs at least one pigment";
-        { Scene.sky_pigments = List.rev pigs; sky_emission = emission }
-    | Ident "pigment" -> advance st; loop (parse_pigment st (Scene.Solid Colour.black) :: pigs) emission
-    | Ident "emission" -> advance st; loop pigs (parse_rgb st "sky_sphere emission")
-    | Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") -> ignore (parse_op st); loop pigs emission
+        { Scene.sky_pigments = List.rev pigs; sky_emission = emission; sky_trans = trans }
+    | Ident "pigment" -> advance st; loop (parse_pigment st (Scene.Solid Colour.black) :: pigs) emission trans
+    | Ident "emission" -> advance st; loop pigs (parse_rgb st "sky_sphere emission") trans
+    | Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") ->
+        let op = Place.op_transform (parse_op st) in
+        loop pigs emission (Some (Transform.compose (Option.value trans ~default:Transform.identity) op))
     | Ident s when is_unsupported s -> not_supported l (Printf.sprintf "'%s' in a sky_sphere" s)
     | _ -> unexpected st "'pigment' or '}' in a sky_sphere"
   in
-  st.sky <- Some (loop [] Rgb.white)
+  st.sky <- Some (loop [] Rgb.white None)
 
 (* §8.1: the version POV-Ray's renderer sees so far: 3.62 until a #version has been read. *)
 let effective_version st = if st.version_set then st.version else 362

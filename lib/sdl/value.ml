@@ -61,6 +61,8 @@ type t =
   | Unsupported of { what : string; at : Loc.t }
       (** a declaration that uses a feature povml cannot render yet: an error only where it is used *)
   | File of user_file  (** the identifier [#fopen] declares *)
+  | Colour_map of Scene.map_entry array  (** a declared [color_map] (POVRAY-3.7 §17.3) *)
+  | Pigment_map of Scene.pigment_entry array  (** a declared [pigment_map] (§17.3) *)
 
 (** An array: its dimensions and its elements in row-major order, [None] until assigned. *)
 and array_v = { dims : int array; cells : t option array }
@@ -82,18 +84,20 @@ let kind_name = function
   | Transform _ -> "a transform"
   | Unsupported u -> Printf.sprintf "a value that uses %s" u.what
   | File f -> Printf.sprintf "the file \"%s\" opened by #fopen" f.path
+  | Colour_map _ -> "a color_map"
+  | Pigment_map _ -> "a pigment_map"
 
 let terms = function
   | Float _ -> 1
   | Vector a | Colour a -> Array.length a
-  | String _ | Pigment _ | Finish _ | Texture _ | Interior _ | Object _ | Light _ | Camera _ | Array _ | Macro _ | Transform _ | Unsupported _ | File _ -> 0
+  | String _ | Pigment _ | Finish _ | Texture _ | Interior _ | Object _ | Light _ | Camera _ | Array _ | Macro _ | Transform _ | Unsupported _ | File _ | Colour_map _ | Pigment_map _ -> 0
 
 (* POVRAY-3.7 §11.2: a float is replicated into every term, a shorter vector is padded with zeros. *)
 let promote v n =
   match v with
   | Float f -> Array.make n f
   | Vector a | Colour a -> Array.init n (fun i -> if i < Array.length a then a.(i) else 0.)
-  | String _ | Pigment _ | Finish _ | Texture _ | Interior _ | Object _ | Light _ | Camera _ | Array _ | Macro _ | Transform _ | Unsupported _ | File _ -> invalid_arg "Value.promote"
+  | String _ | Pigment _ | Finish _ | Texture _ | Interior _ | Object _ | Light _ | Camera _ | Array _ | Macro _ | Transform _ | Unsupported _ | File _ | Colour_map _ | Pigment_map _ -> invalid_arg "Value.promote"
 
 let numeric v = terms v > 0
 
@@ -112,4 +116,4 @@ let map f = function
   | Float x -> Some (Float (f x))
   | Vector a -> Some (Vector (Array.map f a))
   | Colour a -> Some (Colour (Array.map f a))
-  | String _ | Pigment _ | Finish _ | Texture _ | Interior _ | Object _ | Light _ | Camera _ | Array _ | Macro _ | Transform _ | Unsupported _ | File _ -> None
+  | String _ | Pigment _ | Finish _ | Texture _ | Interior _ | Object _ | Light _ | Camera _ | Array _ | Macro _ | Transform _ | Unsupported _ | File _ | Colour_map _ | Pigment_map _ -> None

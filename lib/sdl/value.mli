@@ -64,6 +64,8 @@ type t =
   | Unsupported of { what : string; at : Loc.t }
       (** a declaration that uses a feature povml cannot render yet: an error only where it is used *)
   | File of user_file  (** the identifier [#fopen] declares *)
+  | Colour_map of Scene.map_entry array  (** a declared [color_map] (POVRAY-3.7 §17.3) *)
+  | Pigment_map of Scene.pigment_entry array  (** a declared [pigment_map] (§17.3) *)
 
 (** An array: its dimensions and its elements in row-major order, [None] until assigned. *)
 and array_v = { dims : int array; cells : t option array }

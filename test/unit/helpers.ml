@@ -61,7 +61,7 @@ let sphere_of (o : Scene.obj) =
 let plane_of (o : Scene.obj) =
   match o.shape with Plane { normal; offset; _ } -> (normal, offset) | Sphere _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Csg _ -> Alcotest.fail "expected a plane"
 
-let pigment_of (o : Scene.obj) = match o.texture.pigment with Solid c -> c
+let pigment_of (o : Scene.obj) = match o.texture.pigment with Solid c | Solid_placed { colour = c; _ } -> c | Pattern _ -> Alcotest.fail "a pattern pigment"
 
 (* Tracing one ray through a scene given as text. *)
 let compile text = Compile.scene (scene text)

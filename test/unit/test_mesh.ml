@@ -226,8 +226,8 @@ let test_inside_scene () =
 
 (* ---- textures ---- *)
 
-let red_of (t : Scene.texture) = match t.pigment with Solid c -> c.red
-let green_of (t : Scene.texture) = match t.pigment with Solid c -> c.green
+let red_of (t : Scene.texture) = match t.pigment with Solid c | Solid_placed { colour = c; _ } -> c.red | Pattern _ -> nan
+let green_of (t : Scene.texture) = match t.pigment with Solid c | Solid_placed { colour = c; _ } -> c.green | Pattern _ -> nan
 
 let test_textures () =
   let m, _, textures =

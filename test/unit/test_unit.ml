@@ -24,6 +24,7 @@ let () =
       ("Polysolv", Test_polysolv.tests);
       ("Torus", Test_torus.tests);
       ("CSG", Test_csg.tests);
+      ("Patterns", Test_patterns.tests);
       ("Trace", Test_trace.tests);
       ("Render", Test_render.tests);
       ("Jitter", Test_jitter.tests);
