@@ -513,6 +513,10 @@ let[@inline] replaces ctx ob t best cur (o : Vec.t) (d : Vec.t) =
     let tol = tie_tolerance o best in
     t < best -. tol || (t <= best +. tol && ob.id < cur)
 
+(* the slab test's min and max (as the hierarchy's: no −0 or NaN ordering, no C call) *)
+let[@inline] fmin (a : float) b = if a < b then a else b
+let[@inline] fmax (a : float) b = if a > b then a else b
+
 (* The nearest object of [g] hit at a depth in [lo, hi): its id, or −1. Its depth is left in
    [ctx.depth.(0)] and, for a mesh, its face in [ctx.sub.(0)]. Of equal depths the one POV-Ray
    meets first wins ([wins_tie]); in the robust mode, of depths within rounding of each other the
@@ -528,7 +532,8 @@ let nearest ctx (g : group) (o : Vec.t) (d : Vec.t) lo hi =
     end
   in
   Array.iter try_obj g.unbounded;
-  let sp = g.spheres in
+  let sp = g.spheres and bx = g.boxes in
+  let idx = Bvh.recip d.x and idy = Bvh.recip d.y and idz = Bvh.recip d.z in
   if g.bvh.nodes > 0 then
     Bvh.walk g.bvh ctx.stack o.x o.y o.z d.x d.y d.z hi (fun i ->
         let r2 = Array.unsafe_get sp ((4 * i) + 3) in
@@ -541,7 +546,22 @@ let nearest ctx (g : group) (o : Vec.t) (d : Vec.t) lo hi =
             sub := -1
           end
         end
-        else try_obj g.bounded.(i);
+        else begin
+          let b = 6 * i in
+          let x0 = Array.unsafe_get bx b in
+          if x0 <> x0 then try_obj g.bounded.(i)
+          else begin
+            (* a costly shape is tried only when the ray meets its own box before the limit, as
+               it would meet the box of a leaf holding the shape alone *)
+            let lim = if ctx.robust && !id >= 0 then !best +. tie_tolerance o !best else !best in
+            let tx0 = (x0 -. o.x) *. idx and tx1 = (Array.unsafe_get bx (b + 3) -. o.x) *. idx in
+            let ty0 = (Array.unsafe_get bx (b + 1) -. o.y) *. idy and ty1 = (Array.unsafe_get bx (b + 4) -. o.y) *. idy in
+            let tz0 = (Array.unsafe_get bx (b + 2) -. o.z) *. idz and tz1 = (Array.unsafe_get bx (b + 5) -. o.z) *. idz in
+            let near = fmax (fmax (fmin tx0 tx1) (fmin ty0 ty1)) (fmax (fmin tz0 tz1) 0.) in
+            let far = fmin (fmin (fmax tx0 tx1) (fmax ty0 ty1)) (fmin (fmax tz0 tz1) lim) in
+            if near <= far then try_obj g.bounded.(i)
+          end
+        end;
         (* the robust mode still looks for ties just beyond the best depth *)
         if ctx.robust && !id >= 0 then !best +. tie_tolerance o !best else !best);
   ctx.depth.(0) <- !best;
