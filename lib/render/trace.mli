@@ -17,10 +17,12 @@ type ctx = {
   shadow_cache : int array;
   hits : float array;
   torus : Torus.work;
+  near : float array;
 }
 (** What a trace reads: the compiled scene, the worker's statistics, scratch space (the last
     hit's depth and mesh face, traversal stacks) and POV-Ray's shadow cache (§4: per light, the
-    opaque object that last blocked it) and room for a torus's quartic, all private to one worker; and the mode's limits: the
+    opaque object that last blocked it), room for a torus's quartic and for the nearest-hit search
+    (best depth, reciprocal direction), all private to one worker; and the mode's limits: the
     depths shapes accept, the nearest depth any ray accepts (1e-4, §2.1), and whether secondary
     rays leave from points lifted off the surface (robust mode). *)
 
