@@ -244,6 +244,17 @@ let group objs =
   let bvh, perm = Bvh.renumber (Bvh.build boxes) in
   let objs = Array.of_list bounded in
   let bounded = Array.map (fun i -> objs.(i)) perm in
+  (* each costly shape's own box, stored as the hierarchy stores a leaf's (widened, single
+     precision), in leaf order *)
+  let own = Bvh.create_boxes (Array.length bounded) in
+  Array.iteri (fun i o -> let b = Option.get (bounds o.shape) in Bvh.set_box own i b.(0) b.(1) b.(2) b.(3) b.(4) b.(5)) bounded;
+  let boxes = Array.make (6 * Array.length bounded) nan in
+  Array.iteri
+    (fun i o ->
+      match o.shape with
+      | Ellipsoid _ | Box_trans _ | Cone _ | Disc _ | Torus _ -> for k = 0 to 5 do boxes.((6 * i) + k) <- Bigarray.Array1.get own ((6 * i) + k) done
+      | Sphere _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Csg _ -> ())
+    bounded;
   let spheres = Array.make (4 * Array.length bounded) nan in
   Array.iteri
     (fun i o ->
@@ -251,7 +262,7 @@ let group objs =
       | Sphere s -> spheres.(4 * i) <- s.cx; spheres.((4 * i) + 1) <- s.cy; spheres.((4 * i) + 2) <- s.cz; spheres.((4 * i) + 3) <- s.r2
       | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Csg _ -> ())
     bounded;
-  { unbounded = Array.of_list unbounded; bounded; bvh; spheres }
+  { unbounded = Array.of_list unbounded; bounded; bvh; spheres; boxes }
 
 (* POV-Ray stores colours in single precision (§8.3); rounding the stored values the same way keeps
    results on the same side of the 8-bit rounding boundaries. *)

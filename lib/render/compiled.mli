@@ -161,6 +161,10 @@ type group = {
   spheres : float array;
       (** 4 per bounded object: a sphere's centre and radius², tested without touching the object
           record; radius² is nan for other shapes *)
+  boxes : float array;
+      (** 6 per bounded object: the box of a shape costlier to test than a box (ellipsoid,
+          transformed box, cone, disc, torus), as its hierarchy leaf would hold it alone (min x, y,
+          z, max x, y, z), met by a ray before the shape itself is tried; nan for other shapes *)
 }
 
 type t = {

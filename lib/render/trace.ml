@@ -30,6 +30,7 @@ type ctx = {
   leaf : int array;  (* scratch: the member hit in a CSG *)
   qhits : float array;  (* scratch: every hit of one cylinder, cone or disc, as (depth, part) pairs *)
   torus : Torus.work;  (* room for a torus's quartic and its roots *)
+  near : float array;  (* scratch of [nearest]: the best depth so far, the ray's reciprocal direction *)
 }
 
 (* Room for the hits of a CSG's members: [hit_width] floats per hit (depth, sub, leaf id, and the
@@ -61,6 +62,7 @@ let make_ctx ?(robust = false) scene stats =
     leaf = [| -1 |];
     qhits = Array.make max_hits 0.;
     torus = Torus.create_work ();
+    near = Array.make 4 0.;
   }
 let black = { r = 0.; g = 0.; b = 0.; tr = 0. }
 
@@ -775,39 +777,67 @@ let[@inline] replaces ctx ob t best cur (o : Vec.t) (d : Vec.t) =
     let tol = tie_tolerance o best in
     t < best -. tol || (t <= best +. tol && ob.id < cur)
 
+(* the slab test's min and max (as the hierarchy's: no −0 or NaN ordering, no C call) *)
+let[@inline] fmin (a : float) b = if a < b then a else b
+let[@inline] fmax (a : float) b = if a > b then a else b
+let[@inline] recip x = if x = 0. then 1e300 else 1. /. x
+
 (* The nearest object of [g] hit at a depth in [lo, hi): its id, or −1. Its depth is left in
    [ctx.depth.(0)] and, for a mesh, its face in [ctx.sub.(0)]. Of equal depths the one POV-Ray
    meets first wins ([wins_tie]); in the robust mode, of depths within rounding of each other the
    one written first. *)
 let nearest ctx (g : group) (o : Vec.t) (d : Vec.t) lo hi =
-  let best = ref hi and id = ref (-1) and sub = ref (-1) in
+  (* the best depth and the reciprocal direction live in [ctx.near], unboxed *)
+  let nr = ctx.near in
+  nr.(0) <- hi;
+  let id = ref (-1) and sub = ref (-1) in
   let try_obj ob =
     let t = hit_shape ctx ob.shape o d lo in
-    if replaces ctx ob t !best !id o d then begin
-      best := t;
+    if replaces ctx ob t nr.(0) !id o d then begin
+      nr.(0) <- t;
       (* a CSG reports the member hit *)
       id := (match ob.shape with Csg _ -> ctx.leaf.(0) | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ -> ob.id);
       sub := ctx.sub.(0)
     end
   in
   Array.iter try_obj g.unbounded;
-  let sp = g.spheres in
+  let sp = g.spheres and bx = g.boxes in
+  nr.(1) <- recip d.x;
+  nr.(2) <- recip d.y;
+  nr.(3) <- recip d.z;
   if g.bvh.nodes > 0 then
     Bvh.walk g.bvh ctx.stack o.x o.y o.z d.x d.y d.z hi (fun i ->
         let r2 = Array.unsafe_get sp ((4 * i) + 3) in
         if r2 = r2 then begin
           (* a sphere, straight from the flat array *)
           let t = sphere_depth ctx.stats ctx.lim (Array.unsafe_get sp (4 * i)) (Array.unsafe_get sp ((4 * i) + 1)) (Array.unsafe_get sp ((4 * i) + 2)) r2 o d lo in
-          if replaces ctx (Array.unsafe_get g.bounded i) t !best !id o d then begin
-            best := t;
+          if replaces ctx (Array.unsafe_get g.bounded i) t nr.(0) !id o d then begin
+            nr.(0) <- t;
             id := (Array.unsafe_get g.bounded i).id;
             sub := -1
           end
         end
-        else try_obj g.bounded.(i);
+        else begin
+          let b = 6 * i in
+          let x0 = Array.unsafe_get bx b in
+          if x0 <> x0 then try_obj g.bounded.(i)
+          else begin
+            (* a costly shape is tried only when the ray meets its own box before the limit, as
+               it would meet the box of a leaf holding the shape alone *)
+            let best = nr.(0) in
+            let lim = if ctx.robust && !id >= 0 then best +. tie_tolerance o best else best in
+            let idx = nr.(1) and idy = nr.(2) and idz = nr.(3) in
+            let tx0 = (x0 -. o.x) *. idx and tx1 = (Array.unsafe_get bx (b + 3) -. o.x) *. idx in
+            let ty0 = (Array.unsafe_get bx (b + 1) -. o.y) *. idy and ty1 = (Array.unsafe_get bx (b + 4) -. o.y) *. idy in
+            let tz0 = (Array.unsafe_get bx (b + 2) -. o.z) *. idz and tz1 = (Array.unsafe_get bx (b + 5) -. o.z) *. idz in
+            let near = fmax (fmax (fmin tx0 tx1) (fmin ty0 ty1)) (fmax (fmin tz0 tz1) 0.) in
+            let far = fmin (fmin (fmax tx0 tx1) (fmax ty0 ty1)) (fmin (fmax tz0 tz1) lim) in
+            if near <= far then try_obj g.bounded.(i)
+          end
+        end;
         (* the robust mode still looks for ties just beyond the best depth *)
-        if ctx.robust && !id >= 0 then !best +. tie_tolerance o !best else !best);
-  ctx.depth.(0) <- !best;
+        if ctx.robust && !id >= 0 then nr.(0) +. tie_tolerance o nr.(0) else nr.(0));
+  ctx.depth.(0) <- nr.(0);
   ctx.sub.(0) <- !sub;
   !id
 

@@ -6,7 +6,9 @@
 #
 # The large scenes are generated into scenes/bench/generated/ by the generators in
 # scenes/bench/gen/ (a 1,000,000-triangle mesh2 terrain, a 100,000-smooth-triangle mesh, sphere
-# fields). RUNS (default 3) and THREADS (default 2) can be set in the environment.
+# fields, a field of mixed shapes: boxes, cylinders, cones, discs, tori). RUNS (default 3) and
+# THREADS (default 2) can be set in the environment; ONLY=PATTERN runs only the cases whose scene
+# path contains PATTERN (e.g. ONLY=shapes).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 RUNS=${RUNS:-3}
@@ -23,6 +25,7 @@ tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 [ -f "$OUT/terrain.pov" ] || "$GEN/gen_terrain.exe" "$OUT/terrain.pov"
 [ -f "$OUT/smooth.pov" ] || "$GEN/gen_smooth.exe" "$OUT/smooth.pov"
 for n in 1000 10000 100000; do [ -f "$OUT/spheres_$n.pov" ] || "$GEN/gen_spheres.exe" "$OUT/spheres_$n.pov" "$n"; done
+[ -f "$OUT/shapes_2000.pov" ] || "$GEN/gen_shapes.exe" "$OUT/shapes_2000.pov" 2000
 
 # scene|switches
 CASES=(
@@ -33,6 +36,8 @@ CASES=(
   "$OUT/spheres_10000.pov|+W640 +H480 -A"
   "$OUT/spheres_100000.pov|+W640 +H480 -A"
   "scenes/bench/while_spheres.pov|+W640 +H480 -A"
+  "$OUT/shapes_2000.pov|+W640 +H480 -A"
+  "$OUT/shapes_2000.pov|+W640 +H480 +A0.3"
 )
 
 median() { sort -g | awk '{a[NR]=$1} END {if (NR%2) print a[(NR+1)/2]; else printf "%.4f\n", (a[NR/2]+a[NR/2+1])/2}'; }
@@ -55,6 +60,7 @@ printf '| scene | switches | | parse s | build s | render s | total s | peak MB 
 printf '|---|---|---|---:|---:|---:|---:|---:|---:|\n'
 for c in "${CASES[@]}"; do
   scene=${c%%|*}; sw=${c#*|}
+  case $scene in *"${ONLY:-}"*) ;; *) continue ;; esac
   # shellcheck disable=SC2086
   measure "$tmp/ml" "Parse Time" "Bounding Time" "Render Time" $POVML +I"$scene" +O"$tmp/ml.png" $sw -D +WT"$THREADS"
   # shellcheck disable=SC2086
@@ -70,6 +76,7 @@ done
 echo
 echo "median of $RUNS runs each, $THREADS threads, $(nproc) cores; ratio = povml / POV-Ray total wall time (below 1.00: povml is faster)."
 echo "povml's parse time includes building each mesh's hierarchy; its build time is the compile step (the scene's hierarchy)."
+[ -f "$tmp/series" ] || exit 0
 echo
 echo "Render time against the number of spheres (640x480, fixed image):"
 echo

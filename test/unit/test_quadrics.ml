@@ -294,6 +294,32 @@ let test_stats () =
   Alcotest.(check int) "disc tests" 2 ctx.stats.disc_tests;
   Alcotest.(check int) "disc hits" 1 ctx.stats.disc_hits
 
+let test_own_box () =
+  (* four cylinders along y at x = −3, −1, 1, 3 (radius 0.4) share one leaf of the scene's
+     hierarchy (leaves hold up to 4), whose box spans x in [−3.4, 3.4]; each is tried only when
+     the ray meets its own box, x in [x − 0.4, x + 0.4], y in [0, 1], z in [−0.4, 0.4] *)
+  let c =
+    compile
+      (v37 ^ "cylinder { <-3,0,0>, <-3,1,0>, 0.4 }\ncylinder { <-1,0,0>, <-1,1,0>, 0.4 }\n"
+     ^ "cylinder { <1,0,0>, <1,1,0>, 0.4 }\ncylinder { <3,0,0>, <3,1,0>, 0.4 }\n")
+  in
+  let run o d =
+    let ctx = Trace.make_ctx c (Stats.create ()) in
+    ignore (Trace.trace ctx ~level:0 ~weight:1. ~interiors:[] ~continued:false o d);
+    (ctx.stats.cone_tests, ctx.stats.cone_hits)
+  in
+  (* x = 0 lies in the leaf's box between the boxes of the cylinders at −1 and 1 *)
+  Alcotest.(check (pair int int)) "through the gap" (0, 0) (run (v 0. 0.5 (-5.)) (v 0. 0. 1.));
+  (* x = 1: only that cylinder's box is met *)
+  Alcotest.(check (pair int int)) "on the cylinder at x = 1" (1, 1) (run (v 1. 0.5 (-5.)) (v 0. 0. 1.));
+  (* along x at y = 0.5, z = 0: all four boxes are met; the nearest (x = −3, front at −3.4) is
+     hit first, and the other boxes, beyond it, are not tried *)
+  Alcotest.(check (pair int int)) "along the row" (1, 1) (run (v (-10.) 0.5 0.) (v 1. 0. 0.));
+  (* grazing the top face of the boxes (y = 1 exactly) at x = 1: the box is met, the cylinder's
+     cap is touched at its rim *)
+  let tests, _ = run (v 1. 1. (-5.)) (v 0. 0. 1.) in
+  Alcotest.(check int) "on the box face" 1 tests
+
 let tests =
   [
     Alcotest.test_case "cylinder set-up" `Quick test_cylinder_setup;
@@ -308,4 +334,5 @@ let tests =
     Alcotest.test_case "order of the camera's interiors" `Quick test_camera_order;
     Alcotest.test_case "errors" `Quick test_errors;
     Alcotest.test_case "statistics" `Quick test_stats;
+    Alcotest.test_case "a shape's own box before the shape" `Quick test_own_box;
   ]
