@@ -7,17 +7,12 @@
    direction (sines, no randomness); each vertex normal is the true surface normal, computed from
    central differences of that function, so normals agree across the cube-face seams. *)
 
+open Gen_common
+
 let usage () =
   prerr_endline "usage: gen_smooth OUT.pov [K]   (12 K^2 smooth triangles, K >= 1, default 91)";
   exit 2
 
-let fmt x =
-  let s = Printf.sprintf "%.4f" x in
-  let i = ref (String.length s - 1) in
-  while s.[!i] = '0' do decr i done;
-  if s.[!i] = '.' then decr i;
-  let s = String.sub s 0 (!i + 1) in
-  if s = "-0" then "0" else s
 
 type v = { x : float; y : float; z : float }
 

@@ -8,27 +8,13 @@
    the same on every run. About one sphere in five is a mirror; the others take one of five
    coloured textures. One light, a camera looking over the field. *)
 
+open Gen_common
+
 let usage () =
   prerr_endline "usage: gen_spheres OUT.pov N   (N >= 1 spheres)";
   exit 2
 
-let fmt x =
-  let s = Printf.sprintf "%.4f" x in
-  let i = ref (String.length s - 1) in
-  while s.[!i] = '0' do decr i done;
-  if s.[!i] = '.' then decr i;
-  let s = String.sub s 0 (!i + 1) in
-  if s = "-0" then "0" else s
 
-(* 32-bit integer hash (lowbias32 by Chris Wellons) *)
-let hash32 x =
-  let m = 0xffffffff in
-  let x = x land m in
-  let x = x lxor (x lsr 16) in
-  let x = (x * 0x7feb352d) land m in
-  let x = x lxor (x lsr 15) in
-  let x = (x * 0x846ca68b) land m in
-  x lxor (x lsr 16)
 
 (* k-th uniform number in [0, 1) for sphere i *)
 let unit i k = float_of_int (hash32 ((i * 4) + k + 0x9e3779b9)) /. 4294967296.0

@@ -6,18 +6,12 @@
    vertex_vectors and face_indices (flat triangles), one plain texture; the scene has a camera
    looking down at it at an angle, one light and a sky-coloured background. *)
 
+open Gen_common
+
 let usage () =
   prerr_endline "usage: gen_terrain OUT.pov [N]   (N x N vertices, N >= 2, default 708)";
   exit 2
 
-(* A number with at most 4 decimals and no trailing zeros ("-0" is written "0"). *)
-let fmt x =
-  let s = Printf.sprintf "%.4f" x in
-  let i = ref (String.length s - 1) in
-  while s.[!i] = '0' do decr i done;
-  if s.[!i] = '.' then decr i;
-  let s = String.sub s 0 (!i + 1) in
-  if s = "-0" then "0" else s
 
 let half = 50.0 (* the terrain covers x, z in [-half, half] *)
 
