@@ -498,18 +498,24 @@ let scene (s : Scene.t) : Compiled.t =
   let cam = s.camera.location in
   (* a light's looks_like shape belongs to the light's top-level object (§19.2) *)
   let bounding = List.length (List.filter (fun (o : Scene.obj) -> not o.looks_like) s.objects) + List.length s.lights >= 3 in
-  let candidates =
-    (* with its bounding tree POV-Ray meets the objects in the tree's order, else in scene order;
-       either way only those whose box holds the camera *)
-    if bounding then
-      let finite, infinite = List.partition (fun o -> Array.length o.pbox > 0) tops in
-      Slab_tree.walk (Slab_tree.build (List.map (fun o -> (o.id, o.pbox)) finite) (List.map (fun o -> o.id) infinite)) (fun b ->
-          in_pov_box b cam)
-    else List.filter_map (fun o -> if in_pov_box o.pbox cam then Some o.id else None) tops
-  in
   (* the list holds interiors: a CSG's members share theirs (§16.5) *)
+  let holds o = in_pov_box o.pbox cam && inside stack o.shape cam in
+  let holders = List.filter holds tops in
   let start_interiors =
-    List.fold_left (fun acc id -> if inside stack objects.(id).shape cam then objects.(id).iid :: acc else acc) [] candidates
+    match holders with
+    | [] | [ _ ] -> List.map (fun o -> o.iid) holders
+    | _ :: _ :: _ ->
+        (* with its bounding tree POV-Ray meets the objects in the tree's order, else in scene
+           order; the order matters only when the camera is inside two or more, and only then is
+           the tree built *)
+        let candidates =
+          if bounding then
+            let finite, infinite = List.partition (fun o -> Array.length o.pbox > 0) tops in
+            Slab_tree.walk (Slab_tree.build (List.map (fun o -> (o.id, o.pbox)) finite) (List.map (fun o -> o.id) infinite)) (fun b ->
+                in_pov_box b cam)
+          else List.map (fun o -> o.id) holders
+        in
+        List.fold_left (fun acc id -> if holds objects.(id) then objects.(id).iid :: acc else acc) [] candidates
   in
   {
     objects;
