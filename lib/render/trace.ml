@@ -770,8 +770,19 @@ let wins_tie ctx ob cur (o : Vec.t) (d : Vec.t) =
 let tie_tolerance (o : Vec.t) t = 0x1p-36 *. (Float.max (Float.abs o.x) (Float.max (Float.abs o.y) (Float.abs o.z)) +. t)
 
 (* Whether [ob], hit at depth [t], replaces the current best [cur] at depth [best]. *)
+(* Whether POV-Ray's bounding tree would never have tested [ob], nearer than the current best
+   [best] by rounding only: it takes objects in the order the ray enters their single-precision
+   boxes and stops at the first box entered beyond the best depth found so far. So where a box
+   stands on a plane, a ray meeting the box's face exactly at the plane sees the plane. Asked only
+   of near ties. *)
+let pruned ctx ob t best cur (o : Vec.t) (d : Vec.t) =
+  ctx.scene.bounding && cur >= 0
+  && t > best -. (1e-9 *. Float.abs best)
+  && Array.length ob.pbox > 0
+  && pov_entry ob.pbox o d > best
+
 let[@inline] replaces ctx ob t best cur (o : Vec.t) (d : Vec.t) =
-  if not ctx.robust then t < best || (t = best && cur >= 0 && wins_tie ctx ob cur o d)
+  if not ctx.robust then (t < best && not (pruned ctx ob t best cur o d)) || (t = best && cur >= 0 && wins_tie ctx ob cur o d)
   else if cur < 0 then t < best
   else
     let tol = tie_tolerance o best in
