@@ -1,6 +1,6 @@
 (* The torus: POVRAY-3.7 §15.5 (shape/torus.cpp), with POV-Ray's quartic and its solver (§15.6). *)
 
-type t = { major : float; minor : float; sturm : bool; inverted : bool; tr : Transform.t }
+type t = { major : float; minor : float; sturm : bool; tr : Transform.t }
 
 type work = { c : float array; roots : float array; out : float array; poly : Polysolv.work }
 
@@ -124,7 +124,7 @@ let inside t (p : Vec.t) =
   let q = Transform.inv_point t.tr p in
   let r = sqrt ((q.x *. q.x) +. (q.z *. q.z)) in
   let r2 = (q.y *. q.y) +. ((r -. t.major) *. (r -. t.major)) in
-  if r2 <= t.minor *. t.minor then not t.inverted else t.inverted
+  r2 <= t.minor *. t.minor
 
 let box t =
   let r2 = t.major +. t.minor and r1 = t.minor in

@@ -7,7 +7,6 @@ type t = {
   major : float;  (** R, the core circle's radius *)
   minor : float;  (** r, the tube's radius (R < r is a spindle torus) *)
   sturm : bool;  (** always solve with Sturm sequences *)
-  inverted : bool;  (** [inverse]: the inside is the outside *)
   tr : Transform.t;  (** torus space to world *)
 }
 
@@ -55,7 +54,7 @@ val normal : t -> Vec.t -> Vec.t
 
 val inside : t -> Vec.t -> bool
 (** [inside t p] is POV-Ray's [Torus::Inside] of the world point [p]: within the tube, surface
-    included; negated for an inverted torus. *)
+    included. *)
 
 val box : t -> float array
 (** [box t] is the torus-space box [[| −(R+r); −r; −(R+r); R+r; r; R+r |]] (lower corner, upper

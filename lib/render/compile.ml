@@ -29,21 +29,21 @@ let prim_of (s : Scene.shape) =
   | Box { lo; hi; trans } -> (
       let bx = { x0 = lo.x; y0 = lo.y; z0 = lo.z; x1 = hi.x; y1 = hi.y; z1 = hi.z } in
       match trans with None -> Some (Box bx) | Some btr -> Some (Box_trans { bx; btr }))
-  | Cone { cylinder; dist; closed; inverted; trans; _ } ->
+  | Cone { cylinder; dist; closed; trans; _ } ->
       (* a cylinder of radius 0 has no inverse transform: POV-Ray never hits it *)
-      if finite trans then Some (Cone { ctr = trans; dist; cyl = cylinder; closed; cinverted = inverted }) else None
-  | Disc { normal; radius; hole; inverted; trans; _ } ->
+      if finite trans then Some (Cone { ctr = trans; dist; cyl = cylinder; closed }) else None
+  | Disc { normal; radius; hole; trans; _ } ->
       if finite trans then
-        Some (Disc { dtr = trans; dnx = normal.x; dny = normal.y; dnz = normal.z; or2 = radius *. radius; ir2 = hole *. hole; dinverted = inverted })
+        Some (Disc { dtr = trans; dnx = normal.x; dny = normal.y; dnz = normal.z; or2 = radius *. radius; ir2 = hole *. hole })
       else None
-  | Torus { major; minor; sturm; inverse; trans } -> Some (Torus { Torus.major; minor; sturm; inverted = inverse; tr = trans })
+  | Torus { major; minor; sturm; trans } -> Some (Torus { Torus.major; minor; sturm; tr = trans })
   | Csg _ -> None (* built by [scene], which numbers the members *)
 
 (* Box::Inside: a closed box, its surface included *)
 let in_box b (p : Vec.t) = not (p.x < b.x0 || p.x > b.x1 || p.y < b.y0 || p.y > b.y1 || p.z < b.z0 || p.z > b.z1)
 
 (* Cone::Inside (§15.2, §15.3): closed shapes shrunk by EPSILON, open ones grown by it (an open
-   cylinder still has a solid inside); inverse negates the answer. *)
+   cylinder still has a solid inside). *)
 let in_cone c (p : Vec.t) =
   let q = Transform.inv_point c.ctr p in
   let offset = if c.closed then -.epsilon else epsilon in
@@ -52,12 +52,12 @@ let in_cone c (p : Vec.t) =
     if c.cyl then w2 > 1.0 +. offset || q.z < 0.0 -. offset || q.z > 1.0 +. offset
     else w2 > (q.z *. q.z) +. offset || q.z < c.dist -. offset || q.z > 1.0 +. offset
   in
-  out = c.cinverted
+  not out
 
 (* Disc::Inside (§15.4): the open half-space behind the disc's plane, z < 0 in canonical space *)
 let in_disc d (p : Vec.t) =
   let q = Transform.inv_point d.dtr p in
-  (q.z >= 0.0) = d.dinverted
+  q.z < 0.0
 
 let rec inside stack shape (p : Vec.t) =
   match shape with

@@ -20,7 +20,6 @@ type cone = {
   dist : float;  (** a cone's small end at z = [dist] (0 for a cylinder) *)
   cyl : bool;  (** the canonical cylinder x² + y² = 1 instead of the cone x² + y² = z² *)
   closed : bool;  (** the end caps are surfaces *)
-  cinverted : bool;  (** [inverse]: the inside test is negated *)
 }
 
 (** A disc (§15.4) in the plane z = 0 of its canonical space, placed by [dtr]. *)
@@ -31,7 +30,6 @@ type disc = {
   dnz : float;  (** the world normal, the same at every point *)
   or2 : float;  (** outer radius² *)
   ir2 : float;  (** hole radius² *)
-  dinverted : bool;  (** [inverse]: the inside test is negated *)
 }
 
 (** Everything about a surface that does not depend on the hit point, derived once from a

@@ -100,17 +100,16 @@ let rec shape = function
   | Smooth_triangle { p1; n1; p2; n2; p3; n3 } ->
       Printf.sprintf "smooth_triangle { %s, %s, %s, %s, %s, %s" (vec p1) (vec n1) (vec p2) (vec n2) (vec p3) (vec n3)
   | Box { lo; hi; trans = t } -> Printf.sprintf "box { %s, %s%s" (vec lo) (vec hi) (trans t)
-  | Cone { p1; r1; p2; r2; cylinder; dist; closed; inverted; trans = t } ->
-      let flags = (if closed then "" else " open") ^ if inverted then " inverse" else "" in
+  | Cone { p1; r1; p2; r2; cylinder; dist; closed; trans = t } ->
+      let flags = if closed then "" else " open" in
       let canon = if cylinder then "canonical cylinder" else Printf.sprintf "canonical cone from z = %s" (num dist) in
       if r1 = r2 && cylinder then Printf.sprintf "cylinder { %s, %s, %s%s // %s%s" (vec p1) (vec p2) (num r1) flags canon (trans (Some t))
       else Printf.sprintf "cone { %s, %s, %s, %s%s // %s%s" (vec p1) (num r1) (vec p2) (num r2) flags canon (trans (Some t))
-  | Disc { centre; normal; radius; hole; inverted; trans = t } ->
-      Printf.sprintf "disc { %s, %s, %s, %s%s // centre as written, normal as moved%s" (vec centre) (vec normal) (num radius)
-        (num hole) (if inverted then " inverse" else "") (trans (Some t))
-  | Torus { major; minor; sturm; inverse; trans = t } ->
-      Printf.sprintf "torus { %s, %s%s%s%s" (num major) (num minor) (if sturm then " sturm" else "")
-        (if inverse then " inverse" else "")
+  | Disc { centre; normal; radius; hole; trans = t } ->
+      Printf.sprintf "disc { %s, %s, %s, %s // centre as written, normal as moved%s" (vec centre) (vec normal) (num radius)
+        (num hole) (trans (Some t))
+  | Torus { major; minor; sturm; trans = t } ->
+      Printf.sprintf "torus { %s, %s%s%s" (num major) (num minor) (if sturm then " sturm" else "")
         (trans (if Transform.is_identity t then None else Some t))
   | Mesh { mesh; trans = t; textures } ->
       let b = Mesh.bounds mesh in

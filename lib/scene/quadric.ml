@@ -18,14 +18,14 @@ let cylinder_trans ~p1 ~p2 radius =
 
 let cylinder ~p1 ~p2 ~radius ~closed : Scene.shape option =
   Option.map
-    (fun trans -> Scene.Cone { p1; r1 = radius; p2; r2 = radius; cylinder = true; dist = 0.; closed; inverted = false; trans })
+    (fun trans -> Scene.Cone { p1; r1 = radius; p2; r2 = radius; cylinder = true; dist = 0.; closed; trans })
     (cylinder_trans ~p1 ~p2 radius)
 
 let cone ~p1 ~r1 ~p2 ~r2 ~closed : Scene.shape option =
   let axis, len = unit_and_length (Vec.sub p1 p2) in
   let as_cylinder ~p1 ~p2 r =
     Option.map
-      (fun trans -> Scene.Cone { p1 = p1; r1; p2 = p2; r2; cylinder = true; dist = 0.; closed; inverted = false; trans })
+      (fun trans -> Scene.Cone { p1 = p1; r1; p2 = p2; r2; cylinder = true; dist = 0.; closed; trans })
       (cylinder_trans ~p1 ~p2 r)
   in
   if len < epsilon then None
@@ -41,13 +41,13 @@ let cone ~p1 ~r1 ~p2 ~r2 ~closed : Scene.shape option =
     if (rb -. rs) *. len /. tlen < epsilon then
       (* so thin a taper that POV-Ray takes it for a cylinder of the big radius *)
       Option.map
-        (fun trans -> Scene.Cone { p1; r1; p2; r2; cylinder = true; dist = 0.; closed; inverted = false; trans })
+        (fun trans -> Scene.Cone { p1; r1; p2; r2; cylinder = true; dist = 0.; closed; trans })
         (cylinder_trans ~p1:big ~p2:small rb)
     else
       let trans, _ = Transform.coordinate origin axis rb tlen in
-      Some (Scene.Cone { p1; r1; p2; r2; cylinder = false; dist = h /. tlen; closed; inverted = false; trans })
+      Some (Scene.Cone { p1; r1; p2; r2; cylinder = false; dist = h /. tlen; closed; trans })
 
 let disc ~centre ~normal ~radius ~hole : Scene.shape =
   let n = Transform.normalize normal in
   let trans, n = Transform.coordinate centre n 1. 1. in
-  Scene.Disc { centre; normal = n; radius; hole; inverted = false; trans }
+  Scene.Disc { centre; normal = n; radius; hole; trans }

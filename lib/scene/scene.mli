@@ -100,7 +100,6 @@ type shape =
       cylinder : bool;  (** the canonical cylinder [x² + y² ≤ 1, 0 ≤ z ≤ 1] (§15.2) … *)
       dist : float;  (** … else the canonical cone [x² + y² ≤ z², dist ≤ z ≤ 1] (§15.3) *)
       closed : bool;  (** the end caps are part of the surface (no [open]) *)
-      inverted : bool;  (** [inverse]: the inside test is negated *)
       trans : Transform.t;  (** canonical space to world: POV-Ray's set-up, then every modifier *)
     }  (** §15.2, §15.3: a cylinder or cone, always placed by a transform (§14.4) *)
   | Disc of {
@@ -108,13 +107,12 @@ type shape =
       normal : Vec.t;  (** the unit normal, moved with every modifier (MTransNormal, normalised) *)
       radius : float;
       hole : float;  (** as written (0 without a hole) *)
-      inverted : bool;  (** [inverse]: the inside test is negated *)
       trans : Transform.t;  (** canonical space (the disc in z = 0) to world *)
     }  (** §15.4 *)
-  | Torus of { major : float; minor : float; sturm : bool; inverse : bool; trans : Transform.t }
+  | Torus of { major : float; minor : float; sturm : bool; trans : Transform.t }
       (** §15.5: R and r as written, the tube's core circle in the XZ plane, mapped by [trans]
-          (a torus always has one: every modifier composes into it, §14.4); [inverse] negates
-          its inside *)
+          (a torus always has one: every modifier composes into it, §14.4); [inverse] is
+          CSG's, as for every primitive (§16.3) *)
   | Csg of { kind : csg_kind; members : member list }
       (** §16: a CSG kept whole (a merge, an intersection or difference, a union with
           [split_union off]); its members are already moved by its transforms and carry the

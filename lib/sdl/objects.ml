@@ -34,17 +34,12 @@ and move_member op = function
   | V.Member_obj o -> V.Member_obj (move_obj op o)
   | V.Member_light l -> V.Member_light (move_light op l)
 
-(* §15.5: a torus takes [sturm] (solve with Sturm sequences) and [inverse] (inside out) among
-   its modifiers, wherever they stand *)
+(* §15.5: a torus takes [sturm] (solve with Sturm sequences) among its modifiers, wherever it
+   stands; [inverse] is every primitive's (§16.3) *)
 let is_torus (o : V.obj) = match o.shape with Prim (Torus _) -> true | Prim _ | Csg _ -> false
 
-let torus_flag kw (o : V.obj) =
-  match o.shape with
-  | Prim (Torus t) ->
-      (* Torus::Invert toggles the flag *)
-      let sturm, inverse = if kw = "sturm" then (true, t.inverse) else (t.sturm, not t.inverse) in
-      { o with shape = Prim (Torus { t with sturm; inverse }) }
-  | Prim _ | Csg _ -> o
+let set_sturm (o : V.obj) =
+  match o.shape with Prim (Torus t) -> { o with shape = Prim (Torus { t with sturm = true }) } | Prim _ | Csg _ -> o
 
 (* §16.3, Invert_Object and Invert_CSG_Object: a plane turns over (normal and distance negated),
    another primitive toggles its inverted flag, a CSG inverts every member and morphs by De
@@ -450,7 +445,7 @@ let rec parse_object st : V.obj =
       let major = parse_float st in
       ignore (accept st Comma);
       let minor = parse_float st in
-      let shape = Scene.Torus { major; minor; sturm = false; inverse = false; trans = Transform.identity } in
+      let shape = Scene.Torus { major; minor; sturm = false; trans = Transform.identity } in
       parse_object_mods st (new_obj shape loc) "torus"
   | Ident "plane" ->
       advance st;
@@ -541,7 +536,7 @@ and parse_object_mods st (o : V.obj) what : V.obj =
     | Ident "no_image" -> advance st; loop { o with no_image = parse_bool_opt st }
     | Ident "no_reflection" -> advance st; loop { o with no_reflection = parse_bool_opt st }
     | Ident "double_illuminate" -> advance st; loop (set_double_illuminate (parse_bool_opt st) o)
-    | Ident "sturm" when is_torus o -> advance st; loop (torus_flag "sturm" o)
+    | Ident "sturm" when is_torus o -> advance st; loop (set_sturm o)
     | Ident "hollow" -> advance st; ignore (parse_bool_opt st); loop o
     | Ident "inverse" -> advance st; loop (invert o)
     | Ident "split_union" -> (

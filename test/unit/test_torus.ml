@@ -13,7 +13,7 @@ let v37 = "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"
    intersection of itself alone with the member inverted (§16.3). *)
 let rec torus_of (o : Scene.obj) =
   match o.shape with
-  | Torus { major; minor; sturm; inverse; trans } -> (major, minor, sturm, inverse, trans)
+  | Torus { major; minor; sturm; trans } -> (major, minor, sturm, false, trans)
   | Csg { kind = Intersection; members = [ m ] } ->
       let major, minor, sturm, inverse, trans = torus_of m.mobj in
       (major, minor, sturm, inverse <> m.inverted, trans)
