@@ -53,7 +53,7 @@ let torus_flag kw (o : V.obj) =
 let rec invert (o : V.obj) : V.obj =
   match o.shape with
   | Prim (Plane { normal; offset; trans }) -> { o with shape = Prim (Plane { normal = Vec.neg normal; offset = -.offset; trans }) }
-  | Prim (Sphere _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Csg _) -> { o with inverted = not o.inverted }
+  | Prim (Sphere _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Csg _ | Glyph _) -> { o with inverted = not o.inverted }
   | Csg { members; _ } when List.for_all (function V.Member_light _ -> true | V.Member_obj _ -> false) members ->
       o (* lights only (a light in object position): nothing to invert *)
   | Csg { kind = Clipped; members = V.Member_obj c :: clips; split } ->
@@ -83,7 +83,7 @@ let new_obj shape loc = new_obj_of (V.Prim shape) loc
 
 (* Objects povml does not render yet: inside a union they are reported as "not supported yet". *)
 let unsupported_objects =
-  [ "polygon"; "prism"; "lathe"; "sor"; "blob"; "text"; "height_field";
+  [ "polygon"; "prism"; "lathe"; "sor"; "blob"; "height_field";
     "isosurface"; "superellipsoid"; "julia_fractal"; "parametric"; "bicubic_patch"; "ovus"; "quadric"; "cubic";
     "quartic"; "poly"; "sphere_sweep"; "lemon" ]
 
@@ -188,6 +188,27 @@ let unit_normal st loc (n : Vec.t) =
   else Vec.normalize n
 
 let comma st = ignore (accept st Comma)
+
+(* §15.9: a string argument of text (the font file, the string), located when missing *)
+let text_string st what =
+  let l = peek_loc st in
+  match peek st with
+  | Comma | RBrace -> Error.raise_at l "text needs %s here" what
+  | _ -> (
+      match Expr.parse_expr st with
+      | V.String s -> s
+      | v -> Error.raise_at l "text needs %s (a string) here, not %s" what (V.kind_name v))
+
+(* §15.9: a font file is searched like an include file (the scene's directory, +L paths, the
+   standard include directory) and read through the access policy *)
+let load_font st loc name =
+  match find_file ~inc:false st name with
+  | None -> Error.raise_at loc "cannot find the font file \"%s\" (searched %s)" name (String.concat ", " (include_dirs st))
+  | Some path -> (
+      Access.check_read st.opts.access loc path;
+      match Font.parse (read_file path) with
+      | Ok f -> f
+      | Error e -> Error.raise_at loc "the font file \"%s\" is not a usable TrueType font: %s" name e)
 
 let show_vec (v : Vec.t) = Printf.sprintf "<%g, %g, %g>" v.x v.y v.z
 
@@ -452,6 +473,40 @@ let rec parse_object st : V.obj =
       let minor = parse_float st in
       let shape = Scene.Torus { major; minor; sturm = false; inverse = false; trans = Transform.identity } in
       parse_object_mods st (new_obj shape loc) "torus"
+  | Ident "text" ->
+      (* §15.9: text { ttf "font" "string", thickness, <offset> }: a union of one extruded glyph
+         per character (POV-Ray makes it a CSG union, dissolved like any union), then the
+         modifiers, which move every letter *)
+      advance st;
+      open_block st "text";
+      if not (accept_ident st "ttf") then
+        (match peek st with
+         | Ident "internal" -> Error.raise_at (peek_loc st) "internal fonts are not supported yet: name a TrueType font file with ttf \"file.ttf\""
+         | _ -> unexpected st "'ttf' and a font file name");
+      let floc = peek_loc st in
+      let file = text_string st "the font file name" in
+      ignore (accept st Comma);
+      let sloc = peek_loc st in
+      let str = text_string st "the string to render" in
+      comma st;
+      let depth = parse_float st in
+      comma st;
+      let offset = parse_vector st in
+      let font = load_font st floc file in
+      let letters =
+        match Font.layout font str ~offset with
+        | Error e -> Error.raise_at floc "the font file \"%s\" cannot be read: %s" file e
+        | Ok l -> l
+      in
+      if letters = [] then warn st sloc "the text string is empty: the text object has no letters";
+      let members =
+        List.map
+          (fun ((outline : Glyph.outline), place) ->
+            let trans = Transform.compose Transform.identity (Transform.translate place) in
+            V.Member_obj (new_obj (Scene.Glyph { outline; depth; inverse = false; trans }) loc))
+          letters
+      in
+      parse_object_mods st (new_obj_of (V.Csg { kind = Union; members; split = true }) loc) "text"
   | Ident "plane" ->
       advance st;
       open_block st "plane";
