@@ -506,7 +506,10 @@ let rec parse_object st : V.obj =
             V.Member_obj (new_obj (Scene.Glyph { outline; depth; inverse = false; trans }) loc))
           letters
       in
-      parse_object_mods st (new_obj_of (V.Csg { kind = Union; members; split = true }) loc) "text"
+      (* POV-Ray then turns the whole text by <0.001, 0.001, 0.001> degrees (to avoid cracks
+         where an edge lies along an axis), before the modifiers *)
+      let text = move_obj (Place.Rotate (Vec.make 0.001 0.001 0.001)) (new_obj_of (V.Csg { kind = Union; members; split = true }) loc) in
+      parse_object_mods st text "text"
   | Ident "plane" ->
       advance st;
       open_block st "plane";
