@@ -95,9 +95,10 @@ let parse data =
     Ok { data; cmap; glyf; units_per_em; loca; advance; lsb; kerns }
   with Bad m -> Error m
 
-(* ProcessCharMap: the platforms in the order searched for 8-bit strings; the first table of a
-   matching platform in a supported format answers. *)
-let platforms = [ 1; 3; 0; 3 ]
+(* ProcessCharMap: the platforms in the order searched, for ASCII strings (Macintosh first) and
+   for UTF-8 ones (Unicode first); the first table of a matching platform in a supported format
+   answers. *)
+let platforms ~utf8 = if utf8 then [ 0; 3; 1; 3 ] else [ 1; 3; 0; 3 ]
 
 let format4 s sub c =
   let segx2 = u16 s (sub + 6) in
@@ -126,7 +127,7 @@ let format4 s sub c =
   let g = search c in
   if g = 0 && c < 0x100 then search (c + 0xF000) else g
 
-let glyph_index_exn f c =
+let glyph_index_exn ~utf8 f c =
   let s = f.data in
   let count = u16 s (f.cmap + 2) in
   let rec tables plats =
@@ -150,9 +151,9 @@ let glyph_index_exn f c =
         in
         entry 0
   in
-  tables platforms
+  tables (platforms ~utf8)
 
-let glyph_index f c = try glyph_index_exn f c with Bad _ -> 0
+let glyph_index ?(utf8 = false) f c = try glyph_index_exn ~utf8 f c with Bad _ -> 0
 
 (* ExtractGlyphOutline: the points (em units) with their flags, the contours' last points, the
    header's box (font units) widened by the points, and the glyph whose metrics it uses. *)
@@ -315,7 +316,7 @@ let kerning f ~left ~right =
   let kx = wrap !kx and ky = wrap !ky in
   ((if kx > !kminx then kx else !kminx), if ky > !kminy then ky else !kminy)
 
-let layout f str ~offset =
+let layout ?(utf8 = false) f codes ~offset =
   let funit = 1.0 /. float_of_int f.units_per_em in
   (* the glyphs already read: by character first, then by glyph index (ProcessCharacter) *)
   let cache = ref [] in
@@ -323,7 +324,7 @@ let layout f str ~offset =
     match List.find_opt (fun (c', _, _, _) -> c' = c) !cache with
     | Some (_, g, o, m) -> Ok (g, o, m)
     | None -> (
-        let g = glyph_index f c in
+        let g = glyph_index ~utf8 f c in
         match List.find_opt (fun (_, g', _, _) -> g' = g) !cache with
         | Some (_, g, o, m) -> Ok (g, o, m)
         | None -> (
@@ -333,11 +334,11 @@ let layout f str ~offset =
                 Ok (g, o, m)
             | Error e -> Error e))
   in
-  let n = String.length str in
+  let n = Array.length codes in
   let rec go i (tx, ty, tz) last acc =
     if i >= n then Ok (List.rev acc)
     else
-      match get (Char.code str.[i]) with
+      match get codes.(i) with
       | Error e -> Error e
       | Ok (g, (o : Glyph.outline), m) ->
           let m = if m < Array.length f.advance then m else 0 in

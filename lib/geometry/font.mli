@@ -11,18 +11,18 @@ val parse : string -> (t, string) result
 val units_per_em : t -> int
 (** [units_per_em f] is the head table's unitsPerEm. *)
 
-val glyph_index : t -> int -> int
-(** [glyph_index f c] is the glyph of the character code [c] by the first character map found in
-    the order POV-Ray searches them (Macintosh, Microsoft Unicode, Unicode, Microsoft symbols; only
-    the platform is compared), formats 0, 4 (retrying 0xF000 + c for codes below 256) and 6; 0 when
-    none has it. *)
+val glyph_index : ?utf8:bool -> t -> int -> int
+(** [glyph_index ?utf8 f c] is the glyph of the character code [c] by the first character map found
+    in the order POV-Ray searches them (Macintosh, Microsoft Unicode, Unicode, Microsoft symbols;
+    with [~utf8:true] Unicode, Microsoft Unicode, Macintosh, Microsoft symbols; only the platform is
+    compared), formats 0, 4 (retrying 0xF000 + c for codes below 256) and 6; 0 when none has it. *)
 
 val outline : t -> int -> char_code:int -> (Glyph.outline * int, string) result
 (** [outline f g ~char_code] is the outline of glyph [g] and the glyph whose metrics it uses; a
     space ([char_code] 32) has none. *)
 
-val layout : t -> string -> offset:Vec.t -> ((Glyph.outline * Vec.t) list, string) result
-(** [layout f s ~offset] is each character of [s] (one byte each) as its outline and the
+val layout : ?utf8:bool -> t -> int array -> offset:Vec.t -> ((Glyph.outline * Vec.t) list, string) result
+(** [layout ?utf8 f codes ~offset] is each character code of [codes] as its outline and the
     translation placing it: the first glyph's left edge at x = 0, each next one advanced by the
     advance width and kerning, plus [offset] after every character (POV-Ray's ProcessNewTTF; the
     translation's z is always 0, the offset's z is not used). *)

@@ -199,6 +199,40 @@ let text_string st what =
       | V.String s -> s
       | v -> Error.raise_at l "text needs %s (a string) here, not %s" what (V.kind_name v))
 
+(* §15.9: the character codes of a text's string: UTF-8 decoded with charset utf8 (characters
+   beyond 0xFFFF dropped, as POV-Ray keeps UCS-2 only); with ascii, the default, a byte beyond 127
+   becomes a space (before 3.5, it is kept) *)
+let text_codes st loc s =
+  let n = String.length s in
+  let b i = Char.code s.[i] in
+  match st.charset with
+  | Sys ->
+      (* POV-Ray 3.7 on Unix cannot convert the system's text format *)
+      Error.raise_at loc "charset sys: the string cannot be converted from the system's text format to Unicode (use charset utf8)"
+  | Utf8 ->
+    let acc = ref [] and i = ref 0 in
+    let cont k = !i + k < n && b (!i + k) land 0xC0 = 0x80 in
+    while !i < n do
+      let c = b !i in
+      if c < 0x80 then (acc := c :: !acc; incr i)
+      else if c land 0xE0 = 0xC0 && cont 1 then (acc := ((c land 0x1F) lsl 6) lor (b (!i + 1) land 0x3F) :: !acc; i := !i + 2)
+      else if c land 0xF0 = 0xE0 && cont 1 && cont 2 then (
+        acc := ((c land 0x0F) lsl 12) lor ((b (!i + 1) land 0x3F) lsl 6) lor (b (!i + 2) land 0x3F) :: !acc;
+        i := !i + 3)
+      else if c land 0xF8 = 0xF0 && cont 1 && cont 2 && cont 3 then i := !i + 4
+      else begin
+        warn st loc "the text string is not valid UTF-8: a byte 0x%02X is left out" c;
+        incr i
+      end
+    done;
+    Array.of_list (List.rev !acc)
+  | Ascii ->
+    let version = if st.version_set then st.version else 362 in
+    let replaced = ref false in
+    let codes = Array.init n (fun i -> let c = b i in if c > 127 && version >= 350 then (replaced := true; 32) else c) in
+    if !replaced then warn st loc "a non-ASCII character of the text string has been replaced by a space (the charset is ascii; write global_settings { charset utf8 })";
+    codes
+
 (* §15.9: a font file is searched like an include file (the scene's directory, +L paths, the
    standard include directory) and read through the access policy *)
 let load_font st loc name =
@@ -494,7 +528,7 @@ let rec parse_object st : V.obj =
       let offset = parse_vector st in
       let font = load_font st floc file in
       let letters =
-        match Font.layout font str ~offset with
+        match Font.layout ~utf8:(st.charset = Utf8) font (text_codes st sloc str) ~offset with
         | Error e -> Error.raise_at floc "the font file \"%s\" cannot be read: %s" file e
         | Ok l -> l
       in

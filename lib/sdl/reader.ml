@@ -55,6 +55,9 @@ and cond =
   | For_loop of { var : V.t ref; stop : float; step : float; body : Lexer.mark; floc : Loc.t }
   | Switch_case of { value : float; mutable running : bool; sloc : Loc.t }
 
+(* global_settings { charset … } (§15.9) *)
+type charset = Ascii | Utf8 | Sys
+
 type st = {
   mutable frames : frame list;  (* innermost first; never empty *)
   mutable cur : Token.t;  (* the current token, valid when [have] *)
@@ -76,6 +79,7 @@ type st = {
   mutable object_count : int;  (* objects and lights that entered the scene *)
   mutable version : int;  (* languageVersion × 100 *)
   mutable version_set : bool;
+  mutable charset : charset;  (* how a text's string is read *)
   mutable warnings : Error.t list;  (* newest first *)
   mutable objects : Scene.obj list;  (* newest first *)
   mutable lights : Scene.light list;  (* newest first *)
