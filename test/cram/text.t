@@ -58,3 +58,21 @@ tiny turn POV-Ray gives every text, then the modifiers); the statistics count th
   $ printf '#version 3.7;\nlight_source { <0, 5, -5>, 1 }\nsphere { <0,0,3>, 1 pigment { rgb 1 } }\ntext { ttf "cyrvetic.ttf" "I", 0.25, 0 translate y pigment { rgb 1 } }\n' > stats.pov
   $ povml stats.pov +W20 +H10 -D 2>&1 | grep "True Type"
   True Type Font                      43               5       11.63
+
+The string is read by the charset: with ascii (the default) a non-ASCII character becomes spaces,
+with a warning; utf8 decodes it; sys cannot be converted, as in POV-Ray on Unix:
+
+  $ printf '#version 3.7;\nglobal_settings { assumed_gamma 1 }\ntext { ttf "cyrvetic.ttf" "caf\303\251", 0.1, 0 }\n' > ascii.pov
+  $ povml ascii.pov +W10 +H10 -D 2>&1 | head -3
+  ascii.pov:3:27: warning: a non-ASCII character of the text string has been replaced by a space (the charset is ascii; write global_settings { charset utf8 })
+      3 | text { ttf "cyrvetic.ttf" "café", 0.1, 0 }
+        |                           ^
+  $ printf '#version 3.7;\nglobal_settings { assumed_gamma 1 charset utf8 }\ntext { ttf "cyrvetic.ttf" "caf\303\251", 0.1, 0 }\n' > utf8.pov
+  $ povml --dump utf8.pov 2>&1 | grep -c glyph
+  4
+  $ printf '#version 3.7;\nglobal_settings { assumed_gamma 1 charset sys }\ntext { ttf "cyrvetic.ttf" "caf\303\251", 0.1, 0 }\n' > sys.pov
+  $ povml sys.pov +W10 +H10 -D
+  sys.pov:3:27: error: charset sys: the string cannot be converted from the system's text format to Unicode (use charset utf8)
+      3 | text { ttf "cyrvetic.ttf" "café", 0.1, 0 }
+        |                           ^
+  [1]
