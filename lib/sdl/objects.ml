@@ -234,9 +234,15 @@ let text_codes st loc s =
     codes
 
 (* §15.9: a font file is searched like an include file (the scene's directory, +L paths, the
-   standard include directory) and read through the access policy *)
+   standard include directory), a name without an extension also with ".ttf" appended, and read
+   through the access policy *)
 let load_font st loc name =
-  match find_file ~inc:false st name with
+  let found =
+    match find_file ~inc:false st name with
+    | Some p -> Some p
+    | None -> if String.contains (Filename.basename name) '.' then None else find_file ~inc:false st (name ^ ".ttf")
+  in
+  match found with
   | None -> Error.raise_at loc "cannot find the font file \"%s\" (searched %s)" name (String.concat ", " (include_dirs st))
   | Some path -> (
       Access.check_read st.opts.access loc path;

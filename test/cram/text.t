@@ -76,3 +76,9 @@ with a warning; utf8 decodes it; sys cannot be converted, as in POV-Ray on Unix:
       3 | text { ttf "cyrvetic.ttf" "café", 0.1, 0 }
         |                           ^
   [1]
+
+A font name without an extension is also tried with ".ttf":
+
+  $ printf '#version 3.7;\nglobal_settings { assumed_gamma 1 }\ntext { ttf "cyrvetic" "I", 0.25, 0 }\n' > noext.pov
+  $ povml --dump noext.pov 2>&1 | grep -c glyph
+  1
