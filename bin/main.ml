@@ -89,6 +89,7 @@ let print_stats (r : Pipeline.result) (o : Render.options) =
     Printf.eprintf "Torus                      %11d     %11d  %10.2f\n" s.torus_tests s.torus_hits (pct s.torus_hits s.torus_tests);
     Printf.eprintf "Torus Bound                %11d     %11d  %10.2f\n" s.torus_tests s.torus_bound_hits (pct s.torus_bound_hits s.torus_tests)
   end;
+  row "True Type Font" s.ttf_tests s.ttf_hits;
   Printf.eprintf "%s\n" line;
   if s.roots_tested > 0 then
     Printf.eprintf "Roots tested:%22d   eliminated:%21d\n" s.roots_tested s.roots_eliminated;

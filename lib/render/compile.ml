@@ -37,6 +37,7 @@ let prim_of (s : Scene.shape) =
         Some (Disc { dtr = trans; dnx = normal.x; dny = normal.y; dnz = normal.z; or2 = radius *. radius; ir2 = hole *. hole })
       else None
   | Torus { major; minor; sturm; trans } -> Some (Torus { Torus.major; minor; sturm; tr = trans })
+  | Glyph { outline; depth; trans } -> if finite trans then Some (Glyph { Glyph.outline; depth; tr = trans }) else None
   | Csg _ -> None (* built by [scene], which numbers the members *)
 
 (* Box::Inside: a closed box, its surface included *)
@@ -72,6 +73,7 @@ let rec inside stack shape (p : Vec.t) =
   | Box b -> in_box b p
   | Box_trans { bx; btr } -> in_box bx (Transform.inv_point btr p)
   | Torus t -> Torus.inside t p
+  | Glyph g -> Glyph.inside g p
   | Sphere s ->
       let dx = p.x -. s.cx and dy = p.y -. s.cy and dz = p.z -. s.cz in
       (dx *. dx) +. (dy *. dy) +. (dz *. dz) < s.r2
@@ -100,7 +102,7 @@ and inside_member stack (m : obj) p =
   match m.shape with
   | Csg _ -> inside stack m.shape p
   | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _
-  | Disc _ | Torus _ ->
+  | Disc _ | Torus _ | Glyph _ ->
       inside stack m.shape p <> m.inverted
 
 (* The box of a bounded shape; None for an unbounded one. A transformed shape's box is its
@@ -122,7 +124,7 @@ let rec bounds = function
         (Some [| infinity; infinity; infinity; neg_infinity; neg_infinity; neg_infinity |])
         members
       |> Option.map (fun b -> if b.(0) > b.(3) then [| 0.; 0.; 0.; 0.; 0.; 0. |] else b)
-  | Csg { kind = Intersection; members = [| ({ shape = Sphere _ | Ellipsoid _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _; _ } as m) |] }
+  | Csg { kind = Intersection; members = [| ({ shape = Sphere _ | Ellipsoid _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _; _ } as m) |] }
     when m.inverted ->
       (* an inverted primitive written alone enters as an intersection of itself (Objects); POV-Ray
          keeps such a primitive's own box *)
@@ -155,6 +157,7 @@ let rec bounds = function
       let r = sqrt d.or2 in
       Some (Transform.bounds d.dtr [| -.r; -.r; -.small_tolerance; r; r; small_tolerance |])
   | Torus t -> Some (Transform.bounds t.tr (Torus.box t))
+  | Glyph g -> Some (Transform.bounds g.tr (Glyph.box g))
 
 (* The largest coordinate magnitude of a shape: its box, or for a plane its point nearest the origin. *)
 let magnitude shape =
@@ -166,7 +169,7 @@ let magnitude shape =
       let q = Transform.point ptr (Vec.make (-.pl.dist *. pl.nx) (-.pl.dist *. pl.ny) (-.pl.dist *. pl.nz)) in
       max_abs [| q.x; q.y; q.z |]
   | None, Csg { members; _ } -> Array.fold_left (fun m o -> Float.max m o.mag) 0. members
-  | None, (Sphere _ | Ellipsoid _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _) -> 0.
+  | None, (Sphere _ | Ellipsoid _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _) -> 0.
 
 (* POV-Ray's box of a bounded shape (Compute_BBox, then Make_BBox or Make_BBox_from_min_max, which
    round the lower corner and the lengths to single precision): [| llx; lly; llz; lx; ly; lz |].
@@ -211,7 +214,12 @@ let rec pov_box shape =
          Trans, which every torus has (§15.5, §15.8) *)
       let b = Torus.box t in
       mapped t.tr (of_min_max (Array.sub b 0 3) (Array.sub b 3 3))
-  | Csg { kind = Intersection; members = [| ({ shape = Sphere _ | Ellipsoid _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _; _ } as m) |]; _ }
+  | Glyph g ->
+      (* TrueType::Compute_BBox: Make_BBox of the header's box, z from −1e-6 to depth + 1e-6,
+         then Recompute_BBox through its whole Trans, at every transform (§15.9) *)
+      let b = Glyph.box g in
+      mapped g.tr (of_min_max (Array.sub b 0 3) (Array.sub b 3 3))
+  | Csg { kind = Intersection; members = [| ({ shape = Sphere _ | Ellipsoid _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _; _ } as m) |]; _ }
     when m.inverted ->
       (* an inverted primitive written alone: POV-Ray's box is the primitive's own *)
       pov_box m.shape
@@ -252,7 +260,7 @@ let group objs =
   Array.iteri
     (fun i o ->
       match o.shape with
-      | Ellipsoid _ | Box_trans _ | Cone _ | Disc _ | Torus _ -> for k = 0 to 5 do boxes.((6 * i) + k) <- Bigarray.Array1.get own ((6 * i) + k) done
+      | Ellipsoid _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ -> for k = 0 to 5 do boxes.((6 * i) + k) <- Bigarray.Array1.get own ((6 * i) + k) done
       | Sphere _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Csg _ -> ())
     bounded;
   let spheres = Array.make (4 * Array.length bounded) nan in
@@ -260,7 +268,7 @@ let group objs =
     (fun i o ->
       match o.shape with
       | Sphere s -> spheres.(4 * i) <- s.cx; spheres.((4 * i) + 1) <- s.cy; spheres.((4 * i) + 2) <- s.cz; spheres.((4 * i) + 3) <- s.r2
-      | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Csg _ -> ())
+      | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Csg _ -> ())
     bounded;
   { unbounded = Array.of_list unbounded; bounded; bvh; spheres; boxes }
 
@@ -394,7 +402,7 @@ let scene (s : Scene.t) : Compiled.t =
           in
           let members = Array.of_list members in
           Some (Csg { kind; members; cbox = pov_box (Csg { kind; members; cbox = [||] }) })
-      | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ ->
+      | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Glyph _ ->
           let sh = prim_of o.shape in
           if sh <> None then incr next;
           sh
@@ -406,19 +414,19 @@ let scene (s : Scene.t) : Compiled.t =
         let face_surfs =
           match o.shape with
           | Mesh m -> Array.map surface_of m.textures
-          | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Box _ | Cone _ | Disc _ | Torus _ | Csg _ -> [||]
+          | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Box _ | Cone _ | Disc _ | Torus _ | Glyph _ | Csg _ -> [||]
         in
         let opaque =
           match shape with
           | Csg { members; _ } -> Array.for_all (fun m -> m.opaque) members
           | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _
-          | Disc _ | Torus _ -> (
+          | Disc _ | Torus _ | Glyph _ -> (
               (* §17.8: opaque only if no colour the pigment can give is transparent *)
               pigment_opaque o.texture.pigment
               &&
               match o.shape with
               | Mesh m -> Array.for_all (fun (t : Scene.texture) -> pigment_opaque t.pigment) m.textures
-              | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Box _ | Cone _ | Disc _ | Torus _ | Csg _ -> true)
+              | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Box _ | Cone _ | Disc _ | Torus _ | Glyph _ | Csg _ -> true)
         in
         let ob =
           {

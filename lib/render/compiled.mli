@@ -85,6 +85,7 @@ type shape =
           A new primitive shape plugs into CSG by its cases in [Compile.inside] (Inside),
           [Compile.bounds], and [Trace.all_hits] (every crossing of the ray, in the order POV-Ray's
           All_Intersections pushes them); the exhaustive matches point at each. *)
+  | Glyph of Glyph.t  (** §15.9: a text object's letter, always through its transform *)
 
 (** A CSG's members and how their hits are kept (§16.2, §16.3). *)
 and csg = {

@@ -30,6 +30,8 @@ type t = {
   mutable csg_intersection_hits : int;
   mutable csg_merge_tests : int;
   mutable csg_merge_hits : int;
+  mutable ttf_tests : int;
+  mutable ttf_hits : int;
 }
 
 let create () =
@@ -38,7 +40,7 @@ let create () =
     sphere_hits = 0; plane_tests = 0; plane_hits = 0; triangle_tests = 0; triangle_hits = 0; mesh_tests = 0; mesh_hits = 0; box_tests = 0; box_hits = 0; cone_tests = 0; cone_hits = 0; disc_tests = 0; disc_hits = 0;
     torus_tests = 0; torus_hits = 0; torus_bound_hits = 0; roots_tested = 0; roots_eliminated = 0; max_level = 0; samples = 0;
     csg_union_tests = 0; csg_union_hits = 0; csg_intersection_tests = 0; csg_intersection_hits = 0; csg_merge_tests = 0;
-    csg_merge_hits = 0;
+    csg_merge_hits = 0; ttf_tests = 0; ttf_hits = 0;
   }
 
 let merge a b =
@@ -73,5 +75,7 @@ let merge a b =
     csg_intersection_tests = a.csg_intersection_tests + b.csg_intersection_tests;
     csg_intersection_hits = a.csg_intersection_hits + b.csg_intersection_hits;
     csg_merge_tests = a.csg_merge_tests + b.csg_merge_tests;
+    ttf_tests = a.ttf_tests + b.ttf_tests;
+    ttf_hits = a.ttf_hits + b.ttf_hits;
     csg_merge_hits = a.csg_merge_hits + b.csg_merge_hits;
   }

@@ -32,6 +32,8 @@ type t = {
   mutable csg_intersection_hits : int;
   mutable csg_merge_tests : int;
   mutable csg_merge_hits : int;
+  mutable ttf_tests : int;  (** text letters tested (§15.9) *)
+  mutable ttf_hits : int;  (** tests that found a crossing beyond 1e-6 *)
 }
 
 val create : unit -> t

@@ -30,6 +30,7 @@ type ctx = {
   leaf : int array;  (* scratch: the member hit in a CSG *)
   qhits : float array;  (* scratch: every hit of one cylinder, cone or disc, as (depth, part) pairs *)
   torus : Torus.work;  (* room for a torus's quartic and its roots *)
+  ghits : hits;  (* scratch: every crossing of one text letter, as (depth, part) pairs *)
   near : float array;  (* scratch of [nearest]: the best depth so far, the ray's reciprocal direction *)
 }
 
@@ -62,6 +63,7 @@ let make_ctx ?(robust = false) scene stats =
     leaf = [| -1 |];
     qhits = Array.make max_hits 0.;
     torus = Torus.create_work ();
+    ghits = { h = Array.make 64 0. };
     near = Array.make 4 0.;
   }
 let black = { r = 0.; g = 0.; b = 0.; tr = 0. }
@@ -424,6 +426,32 @@ let torus_depth ctx t o d lo =
   done;
   !best
 
+(* §15.9: every crossing of a text letter, counted as POV-Ray counts them ("True Type Font"
+   tests and successes); the (depth, part) pairs are left in [ctx.ghits]. *)
+let glyph_hits ctx (g : Glyph.t) (o : Vec.t) (d : Vec.t) =
+  let stats = ctx.stats in
+  stats.ttf_tests <- stats.ttf_tests + 1;
+  let room = Glyph.max_hits g.outline in
+  if Array.length ctx.ghits.h < room then ctx.ghits.h <- Array.make room 0.;
+  let k = Glyph.hits g o d ctx.ghits.h in
+  if k > 0 then stats.ttf_hits <- stats.ttf_hits + 1;
+  k
+
+(* the nearest crossing at least [lo], the first of equal ones, its part left in [ctx.sub] *)
+let glyph_depth ctx g o d lo =
+  let k = glyph_hits ctx g o d in
+  let h = ctx.ghits.h in
+  let best = ref infinity and part = ref 0 in
+  for i = 0 to k - 1 do
+    let t = h.(2 * i) in
+    if t >= lo && t < !best then begin
+      best := t;
+      part := int_of_float h.((2 * i) + 1)
+    end
+  done;
+  if !best < infinity then ctx.sub.(0) <- !part;
+  !best
+
 (* Where the ray enters POV-Ray's box [b] of an object (Check_And_Enqueue, with the ray as Rayinfo
    holds it: origin and reciprocal direction in single precision, and the slab arithmetic in single
    precision too), or infinity when it misses the box. *)
@@ -492,6 +520,7 @@ let rec hit_shape ctx shape (o : Vec.t) (d : Vec.t) lo =
   | Cone c -> nearest_listed ctx (cone_hits ctx c o d ctx.qhits) lo
   | Disc dc -> nearest_listed ctx (disc_hits ctx dc o d ctx.qhits) lo
   | Torus t -> torus_depth ctx t o d lo
+  | Glyph g -> glyph_depth ctx g o d lo
   | Triangle t | Smooth_triangle t ->
       (* §2.4 *)
       stats.triangle_tests <- stats.triangle_tests + 1;
@@ -637,6 +666,15 @@ and all_hits ctx (ob : obj) (o : Vec.t) (d : Vec.t) lo n =
         n := push_ray ctx !n lo ctx.qhits.(i) (-1) id o d
       done;
       !n
+  | Glyph g ->
+      (* TrueType::All_Intersections: the faces, then the walls, in the order found *)
+      let k = glyph_hits ctx g o d in
+      let n = ref n in
+      for i = 0 to k - 1 do
+        let h = ctx.ghits.h in
+        n := push_ray ctx !n lo h.(2 * i) (int_of_float h.((2 * i) + 1)) id o d
+      done;
+      !n
 
 (* Box::All_Intersections: the near crossing beyond the near limit, then the far one. *)
 and box_pair ctx n lo id o d =
@@ -722,7 +760,7 @@ and csg_hits ctx (c : csg) o d lo n =
             if !n > n0 then stats.csg_union_hits <- stats.csg_union_hits + 1;
             !n
         | Csg { kind = Merge | Intersection | Clipped; _ }
-        | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ ->
+        | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ ->
             let e = all_hits ctx members.(0) o d lo n in
             keep_hits ctx members ~skip:0 ~want:true ~reverse:false n e)
   in
@@ -807,7 +845,7 @@ let nearest ctx (g : group) (o : Vec.t) (d : Vec.t) lo hi =
     if replaces ctx ob t nr.(0) !id o d then begin
       nr.(0) <- t;
       (* a CSG reports the member hit *)
-      id := (match ob.shape with Csg _ -> ctx.leaf.(0) | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ -> ob.id);
+      id := (match ob.shape with Csg _ -> ctx.leaf.(0) | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ -> ob.id);
       sub := ctx.sub.(0)
     end
   in
@@ -859,7 +897,7 @@ let surface_of obj sub =
       let t = Mesh.texture m.mesh sub in
       if t >= 0 then obj.face_surfs.(t) else obj.surf
   | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _
-  | Disc _ | Torus _ | Csg _ ->
+  | Disc _ | Torus _ | Glyph _ | Csg _ ->
       obj.surf
 
 (* Box::Normal: the outward axis of the side hit (1–6). *)
@@ -892,6 +930,7 @@ let normal obj sub (p : Vec.t) : Vec.t =
   | Box _ -> box_side_normal sub
   | Box_trans { btr; _ } -> Transform.normalize (Transform.normal btr (box_side_normal sub))
   | Torus t -> Torus.normal t p
+  | Glyph g -> Glyph.normal g sub
   | Sphere s -> Vec.make ((p.x -. s.cx) /. s.radius) ((p.y -. s.cy) /. s.radius) ((p.z -. s.cz) /. s.radius)
   | Ellipsoid { sp = s; etr } ->
       (* Sphere::Normal: P' − C in object space, by the inverse transpose, normalised (§14.6) *)
@@ -919,7 +958,7 @@ let geometric_normal obj sub (p : Vec.t) =
   match obj.shape with
   | Smooth_triangle t -> Vec.make t.nx t.ny t.nz
   | Mesh m -> if m.moved then Transform.normalize (Transform.normal m.tr (Mesh.face_normal m.mesh sub)) else Mesh.face_normal m.mesh sub
-  | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Csg _ -> normal obj sub p
+  | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Csg _ -> normal obj sub p
 
 (* A hit point put back onto a sphere: o + t·d is off by rounding errors of the size of the ray's
    length, a point projected from the centre by those of the centre and radius only. *)
@@ -932,7 +971,7 @@ let refine obj (p : Vec.t) =
   match obj.shape with
   | Sphere s -> onto s.cx s.cy s.cz s.radius p
   | Ellipsoid { sp = s; etr } -> Transform.point etr (onto s.cx s.cy s.cz s.radius (Transform.inv_point etr p))
-  | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Csg _ -> p
+  | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Csg _ -> p
 
 let norm_inf (v : Vec.t) = Float.max (Float.abs v.x) (Float.max (Float.abs v.y) (Float.abs v.z))
 
@@ -1010,7 +1049,7 @@ let shadow ctx ~slot (p : Vec.t) (ng : Vec.t) e (l : Vec.t) dist interiors (lc :
         (* a cached CSG shadows only if the member hit is opaque *)
         match sc.objects.(cached).shape with
         | Csg _ -> sc.objects.(ctx.leaf.(0)).opaque
-        | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ -> true
+        | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ -> true
       in
       if in_cache then Rgb.black
       else

@@ -20,11 +20,12 @@ type ctx = {
   leaf : int array;
   qhits : float array;
   torus : Torus.work;
+  ghits : hits;
   near : float array;
 }
 (** What a trace reads: the compiled scene, the worker's statistics, scratch space (the last
     hit's depth and mesh face, traversal stacks, a box's crossings, a CSG's hits and member hit,
-    the hits of one cylinder, cone or disc, a torus's quartic, the nearest-hit search's best depth
+    the hits of one cylinder, cone or disc, a torus's quartic, a text letter's crossings, the nearest-hit search's best depth
     and reciprocal direction) and POV-Ray's shadow cache (§4: per light, the opaque object that
     last blocked it), all private to one worker; and the mode's limits: the
     depths shapes accept, the nearest depth any ray accepts (1e-4, §2.1), and whether secondary

@@ -111,6 +111,9 @@ let rec shape = function
   | Torus { major; minor; sturm; trans = t } ->
       Printf.sprintf "torus { %s, %s%s%s" (num major) (num minor) (if sturm then " sturm" else "")
         (trans (if Transform.is_identity t then None else Some t))
+  | Glyph { outline; depth; trans = t } ->
+      Printf.sprintf "glyph { // %d contours, %d segments, box <%d, %d> … <%d, %d> of %d units per em, depth %s%s" outline.contours
+        outline.nseg outline.xmin outline.ymin outline.xmax outline.ymax outline.units_per_em (num depth) (trans (Some t))
   | Mesh { mesh; trans = t; textures } ->
       let b = Mesh.bounds mesh in
       Printf.sprintf "mesh { // %d triangles within <%s, %s, %s> … <%s, %s, %s>%s%s" mesh.faces (num b.(0)) (num b.(1))

@@ -115,6 +115,9 @@ let rec shape (s : Scene.shape) op : Scene.shape =
   | Torus t ->
       (* §15.5, Torus::Translate/Rotate/Scale all call Transform: composed into its Trans *)
       Torus { t with trans = attach (Some t.trans) op }
+  | Glyph g ->
+      (* §15.9, TrueType::Translate/Rotate/Scale all call Transform: composed into its Trans *)
+      Glyph { g with trans = attach (Some g.trans) op }
   | Mesh { mesh; trans; textures } ->
       (* §2.6, Mesh::Translate/Rotate/Scale all call Transform *)
       Mesh { mesh; trans = Some (attach trans op); textures = Array.map (fun t -> texture t op) textures }
@@ -142,12 +145,12 @@ let scene ~scale ~translate (s : Scene.t) : Scene.t =
     let scaling =
       match o.shape with
       | Smooth_triangle _ -> Transform (Transform.scale sv)
-      | Sphere _ | Plane _ | Triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Csg _ -> Scale sv
+      | Sphere _ | Plane _ | Triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Csg _ | Glyph _ -> Scale sv
     in
     let sh =
       match o.shape with
       | Csg { kind; members } -> Scene.Csg { kind; members = List.map (fun (m : Scene.member) -> { m with mobj = obj m.mobj }) members }
-      | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ -> shape (shape o.shape scaling) (Translate translate)
+      | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Glyph _ -> shape (shape o.shape scaling) (Translate translate)
     in
     let texture = texture (texture o.texture (Scale sv)) (Translate translate) in
     { o with shape = sh; texture; interior = { o.interior with fade_distance = o.interior.fade_distance *. scale } }

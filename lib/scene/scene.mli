@@ -117,6 +117,10 @@ type shape =
       (** §16: a CSG kept whole (a merge, an intersection or difference, a union with
           [split_union off]); its members are already moved by its transforms and carry the
           texture passed down to them (§16.5) *)
+  | Glyph of { outline : Glyph.outline; depth : float; trans : Transform.t }
+      (** §15.9: one letter of a text object (which is a union of its letters): the outline in
+          z = 0 extruded to z = [depth], mapped by [trans] (the letter's place in the string, then
+          every modifier); [inverse] is CSG's, as for every primitive (§16.3) *)
 
 (** The kinds of CSG after parsing: a difference is an intersection whose later members are
     inverted, and an inverted CSG has been morphed (§16.1, §16.3). [Clipped] is an object with

@@ -4,7 +4,10 @@
 type t = { read : string list; write : string list }
 
 let standard_include_dir = "/usr/share/povray-3.7/include"
-let default = { read = [ Filename.current_dir_name; standard_include_dir ]; write = [] }
+(* Debian installs the include directory's fonts (cyrvetic.ttf, timrom.ttf, …) as symbolic links
+   into this directory; POV-Ray reads them through the include directory (§15.9) *)
+let standard_font_dir = "/usr/share/fonts/truetype/povray"
+let default = { read = [ Filename.current_dir_name; standard_include_dir; standard_font_dir ]; write = [] }
 let allow_read t dir = { t with read = t.read @ [ dir ] }
 let allow_write t dir = { t with write = t.write @ [ dir ] }
 

@@ -9,6 +9,10 @@ val standard_include_dir : string
 (** [standard_include_dir] is where POV-Ray's include files are installed
     ([/usr/share/povray-3.7/include]). *)
 
+val standard_font_dir : string
+(** [standard_font_dir] is where the standard include directory's font links lead on Debian
+    ([/usr/share/fonts/truetype/povray]); it is readable by default, like the include directory. *)
+
 val default : t
 (** [default] reads under the working directory and [standard_include_dir], and writes nowhere. *)
 

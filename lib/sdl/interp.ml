@@ -114,7 +114,7 @@ let load_string opts ~file text =
       cur = { Token.kind = Eof; loc = Loc.none }; have = false; cur_elem = None; no_expand = false; defer = false; streams = [||];
       depth = 0; opts; global; tables = [ global ]; includes = 0; macro_depth = 0;
       macro_calls = 0; iterations = 0; nesting = 0; braces = 0; object_count = 0;
-      version = 370; version_set = false; warnings = [];
+      version = 370; version_set = false; charset = Ascii; warnings = [];
       objects = []; lights = []; camera = None; background = None; sky = None;
       assumed_gamma = None; max_trace_level = 5; adc_bailout = 1. /. 255.; ambient_light = Rgb.white;
       default_texture = Defaults.texture;

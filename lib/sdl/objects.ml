@@ -48,7 +48,7 @@ let set_sturm (o : V.obj) =
 let rec invert (o : V.obj) : V.obj =
   match o.shape with
   | Prim (Plane { normal; offset; trans }) -> { o with shape = Prim (Plane { normal = Vec.neg normal; offset = -.offset; trans }) }
-  | Prim (Sphere _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Csg _) -> { o with inverted = not o.inverted }
+  | Prim (Sphere _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Csg _ | Glyph _) -> { o with inverted = not o.inverted }
   | Csg { members; _ } when List.for_all (function V.Member_light _ -> true | V.Member_obj _ -> false) members ->
       o (* lights only (a light in object position): nothing to invert *)
   | Csg { kind = Clipped; members = V.Member_obj c :: clips; split } ->
@@ -78,7 +78,7 @@ let new_obj shape loc = new_obj_of (V.Prim shape) loc
 
 (* Objects povml does not render yet: inside a union they are reported as "not supported yet". *)
 let unsupported_objects =
-  [ "polygon"; "prism"; "lathe"; "sor"; "blob"; "text"; "height_field";
+  [ "polygon"; "prism"; "lathe"; "sor"; "blob"; "height_field";
     "isosurface"; "superellipsoid"; "julia_fractal"; "parametric"; "bicubic_patch"; "ovus"; "quadric"; "cubic";
     "quartic"; "poly"; "sphere_sweep"; "lemon" ]
 
@@ -183,6 +183,67 @@ let unit_normal st loc (n : Vec.t) =
   else Vec.normalize n
 
 let comma st = ignore (accept st Comma)
+
+(* §15.9: a string argument of text (the font file, the string), located when missing *)
+let text_string st what =
+  let l = peek_loc st in
+  match peek st with
+  | Comma | RBrace -> Error.raise_at l "text needs %s here" what
+  | _ -> (
+      match Expr.parse_expr st with
+      | V.String s -> s
+      | v -> Error.raise_at l "text needs %s (a string) here, not %s" what (V.kind_name v))
+
+(* §15.9: the character codes of a text's string: UTF-8 decoded with charset utf8 (characters
+   beyond 0xFFFF dropped, as POV-Ray keeps UCS-2 only); with ascii, the default, a byte beyond 127
+   becomes a space (before 3.5, it is kept) *)
+let text_codes st loc s =
+  let n = String.length s in
+  let b i = Char.code s.[i] in
+  match st.charset with
+  | Sys ->
+      (* POV-Ray 3.7 on Unix cannot convert the system's text format *)
+      Error.raise_at loc "charset sys: the string cannot be converted from the system's text format to Unicode (use charset utf8)"
+  | Utf8 ->
+    let acc = ref [] and i = ref 0 in
+    let cont k = !i + k < n && b (!i + k) land 0xC0 = 0x80 in
+    while !i < n do
+      let c = b !i in
+      if c < 0x80 then (acc := c :: !acc; incr i)
+      else if c land 0xE0 = 0xC0 && cont 1 then (acc := ((c land 0x1F) lsl 6) lor (b (!i + 1) land 0x3F) :: !acc; i := !i + 2)
+      else if c land 0xF0 = 0xE0 && cont 1 && cont 2 then (
+        acc := ((c land 0x0F) lsl 12) lor ((b (!i + 1) land 0x3F) lsl 6) lor (b (!i + 2) land 0x3F) :: !acc;
+        i := !i + 3)
+      else if c land 0xF8 = 0xF0 && cont 1 && cont 2 && cont 3 then i := !i + 4
+      else begin
+        warn st loc "the text string is not valid UTF-8: a byte 0x%02X is left out" c;
+        incr i
+      end
+    done;
+    Array.of_list (List.rev !acc)
+  | Ascii ->
+    let version = if st.version_set then st.version else 362 in
+    let replaced = ref false in
+    let codes = Array.init n (fun i -> let c = b i in if c > 127 && version >= 350 then (replaced := true; 32) else c) in
+    if !replaced then warn st loc "a non-ASCII character of the text string has been replaced by a space (the charset is ascii; write global_settings { charset utf8 })";
+    codes
+
+(* §15.9: a font file is searched like an include file (the scene's directory, +L paths, the
+   standard include directory), a name without an extension also with ".ttf" appended, and read
+   through the access policy *)
+let load_font st loc name =
+  let found =
+    match find_file ~inc:false st name with
+    | Some p -> Some p
+    | None -> if String.contains (Filename.basename name) '.' then None else find_file ~inc:false st (name ^ ".ttf")
+  in
+  match found with
+  | None -> Error.raise_at loc "cannot find the font file \"%s\" (searched %s)" name (String.concat ", " (include_dirs st))
+  | Some path -> (
+      Access.check_read st.opts.access loc path;
+      match Font.parse (read_file path) with
+      | Ok f -> f
+      | Error e -> Error.raise_at loc "the font file \"%s\" is not a usable TrueType font: %s" name e)
 
 let show_vec (v : Vec.t) = Printf.sprintf "<%g, %g, %g>" v.x v.y v.z
 
@@ -447,6 +508,43 @@ let rec parse_object st : V.obj =
       let minor = parse_float st in
       let shape = Scene.Torus { major; minor; sturm = false; trans = Transform.identity } in
       parse_object_mods st (new_obj shape loc) "torus"
+  | Ident "text" ->
+      (* §15.9: text { ttf "font" "string", thickness, <offset> }: a union of one extruded glyph
+         per character (POV-Ray makes it a CSG union, dissolved like any union), then the
+         modifiers, which move every letter *)
+      advance st;
+      open_block st "text";
+      if not (accept_ident st "ttf") then
+        (match peek st with
+         | Ident "internal" -> Error.raise_at (peek_loc st) "internal fonts are not supported yet: name a TrueType font file with ttf \"file.ttf\""
+         | _ -> unexpected st "'ttf' and a font file name");
+      let floc = peek_loc st in
+      let file = text_string st "the font file name" in
+      ignore (accept st Comma);
+      let sloc = peek_loc st in
+      let str = text_string st "the string to render" in
+      comma st;
+      let depth = parse_float st in
+      comma st;
+      let offset = parse_vector st in
+      let font = load_font st floc file in
+      let letters =
+        match Font.layout ~utf8:(st.charset = Utf8) font (text_codes st sloc str) ~offset with
+        | Error e -> Error.raise_at floc "the font file \"%s\" cannot be read: %s" file e
+        | Ok l -> l
+      in
+      if letters = [] then warn st sloc "the text string is empty: the text object has no letters";
+      let members =
+        List.map
+          (fun ((outline : Glyph.outline), place) ->
+            let trans = Transform.compose Transform.identity (Transform.translate place) in
+            V.Member_obj (new_obj (Scene.Glyph { outline; depth; trans }) loc))
+          letters
+      in
+      (* POV-Ray then turns the whole text by <0.001, 0.001, 0.001> degrees (to avoid cracks
+         where an edge lies along an axis), before the modifiers *)
+      let text = move_obj (Place.Rotate (Vec.make 0.001 0.001 0.001)) (new_obj_of (V.Csg { kind = Union; members; split = true }) loc) in
+      parse_object_mods st text "text"
   | Ident "plane" ->
       advance st;
       open_block st "plane";

@@ -55,6 +55,9 @@ and cond =
   | For_loop of { var : V.t ref; stop : float; step : float; body : Lexer.mark; floc : Loc.t }
   | Switch_case of { value : float; mutable running : bool; sloc : Loc.t }
 
+(* global_settings { charset … } (§15.9) *)
+type charset = Ascii | Utf8 | Sys
+
 type st = {
   mutable frames : frame list;  (* innermost first; never empty *)
   mutable cur : Token.t;  (* the current token, valid when [have] *)
@@ -76,6 +79,7 @@ type st = {
   mutable object_count : int;  (* objects and lights that entered the scene *)
   mutable version : int;  (* languageVersion × 100 *)
   mutable version_set : bool;
+  mutable charset : charset;  (* how a text's string is read *)
   mutable warnings : Error.t list;  (* newest first *)
   mutable objects : Scene.obj list;  (* newest first *)
   mutable lights : Scene.light list;  (* newest first *)
@@ -113,7 +117,7 @@ let keywords =
     "mesh2"; "vertex_vectors"; "normal_vectors"; "uv_vectors"; "texture_list"; "face_indices"; "normal_indices";
     "uv_indices"; "inside_vector"; "box"; "no_image"; "no_reflection"; "double_illuminate"; "spotlight";
     "parallel"; "point_at"; "radius"; "tightness"; "orthographic"; "looks_like"; "cylinder"; "cone"; "disc";
-    "open"; "torus"; "union"; "merge"; "intersection"; "difference"; "inverse"; "split_union"; "clipped_by" ]
+    "open"; "torus"; "union"; "merge"; "intersection"; "difference"; "inverse"; "split_union"; "clipped_by"; "text"; "ttf" ]
   (* pigment patterns (POVRAY-3.7 §17) *)
   @ [ "checker"; "gradient"; "hexagon"; "brick"; "brick_size"; "mortar"; "color_map"; "colour_map"; "frequency";
       "phase"; "ramp_wave"; "triangle_wave"; "sine_wave"; "scallop_wave"; "cubic_wave"; "poly_wave"; "pigment_map" ]
@@ -121,7 +125,7 @@ let keywords =
 (* POV-Ray keywords that a later povml will read; meeting one is a located "not supported yet". *)
 let unsupported =
   [ "polygon";
-    "prism"; "lathe"; "sor"; "blob"; "text"; "height_field"; "isosurface"; "superellipsoid"; "julia_fractal";
+    "prism"; "lathe"; "sor"; "blob"; "height_field"; "isosurface"; "superellipsoid"; "julia_fractal";
     "parametric"; "bicubic_patch"; "ovus"; "quadric"; "cubic"; "quartic"; "poly"; "rotate"; "scale"; "matrix"; "transform";
     "normal"; "material"; "image_map";
     "bozo"; "marble"; "wood"; "agate"; "granite"; "spotted"; "leopard"; "onion"; "radial"; "spiral1";

@@ -50,6 +50,9 @@ and cond =
   | For_loop of { var : V.t ref; stop : float; step : float; body : Lexer.mark; floc : Loc.t }
   | Switch_case of { value : float; mutable running : bool; sloc : Loc.t }
 
+(** [global_settings { charset … }] (§15.9): ascii (the default), utf8 or sys. *)
+type charset = Ascii | Utf8 | Sys
+
 (** The state of one interpretation. *)
 type st = {
   mutable frames : frame list;
@@ -72,6 +75,7 @@ type st = {
   mutable object_count : int;  (** objects and lights that entered the scene *)
   mutable version : int;
   mutable version_set : bool;
+  mutable charset : charset;  (** [global_settings { charset … }]: how a text's string is read (§15.9) *)
   mutable warnings : Error.t list;
   mutable objects : Scene.obj list;
   mutable lights : Scene.light list;

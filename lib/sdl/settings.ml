@@ -119,7 +119,15 @@ let parse_global_settings st =
     | Ident "ambient_light" -> advance st; st.ambient_light <- parse_rgb st "ambient_light"; loop ()
     | Ident ("number_of_waves" | "noise_generator") -> advance st; ignore (parse_float st); loop ()
     | Ident "irid_wavelength" -> advance st; ignore (parse_rgb st "irid_wavelength"); loop ()
-    | Ident "charset" -> advance st; (match peek st with Ident _ -> advance st | _ -> unexpected st "a charset name"); loop ()
+    | Ident "charset" ->
+        (* §15.9: ascii (the default), utf8 or sys *)
+        advance st;
+        (match peek st with
+         | Ident "ascii" -> advance st; st.charset <- Ascii
+         | Ident "utf8" -> advance st; st.charset <- Utf8
+         | Ident "sys" -> advance st; st.charset <- Sys
+         | _ -> unexpected st "a charset name (ascii, utf8 or sys)");
+        loop ()
     | Ident s when is_unsupported s -> not_supported loc (Printf.sprintf "'%s' in global_settings" s)
     | _ -> unexpected st "a global_settings keyword or '}'"
   in

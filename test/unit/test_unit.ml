@@ -23,6 +23,7 @@ let () =
       ("Quadrics", Test_quadrics.tests);
       ("Polysolv", Test_polysolv.tests);
       ("Torus", Test_torus.tests);
+      ("Text", Test_text.tests);
       ("CSG", Test_csg.tests);
       ("Patterns", Test_patterns.tests);
       ("Trace", Test_trace.tests);
