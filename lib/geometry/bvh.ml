@@ -337,32 +337,33 @@ let[@inline] entry t k ox oy oz idx idy idz tmin tmax =
 
 let recip x = if x = 0. then 1e300 else 1. /. x
 
-(* Visit the primitives whose boxes the ray meets, nearer boxes first; [visit i] returns the new
-   limit beyond which boxes are skipped. *)
-let walk bvh (stack : float array) ox oy oz dx dy dz limit0 visit =
+(* Visit the primitives whose boxes the ray meets, nearer boxes first: [visit state i] for each,
+   which may lower the limit in [lim.(0)] beyond which boxes are skipped. The visitor and its state
+   are passed apart, so that a caller whose visitor is a toplevel function allocates nothing. *)
+let walk_with bvh (stack : float array) ox oy oz dx dy dz (lim : float array) visit state =
   (* the stack holds (node, entry distance) pairs; a node whose box starts beyond the current
      limit when it is popped is skipped *)
   if bvh.nodes > 0 then begin
     let idx = recip dx and idy = recip dy and idz = recip dz in
-    let limit = ref limit0 in
     let sp = ref 0 in
-    let t0 = entry bvh 0 ox oy oz idx idy idz 0. !limit in
+    let t0 = entry bvh 0 ox oy oz idx idy idz 0. lim.(0) in
     if t0 < infinity then begin stack.(0) <- 0.; stack.(1) <- t0; sp := 1 end;
     while !sp > 0 do
       decr sp;
-      if stack.((2 * !sp) + 1) <= !limit then begin
+      if stack.((2 * !sp) + 1) <= lim.(0) then begin
         let k = int_of_float stack.(2 * !sp) in
         let l = bvh.links in
         let axis = iget l ((3 * k) + 2) in
         if axis < 0 then begin
           let first = iget l (3 * k) and cnt = iget l ((3 * k) + 1) in
           for j = first to first + cnt - 1 do
-            limit := fmin !limit (visit (iget bvh.order j))
+            visit state (iget bvh.order j)
           done
         end
         else begin
           let a = iget l (3 * k) and b = iget l ((3 * k) + 1) in
-          let ta = entry bvh a ox oy oz idx idy idz 0. !limit and tb = entry bvh b ox oy oz idx idy idz 0. !limit in
+          let limit = lim.(0) in
+          let ta = entry bvh a ox oy oz idx idy idz 0. limit and tb = entry bvh b ox oy oz idx idy idz 0. limit in
           (* push the farther child first so that the nearer one is visited first *)
           let a_first = ta <= tb in
           let tf = if a_first then tb else ta and tn = if a_first then ta else tb in
@@ -380,6 +381,11 @@ let walk bvh (stack : float array) ox oy oz dx dy dz limit0 visit =
       end
     done
   end
+
+(* [walk] with the limit in a one-slot array, lowered to what [visit] returns. *)
+let walk bvh stack ox oy oz dx dy dz limit0 visit =
+  let lim = [| limit0 |] in
+  walk_with bvh stack ox oy oz dx dy dz lim (fun visit i -> lim.(0) <- fmin lim.(0) (visit i)) visit
 
 let box_min t a = fget t.boxes a
 let box_max t a = fget t.boxes (3 + a)

@@ -40,6 +40,13 @@ val walk : t -> float array -> float -> float -> float -> float -> float -> floa
     first; [visit] returns the new limit ([limit] at the start). [stack] needs two slots per level
     of the tree (512 is ample). *)
 
+val walk_with :
+  t -> float array -> float -> float -> float -> float -> float -> float -> float array -> ('a -> int -> unit) -> 'a -> unit
+(** [walk_with bvh stack ox oy oz dx dy dz lim visit state] is [walk] with the limit kept in
+    [lim.(0)]: it calls [visit state i] for every primitive [i] in a leaf whose box the ray meets
+    before the current [lim.(0)], nearer boxes first, and [visit] may lower [lim.(0)]. With a
+    toplevel [visit] it allocates nothing. *)
+
 val box_min : t -> int -> float
 (** [box_min bvh a] is the root box's minimum along axis [a] (the tree must not be empty). *)
 

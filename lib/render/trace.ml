@@ -31,8 +31,16 @@ type ctx = {
   qhits : float array;  (* scratch: every hit of one cylinder, cone or disc, as (depth, part) pairs *)
   torus : Torus.work;  (* room for a torus's quartic and its roots *)
   ghits : hits;  (* scratch: every crossing of one text letter, as (depth, part) pairs *)
-  near : float array;  (* scratch of [nearest]: the best depth so far, the ray's reciprocal direction *)
+  near : float array;
+      (* scratch of [nearest]: the best depth so far, the ray's reciprocal direction, the least
+         depth accepted *)
+  walk_lim : float array;  (* scratch of [nearest]: the limit of the hierarchy's walk *)
+  ray : cursor;  (* scratch of [nearest]: the ray and the best object so far *)
 }
+
+(* The state of one call of [nearest], kept here so that its visitor is a toplevel function and
+   a call allocates nothing. *)
+and cursor = { mutable in_group : group; mutable from : Vec.t; mutable dir : Vec.t; mutable best_id : int; mutable best_sub : int }
 
 (* Room for the hits of a CSG's members: [hit_width] floats per hit (depth, sub, leaf id, and the
    hit point x, y, z), grown when a ray crosses more surfaces than it holds. *)
@@ -64,7 +72,9 @@ let make_ctx ?(robust = false) scene stats =
     qhits = Array.make max_hits 0.;
     torus = Torus.create_work ();
     ghits = { h = Array.make 64 0. };
-    near = Array.make 4 0.;
+    near = Array.make 5 0.;
+    walk_lim = [| 0. |];
+    ray = { in_group = scene.seen; from = Vec.zero; dir = Vec.zero; best_id = -1; best_sub = -1 };
   }
 let black = { r = 0.; g = 0.; b = 0.; tr = 0. }
 
@@ -835,60 +845,81 @@ let[@inline] recip x = if x = 0. then 1e300 else 1. /. x
    [ctx.depth.(0)] and, for a mesh, its face in [ctx.sub.(0)]. Of equal depths the one POV-Ray
    meets first wins ([wins_tie]); in the robust mode, of depths within rounding of each other the
    one written first. *)
-let nearest ctx (g : group) (o : Vec.t) (d : Vec.t) lo hi =
-  (* the best depth and the reciprocal direction live in [ctx.near], unboxed *)
-  let nr = ctx.near in
-  nr.(0) <- hi;
-  let id = ref (-1) and sub = ref (-1) in
-  let try_obj ob =
-    let t = hit_shape ctx ob.shape o d lo in
-    if replaces ctx ob t nr.(0) !id o d then begin
-      nr.(0) <- t;
-      (* a CSG reports the member hit *)
-      id := (match ob.shape with Csg _ -> ctx.leaf.(0) | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ -> ob.id);
-      sub := ctx.sub.(0)
-    end
-  in
-  Array.iter try_obj g.unbounded;
+(* [nearest]'s test of the object [ob], the ray and the best so far in [ctx.ray] and [ctx.near] *)
+let try_obj ctx ob =
+  let r = ctx.ray and nr = ctx.near in
+  let o = r.from and d = r.dir in
+  let t = hit_shape ctx ob.shape o d nr.(4) in
+  if replaces ctx ob t nr.(0) r.best_id o d then begin
+    nr.(0) <- t;
+    (* a CSG reports the member hit *)
+    r.best_id <- (match ob.shape with Csg _ -> ctx.leaf.(0) | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ -> ob.id);
+    r.best_sub <- ctx.sub.(0)
+  end
+
+(* [nearest]'s visitor of the bounded object [i] met by the walk *)
+let visit_bounded ctx i =
+  let r = ctx.ray and nr = ctx.near in
+  let g = r.in_group and o = r.from and d = r.dir in
   let sp = g.spheres and bx = g.boxes in
+  let r2 = Array.unsafe_get sp ((4 * i) + 3) in
+  if r2 = r2 then begin
+    (* a sphere, straight from the flat array *)
+    let t = sphere_depth ctx.stats ctx.lim (Array.unsafe_get sp (4 * i)) (Array.unsafe_get sp ((4 * i) + 1)) (Array.unsafe_get sp ((4 * i) + 2)) r2 o d nr.(4) in
+    if replaces ctx (Array.unsafe_get g.bounded i) t nr.(0) r.best_id o d then begin
+      nr.(0) <- t;
+      r.best_id <- (Array.unsafe_get g.bounded i).id;
+      r.best_sub <- -1
+    end
+  end
+  else begin
+    let b = 6 * i in
+    let x0 = Array.unsafe_get bx b in
+    if x0 <> x0 then try_obj ctx g.bounded.(i)
+    else begin
+      (* a costly shape is tried only when the ray meets its own box before the limit, as
+         it would meet the box of a leaf holding the shape alone *)
+      let best = nr.(0) in
+      let lim = if ctx.robust && r.best_id >= 0 then best +. tie_tolerance o best else best in
+      let idx = nr.(1) and idy = nr.(2) and idz = nr.(3) in
+      let tx0 = (x0 -. o.x) *. idx and tx1 = (Array.unsafe_get bx (b + 3) -. o.x) *. idx in
+      let ty0 = (Array.unsafe_get bx (b + 1) -. o.y) *. idy and ty1 = (Array.unsafe_get bx (b + 4) -. o.y) *. idy in
+      let tz0 = (Array.unsafe_get bx (b + 2) -. o.z) *. idz and tz1 = (Array.unsafe_get bx (b + 5) -. o.z) *. idz in
+      let near = fmax (fmax (fmin tx0 tx1) (fmin ty0 ty1)) (fmax (fmin tz0 tz1) 0.) in
+      let far = fmin (fmin (fmax tx0 tx1) (fmax ty0 ty1)) (fmin (fmax tz0 tz1) lim) in
+      if near <= far then try_obj ctx g.bounded.(i)
+    end
+  end;
+  (* the robust mode still looks for ties just beyond the best depth *)
+  let l = if ctx.robust && r.best_id >= 0 then nr.(0) +. tie_tolerance o nr.(0) else nr.(0) in
+  let wl = ctx.walk_lim in
+  wl.(0) <- fmin wl.(0) l
+
+(* The nearest object of [g] hit at a depth in [lo, hi): its id, or −1. Its depth is left in
+   [ctx.depth.(0)] and, for a mesh, its face in [ctx.sub.(0)]. Of equal depths the one POV-Ray
+   meets first wins ([wins_tie]); in the robust mode, of depths within rounding of each other the
+   one written first. The state of the search lives in [ctx.near] and [ctx.ray]. *)
+let nearest ctx (g : group) (o : Vec.t) (d : Vec.t) lo hi =
+  let nr = ctx.near and r = ctx.ray in
+  nr.(0) <- hi;
+  nr.(4) <- lo;
+  r.in_group <- g;
+  r.from <- o;
+  r.dir <- d;
+  r.best_id <- -1;
+  r.best_sub <- -1;
+  let un = g.unbounded in
+  for k = 0 to Array.length un - 1 do try_obj ctx (Array.unsafe_get un k) done;
   nr.(1) <- recip d.x;
   nr.(2) <- recip d.y;
   nr.(3) <- recip d.z;
-  if g.bvh.nodes > 0 then
-    Bvh.walk g.bvh ctx.stack o.x o.y o.z d.x d.y d.z hi (fun i ->
-        let r2 = Array.unsafe_get sp ((4 * i) + 3) in
-        if r2 = r2 then begin
-          (* a sphere, straight from the flat array *)
-          let t = sphere_depth ctx.stats ctx.lim (Array.unsafe_get sp (4 * i)) (Array.unsafe_get sp ((4 * i) + 1)) (Array.unsafe_get sp ((4 * i) + 2)) r2 o d lo in
-          if replaces ctx (Array.unsafe_get g.bounded i) t nr.(0) !id o d then begin
-            nr.(0) <- t;
-            id := (Array.unsafe_get g.bounded i).id;
-            sub := -1
-          end
-        end
-        else begin
-          let b = 6 * i in
-          let x0 = Array.unsafe_get bx b in
-          if x0 <> x0 then try_obj g.bounded.(i)
-          else begin
-            (* a costly shape is tried only when the ray meets its own box before the limit, as
-               it would meet the box of a leaf holding the shape alone *)
-            let best = nr.(0) in
-            let lim = if ctx.robust && !id >= 0 then best +. tie_tolerance o best else best in
-            let idx = nr.(1) and idy = nr.(2) and idz = nr.(3) in
-            let tx0 = (x0 -. o.x) *. idx and tx1 = (Array.unsafe_get bx (b + 3) -. o.x) *. idx in
-            let ty0 = (Array.unsafe_get bx (b + 1) -. o.y) *. idy and ty1 = (Array.unsafe_get bx (b + 4) -. o.y) *. idy in
-            let tz0 = (Array.unsafe_get bx (b + 2) -. o.z) *. idz and tz1 = (Array.unsafe_get bx (b + 5) -. o.z) *. idz in
-            let near = fmax (fmax (fmin tx0 tx1) (fmin ty0 ty1)) (fmax (fmin tz0 tz1) 0.) in
-            let far = fmin (fmin (fmax tx0 tx1) (fmax ty0 ty1)) (fmin (fmax tz0 tz1) lim) in
-            if near <= far then try_obj g.bounded.(i)
-          end
-        end;
-        (* the robust mode still looks for ties just beyond the best depth *)
-        if ctx.robust && !id >= 0 then nr.(0) +. tie_tolerance o nr.(0) else nr.(0));
+  if g.bvh.nodes > 0 then begin
+    ctx.walk_lim.(0) <- hi;
+    Bvh.walk_with g.bvh ctx.stack o.x o.y o.z d.x d.y d.z ctx.walk_lim visit_bounded ctx
+  end;
   ctx.depth.(0) <- nr.(0);
-  ctx.sub.(0) <- !sub;
-  !id
+  ctx.sub.(0) <- r.best_sub;
+  r.best_id
 
 (* The surface at a hit: a mesh face may carry its own texture. *)
 let surface_of obj sub =
