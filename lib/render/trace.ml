@@ -1051,6 +1051,42 @@ let aim (lp : Vec.t) (o : Vec.t) =
    stops counting hits. *)
 let robust_margin (p : Vec.t) (lp : Vec.t) remaining = (1e-9 *. remaining) +. error_bound p lp remaining
 
+(* The walk of a shadow ray from [o] along [l] towards the light at [lp], [remaining] from it,
+   through non-opaque occluders ([shadow] below); [first] on the first segment, whose opaque
+   blocker is cached. *)
+let rec shadow_walk ctx ~slot (p : Vec.t) (lp : Vec.t) lo first (o : Vec.t) (l : Vec.t) remaining interiors (lc : Rgb.t) =
+  let sc = ctx.scene in
+  let i = nearest ctx sc.occluders o l lo remaining in
+  let t = ctx.depth.(0) in
+  if i < 0 || t >= remaining -. (if ctx.robust then robust_margin p lp remaining else shadow_tolerance) then lc
+  else
+    let obj = sc.objects.(i) in
+    if obj.opaque then begin
+      (* the cache holds the top-level object (a CSG, not its member), and a CSG only when
+         its own texture is opaque: POV-Ray tests the OPAQUE flag of Intersection.Csg *)
+      if first && not sc.objects.(obj.top).surf.transparent then ctx.shadow_cache.(slot) <- obj.top;
+      Rgb.black
+    end
+    else
+      let sf = surface_of obj ctx.sub.(0) in
+      (* §4, §17.8: a patterned pigment is evaluated where the shadow ray crosses it *)
+      let f = match sf.paint with Fixed -> sf.filcol | Varying at -> (at (Vec.madd o t l)).filcol in
+      let f =
+        if List.mem obj.iid interiors && obj.fade_power > 0. && Float.abs obj.fade_distance > epsilon then
+          fade_factor obj.fade_colour obj.fade_distance obj.fade_power t f
+        else f
+      in
+      let lc = Rgb.make (f32 (lc.r *. f.r)) (f32 (lc.g *. f.g)) (f32 (lc.b *. f.b)) in
+      let interiors = if List.mem obj.iid interiors then remove obj.iid interiors else obj.iid :: interiors in
+      let q = Vec.madd o t l in
+      if not ctx.robust then shadow_walk ctx ~slot p lp lo false q l (remaining -. t) interiors lc
+      else
+        let sub = ctx.sub.(0) in
+        let q = refine obj q in
+        let next = origin ctx q (geometric_normal obj sub q) (error_bound o q obj.mag) l in
+        let l, remaining = aim lp next in
+        shadow_walk ctx ~slot p lp lo false next l remaining interiors lc
+
 let shadow ctx ~slot (p : Vec.t) (ng : Vec.t) e (l : Vec.t) dist interiors (lc : Rgb.t) : Rgb.t =
   let sc = ctx.scene in
   ctx.stats.shadow_rays <- ctx.stats.shadow_rays + 1;
@@ -1084,39 +1120,7 @@ let shadow ctx ~slot (p : Vec.t) (ng : Vec.t) e (l : Vec.t) dist interiors (lc :
       in
       if in_cache then Rgb.black
       else
-      let rec walk first (o : Vec.t) (l : Vec.t) remaining interiors (lc : Rgb.t) =
-        let i = nearest ctx sc.occluders o l lo remaining in
-        let t = ctx.depth.(0) in
-        if i < 0 || t >= remaining -. (if ctx.robust then robust_margin p lp remaining else shadow_tolerance) then lc
-        else
-          let obj = sc.objects.(i) in
-          if obj.opaque then begin
-            (* the cache holds the top-level object (a CSG, not its member), and a CSG only when
-               its own texture is opaque: POV-Ray tests the OPAQUE flag of Intersection.Csg *)
-            if first && not sc.objects.(obj.top).surf.transparent then ctx.shadow_cache.(slot) <- obj.top;
-            Rgb.black
-          end
-          else
-            let sf = surface_of obj ctx.sub.(0) in
-            (* §4, §17.8: a patterned pigment is evaluated where the shadow ray crosses it *)
-            let f = match sf.paint with Fixed -> sf.filcol | Varying at -> (at (Vec.madd o t l)).filcol in
-            let f =
-              if List.mem obj.iid interiors && obj.fade_power > 0. && Float.abs obj.fade_distance > epsilon then
-                fade_factor obj.fade_colour obj.fade_distance obj.fade_power t f
-              else f
-            in
-            let lc = Rgb.make (f32 (lc.r *. f.r)) (f32 (lc.g *. f.g)) (f32 (lc.b *. f.b)) in
-            let interiors = if List.mem obj.iid interiors then remove obj.iid interiors else obj.iid :: interiors in
-            let q = Vec.madd o t l in
-            if not ctx.robust then walk false q l (remaining -. t) interiors lc
-            else
-              let sub = ctx.sub.(0) in
-              let q = refine obj q in
-              let next = origin ctx q (geometric_normal obj sub q) (error_bound o q obj.mag) l in
-              let l, remaining = aim lp next in
-              walk false next l remaining interiors lc
-      in
-      walk true o l dist interiors lc
+      shadow_walk ctx ~slot p lp lo true o l dist interiors lc
 
 (* ---------------------------------------------------------------------------------------------- *)
 (* Local illumination (§3.3, §3.4) *)
