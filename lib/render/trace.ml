@@ -35,12 +35,10 @@ type ctx = {
       (* scratch of [nearest]: the best depth so far, the ray's reciprocal direction, the least
          depth accepted *)
   walk_lim : float array;  (* scratch of [nearest]: the limit of the hierarchy's walk *)
-  ray : cursor;  (* scratch of [nearest]: the ray and the best object so far *)
+  best : best;  (* scratch of [nearest]: the best object so far and its mesh face *)
 }
 
-(* The state of one call of [nearest], kept here so that its visitor is a toplevel function and
-   a call allocates nothing. *)
-and cursor = { mutable in_group : group; mutable from : Vec.t; mutable dir : Vec.t; mutable best_id : int; mutable best_sub : int }
+and best = { mutable best_id : int; mutable best_face : int }
 
 (* Room for the hits of a CSG's members: [hit_width] floats per hit (depth, sub, leaf id, and the
    hit point x, y, z), grown when a ray crosses more surfaces than it holds. *)
@@ -74,7 +72,7 @@ let make_ctx ?(robust = false) scene stats =
     ghits = { h = Array.make 64 0. };
     near = Array.make 5 0.;
     walk_lim = [| 0. |];
-    ray = { in_group = scene.seen; from = Vec.zero; dir = Vec.zero; best_id = -1; best_sub = -1 };
+    best = { best_id = -1; best_face = -1 };
   }
 let black = { r = 0.; g = 0.; b = 0.; tr = 0. }
 
@@ -841,26 +839,25 @@ let[@inline] fmin (a : float) b = if a < b then a else b
 let[@inline] fmax (a : float) b = if a > b then a else b
 let[@inline] recip x = if x = 0. then 1e300 else 1. /. x
 
-(* The nearest object of [g] hit at a depth in [lo, hi): its id, or −1. Its depth is left in
-   [ctx.depth.(0)] and, for a mesh, its face in [ctx.sub.(0)]. Of equal depths the one POV-Ray
-   meets first wins ([wins_tie]); in the robust mode, of depths within rounding of each other the
-   one written first. *)
-(* [nearest]'s test of the object [ob], the ray and the best so far in [ctx.ray] and [ctx.near] *)
-let try_obj ctx ob =
-  let r = ctx.ray and nr = ctx.near in
-  let o = r.from and d = r.dir in
+(* The ray of one call of [nearest] and what it searches, for its visitor (a toplevel function,
+   so that no closure is built per call); immutable, so that building it needs no write barrier. *)
+type search = { sctx : ctx; sgroup : group; so : Vec.t; sd : Vec.t }
+
+(* [nearest]'s test of the object [ob], the best so far in [ctx.best] and [ctx.near] *)
+let try_obj ctx ob (o : Vec.t) (d : Vec.t) =
+  let r = ctx.best and nr = ctx.near in
   let t = hit_shape ctx ob.shape o d nr.(4) in
   if replaces ctx ob t nr.(0) r.best_id o d then begin
     nr.(0) <- t;
     (* a CSG reports the member hit *)
     r.best_id <- (match ob.shape with Csg _ -> ctx.leaf.(0) | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ -> ob.id);
-    r.best_sub <- ctx.sub.(0)
+    r.best_face <- ctx.sub.(0)
   end
 
 (* [nearest]'s visitor of the bounded object [i] met by the walk *)
-let visit_bounded ctx i =
-  let r = ctx.ray and nr = ctx.near in
-  let g = r.in_group and o = r.from and d = r.dir in
+let visit_bounded st i =
+  let ctx = st.sctx and g = st.sgroup and o = st.so and d = st.sd in
+  let r = ctx.best and nr = ctx.near in
   let sp = g.spheres and bx = g.boxes in
   let r2 = Array.unsafe_get sp ((4 * i) + 3) in
   if r2 = r2 then begin
@@ -869,13 +866,13 @@ let visit_bounded ctx i =
     if replaces ctx (Array.unsafe_get g.bounded i) t nr.(0) r.best_id o d then begin
       nr.(0) <- t;
       r.best_id <- (Array.unsafe_get g.bounded i).id;
-      r.best_sub <- -1
+      r.best_face <- -1
     end
   end
   else begin
     let b = 6 * i in
     let x0 = Array.unsafe_get bx b in
-    if x0 <> x0 then try_obj ctx g.bounded.(i)
+    if x0 <> x0 then try_obj ctx g.bounded.(i) o d
     else begin
       (* a costly shape is tried only when the ray meets its own box before the limit, as
          it would meet the box of a leaf holding the shape alone *)
@@ -887,7 +884,7 @@ let visit_bounded ctx i =
       let tz0 = (Array.unsafe_get bx (b + 2) -. o.z) *. idz and tz1 = (Array.unsafe_get bx (b + 5) -. o.z) *. idz in
       let near = fmax (fmax (fmin tx0 tx1) (fmin ty0 ty1)) (fmax (fmin tz0 tz1) 0.) in
       let far = fmin (fmin (fmax tx0 tx1) (fmax ty0 ty1)) (fmin (fmax tz0 tz1) lim) in
-      if near <= far then try_obj ctx g.bounded.(i)
+      if near <= far then try_obj ctx g.bounded.(i) o d
     end
   end;
   (* the robust mode still looks for ties just beyond the best depth *)
@@ -898,27 +895,24 @@ let visit_bounded ctx i =
 (* The nearest object of [g] hit at a depth in [lo, hi): its id, or −1. Its depth is left in
    [ctx.depth.(0)] and, for a mesh, its face in [ctx.sub.(0)]. Of equal depths the one POV-Ray
    meets first wins ([wins_tie]); in the robust mode, of depths within rounding of each other the
-   one written first. The state of the search lives in [ctx.near] and [ctx.ray]. *)
+   one written first. The best so far lives in [ctx.near] and [ctx.best], the ray in one small record. *)
 let nearest ctx (g : group) (o : Vec.t) (d : Vec.t) lo hi =
-  let nr = ctx.near and r = ctx.ray in
+  let nr = ctx.near and r = ctx.best in
   nr.(0) <- hi;
   nr.(4) <- lo;
-  r.in_group <- g;
-  r.from <- o;
-  r.dir <- d;
   r.best_id <- -1;
-  r.best_sub <- -1;
+  r.best_face <- -1;
   let un = g.unbounded in
-  for k = 0 to Array.length un - 1 do try_obj ctx (Array.unsafe_get un k) done;
+  for k = 0 to Array.length un - 1 do try_obj ctx (Array.unsafe_get un k) o d done;
   nr.(1) <- recip d.x;
   nr.(2) <- recip d.y;
   nr.(3) <- recip d.z;
   if g.bvh.nodes > 0 then begin
     ctx.walk_lim.(0) <- hi;
-    Bvh.walk_with g.bvh ctx.stack o.x o.y o.z d.x d.y d.z ctx.walk_lim visit_bounded ctx
+    Bvh.walk_with g.bvh ctx.stack o.x o.y o.z d.x d.y d.z ctx.walk_lim visit_bounded { sctx = ctx; sgroup = g; so = o; sd = d }
   end;
   ctx.depth.(0) <- nr.(0);
-  ctx.sub.(0) <- r.best_sub;
+  ctx.sub.(0) <- r.best_face;
   r.best_id
 
 (* The surface at a hit: a mesh face may carry its own texture. *)

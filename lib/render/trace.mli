@@ -23,19 +23,18 @@ type ctx = {
   ghits : hits;
   near : float array;
   walk_lim : float array;
-  ray : cursor;
+  best : best;
 }
 (** What a trace reads: the compiled scene, the worker's statistics, scratch space (the last
     hit's depth and mesh face, traversal stacks, a box's crossings, a CSG's hits and member hit,
     the hits of one cylinder, cone or disc, a torus's quartic, a text letter's crossings, the nearest-hit search's best depth,
-    reciprocal direction, least depth, walk limit and ray) and POV-Ray's shadow cache (§4: per light, the opaque object that
+    reciprocal direction, least depth, walk limit and best object) and POV-Ray's shadow cache (§4: per light, the opaque object that
     last blocked it), all private to one worker; and the mode's limits: the
     depths shapes accept, the nearest depth any ray accepts (1e-4, §2.1), and whether secondary
     rays leave from points lifted off the surface (robust mode). *)
 
-and cursor = { mutable in_group : Compiled.group; mutable from : Vec.t; mutable dir : Vec.t; mutable best_id : int; mutable best_sub : int }
-(** The state of one search for the nearest hit: the group searched, the ray, the best object so
-    far and its mesh face; scratch of one worker, so that the search allocates nothing. *)
+and best = { mutable best_id : int; mutable best_face : int }
+(** The nearest-hit search's best object so far and its mesh face (−1 for none). *)
 
 and hits = { mutable h : float array }
 (** Room for the hits of a CSG's members, [hit_width] floats per hit: depth, side or face, the
