@@ -815,7 +815,6 @@ let wins_tie ctx ob cur (o : Vec.t) (d : Vec.t) =
    size or place. *)
 let tie_tolerance (o : Vec.t) t = 0x1p-36 *. (Float.max (Float.abs o.x) (Float.max (Float.abs o.y) (Float.abs o.z)) +. t)
 
-(* Whether [ob], hit at depth [t], replaces the current best [cur] at depth [best]. *)
 (* Whether POV-Ray's bounding tree would never have tested [ob], nearer than the current best
    [best] by rounding only: it takes objects in the order the ray enters their single-precision
    boxes and stops at the first box entered beyond the best depth found so far. So where a box
@@ -827,8 +826,28 @@ let pruned ctx ob t best cur (o : Vec.t) (d : Vec.t) =
   && Array.length ob.pbox > 0
   && pov_entry ob.pbox o d > best
 
+(* The converse of [pruned]: whether [ob], hit just beyond the current best [cur] (farther by
+   rounding only), is what POV-Ray finds. Its bounding tree enters [ob]'s box first, takes [ob]'s
+   hit as the best, and then never tests [cur], whose box it enters beyond that depth. So where a
+   glass cylinder stands on a glass box, a ray inside the cylinder sees the cylinder's end rather
+   than the box's face 1 unit in the last place nearer. Asked only of near ties. *)
+let overtakes ctx ob t best cur (o : Vec.t) (d : Vec.t) =
+  ctx.scene.bounding && cur >= 0
+  && t < best +. (1e-9 *. Float.abs best)
+  && Array.length ob.pbox > 0
+  &&
+  let pb = ctx.scene.objects.(ctx.scene.objects.(cur).top).pbox in
+  Array.length pb > 0
+  &&
+  let ec = pov_entry pb o d in
+  ec > t && pov_entry ob.pbox o d < ec
+
+(* Whether [ob], hit at depth [t], replaces the current best [cur] at depth [best]. *)
 let[@inline] replaces ctx ob t best cur (o : Vec.t) (d : Vec.t) =
-  if not ctx.robust then (t < best && not (pruned ctx ob t best cur o d)) || (t = best && cur >= 0 && wins_tie ctx ob cur o d)
+  if not ctx.robust then
+    (t < best && not (pruned ctx ob t best cur o d))
+    || (t = best && cur >= 0 && wins_tie ctx ob cur o d)
+    || (t > best && overtakes ctx ob t best cur o d)
   else if cur < 0 then t < best
   else
     let tol = tie_tolerance o best in

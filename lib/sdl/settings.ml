@@ -5,6 +5,9 @@ open Reader
 open Expr
 open Materials
 
+(* §1.3: POV-Ray's π/360 (M_PI_360, 0.00872664625997164788), by which the angle is multiplied: A·(π/360)
+   and (A·π)/360 can differ in the last bit (they do for A = 48), and so can every camera ray. *)
+let m_pi_360 = Float.pi /. 360.
 
 let empty_camera =
   { c_location = None; c_direction = None; c_up = None; c_right = None; c_sky = None; c_look_at = None; c_angle = None; c_trans = None; c_ortho = false }
@@ -50,7 +53,7 @@ let build_camera st (c : camera_spec) : Scene.camera =
     | Some (a, loc) ->
         if a >= 180. then Error.raise_at loc "camera angle must be less than 180 degrees, not %g" a;
         if a <= 0. then Error.raise_at loc "camera angle must be greater than 0 degrees, not %g" a;
-        Vec.scale (Vec.length right /. tan (a *. Float.pi /. 360.) /. 2.) (Vec.normalize direction)
+        Vec.scale (Vec.length right /. tan (a *. m_pi_360) /. 2.) (Vec.normalize direction)
   in
   let direction, right, up =
     match c.c_look_at with

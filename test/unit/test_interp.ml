@@ -222,7 +222,14 @@ let test_camera_angle () =
   vec_eq "direction length replaced" (v 0. 0. 0.665) (camera "camera { direction <0,0,5> angle 90 }").direction;
   (* keywords are applied in a fixed order: angle before right still uses the new right *)
   vec_eq "order-independent" (v 0. 0. 1.) (camera "camera { angle 90 right <2,0,0> }").direction;
-  expect_scene_error "angle 180" "camera { angle 180 }" ~line:1 ~col:16 ~sub:"less than 180"
+  expect_scene_error "angle 180" "camera { angle 180 }" ~line:1 ~col:16 ~sub:"less than 180";
+  (* §1.3: the angle is multiplied by π/360 (POV-Ray's M_PI_360), not multiplied by π and then
+     divided by 360: for 48°, 48·(π/360) = 0x1.acee9f37bebd6p-2 but (48·π)/360 = 0x1.acee9f37bebd5p-2,
+     and 1 / tan / 2 gives 1.123018386952108 (0x1.1f7e220cc4171p+0) against 0x1.1f7e220cc4172p+0 —
+     one bit that moves every camera ray and decides coincident-surface ties *)
+  let d = (camera "camera { right <1,0,0> angle 48 }").direction in
+  Alcotest.(check (float 0.)) "angle 48 to the last bit" 0x1.1f7e220cc4171p+0 d.z;
+  Alcotest.(check bool) "not the (A·π)/360 value" true (d.z <> 0x1.1f7e220cc4172p+0)
 
 let test_camera_look_at () =
   (* location <0,5,0>, look_at <5,5,0>: D = x; R = sky × D = y × x = <0,0,-1>;

@@ -208,6 +208,24 @@ let test_depth_ties () =
   result_eq "hierarchy, A first: B's box first" (0., 1., 0.) (shoot (light ^ a ^ b));
   result_eq "hierarchy, B first: B's box first" (0., 1., 0.) (shoot (light ^ b ^ a))
 
+(* A ray inside a cylinder standing on a box (the cylinder's end on the box's top face, y = 0.5),
+   going down. Its depths to the two faces differ by rounding only: the box's top at
+   0.77866380786041611 (0x1.8ead05caadbabp-1), the cylinder's end one unit in the last place
+   farther, 0.77866380786041622. POV-Ray's bounding tree (3 objects with the light) enters the
+   cylinder's box first (the ray starts inside it), takes the end as the best hit, and then skips
+   the box, whose single-precision entry, 0.7786638…, lies beyond that depth: the end is seen.
+   Without the hierarchy (no light: 2 objects) the strictly nearer box face is seen. *)
+let test_overtaking_tie () =
+  let box = "box { <-3.3, 0, -0.8>, <-1.5, 0.5, 0.8> pigment { rgb <1,0,0> } finish { ambient 1 diffuse 0 } }\n" in
+  let cyl = "cylinder { <-2.4, 0.5, 0>, <-2.4, 1.5, 0>, 0.6 pigment { rgb <0,1,0> } finish { ambient 1 diffuse 0 } }\n" in
+  let light = "light_source { <0,10,0>, rgb 0 }\n" in
+  let o = v (-0x1.4d72cee72319cp+1) 0x1.191f757aee3a2p+0 0x1.20b364a18c7a3p-1 in
+  let d = v 0x1.00b5f76b9d548p-2 (-0x1.894be94f3dbfbp-1) (-0x1.2da3db86db2a5p-1) in
+  let shoot text = trace_text ~interiors:[] (v37 ^ text) o d in
+  result_eq "hierarchy, box first: the cylinder's end" (0., 1., 0.) (shoot (light ^ box ^ cyl));
+  result_eq "hierarchy, cylinder first: the cylinder's end" (0., 1., 0.) (shoot (light ^ cyl ^ box));
+  result_eq "no hierarchy: the nearer box face" (1., 0., 0.) (shoot (box ^ cyl))
+
 let test_shadowless () =
   (* a small sphere on the way to the light at <√3,1,0>, off the camera ray *)
   let blocker = "sphere { <sqrt(3)/2, 0.5, 0>, 0.1 }\n" in
@@ -448,6 +466,7 @@ let tests =
     Alcotest.test_case "shadow with interior fade" `Quick test_shadow_fade;
     Alcotest.test_case "shadow cache" `Quick test_shadow_cache;
     Alcotest.test_case "equal depths" `Quick test_depth_ties;
+    Alcotest.test_case "a tie overtaken by the bounding tree" `Quick test_overtaking_tie;
     Alcotest.test_case "shadowless light" `Quick test_shadowless;
     Alcotest.test_case "miss" `Quick test_miss;
     Alcotest.test_case "reflection" `Quick test_reflection;
