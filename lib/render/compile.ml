@@ -237,12 +237,28 @@ let in_pov_box (b : float array) (p : Vec.t) =
   || not
        (p.x < b.(0) || p.y < b.(1) || p.z < b.(2) || p.x > b.(0) +. b.(3) || p.y > b.(1) +. b.(4) || p.z > b.(2) +. b.(5))
 
-(* §6.4: the objects whose bounding box and inside both hold [p], the last one first (the order of
-   the interior list of a ray that starts at [p]). *)
-let interiors_at (objects : obj array) stack p =
-  Array.fold_left
-    (fun acc o -> if o.top = o.id && in_pov_box o.pbox p && inside stack o.shape p then o.iid :: acc else acc)
-    [] objects
+(* §6.4: of the top-level objects [holders], those whose bounding box and inside both hold [p], the
+   last one first (the order of the interior list of a ray that starts at [p]). *)
+let interiors_at (holders : obj array) stack p =
+  Array.fold_left (fun acc o -> if in_pov_box o.pbox p && inside stack o.shape p then o.iid :: acc else acc) [] holders
+
+(* §18.4: the top-level objects, in scene order, whose box an orthographic ray's origin can lie in:
+   the origins lie on the screen, location + x0·right + y0·up with |x0|, |y0| ≤ ½ (twice that
+   here, for antialiasing samples beyond the edge pixels), so the others are left out once, not
+   per ray. Empty for a perspective camera, whose rays share one origin. *)
+let screen_holders (cam : Scene.camera) (tops : obj list) =
+  match cam.projection with
+  | Perspective -> [||]
+  | Orthographic ->
+      let l = cam.location and r = cam.right and u = cam.up in
+      let span a b = Float.abs a +. Float.abs b in
+      let lo = [| l.x -. span r.x u.x; l.y -. span r.y u.y; l.z -. span r.z u.z |]
+      and hi = [| l.x +. span r.x u.x; l.y +. span r.y u.y; l.z +. span r.z u.z |] in
+      let meets (b : float array) =
+        Array.length b = 0
+        || not (b.(0) > hi.(0) || b.(1) > hi.(1) || b.(2) > hi.(2) || b.(0) +. b.(3) < lo.(0) || b.(1) +. b.(4) < lo.(1) || b.(2) +. b.(5) < lo.(2))
+      in
+      Array.of_list (List.filter (fun o -> meets o.pbox) tops)
 
 let group objs =
   let unbounded = List.filter (fun o -> bounds o.shape = None) objs in
@@ -540,5 +556,6 @@ let scene (s : Scene.t) : Compiled.t =
     legacy;
     camera = s.camera;
     start_interiors;
+    screen_holders = screen_holders s.camera tops;
     bounding;
   }

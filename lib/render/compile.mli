@@ -15,5 +15,6 @@ val inside : float array -> Compiled.shape -> Vec.t -> bool
     negated by [inverse]); [stack] is traversal room for meshes (512 floats). *)
 
 val interiors_at : Compiled.obj array -> float array -> Vec.t -> int list
-(** [interiors_at objects stack p] is the ids of the objects whose bounding box and inside hold [p], the last one
+(** [interiors_at holders stack p] is the interiors of the objects of [holders] (top-level objects,
+    such as [Compiled.t.screen_holders]) whose bounding box and inside hold [p], the last one
     first: the interior list of a ray starting at [p] (§6.4, §18.4); [stack] as for [inside]. *)

@@ -184,6 +184,9 @@ type t = {
   legacy : bool;  (** effective version < 3.70 *)
   camera : Scene.camera;
   start_interiors : int list;  (** interiors containing the camera, last entered first (§6.4) *)
+  screen_holders : obj array;
+      (** orthographic camera: the top-level objects whose box can hold a ray's origin, in scene
+          order (§18.4); empty otherwise *)
   bounding : bool;
       (** POV-Ray builds its bounding hierarchy: the scene has at least 3 top-level objects, light
           sources and degenerate triangles included (Bounding_Threshold). Without it objects are

@@ -69,7 +69,7 @@ let sample ctx opts x y =
   | Orthographic ->
       (* every ray has its own origin, so its own interior list *)
       let o = ortho_origin sc.camera opts.width opts.height x y in
-      Trace.trace ctx ~level:0 ~weight:1. ~interiors:(Compile.interiors_at sc.objects ctx.mstack o) ~continued:false o
+      Trace.trace ctx ~level:0 ~weight:1. ~interiors:(Compile.interiors_at sc.screen_holders ctx.mstack o) ~continued:false o
         (Vec.normalize sc.camera.direction)
 
 (* §9.1: colours are compared after x ↦ max(x,0)^(1/aa_gamma), in the working space. *)
