@@ -850,9 +850,14 @@ let resolved st (o : V.obj) =
   let interior = if interior.ior = 0. then { interior with ior = 1. } else interior in
   (texture, interior)
 
+(* The scene object of [o] with [shape], [texture], [interior] and [no_shadow]; its other flags and
+   place are [o]'s. *)
+let scene_obj (o : V.obj) ?(no_shadow = o.no_shadow) shape texture interior : Scene.obj =
+  { Scene.shape; texture; interior; no_shadow; loc = o.oloc; no_image = o.no_image; no_reflection = o.no_reflection; double_illuminate = o.double_illuminate; looks_like = o.looks_like }
+
 let finish_prim st (o : V.obj) shape : Scene.obj =
   let texture, interior = resolved st o in
-  { Scene.shape; texture; interior; no_shadow = o.no_shadow; loc = o.oloc; no_image = o.no_image; no_reflection = o.no_reflection; double_illuminate = o.double_illuminate; looks_like = o.looks_like }
+  scene_obj o shape texture interior
 
 (* A member's interior: its own, or its parent's shared (§16.5). *)
 let member_interior (c : V.obj) parent =
@@ -865,7 +870,7 @@ let member_interior (c : V.obj) parent =
    member (only the top level's is ever tested); lights join the scene's lights. *)
 let rec kept_obj st ~texture ~interior (o : V.obj) : Scene.obj =
   match o.shape with
-  | Prim shape -> { Scene.shape; texture; interior; no_shadow = o.no_shadow; loc = o.oloc; no_image = o.no_image; no_reflection = o.no_reflection; double_illuminate = o.double_illuminate; looks_like = o.looks_like }
+  | Prim shape -> scene_obj o shape texture interior
   | Csg { kind; members; split = _ } ->
       let members =
         List.filter_map
@@ -891,7 +896,7 @@ let rec kept_obj st ~texture ~interior (o : V.obj) : Scene.obj =
         o.no_shadow
         || (match kind with Union -> members <> [] && List.for_all (fun (m : Scene.member) -> m.mobj.no_shadow) members | Merge | Intersection | Clipped -> false)
       in
-      { Scene.shape = Csg { kind; members }; texture; interior; no_shadow; loc = o.oloc; no_image = o.no_image; no_reflection = o.no_reflection; double_illuminate = o.double_illuminate; looks_like = o.looks_like }
+      scene_obj o ~no_shadow (Csg { kind; members }) texture interior
 
 (* An object entering the scene (§16.4, §16.5): a union that may be split is dissolved, its members
    without a texture or interior take the union's, and its no_shadow goes to every member; its
