@@ -465,7 +465,7 @@ let rec parse_object st : V.obj =
       let radius = parse_float st in
       let closed = not (accept_ident st "open") in
       if radius = 0. then warn st rloc "cylinder radius is 0: it cannot be seen";
-      (match Quadric.cylinder ~p1 ~p2 ~radius ~closed with
+      (match Canonical.cylinder ~p1 ~p2 ~radius ~closed with
       | Some shape -> parse_object_mods st (new_obj shape loc) "cylinder"
       | None -> Error.raise_at loc "degenerate cylinder: its end points %s and %s are the same point" (show_vec p1) (show_vec p2))
   | Ident "cone" ->
@@ -482,7 +482,7 @@ let rec parse_object st : V.obj =
       let r2 = parse_float st in
       let closed = not (accept_ident st "open") in
       if r1 = 0. && r2 = 0. then warn st r2loc "both cone radii are 0: it cannot be seen";
-      (match Quadric.cone ~p1 ~r1 ~p2 ~r2 ~closed with
+      (match Canonical.cone ~p1 ~r1 ~p2 ~r2 ~closed with
       | Some shape -> parse_object_mods st (new_obj shape loc) "cone"
       | None -> Error.raise_at loc "degenerate cone: its end points %s and %s are the same point" (show_vec p1) (show_vec p2))
   | Ident "disc" ->
@@ -498,7 +498,7 @@ let rec parse_object st : V.obj =
       comma st;
       let hole = if float_follows st then parse_float st else 0. in
       if Vec.length normal = 0. then Error.raise_at nloc "degenerate disc normal <0,0,0>";
-      parse_object_mods st (new_obj (Quadric.disc ~centre ~normal ~radius ~hole) loc) "disc"
+      parse_object_mods st (new_obj (Canonical.disc ~centre ~normal ~radius ~hole) loc) "disc"
   | Ident "torus" ->
       (* §15.5: torus { R, r } (the comma optional), then its modifiers *)
       advance st;
