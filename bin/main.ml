@@ -119,7 +119,7 @@ let area_bound size v ~is_end =
   | None -> if is_end then size - 1 else 0
   | Some v ->
       (* POV-Ray keeps these values in single precision: 0.9 of 160 is 143.99…, so column 143 *)
-      let v = Trace.f32 v in
+      let v = Precision.f32 v in
       if v < 1. || (is_end && v = 1.) then
         if is_end then int_of_float (float_of_int size *. v) - 1 else int_of_float (float_of_int size *. v)
       else if is_end then int_of_float (v -. 1.)

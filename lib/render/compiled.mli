@@ -1,37 +1,6 @@
 (** The scene as the tracer uses it: built once by [Compile] from the immutable [Scene.t], holding
     only what this scene needs, in flat unboxed records. *)
 
-(** A sphere (§2.2): centre, radius as written (the normal is divided by it), radius². *)
-type sphere = { cx : float; cy : float; cz : float; radius : float; r2 : float }
-
-(** A plane (§2.3): unit normal and POV-Ray's [Distance] = −d. *)
-type plane = { nx : float; ny : float; nz : float; dist : float }
-
-(** A box (§15.1): its lower and upper corners, sorted per axis. *)
-type box = { x0 : float; y0 : float; z0 : float; x1 : float; y1 : float; z1 : float }
-
-(** A mesh placed in the scene: shared data, and its transform when it has one ([moved]); an
-    unmoved mesh is searched in world space as it is, like POV-Ray's mesh without a Trans (§2.6). *)
-type mesh_inst = { mesh : Mesh.t; tr : Transform.t; moved : bool }
-
-(** A cylinder or cone (§15.2, §15.3) in its canonical space, placed by [ctr]. *)
-type cone = {
-  ctr : Transform.t;  (** canonical space to world *)
-  dist : float;  (** a cone's small end at z = [dist] (0 for a cylinder) *)
-  cyl : bool;  (** the canonical cylinder x² + y² = 1 instead of the cone x² + y² = z² *)
-  closed : bool;  (** the end caps are surfaces *)
-}
-
-(** A disc (§15.4) in the plane z = 0 of its canonical space, placed by [dtr]. *)
-type disc = {
-  dtr : Transform.t;  (** canonical space to world *)
-  dnx : float;
-  dny : float;
-  dnz : float;  (** the world normal, the same at every point *)
-  or2 : float;  (** outer radius² *)
-  ir2 : float;  (** hole radius² *)
-}
-
 (** Everything about a surface that does not depend on the hit point, derived once from a
     plain pigment and its finish (§3.2, §3.5, §5). A pattern pigment's surface holds the finish's
     quantities, and its [paint] gives the whole surface at each hit point (§17.1). *)
@@ -62,29 +31,24 @@ and paint =
       (** a pattern pigment: the surface at a world point, its colour-dependent fields (colour, att,
           emitted, filcol, transparent) computed from the pigment there *)
 
+(** The shapes as the tracer meets them; everything about each is in its module (lib/shapes/),
+    and [Shape] dispatches to it. *)
 type shape =
-  | Sphere of sphere
-  | Ellipsoid of { sp : sphere; etr : Transform.t }
-      (** §2.2, §14.5 (b): the object-space sphere [sp] mapped by [etr] *)
-  | Plane of plane
-  | Plane_trans of { pl : plane; ptr : Transform.t; pnormal : Vec.t }
-      (** §2.3, §14.5 (a): [pl] mapped by [ptr]; [pnormal] its world normal, the same at every point *)
+  | Sphere of Sphere.t
+  | Ellipsoid of Sphere.ellipsoid  (** §2.2, §14.5 (b): a sphere mapped by a transform *)
+  | Plane of Plane.t
+  | Plane_trans of Plane.moved  (** §2.3, §14.5 (a): a plane mapped by a transform *)
   | Triangle of Triangle.t
   | Smooth_triangle of Triangle.t
-  | Mesh of mesh_inst
-  | Box of box  (** §15.1, in world space; the side hit is left where a mesh leaves its face *)
-  | Box_trans of { bx : box; btr : Transform.t }  (** §15.1, §14.5 (a): [bx] mapped by [btr] *)
-  | Cone of cone
-      (** §15.2, §15.3, §14.5 (b); the part hit is left where a mesh leaves its face: 1 the base (small
-          end, z = dist), 2 the cap (z = 1), 3 the side *)
-  | Disc of disc  (** §15.4, §14.5 (b) *)
+  | Mesh of Mesh.placed
+  | Box of Box.t  (** §15.1, in world space *)
+  | Box_trans of Box.moved  (** §15.1, §14.5 (a): a box mapped by a transform *)
+  | Cone of Cone.t  (** §15.2, §15.3, §14.5 (b) *)
+  | Disc of Disc.t  (** §15.4, §14.5 (b) *)
   | Torus of Torus.t  (** §15.5, §14.5 (b): always through its transform *)
   | Csg of csg
       (** §16: a CSG kept whole, a top-level object or a member of one. The tracer never reports a
-          CSG as the object hit but the member primitive (a leaf), whose own surface is shaded.
-          A new primitive shape plugs into CSG by its cases in [Compile.inside] (Inside),
-          [Compile.bounds], and [Trace.all_hits] (every crossing of the ray, in the order POV-Ray's
-          All_Intersections pushes them); the exhaustive matches point at each. *)
+          CSG as the object hit but the member primitive (a leaf), whose own surface is shaded. *)
   | Glyph of Glyph.t  (** §15.9: a text object's letter, always through its transform *)
 
 (** A CSG's members and how their hits are kept (§16.2, §16.3). *)

@@ -60,7 +60,7 @@ let ortho_origin (cam : Scene.camera) w h x y =
   Vec.make (l.x +. (x0 *. r.x) +. (y0 *. u.x)) (l.y +. (x0 *. r.y) +. (y0 *. u.y)) (l.z +. (x0 *. r.z) +. (y0 *. u.z))
 
 let sample ctx opts x y =
-  let sc = ctx.Trace.scene in
+  let sc = ctx.Context.scene in
   ctx.stats.camera_rays <- ctx.stats.camera_rays + 1;
   match sc.camera.projection with
   | Perspective ->
@@ -69,7 +69,7 @@ let sample ctx opts x y =
   | Orthographic ->
       (* every ray has its own origin, so its own interior list *)
       let o = ortho_origin sc.camera opts.width opts.height x y in
-      Trace.trace ctx ~level:0 ~weight:1. ~interiors:(Compile.interiors_at sc.screen_holders ctx.mstack o) ~continued:false o
+      Trace.trace ctx ~level:0 ~weight:1. ~interiors:(Interiors.at sc.screen_holders ctx.shapes.mesh_stack o) ~continued:false o
         (Vec.normalize sc.camera.direction)
 
 (* §9.1: colours are compared after x ↦ max(x,0)^(1/aa_gamma), in the working space. *)
@@ -94,16 +94,16 @@ let supersample ctx opts (c : Trace.result) x y : Trace.result =
         else sample ctx opts (px +. (Jitter.jx px py *. js)) (py +. (Jitter.jy px py *. js))
       in
       ctx.stats.samples <- ctx.stats.samples + 1;
-      sr := Trace.f32 (!sr +. s.r);
-      sg := Trace.f32 (!sg +. s.g);
-      sb := Trace.f32 (!sb +. s.b);
-      st := Trace.f32 (!st +. s.tr);
+      sr := Precision.f32 (!sr +. s.r);
+      sg := Precision.f32 (!sg +. s.g);
+      sb := Precision.f32 (!sb +. s.b);
+      st := Precision.f32 (!st +. s.tr);
       xx := !xx +. step
     done;
     yy := !yy +. step
   done;
   let n = float_of_int ((depth * depth) + 1) in
-  { r = Trace.f32 (!sr /. n); g = Trace.f32 (!sg /. n); b = Trace.f32 (!sb /. n); tr = Trace.f32 (!st /. n) }
+  { r = Precision.f32 (!sr /. n); g = Precision.f32 (!sg /. n); b = Precision.f32 (!sb /. n); tr = Precision.f32 (!st /. n) }
 
 type block = { bx0 : int; by0 : int; bx1 : int; by1 : int }
 
@@ -161,7 +161,7 @@ let non_adaptive_block ctx opts enc thr (b : block) store =
 
 (* The mean of four colours, summed in this order in single precision as POV-Ray does. *)
 let mean4 (a : Trace.result) (b : Trace.result) (c : Trace.result) (d : Trace.result) : Trace.result =
-  let m a b c d = Trace.f32 (Trace.f32 (Trace.f32 (Trace.f32 (a +. b) +. c) +. d) /. 4.) in
+  let m a b c d = Precision.f32 (Precision.f32 (Precision.f32 (Precision.f32 (a +. b) +. c) +. d) /. 4.) in
   { r = m a.r b.r c.r d.r; g = m a.g b.g c.g d.g; b = m a.b b.b c.b d.b; tr = m a.tr b.tr c.tr d.tr }
 
 (* §9.4, method 2. The block's pixel corners are traced first, without jitter; then each pixel is

@@ -25,10 +25,10 @@ let setup ?(robust = false) text =
    for hits at least [lo]. *)
 let hit ?(lo = 0.) (obj, ctx) o d =
   let d = Vec.normalize d in
-  ctx.Trace.sub.(0) <- -1;
-  let t = Trace.hit_shape ctx obj.Compiled.shape o d lo in
-  let side = ctx.sub.(0) in
-  (t, side, if t < infinity then Trace.normal obj side (Vec.madd o t d) else Vec.zero)
+  ctx.Context.shapes.part <- -1;
+  let t = Shape.depth ctx.Context.shapes obj.Compiled.shape o d lo in
+  let side = ctx.Context.shapes.part in
+  (t, side, if t < infinity then Shape.normal obj side (Vec.madd o t d) else Vec.zero)
 
 let unit_box = "box { <-1,-1,-1>, <1,1,1> }"
 
@@ -163,7 +163,7 @@ let test_transformed () =
 
 let test_inside () =
   let inside_t msg expected text p =
-    Alcotest.(check bool) msg expected (Compile.inside (Array.make 512 0.) (fst (setup text)).shape p)
+    Alcotest.(check bool) msg expected (Shape.inside (Array.make 512 0.) (fst (setup text)).shape p)
   in
   inside_t "centre" true unit_box Vec.zero;
   inside_t "on a face" true unit_box (v 1. 0. 0.);

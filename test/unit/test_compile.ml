@@ -6,7 +6,7 @@ open Helpers
 let v37 = "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"
 
 let shape_of_text text = (compile text).objects.(0).shape
-let inside_t msg expected shape p = Alcotest.(check bool) msg expected (Compile.inside (Array.make 512 0.) shape p)
+let inside_t msg expected shape p = Alcotest.(check bool) msg expected (Shape.inside (Array.make 512 0.) shape p)
 
 let test_sphere_inside () =
   let s = shape_of_text "sphere { <0,0,3>, 1 }" in

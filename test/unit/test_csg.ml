@@ -144,9 +144,9 @@ let setup text =
 
 (* The hits of object [i] along the ray: (depth, sub, leaf id) each. *)
 let hits ?(i = 0) ?(lo = 1e-4) (c, ctx) o d =
-  let n = Trace.all_hits ctx c.Compiled.objects.(i) o (Vec.normalize d) lo 0 in
+  let n = Shape.all_hits ctx.Context.shapes c.Compiled.objects.(i) o (Vec.normalize d) lo 0 in
   List.init n (fun j ->
-      let h = ctx.Trace.hits.h and b = j * Trace.hit_width in
+      let h = ctx.Context.shapes.hits.room and b = j * Scratch.hit_width in
       (h.(b), int_of_float h.(b + 1), int_of_float h.(b + 2)))
 
 let depths l = List.map (fun (t, _, _) -> t) l
@@ -202,7 +202,7 @@ let test_all_hits_triangle_mesh () =
 (* ---------------------------------------------------------------------------------------------- *)
 (* Inside *)
 
-let inside_of (c : Compiled.t) i p = Compile.inside (Array.make 512 0.) c.objects.(i).shape p
+let inside_of (c : Compiled.t) i p = Shape.inside (Array.make 512 0.) c.objects.(i).shape p
 
 let test_inside_shapes () =
   let c, _ = setup "sphere { 0, 1 }" in
@@ -289,8 +289,8 @@ let test_clipped_hits () =
     (List.map (inside_of c 0) [ v 0. (-0.5) 0.; v 0. 0.5 0.; v 0. (-2.) 0. ])
 
 let nearest_leaf (c, ctx) o d =
-  let t = Trace.hit_shape ctx c.Compiled.objects.(0).shape o (Vec.normalize d) 1e-4 in
-  (t, ctx.Trace.leaf.(0))
+  let t = Shape.depth ctx.Context.shapes c.Compiled.objects.(0).shape o (Vec.normalize d) 1e-4 in
+  (t, ctx.Context.shapes.leaf)
 
 let test_nearest () =
   let t, leaf = nearest_leaf (setup ("intersection { " ^ two ^ " }")) ray_o ray_d in

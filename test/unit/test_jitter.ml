@@ -30,7 +30,7 @@ let test_varies () =
   List.iter
     (fun (x, y) ->
       let a = Jitter.jx x y in
-      Alcotest.(check (float 0.)) "single precision" (Trace.f32 a) a)
+      Alcotest.(check (float 0.)) "single precision" (Precision.f32 a) a)
     positions
 
 let tests =

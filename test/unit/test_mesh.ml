@@ -220,9 +220,9 @@ let test_inside_scene () =
   (* through the scene: the moved octahedron is centred at <5,0,0> *)
   let c = Compile.scene (scene octahedron_mesh2) in
   let shape = c.objects.(0).shape in
-  Alcotest.(check bool) "moved centre" true (Compile.inside (stack ()) shape (v 5. 0. 0.));
-  Alcotest.(check bool) "old centre" false (Compile.inside (stack ()) shape (v 0. 0. 0.));
-  Alcotest.(check bool) "below the moved one" false (Compile.inside (stack ()) shape (v 5. 0. (-1.5)))
+  Alcotest.(check bool) "moved centre" true (Shape.inside (stack ()) shape (v 5. 0. 0.));
+  Alcotest.(check bool) "old centre" false (Shape.inside (stack ()) shape (v 0. 0. 0.));
+  Alcotest.(check bool) "below the moved one" false (Shape.inside (stack ()) shape (v 5. 0. (-1.5)))
 
 (* ---- textures ---- *)
 

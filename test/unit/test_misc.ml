@@ -70,8 +70,8 @@ let test_colour () =
   rgb_eq "mul" (Rgb.make 0.5 0.25 0.) (Rgb.mul (Rgb.grey 0.5) (Rgb.make 1. 0.5 0.));
   rgb_eq "scale" (Rgb.make 2. 1. 0.) (Rgb.scale 2. (Rgb.make 1. 0.5 0.));
   (* f32 rounds to single precision: 0.1 becomes 0.100000001490116… *)
-  float_eq ~eps:0. "f32 0.1" 0.100000001490116119384765625 (Trace.f32 0.1);
-  float_eq ~eps:0. "f32 0.5 exact" 0.5 (Trace.f32 0.5)
+  float_eq ~eps:0. "f32 0.1" 0.100000001490116119384765625 (Precision.f32 0.1);
+  float_eq ~eps:0. "f32 0.5 exact" 0.5 (Precision.f32 0.5)
 
 let test_defaults () =
   let f = Defaults.finish in

@@ -20,8 +20,8 @@ let all_hits (obj, ctx) o d =
   let out = Array.make 8 nan in
   let n =
     match obj.Compiled.shape with
-    | Cone c -> Trace.cone_hits ctx c o d out
-    | Disc dc -> Trace.disc_hits ctx dc o d out
+    | Cone c -> Cone.crossings ctx.Context.shapes c o d out
+    | Disc dc -> Disc.crossings ctx.Context.shapes dc o d out
     | _ -> Alcotest.fail "expected a quadric"
   in
   List.init n (fun i -> (out.(2 * i), int_of_float out.((2 * i) + 1)))
@@ -37,12 +37,12 @@ let hits_eq ?(eps = 1e-12) msg expected actual =
 (* The nearest hit at least [lo]: depth, part and unit normal. *)
 let hit ?(lo = 0.) (obj, ctx) o d =
   let d = Vec.normalize d in
-  ctx.Trace.sub.(0) <- -1;
-  let t = Trace.hit_shape ctx obj.Compiled.shape o d lo in
-  let part = ctx.sub.(0) in
-  (t, part, if t < infinity then Trace.normal obj part (Vec.madd o t d) else Vec.zero)
+  ctx.Context.shapes.part <- -1;
+  let t = Shape.depth ctx.Context.shapes obj.Compiled.shape o d lo in
+  let part = ctx.Context.shapes.part in
+  (t, part, if t < infinity then Shape.normal obj part (Vec.madd o t d) else Vec.zero)
 
-let inside (obj : Compiled.obj) p = Compile.inside (Array.make 512 0.) obj.shape p
+let inside (obj : Compiled.obj) p = Shape.inside (Array.make 512 0.) obj.shape p
 let base = 1 and cap = 2 and side = 3
 
 (* P2 at the origin, P1 = (0,0,2) along +z: the rotation is the identity (acos 1 = 0), so the

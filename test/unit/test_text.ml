@@ -26,7 +26,7 @@ let glyph ?(depth = 0.25) outline = { Glyph.outline; depth; tr = Transform.ident
 
 let hits g o d =
   let out = Array.make (Glyph.max_hits g.Glyph.outline) 0. in
-  let k = Glyph.hits g o d out in
+  let k = Glyph.crossings g o d out in
   List.init k (fun i -> (out.(2 * i), int_of_float out.((2 * i) + 1)))
 
 let depths g o d = List.map fst (hits g o d)

@@ -33,13 +33,13 @@ let tor (obj : Compiled.obj) = match obj.shape with Torus t -> t | _ -> Alcotest
 (* the nearest depth at least [lo] and the normal there *)
 let hit ?(lo = 0.) (obj, ctx) o d =
   let d = Vec.normalize d in
-  let t = Trace.hit_shape ctx obj.Compiled.shape o d lo in
-  (t, if t < infinity then Trace.normal obj (-1) (Vec.madd o t d) else Vec.zero)
+  let t = Shape.depth ctx.Context.shapes obj.Compiled.shape o d lo in
+  (t, if t < infinity then Shape.normal obj (-1) (Vec.madd o t d) else Vec.zero)
 
 (* every depth, sorted *)
 let all (obj, ctx) o d =
   let out = Array.make 4 nan in
-  let n = Trace.torus_hits ctx (tor obj) o (Vec.normalize d) out in
+  let n = Torus.crossings ctx.Context.shapes (tor obj) o (Vec.normalize d) out in
   List.sort compare (Array.to_list (Array.sub out 0 n))
 
 let check_depths ?(eps = 1e-9) msg expected actual =
@@ -84,7 +84,7 @@ let test_all_depths () =
   check_depths "across the tube along Z" [ 4.25; 5.75 ] (all t (v 1. 0. (-5.)) (v 0. 0. 1.));
   (* the geometry module's own entry points agree (for CSG, without statistics) *)
   let obj, _ = t in
-  let w = Torus.create_work () and out = Array.make 4 nan in
+  let w = Scratch.create ~robust:false (Stats.create ()) and out = Array.make 4 nan in
   let n = Torus.intersections w (tor obj) ~near:1e-4 (v (-5.) 0. 0.) (v 1. 0. 0.) out in
   check_depths "Torus.intersections" [ 3.75; 4.25; 5.75; 6.25 ] (List.sort compare (Array.to_list (Array.sub out 0 n)));
   float_eq "Torus.nearest beyond 4" 4.25 (Torus.nearest w (tor obj) ~near:1e-4 (v (-5.) 0. 0.) (v 1. 0. 0.) 4.);
@@ -159,14 +159,14 @@ let test_inside_tube () =
   let obj, ctx = t in
   let d, _ = hit t (v (-1.25) 0. 0.) (v 1. 0. 0.) in
   float_eq "from the surface inwards" 0.5 d;
-  Alcotest.(check bool) "root eliminated" true (Torus.eliminated ctx.torus);
+  Alcotest.(check bool) "root eliminated" true (Torus.eliminated ctx.Context.shapes);
   ignore obj;
   (* a crossing 5e-5 ahead is no hit: its root is eliminated (|c4/c3| ≈ 5e-5 < 1e-4), and the
      1e-4 world depth limit would drop it anyway. Dropping the constant term moves the other
      roots by about the dropped root's size: the next crossing, at 0.50005, comes out near 0.50013 *)
   let d, _ = hit t (v (-1.25 -. 5e-5) 0. 0.) (v 1. 0. 0.) in
   Alcotest.(check bool) "a crossing at 5e-5 is skipped" true (d > 0.5 && d < 0.5003);
-  Alcotest.(check bool) "… by root elimination" true (Torus.eliminated ctx.torus)
+  Alcotest.(check bool) "… by root elimination" true (Torus.eliminated ctx.Context.shapes)
 
 let test_transformed () =
   (* scale 2: the world depths are object depths over |V| (§14.5 (b)) *)
@@ -208,17 +208,17 @@ let test_transformed () =
 
 let test_inside () =
   let obj, _ = setup ring in
-  let inside p = Compile.inside [||] obj.shape p in
+  let inside p = Shape.inside [||] obj.shape p in
   Alcotest.(check bool) "core circle" true (inside (v 1. 0. 0.));
   Alcotest.(check bool) "outer equator (closed)" true (inside (v 1.25 0. 0.));
   Alcotest.(check bool) "top (closed)" true (inside (v 0. 0.25 (-1.)));
   Alcotest.(check bool) "the hole" false (inside Vec.zero);
   Alcotest.(check bool) "outside" false (inside (v 1.25 0.01 0.));
   let obj, _ = setup "torus { 1, 0.25 inverse }" in
-  Alcotest.(check bool) "inverse: core" false (Compile.inside [||] obj.shape (v 1. 0. 0.));
-  Alcotest.(check bool) "inverse: the hole" true (Compile.inside [||] obj.shape Vec.zero);
+  Alcotest.(check bool) "inverse: core" false (Shape.inside [||] obj.shape (v 1. 0. 0.));
+  Alcotest.(check bool) "inverse: the hole" true (Shape.inside [||] obj.shape Vec.zero);
   let obj, _ = setup "torus { 1, 0.25 scale 2 translate x }" in
-  Alcotest.(check bool) "transformed: core" true (Compile.inside [||] obj.shape (v 3. 0. 0.))
+  Alcotest.(check bool) "transformed: core" true (Shape.inside [||] obj.shape (v 3. 0. 0.))
 
 let test_camera_interiors () =
   (* §6.4: the camera is inside an object only within its bounding box: in the hole of an inverse

@@ -2,17 +2,13 @@
 
 type t = { major : float; minor : float; sturm : bool; tr : Transform.t }
 
-type work = { c : float array; roots : float array; out : float array; poly : Polysolv.work }
-
-let create_work () = { c = Array.make 5 0.; roots = Array.make 4 0.; out = Array.make 4 0.; poly = Polysolv.create () }
-
-let epsilon = 1e-10
+let epsilon = Precision.epsilon
 let max_distance = 1e7
 let depth_tolerance = 1e-4 (* DEPTH_TOLERANCE: world depths at or below it are no hit *)
 let root_tolerance = 1e-4 (* ROOT_TOLERANCE: the solver drops a root at 0 below this ratio *)
 
-let depths w = w.out
-let eliminated w = Polysolv.eliminated w.poly
+let depths (w : Scratch.t) = w.depths
+let eliminated (w : Scratch.t) = Polysolv.eliminated w.quartic
 
 (* Test_Thick_Cylinder: the caps first (when the ray is not parallel to them), then the outer and
    the inner wall, each wall's far root tried first. Written out in floats: no allocation. *)
@@ -51,7 +47,7 @@ let[@inline] thick_cylinder_f px py pz vx vy vz h1 h2 r1 r2 =
 
 let thick_cylinder (p : Vec.t) (v : Vec.t) h1 h2 r1 r2 = thick_cylinder_f p.x p.y p.z v.x v.y v.z h1 h2 r1 r2
 
-let solve w t (o : Vec.t) (d : Vec.t) =
+let solve (w : Scratch.t) t (o : Vec.t) (d : Vec.t) =
   let m = t.tr in
   (* MInvTransPoint, MInvTransDirection, then the direction times the reciprocal of its length *)
   let px = (o.x *. m.i00) +. (o.y *. m.i10) +. (o.z *. m.i20) +. m.i30 in
@@ -77,24 +73,24 @@ let solve w t (o : Vec.t) (d : Vec.t) =
     let py2 = py *. py and dy2 = vy *. vy and pdy2 = py *. vy in
     let k1 = (px *. px) +. (pz *. pz) +. py2 -. rr2 -. sr2 in
     let k2 = (px *. vx) +. (pz *. vz) +. pdy2 in
-    let c = w.c in
+    let c = w.coeffs in
     c.(0) <- 1.;
     c.(1) <- 4. *. k2;
     c.(2) <- 2. *. (k1 +. (2. *. ((k2 *. k2) +. (rr2 *. dy2))));
     c.(3) <- 4. *. ((k2 *. k1) +. (2. *. rr2 *. pdy2));
     c.(4) <- (k1 *. k1) +. (4. *. rr2 *. (py2 -. sr2));
-    let n = Polysolv.solve w.poly c 4 ~sturm:t.sturm ~eps:root_tolerance w.roots in
+    let n = Polysolv.solve w.quartic c 4 ~sturm:t.sturm ~eps:root_tolerance w.roots in
     for i = 0 to n - 1 do
-      w.out.(i) <- (w.roots.(n - 1 - i) +. closer) /. len
+      w.depths.(i) <- (w.roots.(n - 1 - i) +. closer) /. len
     done;
     n
   end
 
-let intersections w t ~near o d out =
+let intersections (w : Scratch.t) t ~near o d out =
   let n = solve w t o d in
   let k = ref 0 in
   for i = 0 to n - 1 do
-    let x = w.out.(i) in
+    let x = w.depths.(i) in
     if x > near && x < max_distance then begin
       out.(!k) <- x;
       incr k
@@ -102,11 +98,11 @@ let intersections w t ~near o d out =
   done;
   !k
 
-let nearest w t ~near o d lo =
+let nearest (w : Scratch.t) t ~near o d lo =
   let n = solve w t o d in
   let best = ref infinity in
   for i = 0 to n - 1 do
-    let x = w.out.(i) in
+    let x = w.depths.(i) in
     if x > near && x < max_distance && x >= lo && x < !best then best := x
   done;
   !best
@@ -129,3 +125,54 @@ let inside t (p : Vec.t) =
 let box t =
   let r2 = t.major +. t.minor and r1 = t.minor in
   [| -.r2; -.r1; -.r2; r2; r1; r2 |]
+
+(* One intersection, counted as POV-Ray counts it ("Torus", "Torus Bound", "Roots tested …
+   eliminated"); the raw depths are left in [w.depths]. *)
+let counted_solve (w : Scratch.t) t o d =
+  let stats = w.stats in
+  stats.torus_tests <- stats.torus_tests + 1;
+  let n = solve w t o d in
+  if n >= 0 then begin
+    stats.torus_bound_hits <- stats.torus_bound_hits + 1;
+    stats.roots_tested <- stats.roots_tested + 1;
+    if eliminated w then stats.roots_eliminated <- stats.roots_eliminated + 1;
+    if n > 0 then stats.torus_hits <- stats.torus_hits + 1
+  end;
+  n
+
+(* the torus's own depth limit, 1e-4 in world units (§15.5); the robust mode takes every depth *)
+let near_limit (w : Scratch.t) = if w.robust then 0. else depth_tolerance
+
+let crossings (w : Scratch.t) t o d out =
+  let n = counted_solve w t o d in
+  let near = near_limit w and ds = w.depths in
+  let k = ref 0 in
+  for i = 0 to n - 1 do
+    let x = ds.(i) in
+    if x > near && x < 1e7 then begin
+      out.(!k) <- x;
+      incr k
+    end
+  done;
+  !k
+
+let depth (w : Scratch.t) t o d lo =
+  let n = counted_solve w t o d in
+  let near = near_limit w and ds = w.depths in
+  let best = ref infinity in
+  for i = 0 to n - 1 do
+    let x = ds.(i) in
+    if x > near && x < 1e7 && x >= lo && x < !best then best := x
+  done;
+  !best
+
+let hits (w : Scratch.t) t id o d lo n =
+  let k = crossings w t o d w.crossings in
+  let n = ref n in
+  for i = 0 to k - 1 do
+    n := Scratch.push_ray w !n lo w.crossings.(i) (-1) id o d
+  done;
+  !n
+
+let bounds t = Transform.bounds t.tr (box t)
+let pov_box t = let b = box t in Pov_box.mapped t.tr (Pov_box.of_min_max (Array.sub b 0 3) (Array.sub b 3 3))

@@ -14,7 +14,7 @@ type outline = {
 
 type t = { outline : outline; depth : float; tr : Transform.t }
 
-let epsilon = 1e-10 (* EPSILON *)
+let epsilon = Precision.epsilon
 let tolerance = 1e-6 (* TTF_Tolerance *)
 let coeff_limit = 1e-20 (* COEFF_LIMIT *)
 
@@ -149,7 +149,7 @@ let[@inline] push out k t part =
   out.((2 * k) + 1) <- part;
   k + 1
 
-let hits g (o : Vec.t) (d : Vec.t) out =
+let crossings g (o : Vec.t) (d : Vec.t) out =
   let p = Transform.inv_point g.tr o and d = Transform.inv_direction g.tr d in
   let ol = g.outline in
   let q = { n = 0; r0 = 0.; r1 = 0. } in
@@ -232,3 +232,40 @@ let box g =
   let o = g.outline in
   let f = 1.0 /. float_of_int o.units_per_em in
   [| float_of_int o.xmin *. f; float_of_int o.ymin *. f; -.tolerance; float_of_int o.xmax *. f; float_of_int o.ymax *. f; g.depth +. tolerance |]
+
+(* The crossings counted as POV-Ray counts them ("True Type Font" tests and successes), left as
+   (depth, part) pairs in [w.glyph_crossings]. *)
+let counted_crossings (w : Scratch.t) g o d =
+  let stats = w.stats in
+  stats.ttf_tests <- stats.ttf_tests + 1;
+  let room = max_hits g.outline in
+  if Array.length w.glyph_crossings.room < room then w.glyph_crossings.room <- Array.make room 0.;
+  let k = crossings g o d w.glyph_crossings.room in
+  if k > 0 then stats.ttf_hits <- stats.ttf_hits + 1;
+  k
+
+let depth (w : Scratch.t) g o d lo =
+  let k = counted_crossings w g o d in
+  let h = w.glyph_crossings.room in
+  let best = ref infinity and part = ref 0 in
+  for i = 0 to k - 1 do
+    let t = h.(2 * i) in
+    if t >= lo && t < !best then begin
+      best := t;
+      part := int_of_float h.((2 * i) + 1)
+    end
+  done;
+  if !best < infinity then w.part <- !part;
+  !best
+
+let hits (w : Scratch.t) g id o d lo n =
+  let k = counted_crossings w g o d in
+  let n = ref n in
+  for i = 0 to k - 1 do
+    let h = w.glyph_crossings.room in
+    n := Scratch.push_ray w !n lo h.(2 * i) (int_of_float h.((2 * i) + 1)) id o d
+  done;
+  !n
+
+let bounds g = Transform.bounds g.tr (box g)
+let pov_box g = let b = box g in Pov_box.mapped g.tr (Pov_box.of_min_max (Array.sub b 0 3) (Array.sub b 3 3))

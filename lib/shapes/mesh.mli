@@ -72,3 +72,36 @@ val extent : t -> float array
 
 val bounds : t -> float array
 (** [bounds m] is the mesh's box: min x, y, z, max x, y, z. *)
+
+type placed = { mesh : t; tr : Transform.t; moved : bool }
+(** A mesh placed in the scene: the shared data, and its transform when it has one ([moved]); an
+    unmoved mesh is searched in world space as it is, like POV-Ray's mesh without a Trans (§2.6). *)
+
+val place : t -> Transform.t option -> placed
+(** [place m tr] is [m] placed by [tr], or as it is. *)
+
+val depth : Scratch.t -> placed -> Vec.t -> Vec.t -> float -> float
+(** [depth w m o d lo] is the nearest face hit at least [lo] (Mesh::Intersect: a moved mesh is
+    searched in its own space with the direction renormalised, the depth divided by its length),
+    its face left in [w.part]; or infinity. The test and a hit are counted. *)
+
+val hits : Scratch.t -> placed -> int -> Vec.t -> Vec.t -> float -> int -> int
+(** [hits w m id o d lo n] pushes every face crossing at least [lo] as hits of the member [id], in
+    the order the mesh's hierarchy is walked; it is the new count. *)
+
+val placed_normal : placed -> int -> Vec.t -> Vec.t
+(** [placed_normal m face p] is the unit world normal of [face] at [p]: with a transform, the
+    unnormalised mesh-space normal by the inverse transpose, normalised once (§2.6, §14.6). *)
+
+val placed_face_normal : placed -> int -> Vec.t
+(** [placed_face_normal m face] is the face's flat world normal. *)
+
+val placed_inside : float array -> placed -> Vec.t -> bool
+(** [placed_inside stack m p] is Mesh::Inside along the inside vector, both brought into mesh
+    space, the direction renormalised; [stack] is traversal room (512 floats). *)
+
+val placed_bounds : placed -> float array
+(** [placed_bounds m] is the mesh's box, its corners mapped when it is moved. *)
+
+val placed_pov_box : placed -> float array
+(** [placed_pov_box m] is POV-Ray's box: its single-precision vertices' extent, mapped when moved. *)

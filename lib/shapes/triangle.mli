@@ -44,3 +44,16 @@ val smooth_normal : t -> Vec.t -> Vec.t
 
 val bounds : t -> float array
 (** [bounds t] is the box: min x, y, z, max x, y, z. *)
+
+val depth : Scratch.t -> t -> Vec.t -> Vec.t -> float -> float
+(** [depth w t o d lo] is [intersect_within] with the scratch's limits when at least [lo], else
+    infinity; the test and a hit are counted. *)
+
+val hits : Scratch.t -> t -> int -> Vec.t -> Vec.t -> float -> int -> int
+(** [hits w t id o d lo n] pushes the one crossing, if any, as a hit of the member [id]. *)
+
+val flat_normal : t -> Vec.t
+(** [flat_normal t] is the face's unit normal. *)
+
+val pov_box : t -> float array
+(** [pov_box t] is POV-Ray's box: the corners' extent widened by EPSILON, in single precision. *)

@@ -32,17 +32,17 @@ val outline_of_contours : units_per_em:int -> xmin:int -> ymin:int -> xmax:int -
 val tolerance : float
 (** 1e-6: a glyph keeps only hits beyond this depth (TTF_Tolerance). *)
 
-val hits : t -> Vec.t -> Vec.t -> float array -> int
-(** [hits g o d out] writes every crossing of the ray from [o] along [d] (world space) with the
+val crossings : t -> Vec.t -> Vec.t -> float array -> int
+(** [crossings g o d out] writes every crossing of the ray from [o] along [d] (world space) with the
     glyph beyond [tolerance], as (depth, part) pairs, into [out] and returns their number, in the
     order POV-Ray's All_Intersections pushes them: the front face (z = 0), the back face
     (z = depth), then the walls contour by contour. [out] needs room for [max_hits g]. *)
 
 val max_hits : outline -> int
-(** [max_hits o] bounds the number of crossings [hits] can report, times 2 (the room it needs). *)
+(** [max_hits o] bounds the number of crossings [crossings] can report, times 2 (the room it needs). *)
 
 val normal : t -> int -> Vec.t
-(** [normal g part] is the unit world normal of the part hit ([part] as [hits] reports it): the
+(** [normal g part] is the unit world normal of the part hit ([part] as [crossings] reports it): the
     face's ∓z, a line's (dy, −dx), a curve's derivative turned a quarter, by the inverse transpose,
     normalised (§14.6). *)
 
@@ -57,3 +57,18 @@ val inside : t -> Vec.t -> bool
 val box : t -> float array
 (** [box g] is the glyph-space box [[| xmin; ymin; −1e-6; xmax; ymax; depth + 1e-6 |]]
     (the header's box over units_per_em), before the transform. *)
+
+val depth : Scratch.t -> t -> Vec.t -> Vec.t -> float -> float
+(** [depth w g o d lo] is the nearest crossing at least [lo] (the first of equal ones), its part
+    left in [w.part]; or infinity. The test and a hit are counted ("True Type Font"). *)
+
+val hits : Scratch.t -> t -> int -> Vec.t -> Vec.t -> float -> int -> int
+(** [hits w g id o d lo n] pushes the crossings at least [lo] as hits of the member [id], the faces
+    then the walls in the order found (TrueType::All_Intersections); it is the new count. *)
+
+val bounds : t -> float array
+(** [bounds g] is the box of [box g]'s mapped corners. *)
+
+val pov_box : t -> float array
+(** [pov_box g] is TrueType::Compute_BBox: Make_BBox of [box g] (z from −1e-6 to depth + 1e-6),
+    then Recompute_BBox through the letter's whole transform (§15.9). *)

@@ -20,7 +20,7 @@ type t = {
   inside_vector : Vec.t option;  (* normalised; None: the mesh has no inside *)
 }
 
-let f32 x = Int32.float_of_bits (Int32.bits_of_float x)
+let f32 = Precision.f32
 let round_vec (v : Vec.t) = Vec.make (f32 v.x) (f32 v.y) (f32 v.z)
 let[@inline] fget (a : f32s) i = Array1.unsafe_get a i
 let[@inline] iget (a : i32s) i = Int32.to_int (Array1.unsafe_get a i)
@@ -233,3 +233,67 @@ let bounds m =
 let face_normal m k =
   let g = 6 * k in
   Vec.make (fget m.fgeom g) (fget m.fgeom (g + 1)) (fget m.fgeom (g + 2))
+
+type placed = { mesh : t; tr : Transform.t; moved : bool }
+
+let place mesh = function None -> { mesh; tr = Transform.identity; moved = false } | Some tr -> { mesh; tr; moved = true }
+
+(* Mesh::Intersect: a moved mesh is searched in its own space with the direction renormalised
+   (times the reciprocal length), and the depth is divided by that length *)
+let depth (w : Scratch.t) m (o : Vec.t) (d : Vec.t) lo =
+  let stats = w.stats in
+  stats.mesh_tests <- stats.mesh_tests + 1;
+  let k, depth =
+    if not m.moved then
+      let k = nearest_within w.lim m.mesh w.mesh_stack o d lo w.mesh_depth in
+      (k, w.mesh_depth.(0))
+    else
+      let v = Transform.inv_direction m.tr d in
+      let len = Vec.length v in
+      let k = nearest_within w.lim m.mesh w.mesh_stack (Transform.inv_point m.tr o) (Vec.scale (1. /. len) v) (lo *. len) w.mesh_depth in
+      (k, w.mesh_depth.(0) /. len)
+  in
+  if k >= 0 && depth >= lo then begin
+    stats.mesh_hits <- stats.mesh_hits + 1;
+    w.part <- k;
+    depth
+  end
+  else infinity
+
+let hits (w : Scratch.t) m id (o : Vec.t) (d : Vec.t) lo n =
+  let stats = w.stats and lim = w.lim in
+  stats.mesh_tests <- stats.mesh_tests + 1;
+  let count = ref n in
+  let n0 = n in
+  (if not m.moved then iter_hits lim m.mesh w.mesh_stack o d (fun k t -> count := Scratch.push_ray w !count lo t k id o d)
+   else
+     let v = Transform.inv_direction m.tr d in
+     let len = Vec.length v in
+     iter_hits lim m.mesh w.mesh_stack (Transform.inv_point m.tr o) (Vec.scale (1. /. len) v) (fun k t ->
+         count := Scratch.push_ray w !count lo (t /. len) k id o d));
+  if !count > n0 then stats.mesh_hits <- stats.mesh_hits + 1;
+  !count
+
+(* Mesh::Normal: with a transform, the unnormalised mesh-space normal by the inverse transpose,
+   normalised once (§2.6, §14.6) *)
+let placed_normal m face (p : Vec.t) =
+  if m.moved then Transform.normalize (Transform.normal m.tr (raw_normal m.mesh face (Transform.inv_point m.tr p)))
+  else normal m.mesh face p
+
+let placed_face_normal m face =
+  if m.moved then Transform.normalize (Transform.normal m.tr (face_normal m.mesh face)) else face_normal m.mesh face
+
+(* Mesh::Inside: the ray from P along the inside vector, both brought into mesh space and the
+   direction renormalised *)
+let placed_inside stack m p =
+  if not m.moved then inside m.mesh stack p
+  else
+    match m.mesh.inside_vector with
+    | None -> false
+    | Some d -> inside_along m.mesh stack (Transform.inv_point m.tr p) (Transform.normalize (Transform.inv_direction m.tr d))
+
+let placed_bounds m = if m.moved then Transform.bounds m.tr (bounds m.mesh) else bounds m.mesh
+
+let placed_pov_box m =
+  let b = Pov_box.of_min_max (Array.sub (extent m.mesh) 0 3) (Array.sub (extent m.mesh) 3 3) in
+  if m.moved then Pov_box.mapped m.tr b else b

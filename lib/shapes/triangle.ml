@@ -123,3 +123,20 @@ let smooth_normal t (p : Vec.t) =
 let bounds t =
   [| Float.min t.x1 (Float.min t.x2 t.x3); Float.min t.y1 (Float.min t.y2 t.y3); Float.min t.z1 (Float.min t.z2 t.z3);
      Float.max t.x1 (Float.max t.x2 t.x3); Float.max t.y1 (Float.max t.y2 t.y3); Float.max t.z1 (Float.max t.z2 t.z3) |]
+
+let depth (w : Scratch.t) t o d lo =
+  let stats = w.stats in
+  stats.triangle_tests <- stats.triangle_tests + 1;
+  let depth = intersect_within w.lim t o d in
+  if depth >= lo && depth < infinity then (stats.triangle_hits <- stats.triangle_hits + 1; depth) else infinity
+
+let hits w t id o d lo n =
+  let depth = depth w t o d lo in
+  if depth < infinity then Scratch.push_ray w n lo depth (-1) id o d else n
+
+let flat_normal t = Vec.make t.nx t.ny t.nz
+
+let pov_box t =
+  let e = Precision.epsilon in
+  let mn a b c = Float.min a (Float.min b c) -. e and mx a b c = Float.max a (Float.max b c) +. e in
+  Pov_box.of_min_max [| mn t.x1 t.x2 t.x3; mn t.y1 t.y2 t.y3; mn t.z1 t.z2 t.z3 |] [| mx t.x1 t.x2 t.x3; mx t.y1 t.y2 t.y3; mx t.z1 t.z2 t.z3 |]

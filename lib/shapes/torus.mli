@@ -10,34 +10,27 @@ type t = {
   tr : Transform.t;  (** torus space to world *)
 }
 
-type work
-(** Room for one intersection at a time: the quartic's coefficients, its roots and the solver's
-    room. One per render worker. *)
-
-val create_work : unit -> work
-(** [create_work ()] is fresh room. *)
-
 val depth_tolerance : float
 (** 1e-4: POV-Ray keeps a torus hit only beyond this world depth (§15.5, §20 item 10). *)
 
-val solve : work -> t -> Vec.t -> Vec.t -> int
+val solve : Scratch.t -> t -> Vec.t -> Vec.t -> int
 (** [solve w t o d] intersects the ray from [o] along the unit [d] (world space) with the torus,
     as POV-Ray's [Torus::Intersect]: −1 when the thick-cylinder pre-test rejects the ray (the
     solver is not called), else the number n of roots found, whose world depths
     [(root + closer)/len] are in [depths w] [.(0 … n−1)], unfiltered, in POV-Ray's order (the
     solver's roots from the last). *)
 
-val depths : work -> float array
-(** [depths w] is the array [solve] writes its depths into (room for 4). *)
+val depths : Scratch.t -> float array
+(** [depths w] is the array [solve] writes its depths into ([w.depths], room for 4). *)
 
-val eliminated : work -> bool
+val eliminated : Scratch.t -> bool
 (** [eliminated w] is true when the last [solve] dropped a root at 0 (a ray leaving the surface). *)
 
-val intersections : work -> t -> near:float -> Vec.t -> Vec.t -> float array -> int
+val intersections : Scratch.t -> t -> near:float -> Vec.t -> Vec.t -> float array -> int
 (** [intersections w t ~near o d out] writes every hit with [near] < depth < 1e7 into [out] (room
     for 4), in POV-Ray's order ([All_Intersections] with [near] = 1e-4), and returns their number. *)
 
-val nearest : work -> t -> near:float -> Vec.t -> Vec.t -> float -> float
+val nearest : Scratch.t -> t -> near:float -> Vec.t -> Vec.t -> float -> float
 (** [nearest w t ~near o d lo] is the smallest depth with [near] < depth < 1e7 and depth ≥ [lo], or
     infinity. *)
 
@@ -59,3 +52,23 @@ val inside : t -> Vec.t -> bool
 val box : t -> float array
 (** [box t] is the torus-space box [[| −(R+r); −r; −(R+r); R+r; r; R+r |]] (lower corner, upper
     corner), before the transform. *)
+
+val crossings : Scratch.t -> t -> Vec.t -> Vec.t -> float array -> int
+(** [crossings w t o d out] writes every depth at which the ray crosses the torus within its limits
+    (beyond 1e-4 in world units, none in the robust mode; below 1e7) into [out] (room for 4), in
+    POV-Ray's order, and returns their number; the torus statistics are counted ("Torus", "Torus
+    Bound", "Roots tested", "eliminated"). *)
+
+val depth : Scratch.t -> t -> Vec.t -> Vec.t -> float -> float
+(** [depth w t o d lo] is the nearest of those depths at least [lo], or infinity; counted the same. *)
+
+val hits : Scratch.t -> t -> int -> Vec.t -> Vec.t -> float -> int -> int
+(** [hits w t id o d lo n] pushes the crossings at least [lo] as hits of the member [id]
+    (Torus::All_Intersections); it is the new count. *)
+
+val bounds : t -> float array
+(** [bounds t] is the box of [box t]'s mapped corners. *)
+
+val pov_box : t -> float array
+(** [pov_box t] is Torus::Compute_BBox: Make_BBox of [box t], then Recompute_BBox through the
+    transform every torus has (§15.5, §15.8). *)

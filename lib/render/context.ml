@@ -1,0 +1,34 @@
+(* A render worker's context: the scene, the statistics, the scratch and the shadow cache. *)
+
+type found = { mutable id : int; mutable part : int }
+type reach = { mutable depth : float; mutable least : float; mutable inv_dx : float; mutable inv_dy : float; mutable inv_dz : float }
+
+type t = {
+  scene : Compiled.t;
+  stats : Stats.t;
+  shapes : Scratch.t;
+  stack : float array;
+  min_depth : float;
+  robust : bool;
+  shadow_cache : int array;
+  found : found;
+  reach : reach;
+  walk_limit : float array;
+}
+
+let make ?(robust = false) (scene : Compiled.t) stats =
+  let slots = 2 * max 1 (Array.length scene.lights) in
+  {
+    scene;
+    stats;
+    shapes = Scratch.create ~robust stats;
+    stack = Array.make 512 0.;
+    min_depth = (if robust then 0. else Precision.min_isect_depth);
+    robust;
+    shadow_cache = Array.make slots (-1);
+    found = { id = -1; part = -1 };
+    reach = { depth = 0.; least = 0.; inv_dx = 0.; inv_dy = 0.; inv_dz = 0. };
+    walk_limit = [| 0. |];
+  }
+
+let[@inline] cache_slot ~level k = (2 * k) + if level = 2 then 0 else 1

@@ -1,0 +1,41 @@
+(** What one render worker's traces read and write: the compiled scene, the worker's statistics,
+    its scratch space (named fields, stored flat where they are floats, so the hot path allocates
+    nothing) and POV-Ray's shadow cache. Nothing here is shared between workers, so the image does
+    not depend on which worker renders which block. *)
+
+type found = { mutable id : int; mutable part : int }
+(** The nearest-hit search's best object so far (−1 for none) and the part of it hit (a mesh face,
+    a box side …). After a search: what it found. *)
+
+type reach = {
+  mutable depth : float;  (** the best depth so far; after a search, the depth found *)
+  mutable least : float;  (** the least depth the search accepts *)
+  mutable inv_dx : float;
+  mutable inv_dy : float;
+  mutable inv_dz : float;  (** the reciprocal of the ray's direction, for the box tests *)
+}
+(** The nearest-hit search's floats. *)
+
+type t = {
+  scene : Compiled.t;
+  stats : Stats.t;
+  shapes : Scratch.t;  (** the intersection routines' scratch *)
+  stack : float array;  (** traversal room of the scene's hierarchy *)
+  min_depth : float;  (** the nearest depth any ray accepts: 1e-4 (§2.1), 0 in the robust mode *)
+  robust : bool;  (** secondary rays leave from points lifted off the surface (robust mode) *)
+  shadow_cache : int array;
+      (** §4: per light and kind of level, the opaque object that last blocked it, or −1 *)
+  found : found;
+  reach : reach;
+  walk_limit : float array;  (** the limit of the hierarchy's walk (one float) *)
+}
+
+val make : ?robust:bool -> Compiled.t -> Stats.t -> t
+(** [make ?robust scene stats] is a context for one render worker, with an empty shadow cache (as at
+    the start of a POV-Ray render thread); [robust] (default false) selects the robust mode's
+    limits instead of POV-Ray's. The render loop makes one per block. *)
+
+val cache_slot : level:int -> int -> int
+(** [cache_slot ~level k] is light [k]'s shadow-cache slot for the shadow tests made while
+    shading a hit at trace [level]: POV-Ray keeps two per light, one for level 2
+    (lightSourceLevel1ShadowCache) and one for every other level. *)

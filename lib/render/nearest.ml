@@ -1,0 +1,131 @@
+(* The nearest-hit search and POV-Ray's tie rules (§2.1). *)
+
+open Compiled
+open Context
+
+(* Whether [ob], hit at exactly the depth of the current best [cur], replaces it: POV-Ray keeps the
+   first of equal depths it meets. Without its bounding hierarchy it tests the objects in scene
+   order. With it, it tests planes first, then bounded objects in the order the ray enters their
+   boxes; so of two bounded objects the one whose box is entered first wins. (Among planes, the
+   order of its priority queue is not modelled: the first found is kept.) *)
+let wins_tie ctx (ob : obj) cur (o : Vec.t) (d : Vec.t) =
+  if not ctx.scene.bounding then ob.id < cur
+  else
+    (* [cur] may be a CSG member: its top-level object's box counts *)
+    let pb = ctx.scene.objects.(ctx.scene.objects.(cur).top).pbox in
+    if Array.length pb = 0 then false
+    else Array.length ob.pbox = 0 || Pov_box.entry ob.pbox o d < Pov_box.entry pb o d
+
+let tie_tolerance (o : Vec.t) t = 0x1p-36 *. (Float.max (Float.abs o.x) (Float.max (Float.abs o.y) (Float.abs o.z)) +. t)
+
+(* Whether POV-Ray's bounding tree would never have tested [ob], nearer than the current best
+   [best] by rounding only: it takes objects in the order the ray enters their single-precision
+   boxes and stops at the first box entered beyond the best depth found so far. So where a box
+   stands on a plane, a ray meeting the box's face exactly at the plane sees the plane. Asked only
+   of near ties. *)
+let pruned ctx (ob : obj) t best cur (o : Vec.t) (d : Vec.t) =
+  ctx.scene.bounding && cur >= 0
+  && t > best -. (1e-9 *. Float.abs best)
+  && Array.length ob.pbox > 0
+  && Pov_box.entry ob.pbox o d > best
+
+(* The converse of [pruned]: whether [ob], hit just beyond the current best [cur] (farther by
+   rounding only), is what POV-Ray finds. Its bounding tree enters [ob]'s box first, takes [ob]'s
+   hit as the best, and then never tests [cur], whose box it enters beyond that depth. So where a
+   glass cylinder stands on a glass box, a ray inside the cylinder sees the cylinder's end rather
+   than the box's face 1 unit in the last place nearer. Asked only of near ties. *)
+let overtakes ctx (ob : obj) t best cur (o : Vec.t) (d : Vec.t) =
+  ctx.scene.bounding && cur >= 0
+  && t < best +. (1e-9 *. Float.abs best)
+  && Array.length ob.pbox > 0
+  &&
+  let pb = ctx.scene.objects.(ctx.scene.objects.(cur).top).pbox in
+  Array.length pb > 0
+  &&
+  let ec = Pov_box.entry pb o d in
+  ec > t && Pov_box.entry ob.pbox o d < ec
+
+(* Whether [ob], hit at depth [t], replaces the current best [cur] at depth [best]. *)
+let[@inline] replaces ctx (ob : obj) t best cur (o : Vec.t) (d : Vec.t) =
+  if not ctx.robust then
+    (t < best && not (pruned ctx ob t best cur o d))
+    || (t = best && cur >= 0 && wins_tie ctx ob cur o d)
+    || (t > best && overtakes ctx ob t best cur o d)
+  else if cur < 0 then t < best
+  else
+    let tol = tie_tolerance o best in
+    t < best -. tol || (t <= best +. tol && ob.id < cur)
+
+(* the slab test's min and max (as the hierarchy's: no −0 or NaN ordering, no C call) *)
+let[@inline] fmin (a : float) b = if a < b then a else b
+let[@inline] fmax (a : float) b = if a > b then a else b
+let[@inline] recip x = if x = 0. then 1e300 else 1. /. x
+
+(* The ray of one search and what it searches, for its visitor (a toplevel function, so that no
+   closure is built per call); immutable, so that building it needs no write barrier. *)
+type ray = { sctx : Context.t; sgroup : group; so : Vec.t; sd : Vec.t }
+
+(* the test of the object [ob], the best so far in [ctx.found] and [ctx.reach] *)
+let try_obj ctx (ob : obj) (o : Vec.t) (d : Vec.t) =
+  let f = ctx.found and r = ctx.reach in
+  let t = Shape.depth ctx.shapes ob.shape o d r.least in
+  if replaces ctx ob t r.depth f.id o d then begin
+    r.depth <- t;
+    f.id <- Shape.hit_object ctx.shapes ob;
+    f.part <- ctx.shapes.part
+  end
+
+(* the visitor of the bounded object [i] met by the walk *)
+let visit_bounded st i =
+  let ctx = st.sctx and g = st.sgroup and o = st.so and d = st.sd in
+  let f = ctx.found and r = ctx.reach in
+  let sp = g.spheres and bx = g.boxes in
+  let r2 = Array.unsafe_get sp ((4 * i) + 3) in
+  if r2 = r2 then begin
+    (* a sphere, straight from the flat array *)
+    let t = Sphere.depth_at ctx.stats ctx.shapes.lim (Array.unsafe_get sp (4 * i)) (Array.unsafe_get sp ((4 * i) + 1)) (Array.unsafe_get sp ((4 * i) + 2)) r2 o d r.least in
+    if replaces ctx (Array.unsafe_get g.bounded i) t r.depth f.id o d then begin
+      r.depth <- t;
+      f.id <- (Array.unsafe_get g.bounded i).id;
+      f.part <- -1
+    end
+  end
+  else begin
+    let b = 6 * i in
+    let x0 = Array.unsafe_get bx b in
+    if x0 <> x0 then try_obj ctx g.bounded.(i) o d
+    else begin
+      (* a costly shape is tried only when the ray meets its own box before the limit, as
+         it would meet the box of a leaf holding the shape alone *)
+      let best = r.depth in
+      let lim = if ctx.robust && f.id >= 0 then best +. tie_tolerance o best else best in
+      let idx = r.inv_dx and idy = r.inv_dy and idz = r.inv_dz in
+      let tx0 = (x0 -. o.x) *. idx and tx1 = (Array.unsafe_get bx (b + 3) -. o.x) *. idx in
+      let ty0 = (Array.unsafe_get bx (b + 1) -. o.y) *. idy and ty1 = (Array.unsafe_get bx (b + 4) -. o.y) *. idy in
+      let tz0 = (Array.unsafe_get bx (b + 2) -. o.z) *. idz and tz1 = (Array.unsafe_get bx (b + 5) -. o.z) *. idz in
+      let near = fmax (fmax (fmin tx0 tx1) (fmin ty0 ty1)) (fmax (fmin tz0 tz1) 0.) in
+      let far = fmin (fmin (fmax tx0 tx1) (fmax ty0 ty1)) (fmin (fmax tz0 tz1) lim) in
+      if near <= far then try_obj ctx g.bounded.(i) o d
+    end
+  end;
+  (* the robust mode still looks for ties just beyond the best depth *)
+  let l = if ctx.robust && f.id >= 0 then r.depth +. tie_tolerance o r.depth else r.depth in
+  let wl = ctx.walk_limit in
+  wl.(0) <- fmin wl.(0) l
+
+let search ctx (g : group) (o : Vec.t) (d : Vec.t) lo hi =
+  let f = ctx.found and r = ctx.reach in
+  r.depth <- hi;
+  r.least <- lo;
+  f.id <- -1;
+  f.part <- -1;
+  let un = g.unbounded in
+  for k = 0 to Array.length un - 1 do try_obj ctx (Array.unsafe_get un k) o d done;
+  r.inv_dx <- recip d.x;
+  r.inv_dy <- recip d.y;
+  r.inv_dz <- recip d.z;
+  if g.bvh.nodes > 0 then begin
+    ctx.walk_limit.(0) <- hi;
+    Bvh.walk_with g.bvh ctx.stack o.x o.y o.z d.x d.y d.z ctx.walk_limit visit_bounded { sctx = ctx; sgroup = g; so = o; sd = d }
+  end;
+  f.id

@@ -1,0 +1,49 @@
+(** The box (POVRAY-3.7 §15.1): its corners sorted per axis, in world space or mapped by a
+    transform (§14.5 (a)). The side a hit is on is 1–6 for X−, X+, Y−, Y+, Z−, Z+. *)
+
+type t = { x0 : float; y0 : float; z0 : float; x1 : float; y1 : float; z1 : float }
+(** The lower and upper corners. *)
+
+type moved = { bx : t; btr : Transform.t }
+(** [bx] mapped by [btr]. *)
+
+val make : Vec.t -> Vec.t -> t
+(** [make lo hi] is the box with corners [lo] ≤ [hi]. *)
+
+val depth : Scratch.t -> t -> Vec.t -> Vec.t -> float -> float
+(** [depth w b o d lo] is the nearest crossing at least [lo] (Box::Intersect), its side left in
+    [w.part]; or infinity. Of two equal depths (a ray through an edge) the far crossing's side wins. *)
+
+val moved_depth : Scratch.t -> moved -> Vec.t -> Vec.t -> float -> float
+(** [moved_depth] is [depth] with the ray brought into object space, not renormalised. *)
+
+val hits : Scratch.t -> t -> int -> Vec.t -> Vec.t -> float -> int -> int
+(** [hits w b id o d lo n] pushes the near crossing (beyond the near limit) and the far one, each
+    at least [lo], as hits of the member [id] (Box::All_Intersections); it is the new count. *)
+
+val moved_hits : Scratch.t -> moved -> int -> Vec.t -> Vec.t -> float -> int -> int
+(** [moved_hits] is [hits] through the transform. *)
+
+val side_normal : int -> Vec.t
+(** [side_normal side] is the outward axis of the side (1–6). *)
+
+val moved_normal : moved -> int -> Vec.t
+(** [moved_normal m side] is the side's axis by the inverse transpose, normalised (§14.6). *)
+
+val inside : t -> Vec.t -> bool
+(** [inside b p] is Box::Inside: the closed box, its surface included. *)
+
+val moved_inside : moved -> Vec.t -> bool
+(** [moved_inside] is [inside] in object space. *)
+
+val bounds : t -> float array
+(** [bounds b] is the box itself (min x, y, z, max x, y, z). *)
+
+val moved_bounds : moved -> float array
+(** [moved_bounds m] is the box of the mapped corners. *)
+
+val pov_box : t -> float array
+(** [pov_box b] is POV-Ray's box of the box. *)
+
+val moved_pov_box : moved -> float array
+(** [moved_pov_box m] is that box mapped by the transform. *)

@@ -1,0 +1,150 @@
+(* CSG kept whole: POVRAY-3.7 §16, POV-Ray's CSG (union, merge, intersection) and clipped_by. *)
+
+open Compiled
+
+(* a predicate on one constructor: shapes added later are primitives *)
+let is_csg = function Csg _ -> true | _ -> false
+
+(* Keeps the hits [start, e) of member [skip] whose point is Inside ([want]) or outside every other
+   member, in place; [reverse]d when they come off a local stack. Returns the new end. *)
+let keep_hits ~inside (w : Scratch.t) (members : obj array) ~skip ~want ~reverse start e =
+  let width = Scratch.hit_width in
+  let nm = Array.length members in
+  let k = ref start in
+  for j = start to e - 1 do
+    let h = w.hits.room and b = j * width in
+    let p = Vec.make h.(b + 3) h.(b + 4) h.(b + 5) in
+    let keep = ref true and i = ref 0 in
+    while !keep && !i < nm do
+      if !i <> skip && inside w.mesh_stack members.(!i) p <> want then keep := false;
+      incr i
+    done;
+    if !keep then begin
+      if !k <> j then Array.blit h b h (!k * width) width;
+      incr k
+    end
+  done;
+  if reverse then begin
+    let h = w.hits.room in
+    let a = ref start and z = ref (!k - 1) in
+    while !a < !z do
+      for f = 0 to width - 1 do
+        let x = h.((!a * width) + f) in
+        h.((!a * width) + f) <- h.((!z * width) + f);
+        h.((!z * width) + f) <- x
+      done;
+      incr a;
+      decr z
+    done
+  end;
+  !k
+
+let hits ~all_hits ~inside (w : Scratch.t) (c : csg) o d lo n =
+  let stats = w.stats and n0 = n in
+  let members = c.members in
+  let nm = Array.length members in
+  let n =
+    match c.kind with
+    | Union ->
+        stats.csg_union_tests <- stats.csg_union_tests + 1;
+        let n = ref n in
+        Array.iter (fun m -> n := all_hits w m o d lo !n) members;
+        !n
+    | Intersection | Merge ->
+        (match c.kind with
+        | Intersection -> stats.csg_intersection_tests <- stats.csg_intersection_tests + 1
+        | Merge | Union | Clipped -> stats.csg_merge_tests <- stats.csg_merge_tests + 1);
+        let want = match c.kind with Intersection -> true | Merge | Union | Clipped -> false in
+        let n = ref n in
+        for k = 0 to nm - 1 do
+          let start = !n in
+          let e = all_hits w members.(k) o d lo start in
+          n := keep_hits ~inside w members ~skip:k ~want ~reverse:true start e
+        done;
+        !n
+    | Clipped when nm = 0 -> n
+    | Clipped -> (
+        match members.(0).shape with
+        | Csg { kind = Union; members = um; _ } ->
+            stats.csg_union_tests <- stats.csg_union_tests + 1;
+            let n = ref n in
+            Array.iter
+              (fun u ->
+                let start = !n in
+                let e = all_hits w u o d lo start in
+                n := keep_hits ~inside w members ~skip:0 ~want:true ~reverse:true start e)
+              um;
+            if !n > n0 then stats.csg_union_hits <- stats.csg_union_hits + 1;
+            !n
+        | _ ->
+            (* a clipped primitive or a clipped merge or intersection *)
+            let e = all_hits w members.(0) o d lo n in
+            keep_hits ~inside w members ~skip:0 ~want:true ~reverse:false n e)
+  in
+  (if n > n0 then
+     match c.kind with
+     | Union -> stats.csg_union_hits <- stats.csg_union_hits + 1
+     | Intersection -> stats.csg_intersection_hits <- stats.csg_intersection_hits + 1
+     | Merge -> stats.csg_merge_hits <- stats.csg_merge_hits + 1
+     | Clipped -> ());
+  n
+
+let nearest_kept ~all_hits ~inside (w : Scratch.t) c o d lo =
+  let n = hits ~all_hits ~inside w c o d lo 0 in
+  let h = w.hits.room and width = Scratch.hit_width in
+  let best = ref infinity and bj = ref (-1) in
+  for j = n - 1 downto 0 do
+    let t = h.(j * width) in
+    if t < !best then begin best := t; bj := j end
+  done;
+  if !bj >= 0 then begin
+    w.part <- int_of_float h.((!bj * width) + 1);
+    w.leaf <- int_of_float h.((!bj * width) + 2)
+  end;
+  !best
+
+let depth ~all_hits ~inside (w : Scratch.t) c o d lo =
+  if (not w.robust) && Array.length c.cbox > 0 && Pov_box.entry c.cbox o d = infinity then infinity
+  else nearest_kept ~all_hits ~inside w c o d lo
+
+let inside ~inside stack c p =
+  match c.kind with
+  | Union | Merge -> Array.exists (fun m -> inside stack m p) c.members
+  | Intersection | Clipped -> Array.for_all (fun m -> inside stack m p) c.members
+
+let lone_inverted c =
+  match c with
+  | { kind = Intersection; members = [| m |]; _ } when m.inverted && not (is_csg m.shape) -> Some m
+  | _ -> None
+
+let bounds ~bounds c =
+  match (c.kind, lone_inverted c) with
+  | _, Some m -> bounds m.shape
+  | (Union | Merge), None ->
+      Array.fold_left
+        (fun acc m ->
+          match (acc, bounds m.shape) with
+          | Some a, Some b -> Some (Array.init 6 (fun i -> if i < 3 then Float.min a.(i) b.(i) else Float.max a.(i) b.(i)))
+          | None, _ | _, None -> None)
+        (Some [| infinity; infinity; infinity; neg_infinity; neg_infinity; neg_infinity |])
+        c.members
+      |> Option.map (fun b -> if b.(0) > b.(3) then [| 0.; 0.; 0.; 0.; 0.; 0. |] else b)
+  | (Intersection | Clipped), None ->
+      let b =
+        Array.fold_left
+          (fun acc m ->
+            match (m.inverted, acc, bounds m.shape) with
+            | false, None, Some b -> Some b
+            | false, Some a, Some b -> Some (Array.init 6 (fun i -> if i < 3 then Float.max a.(i) b.(i) else Float.min a.(i) b.(i)))
+            | false, acc, None | true, acc, _ -> acc)
+          None c.members
+      in
+      (* an empty overlap: nothing can be hit; POV-Ray then keeps its unbounded box *)
+      Option.bind b (fun b -> if b.(0) > b.(3) || b.(1) > b.(4) || b.(2) > b.(5) then None else Some b)
+
+let pov_box ~bounds:member_bounds ~pov_box c =
+  match lone_inverted c with
+  | Some m -> pov_box m.shape
+  | None -> ( match bounds ~bounds:member_bounds c with None -> [||] | Some b -> Pov_box.of_min_max (Array.sub b 0 3) (Array.sub b 3 3))
+
+let magnitude c = Array.fold_left (fun m o -> Float.max m o.mag) 0. c.members

@@ -1,0 +1,55 @@
+(* POV-Ray's single-precision bounding boxes: how they are made, entered by a ray, and tested. *)
+
+let f32 = Precision.f32
+let epsilon = Precision.epsilon
+
+let of_min_max (lo : float array) (hi : float array) = Array.init 6 (fun i -> if i < 3 then f32 lo.(i) else f32 (hi.(i - 3) -. lo.(i - 3)))
+
+let mapped tr b =
+  let lo = [| b.(0); b.(1); b.(2) |] and hi = [| b.(0) +. b.(3); b.(1) +. b.(4); b.(2) +. b.(5) |] in
+  let m = Transform.bounds tr (Array.append lo hi) in
+  of_min_max (Array.sub m 0 3) (Array.sub m 3 3)
+
+let entry (b : float array) (o : Vec.t) (d : Vec.t) =
+  let bound_huge = 2e10 in
+  let exception Miss in
+  let slab ll len on dn =
+    (* the interval of the slab along the ray, or None for a direction parallel to it *)
+    if dn <> 0. then begin
+      let sd = f32 (1. /. dn) in
+      let near = f32 (f32 (ll -. f32 on) *. sd) in
+      let span = f32 (len *. sd) in
+      Some (if dn > 0. then (near, near +. span) else (near +. span, near))
+    end
+    else
+      let sn = f32 on in
+      if sn < ll || sn > f32 (len +. ll) then raise Miss else None
+  in
+  try
+    let dmin, dmax =
+      match slab b.(0) b.(3) o.x d.x with
+      | Some (lo, hi) -> if hi < epsilon || lo > hi then raise Miss else (lo, hi)
+      | None -> (-.bound_huge, bound_huge)
+    in
+    let narrow ~last (dmin, dmax) = function
+      | None -> (dmin, dmax)
+      | Some (tmin, tmax) ->
+          if tmax < dmax then begin
+            if tmax < epsilon then raise Miss;
+            let dmin =
+              if tmin > dmin then (if tmin > tmax then raise Miss; tmin) else if dmin > tmax then raise Miss else dmin
+            in
+            (* the Z step does not lower dmax: it is not used afterwards *)
+            (dmin, if last then dmax else tmax)
+          end
+          else if tmin > dmin then (if tmin > dmax then raise Miss; (tmin, dmax))
+          else (dmin, dmax)
+    in
+    let r = narrow ~last:false (dmin, dmax) (slab b.(1) b.(4) o.y d.y) in
+    fst (narrow ~last:true r (slab b.(2) b.(5) o.z d.z))
+  with Miss -> infinity
+
+let contains (b : float array) (p : Vec.t) =
+  Array.length b = 0
+  || not
+       (p.x < b.(0) || p.y < b.(1) || p.z < b.(2) || p.x > b.(0) +. b.(3) || p.y > b.(1) +. b.(4) || p.z > b.(2) +. b.(5))

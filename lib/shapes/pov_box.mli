@@ -1,0 +1,20 @@
+(** POV-Ray's bounding box of an object as it stores it: the lower corner and the lengths, each
+    rounded to single precision, [[| llx; lly; llz; lx; ly; lz |]]; [[||]] for an unbounded object
+    (a plane). POV-Ray's bounding tree meets objects in the order the ray enters these boxes,
+    which decides exact depth ties (§2.1), and it tests a CSG's box before the CSG (§15.8). *)
+
+val of_min_max : float array -> float array -> float array
+(** [of_min_max lo hi] is the box from the corners [lo] and [hi] (3 floats each), as POV-Ray's
+    Make_BBox_from_min_max rounds them. *)
+
+val mapped : Transform.t -> float array -> float array
+(** [mapped tr b] is the box of the corners of the box [b] mapped by [tr] (Recompute_BBox). *)
+
+val entry : float array -> Vec.t -> Vec.t -> float
+(** [entry b o d] is where the ray from [o] along [d] enters the box [b] (Check_And_Enqueue, with
+    the ray as its Rayinfo holds it: origin and reciprocal direction in single precision, the slab
+    arithmetic in single precision too), or infinity when it misses the box. *)
+
+val contains : float array -> Vec.t -> bool
+(** [contains b p] is Inside_BBox: whether [p] is in the box [b], faces included; an unbounded
+    object's box ([[||]]) holds every point. *)

@@ -1,0 +1,83 @@
+(* The per-worker scratch of the intersection routines, and the list of a CSG's member hits. *)
+
+type slab = { mutable t_near : float; mutable t_far : float }
+type growable = { mutable room : float array }
+
+type t = {
+  stats : Stats.t;
+  lim : Limits.t;
+  robust : bool;
+  mesh_stack : float array;
+  mesh_depth : float array;
+  mutable part : int;
+  mutable leaf : int;
+  slab : slab;
+  mutable side_near : int;
+  mutable side_far : int;
+  crossings : float array;
+  glyph_crossings : growable;
+  hits : growable;
+  coeffs : float array;
+  roots : float array;
+  depths : float array;
+  quartic : Polysolv.work;
+}
+
+let hit_width = 6
+
+(* A cylinder or cone has at most 4 crossings listed (two on the side, the two ends), a disc one,
+   a torus 4 depths. *)
+let max_crossings = 8
+
+let create ~robust stats =
+  {
+    stats;
+    lim = (if robust then Limits.robust else Limits.pov);
+    robust;
+    mesh_stack = Array.make 512 0.;
+    mesh_depth = [| 0. |];
+    part = -1;
+    leaf = -1;
+    slab = { t_near = 0.; t_far = 0. };
+    side_near = 0;
+    side_far = 0;
+    crossings = Array.make max_crossings 0.;
+    glyph_crossings = { room = Array.make 64 0. };
+    hits = { room = Array.make (64 * hit_width) 0. };
+    coeffs = Array.make 5 0.;
+    roots = Array.make 4 0.;
+    depths = Array.make 4 0.;
+    quartic = Polysolv.create ();
+  }
+
+let push_hit w n t part id px py pz =
+  let width = hit_width in
+  if (n + 1) * width > Array.length w.hits.room then begin
+    let bigger = Array.make (2 * Array.length w.hits.room) 0. in
+    Array.blit w.hits.room 0 bigger 0 (n * width);
+    w.hits.room <- bigger
+  end;
+  let h = w.hits.room and j = n * width in
+  h.(j) <- t;
+  h.(j + 1) <- Float.of_int part;
+  h.(j + 2) <- Float.of_int id;
+  h.(j + 3) <- px;
+  h.(j + 4) <- py;
+  h.(j + 5) <- pz;
+  n + 1
+
+let push_ray w n lo t part id (o : Vec.t) (d : Vec.t) =
+  if t >= lo then push_hit w n t part id (o.x +. (t *. d.x)) (o.y +. (t *. d.y)) (o.z +. (t *. d.z)) else n
+
+let nearest_crossing w n lo =
+  let h = w.crossings in
+  let best = ref infinity and part = ref 0 in
+  for i = n - 1 downto 0 do
+    let t = h.(2 * i) in
+    if t < !best && t >= lo then begin
+      best := t;
+      part := int_of_float h.((2 * i) + 1)
+    end
+  done;
+  if !best < infinity then w.part <- !part;
+  !best

@@ -1,0 +1,52 @@
+(** The scratch space of the intersection routines, one per render worker: what a shape test
+    leaves behind besides its depth (the part hit, the CSG member hit), room for the crossings
+    of one shape, the hits of a CSG's members, a mesh's traversal and a torus's quartic. Named
+    fields, stored flat where they are floats, so that the hot path allocates nothing. *)
+
+type slab = { mutable t_near : float; mutable t_far : float }
+(** A box's slab crossings along the ray: where it enters and where it leaves (§15.1). *)
+
+type growable = { mutable room : float array }
+(** A float array that is replaced by a bigger one when a ray crosses more surfaces. *)
+
+type t = {
+  stats : Stats.t;  (** the worker's counters *)
+  lim : Limits.t;  (** the depths shapes accept (POV-Ray's, or the robust mode's) *)
+  robust : bool;  (** the robust mode: tolerances that do not depend on the scene's scale *)
+  mesh_stack : float array;  (** traversal room of a mesh's hierarchy *)
+  mesh_depth : float array;  (** the depth a mesh search found (one float) *)
+  mutable part : int;
+      (** the part of the shape the last depth was found on: a mesh face, a box side (1–6), a
+          cylinder's or cone's base, cap or side (1, 2, 3), a text letter's face or wall *)
+  mutable leaf : int;  (** the id of the member a CSG's nearest hit is on *)
+  slab : slab;  (** a box's crossings … *)
+  mutable side_near : int;  (** … the side entered (0: none) … *)
+  mutable side_far : int;  (** … and the side left *)
+  crossings : float array;  (** one cylinder's, cone's or disc's crossings as (depth, part) pairs; a torus's depths *)
+  glyph_crossings : growable;  (** one text letter's crossings as (depth, part) pairs *)
+  hits : growable;  (** the hits of a CSG's members, [hit_width] floats each *)
+  coeffs : float array;  (** a torus's quartic … *)
+  roots : float array;  (** … its roots … *)
+  depths : float array;  (** … and their world depths, unfiltered *)
+  quartic : Polysolv.work;  (** the polynomial solver's room *)
+}
+
+val create : robust:bool -> Stats.t -> t
+(** [create ~robust stats] is fresh scratch for one worker counting into [stats], with POV-Ray's
+    depth limits or, when [robust], the robust mode's. *)
+
+val hit_width : int
+(** [hit_width] is the number of floats per hit in [hits]: depth, part, the member's id, and the
+    hit point's x, y, z. *)
+
+val push_hit : t -> int -> float -> int -> int -> float -> float -> float -> int
+(** [push_hit w n t part id px py pz] appends, after the first [n] hits of [w.hits], the hit of
+    the member [id] at depth [t] on its [part] at the point (px, py, pz); it is [n + 1]. *)
+
+val push_ray : t -> int -> float -> float -> int -> int -> Vec.t -> Vec.t -> int
+(** [push_ray w n lo t part id o d] is [push_hit] of the point [o + t·d] when [t ≥ lo], else [n]. *)
+
+val nearest_crossing : t -> int -> float -> float
+(** [nearest_crossing w n lo] is the nearest of the [n] (depth, part) pairs in [w.crossings] at
+    least [lo], its part left in [w.part]; or infinity. POV-Ray takes them from the top of its
+    intersection stack, keeping a strictly nearer one, so of equal depths the last found wins. *)

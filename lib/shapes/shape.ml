@@ -1,0 +1,169 @@
+(* The dispatch of every shape operation to the shape's module: one direct match per operation. *)
+
+open Compiled
+
+let finite (t : Transform.t) =
+  List.for_all Float.is_finite
+    [ t.m00; t.m01; t.m02; t.m10; t.m11; t.m12; t.m20; t.m21; t.m22; t.m30; t.m31; t.m32;
+      t.i00; t.i01; t.i02; t.i10; t.i11; t.i12; t.i20; t.i21; t.i22; t.i30; t.i31; t.i32 ]
+
+let compile (s : Scene.shape) =
+  match s with
+  | Sphere { centre; radius; trans = None } -> Some (Sphere (Sphere.make centre radius))
+  | Sphere { centre; radius; trans = Some etr } -> Some (Ellipsoid { sp = Sphere.make centre radius; etr })
+  | Plane { normal; offset; trans = None } -> Some (Plane (Plane.make normal offset))
+  | Plane { normal; offset; trans = Some ptr } -> Some (Plane_trans (Plane.moved normal offset ptr))
+  | Triangle { p1; p2; p3 } -> Option.map (fun t -> Triangle t) (Triangle.flat p1 p2 p3)
+  | Smooth_triangle { p1; n1; p2; n2; p3; n3 } -> (
+      match Triangle.smooth p1 n1 p2 n2 p3 n3 with Some (Ok t) -> Some (Smooth_triangle t) | None | Some (Error ()) -> None)
+  | Mesh { mesh; trans; _ } -> Some (Mesh (Mesh.place mesh trans))
+  | Box { lo; hi; trans } -> (
+      let bx = Box.make lo hi in
+      match trans with None -> Some (Box bx) | Some btr -> Some (Box_trans { bx; btr }))
+  | Cone { cylinder; dist; closed; trans; _ } ->
+      (* a cylinder of radius 0 has no inverse transform: POV-Ray never hits it *)
+      if finite trans then Some (Cone { ctr = trans; dist; cyl = cylinder; closed }) else None
+  | Disc { normal; radius; hole; trans; _ } -> if finite trans then Some (Disc (Disc.make ~normal ~radius ~hole trans)) else None
+  | Torus { major; minor; sturm; trans } -> Some (Torus { Torus.major; minor; sturm; tr = trans })
+  | Glyph { outline; depth; trans } -> if finite trans then Some (Glyph { Glyph.outline; depth; tr = trans }) else None
+  | Csg _ -> None
+
+(* a primitive crossed once at most *)
+let[@inline] one_hit w t id o d lo n = if t < infinity then Scratch.push_ray w n lo t (-1) id o d else n
+
+let rec depth w shape o d lo =
+  match shape with
+  | Csg c -> Csg.depth ~all_hits ~inside:inside_member w c o d lo
+  | Sphere s -> Sphere.depth w s o d lo
+  | Ellipsoid e -> Sphere.ellipsoid_depth w e o d lo
+  | Plane p -> Plane.depth w p o d lo
+  | Plane_trans p -> Plane.moved_depth w p o d lo
+  | Box b -> Box.depth w b o d lo
+  | Box_trans b -> Box.moved_depth w b o d lo
+  | Cone c -> Cone.depth w c o d lo
+  | Disc dc -> Disc.depth w dc o d lo
+  | Torus t -> Torus.depth w t o d lo
+  | Glyph g -> Glyph.depth w g o d lo
+  | Triangle t | Smooth_triangle t -> Triangle.depth w t o d lo
+  | Mesh m -> Mesh.depth w m o d lo
+
+and all_hits w ob o d lo n =
+  let id = ob.id in
+  match ob.shape with
+  | Csg c -> Csg.hits ~all_hits ~inside:inside_member w c o d lo n
+  | Sphere s -> Sphere.hits w s id o d lo n
+  | Ellipsoid e -> Sphere.ellipsoid_hits w e id o d lo n
+  | Plane p -> one_hit w (Plane.depth w p o d lo) id o d lo n
+  | Plane_trans p -> one_hit w (Plane.moved_depth w p o d lo) id o d lo n
+  | Triangle t | Smooth_triangle t -> Triangle.hits w t id o d lo n
+  | Box b -> Box.hits w b id o d lo n
+  | Box_trans b -> Box.moved_hits w b id o d lo n
+  | Mesh m -> Mesh.hits w m id o d lo n
+  | Cone c -> Cone.hits w c id o d lo n
+  | Disc dc -> Disc.hits w dc id o d lo n
+  | Torus t -> Torus.hits w t id o d lo n
+  | Glyph g -> Glyph.hits w g id o d lo n
+
+and inside stack shape p =
+  match shape with
+  | Csg c -> Csg.inside ~inside:inside_member stack c p
+  | Cone c -> Cone.inside c p
+  | Disc d -> Disc.inside d p
+  | Box b -> Box.inside b p
+  | Box_trans b -> Box.moved_inside b p
+  | Torus t -> Torus.inside t p
+  | Glyph g -> Glyph.inside g p
+  | Sphere s -> Sphere.inside s p
+  | Ellipsoid e -> Sphere.ellipsoid_inside e p
+  | Plane pl -> Plane.inside pl p
+  | Plane_trans pl -> Plane.moved_inside pl p
+  | Triangle _ | Smooth_triangle _ -> false
+  | Mesh m -> Mesh.placed_inside stack m p
+
+and inside_member stack (m : obj) p =
+  (* an inverted CSG was morphed: its own Inside already holds the inversion (§16.3) *)
+  if Csg.is_csg m.shape then inside stack m.shape p else inside stack m.shape p <> m.inverted
+
+let hit_object (w : Scratch.t) ob = if Csg.is_csg ob.shape then w.leaf else ob.id
+
+let normal obj part p =
+  match obj.shape with
+  | Cone c -> Cone.normal c part p
+  | Disc dc -> Disc.normal dc
+  | Csg _ -> Vec.make 0. 0. 1. (* never hit: the member primitive is *)
+  | Box _ -> Box.side_normal part
+  | Box_trans b -> Box.moved_normal b part
+  | Torus t -> Torus.normal t p
+  | Glyph g -> Glyph.normal g part
+  | Sphere s -> Sphere.normal s p
+  | Ellipsoid e -> Sphere.ellipsoid_normal e p
+  | Plane pl -> Vec.make pl.nx pl.ny pl.nz
+  | Plane_trans { pnormal; _ } -> pnormal
+  | Triangle t -> Triangle.flat_normal t
+  | Smooth_triangle t -> Triangle.smooth_normal t p
+  | Mesh m -> Mesh.placed_normal m part p
+
+let geometric_normal obj part p =
+  match obj.shape with
+  | Smooth_triangle t -> Triangle.flat_normal t
+  | Mesh m -> Mesh.placed_face_normal m part
+  | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Csg _ -> normal obj part p
+
+let refine obj p =
+  match obj.shape with
+  | Sphere s -> Sphere.refine s p
+  | Ellipsoid e -> Sphere.ellipsoid_refine e p
+  | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Csg _ -> p
+
+let rec bounds = function
+  | Csg c -> Csg.bounds ~bounds c
+  | Sphere s -> Some (Sphere.bounds s)
+  | Ellipsoid e -> Some (Sphere.ellipsoid_bounds e)
+  | Plane _ | Plane_trans _ -> None
+  | Triangle t | Smooth_triangle t -> Some (Triangle.bounds t)
+  | Mesh m -> Some (Mesh.placed_bounds m)
+  | Box b -> Some (Box.bounds b)
+  | Box_trans b -> Some (Box.moved_bounds b)
+  | Cone c -> Some (Cone.bounds c)
+  | Disc d -> Some (Disc.bounds d)
+  | Torus t -> Some (Torus.bounds t)
+  | Glyph g -> Some (Glyph.bounds g)
+
+let magnitude shape =
+  let max_abs a = Array.fold_left (fun m x -> Float.max m (Float.abs x)) 0. a in
+  match (bounds shape, shape) with
+  | Some b, _ -> max_abs b
+  | None, Plane p -> Plane.magnitude p
+  | None, Plane_trans p -> Plane.moved_magnitude p
+  | None, Csg c -> Csg.magnitude c
+  | None, (Sphere _ | Ellipsoid _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _) -> 0.
+
+let rec pov_box shape =
+  match shape with
+  | Sphere s -> Sphere.pov_box s
+  | Ellipsoid e -> Sphere.ellipsoid_pov_box e
+  | Plane _ | Plane_trans _ -> [||]
+  | Triangle t | Smooth_triangle t -> Triangle.pov_box t
+  | Mesh m -> Mesh.placed_pov_box m
+  | Box b -> Box.pov_box b
+  | Box_trans b -> Box.moved_pov_box b
+  | Cone c -> Cone.pov_box c
+  | Disc d -> Disc.pov_box d
+  | Torus t -> Torus.pov_box t
+  | Glyph g -> Glyph.pov_box g
+  | Csg c -> Csg.pov_box ~bounds ~pov_box c
+
+let costly = function
+  | Ellipsoid _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ -> true
+  | Sphere _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Csg _ -> false
+
+let as_sphere = function
+  | Sphere s -> Some s
+  | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Csg _ -> None
+
+let face_texture obj part =
+  match obj.shape with
+  | Mesh m when part >= 0 -> Mesh.texture m.mesh part
+  | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _
+  | Disc _ | Torus _ | Glyph _ | Csg _ ->
+      -1

@@ -1,0 +1,67 @@
+(** Every operation on a shape, dispatched by one direct [match] to the shape's own module
+    (lib/shapes/): the only place the tracer and the compile step learn which shapes exist. A new
+    shape is a module of its own and one case in each function here. *)
+
+val compile : Scene.shape -> Compiled.shape option
+(** [compile s] is the primitive [s] ready to trace; None for a CSG (the compile step builds it,
+    numbering its members) and for a shape POV-Ray never hits (a triangle without area, a standalone
+    smooth triangle whose vertex normals straddle its face, a cylinder, disc or letter whose
+    transform has no inverse). *)
+
+val depth : Scratch.t -> Compiled.shape -> Vec.t -> Vec.t -> float -> float
+(** [depth w shape o d lo] is the nearest depth along the unit direction [d] at which the ray from
+    [o] meets [shape] within the shape's own limits and at least [lo] (§2, §14.5), or infinity; the
+    part hit (mesh face, box side, cylinder part, letter part) is left in [w.part], the member hit
+    by a CSG in [w.leaf]. *)
+
+val all_hits : Scratch.t -> Compiled.obj -> Vec.t -> Vec.t -> float -> int -> int
+(** [all_hits w ob o d lo n] appends to [w.hits], after its first [n], every crossing at depth ≥
+    [lo] of the primitive or CSG [ob] that POV-Ray's All_Intersections keeps (§16.2), in the order
+    it pushes them; it is the new count. *)
+
+val hit_object : Scratch.t -> Compiled.obj -> int
+(** [hit_object w ob] is the id of the object a [depth] test of [ob] found: [ob] itself, or for a
+    CSG the member primitive hit. *)
+
+val normal : Compiled.obj -> int -> Vec.t -> Vec.t
+(** [normal obj part p] is the unit normal of [obj] at its surface point [p] ([part] as [depth]
+    left it), before it is turned toward the ray (§3.1, §14.6). *)
+
+val geometric_normal : Compiled.obj -> int -> Vec.t -> Vec.t
+(** [geometric_normal obj part p] is the flat normal of the surface at [p]: a smooth triangle's or
+    face's own plane, else [normal]. The robust mode lifts secondary rays along it. *)
+
+val refine : Compiled.obj -> Vec.t -> Vec.t
+(** [refine obj p] is the hit point [p] put back onto the surface where the shape allows it
+    (spheres and ellipsoids), else [p]: the robust mode's hit points. *)
+
+val inside : float array -> Compiled.shape -> Vec.t -> bool
+(** [inside stack shape p] is POV-Ray's Inside test of [shape] (§2.2, §2.3, §2.6, §15.1–§15.5,
+    §15.9, §16.3); [stack] is traversal room for meshes (512 floats). *)
+
+val inside_member : float array -> Compiled.obj -> Vec.t -> bool
+(** [inside_member stack m p] is the Inside test of the CSG member [m]: a primitive's negated when
+    it is inverted, an inverted (morphed) CSG's as it is (§16.3). *)
+
+val bounds : Compiled.shape -> float array option
+(** [bounds shape] is the box of a bounded shape (min x, y, z, max x, y, z); None for an unbounded
+    one. A transformed shape's box is its object-space box with the corners mapped (§15.8). *)
+
+val magnitude : Compiled.shape -> float
+(** [magnitude shape] is the largest coordinate magnitude the shape's intersection works with: its
+    box's, or for a plane its point nearest the origin; the robust mode's scale of rounding errors. *)
+
+val pov_box : Compiled.shape -> float array
+(** [pov_box shape] is POV-Ray's box of the shape as it stores it ([Pov_box]); [[||]] when unbounded. *)
+
+val costly : Compiled.shape -> bool
+(** [costly shape] is true for the shapes costlier to test than their own box (ellipsoid,
+    transformed box, cylinder and cone, disc, torus, letter): the scene's search tries the box first. *)
+
+val as_sphere : Compiled.shape -> Sphere.t option
+(** [as_sphere shape] is the sphere that [shape] is, which the scene's search tests straight from
+    a flat array. *)
+
+val face_texture : Compiled.obj -> int -> int
+(** [face_texture obj part] is the index of the texture of the mesh face [part] in [obj.face_surfs],
+    or −1 when the object's own surface is shaded there. *)

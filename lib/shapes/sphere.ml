@@ -1,0 +1,141 @@
+(* The sphere and the ellipsoid: POVRAY-3.7 §2.2, §14.5 (b), POV-Ray's Sphere. *)
+
+type t = { cx : float; cy : float; cz : float; radius : float; r2 : float }
+type ellipsoid = { sp : t; etr : Transform.t }
+
+let make (c : Vec.t) r = { cx = c.x; cy = c.y; cz = c.z; radius = r; r2 = r *. r }
+
+let[@inline] depth_at (stats : Stats.t) (lim : Limits.t) cx cy cz r2 (o : Vec.t) (d : Vec.t) lo =
+  stats.sphere_tests <- stats.sphere_tests + 1;
+  let ocx = cx -. o.x and ocy = cy -. o.y and ocz = cz -. o.z in
+  let ocs = (ocx *. ocx) +. (ocy *. ocy) +. (ocz *. ocz) in
+  let tca = (ocx *. d.x) +. (ocy *. d.y) +. (ocz *. d.z) in
+  if ocs >= r2 && tca < lim.tangent then infinity
+  else
+    let h2 = r2 -. ocs +. (tca *. tca) in
+    if h2 <= lim.tangent then infinity
+    else begin
+      let h = sqrt h2 in
+      let t1 = tca -. h in
+      if t1 > lim.near && t1 < lim.far && t1 >= lo then (stats.sphere_hits <- stats.sphere_hits + 1; t1)
+      else
+        let t2 = tca +. h in
+        if t2 > lim.near && t2 < lim.far && t2 >= lo then (stats.sphere_hits <- stats.sphere_hits + 1; t2)
+        else infinity
+    end
+
+let depth (w : Scratch.t) s o d lo = depth_at w.stats w.lim s.cx s.cy s.cz s.r2 o d lo
+
+(* Everything stays in unboxed floats. *)
+let ellipsoid_depth (w : Scratch.t) { sp = s; etr = t } (o : Vec.t) (d : Vec.t) lo =
+  let stats = w.stats and lim = w.lim in
+  stats.sphere_tests <- stats.sphere_tests + 1;
+  let px = (o.x *. t.i00) +. (o.y *. t.i10) +. (o.z *. t.i20) +. t.i30 in
+  let py = (o.x *. t.i01) +. (o.y *. t.i11) +. (o.z *. t.i21) +. t.i31 in
+  let pz = (o.x *. t.i02) +. (o.y *. t.i12) +. (o.z *. t.i22) +. t.i32 in
+  let vx = (d.x *. t.i00) +. (d.y *. t.i10) +. (d.z *. t.i20) in
+  let vy = (d.x *. t.i01) +. (d.y *. t.i11) +. (d.z *. t.i21) in
+  let vz = (d.x *. t.i02) +. (d.y *. t.i12) +. (d.z *. t.i22) in
+  let len = sqrt ((vx *. vx) +. (vy *. vy) +. (vz *. vz)) in
+  (* VInverseScaleEq: times the reciprocal *)
+  let k = 1. /. len in
+  let vx = vx *. k and vy = vy *. k and vz = vz *. k in
+  let ocx = s.cx -. px and ocy = s.cy -. py and ocz = s.cz -. pz in
+  let ocs = (ocx *. ocx) +. (ocy *. ocy) +. (ocz *. ocz) in
+  let tca = (ocx *. vx) +. (ocy *. vy) +. (ocz *. vz) in
+  if ocs >= s.r2 && tca < lim.tangent then infinity
+  else
+    let h2 = s.r2 -. ocs +. (tca *. tca) in
+    if h2 <= lim.tangent then infinity
+    else begin
+      let h = sqrt h2 in
+      let t1 = tca -. h in
+      if t1 > lim.near && t1 < lim.far && t1 /. len >= lo then (stats.sphere_hits <- stats.sphere_hits + 1; t1 /. len)
+      else
+        let t2 = tca +. h in
+        if t2 > lim.near && t2 < lim.far && t2 /. len >= lo then (stats.sphere_hits <- stats.sphere_hits + 1; t2 /. len)
+        else infinity
+    end
+
+let hits (w : Scratch.t) s id (o : Vec.t) (d : Vec.t) lo n =
+  let stats = w.stats and lim = w.lim in
+  stats.sphere_tests <- stats.sphere_tests + 1;
+  let ocx = s.cx -. o.x and ocy = s.cy -. o.y and ocz = s.cz -. o.z in
+  let ocs = (ocx *. ocx) +. (ocy *. ocy) +. (ocz *. ocz) in
+  let tca = (ocx *. d.x) +. (ocy *. d.y) +. (ocz *. d.z) in
+  if ocs >= s.r2 && tca < lim.tangent then n
+  else
+    let h2 = s.r2 -. ocs +. (tca *. tca) in
+    if h2 <= lim.tangent then n
+    else
+      let h = sqrt h2 in
+      let t1 = tca -. h and t2 = tca +. h in
+      let n0 = n in
+      let n = if t1 > lim.near && t1 < lim.far then Scratch.push_ray w n lo t1 (-1) id o d else n in
+      let n = if t2 > lim.near && t2 < lim.far then Scratch.push_ray w n lo t2 (-1) id o d else n in
+      if n > n0 then stats.sphere_hits <- stats.sphere_hits + 1;
+      n
+
+let ellipsoid_hits (w : Scratch.t) { sp = s; etr = t } id (o : Vec.t) (d : Vec.t) lo n =
+  let stats = w.stats and lim = w.lim in
+  stats.sphere_tests <- stats.sphere_tests + 1;
+  let q = Transform.inv_point t o and v = Transform.inv_direction t d in
+  let len = Vec.length v in
+  let k = 1. /. len in
+  let v = Vec.scale k v in
+  let ocx = s.cx -. q.x and ocy = s.cy -. q.y and ocz = s.cz -. q.z in
+  let ocs = (ocx *. ocx) +. (ocy *. ocy) +. (ocz *. ocz) in
+  let tca = (ocx *. v.x) +. (ocy *. v.y) +. (ocz *. v.z) in
+  if ocs >= s.r2 && tca < lim.tangent then n
+  else
+    let h2 = s.r2 -. ocs +. (tca *. tca) in
+    if h2 <= lim.tangent then n
+    else
+      let h = sqrt h2 in
+      let root n t0 =
+        if t0 > lim.near && t0 < lim.far && t0 /. len >= lo then
+          let p = Transform.point t (Vec.madd q t0 v) in
+          Scratch.push_hit w n (t0 /. len) (-1) id p.x p.y p.z
+        else n
+      in
+      let n0 = n in
+      let n = root (root n (tca -. h)) (tca +. h) in
+      if n > n0 then stats.sphere_hits <- stats.sphere_hits + 1;
+      n
+
+let normal s (p : Vec.t) = Vec.make ((p.x -. s.cx) /. s.radius) ((p.y -. s.cy) /. s.radius) ((p.z -. s.cz) /. s.radius)
+
+let ellipsoid_normal { sp = s; etr } p =
+  let q = Transform.inv_point etr p in
+  Transform.normalize (Transform.normal etr (Vec.make (q.x -. s.cx) (q.y -. s.cy) (q.z -. s.cz)))
+
+let inside s (p : Vec.t) =
+  let dx = p.x -. s.cx and dy = p.y -. s.cy and dz = p.z -. s.cz in
+  (dx *. dx) +. (dy *. dy) +. (dz *. dz) < s.r2
+
+let ellipsoid_inside { sp = s; etr } p =
+  let q = Transform.inv_point etr p in
+  let dx = s.cx -. q.x and dy = s.cy -. q.y and dz = s.cz -. q.z in
+  (dx *. dx) +. (dy *. dy) +. (dz *. dz) < s.r2
+
+let bounds s =
+  let r = Float.abs s.radius in
+  [| s.cx -. r; s.cy -. r; s.cz -. r; s.cx +. r; s.cy +. r; s.cz +. r |]
+
+let ellipsoid_bounds { sp = s; etr } =
+  let r = Float.abs s.radius in
+  Transform.bounds etr [| s.cx -. r; s.cy -. r; s.cz -. r; s.cx +. r; s.cy +. r; s.cz +. r |]
+
+let pov_box s =
+  let f32 = Precision.f32 and r = s.radius in
+  [| f32 (s.cx -. r); f32 (s.cy -. r); f32 (s.cz -. r); f32 (2. *. r); f32 (2. *. r); f32 (2. *. r) |]
+
+let ellipsoid_pov_box { sp; etr } = Pov_box.mapped etr (pov_box sp)
+
+let onto cx cy cz r (q : Vec.t) =
+  let dx = q.x -. cx and dy = q.y -. cy and dz = q.z -. cz in
+  let len = sqrt ((dx *. dx) +. (dy *. dy) +. (dz *. dz)) in
+  if len = 0. then q else let k = Float.abs r /. len in Vec.make (cx +. (k *. dx)) (cy +. (k *. dy)) (cz +. (k *. dz))
+
+let refine s p = onto s.cx s.cy s.cz s.radius p
+let ellipsoid_refine { sp = s; etr } p = Transform.point etr (onto s.cx s.cy s.cz s.radius (Transform.inv_point etr p))
