@@ -7,7 +7,7 @@ DEB_PACKAGES = libcamlimages-ocaml-dev libalcotest-ocaml-dev \
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 POVML = ./_build/default/bin/main.exe
 
-.PHONY: all deps build render test fuzz bench report references clean
+.PHONY: all deps build install render test fuzz bench report references clean
 
 all: build
 
@@ -22,14 +22,22 @@ deps:
 	fi
 	@mkdir -p $$HOME/.povray/3.7 && touch $$HOME/.povray/3.7/povray.conf
 
+# The release profile: dune's dev profile compiles with -opaque, which stops inlining across
+# modules (every shape is a module of its own). The tests build in the dev profile, where warnings
+# are errors.
 build: deps
-	dune build
+	dune build --profile release
+
+PREFIX ?= /usr/local
+install: build
+	dune install --profile release --prefix $(PREFIX)
 
 render: build
 	$(POVML) +Iscenes/showcase.pov +Oshowcase.png +W640 +H480 +A0.3 -D
 	@echo "The showcase scene is in $$(pwd)/showcase.png"
 
-test: build
+test: deps
+	dune build
 	dune test --force
 
 # AFL++ on the interpreter and a tiny render for FUZZ_SECONDS (test/fuzz/afl.sh), built instrumented in

@@ -19,7 +19,7 @@ let[@inline] fget (a : f32s) i = Array1.unsafe_get a i
 let[@inline] iget (a : i32s) i = Int32.to_int (Array1.unsafe_get a i)
 let[@inline] iset (a : i32s) i x = Array1.unsafe_set a i (Int32.of_int x)
 
-let f32 x = Int32.float_of_bits (Int32.bits_of_float x)
+let f32 = Precision.f32
 
 (* The single-precision value nearest below (above) x. *)
 let f32_down x =

@@ -15,7 +15,7 @@ type t = {
   i30 : float; i31 : float; i32 : float; i33 : float;
 }
 
-let epsilon = 1e-10
+let epsilon = Precision.epsilon
 
 (* π/180 as POV-Ray writes it (M_PI_180 = 0.01745329251994329576); the same double as pi /. 180. *)
 let m_pi_180 = Float.pi /. 180.

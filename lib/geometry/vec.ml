@@ -1,3 +1,5 @@
+(* Vectors of three doubles, an all-float record stored unboxed; small operations inlined. *)
+
 type t = { x : float; y : float; z : float }
 
 let[@inline] make x y z = { x; y; z }

@@ -3,7 +3,7 @@
 
 let table =
   Array.map
-    (fun v -> Int32.float_of_bits (Int32.bits_of_float v)) (* the offsets are single-precision *)
+    Precision.f32 (* the offsets are single-precision *)
     [|
     -0.500000; 0.005890; 0.011749; -0.490234; 0.023468; -0.470703; -0.480469; 0.017609;
     0.046906; -0.447266; -0.441406; 0.056671; -0.460938; 0.044952; 0.035187; -0.466797;

@@ -1,3 +1,5 @@
+(* The path from a scene file to an encoded image: read, compile, render, encode, timing each. *)
+
 type result = {
   image : Encode.t;
   raw : Image.t;

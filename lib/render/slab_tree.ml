@@ -2,11 +2,11 @@
    the order in which it lists its objects: POV-Ray fills the camera's starting interior list by
    walking this tree depth first (§6.4), so with the camera inside several objects that order
    decides which one counts as entered last. Boxes are POV-Ray's single-precision ones
-   ([| llx; lly; llz; lx; ly; lz |], Compile.pov_box); the arithmetic keeps POV-Ray's precision
+   ([| llx; lly; llz; lx; ly; lz |], Shape.pov_box); the arithmetic keeps POV-Ray's precision
    at each step (float sums where it adds two floats, double elsewhere), and its sort is stable
    (glibc's qsort is a merge sort). *)
 
-let f32 x = Int32.float_of_bits (Int32.bits_of_float x)
+let f32 = Precision.f32
 let bound_huge = 2e10
 
 (* Objects are grouped at most this many to a node (BUNCHING_FACTOR). *)

@@ -1,3 +1,5 @@
+(* Render statistics: the counters one worker keeps, and their sum over workers. *)
+
 type t = {
   mutable camera_rays : int;
   mutable reflected_rays : int;

@@ -61,9 +61,29 @@ and shade ctx ~reflected obj part depth ~level ~weight ~interiors (o : Vec.t) (d
     let refl = if s.reflects && s.refl.refl_metallic <> 0. then Lighting.metallic_factor s.refl.refl_metallic ci s.colour refl else refl in
     (* local illumination: ambient and emission, then each light through its shadow feeler *)
     let local = if s.lit then Lighting.add_lights ctx ~level ~di:obj.double_illuminate s p n ng e d interiors s.emitted else s.emitted in
-    (* the transmitted ray, weighted by k_t, the filter colour (§6) *)
+    (* the transmitted ray, weighted by k_t, the filter colour (§6). POV-Ray traces it before the
+       reflected ray, and the order shows: both rays' shadow feelers share the shadow cache *)
     let local, tr, tir =
-      if not s.transparent then (local, 0., false) else transmit ctx ~reflected obj s refl local depth ~level ~weight ~interiors p ng e d n
+      if not s.transparent then (local, 0., false)
+      else
+        let filcol = Optics.conserved s refl in
+        let trans = Float.min 1. (Float.abs (Rgb.intensity filcol)) in
+        (* a ray too weak to matter (below adc_bailout) is not traced *)
+        if not (trans > sc.adc_bailout) then (local, 0., false)
+        else
+          let w = f32 (weight *. Float.max (Float.abs filcol.r) (Float.max (Float.abs filcol.g) (Float.abs filcol.b))) in
+          let ct, tir = refract ctx ~reflected obj ~level ~weight:w ~interiors p ng e d n in
+          (* the interior's fade when the ray travelled inside [obj] *)
+          let att = Rgb.grey obj.old_refract in
+          let att = if Optics.fades obj && List.mem obj.iid interiors then Optics.fade obj depth att else att in
+          if tir then (Rgb.make (f32 (local.r +. f32 (att.r *. ct.r))) (f32 (local.g +. f32 (att.g *. ct.g))) (f32 (local.b +. f32 (att.b *. ct.b))), 0., true)
+          else
+            ( Rgb.make
+                (f32 (local.r +. f32 (f32 (att.r *. ct.r) *. filcol.r)))
+                (f32 (local.g +. f32 (f32 (att.g *. ct.g) *. filcol.g)))
+                (f32 (local.b +. f32 (f32 (att.b *. ct.b) *. filcol.b))),
+              f32 (Rgb.intensity att *. ct.tr *. trans),
+              false )
     in
     (* the reflected ray R = −E + 2(N·E)N, weighted by k_r (§5.3); none after total internal
        reflection, which was the reflected ray already *)
@@ -78,27 +98,6 @@ and shade ctx ~reflected obj part depth ~level ~weight ~interiors (o : Vec.t) (d
         let ie = f32 ie in
         { r = f32 (local.r +. (refl.r *. Float.pow c.r ie)); g = f32 (local.g +. (refl.g *. Float.pow c.g ie)); b = f32 (local.b +. (refl.b *. Float.pow c.b ie)); tr }
       else { r = f32 (local.r +. f32 (refl.r *. c.r)); g = f32 (local.g +. f32 (refl.g *. c.g)); b = f32 (local.b +. f32 (refl.b *. c.b)); tr }
-
-(* The local colour plus the transmitted ray's colour filtered by k_t (and the interior's fade
-   when the ray travelled inside [obj]); the transmittance; whether total internal reflection
-   happened instead. A ray too weak to matter (below adc_bailout) is not traced. *)
-and transmit ctx ~reflected obj s refl (local : Rgb.t) depth ~level ~weight ~interiors p ng e d n =
-  let filcol = Optics.conserved s refl in
-  let trans = Float.min 1. (Float.abs (Rgb.intensity filcol)) in
-  if not (trans > ctx.scene.adc_bailout) then (local, 0., false)
-  else
-    let w = f32 (weight *. Float.max (Float.abs filcol.r) (Float.max (Float.abs filcol.g) (Float.abs filcol.b))) in
-    let ct, tir = refract ctx ~reflected obj ~level ~weight:w ~interiors p ng e d n in
-    let att = Rgb.grey obj.old_refract in
-    let att = if Optics.fades obj && List.mem obj.iid interiors then Optics.fade obj depth att else att in
-    if tir then (Rgb.make (f32 (local.r +. f32 (att.r *. ct.r))) (f32 (local.g +. f32 (att.g *. ct.g))) (f32 (local.b +. f32 (att.b *. ct.b))), 0., true)
-    else
-      ( Rgb.make
-          (f32 (local.r +. f32 (f32 (att.r *. ct.r) *. filcol.r)))
-          (f32 (local.g +. f32 (f32 (att.g *. ct.g) *. filcol.g)))
-          (f32 (local.b +. f32 (f32 (att.b *. ct.b) *. filcol.b))),
-        f32 (Rgb.intensity att *. ct.tr *. trans),
-        false )
 
 (* §6.2: the transmitted ray by Snell's law, n₁ sin θ₁ = n₂ sin θ₂, with the ratio of the indices
    of the interiors the ray leaves and enters; its colour, and whether total internal reflection
