@@ -32,22 +32,28 @@ set -euo pipefail
 
 include_dir=/usr/share/povray-3.7/include
 
-# The first error line of a povml log, without "file:line:col: error: " or "povml: ".
+# The first error of a povml log without "file:line:col: error: " or "povml: ", with the lines that
+# continue it (an #error's text) up to the source excerpt or the first note.
 povml_message() {
-  local log=$1 line
-  line=$(grep -m1 -E '(^|: )error: |^povml: |Fatal error|^Exception' "$log" || true)
-  [ -n "$line" ] || line=$(grep -v '^[[:space:]]*$' "$log" | tail -n1 || true)
-  line=${line//$'\t'/ }
-  printf '%s' "$line" | sed -E 's/^.*: error: //; s/^error: //; s/^povml: //' | cut -c1-300
+  awk '
+    !found && /(^|: )error: |^povml: |Fatal error|^Exception/ {
+      found = 1; m = $0
+      sub(/^.*: error: /, "", m); sub(/^error: /, "", m); sub(/^povml: /, "", m); next }
+    found && (/^ *[0-9]* \| / || /: note: /) { exit }
+    found && /[^[:space:]]/ { l = $0; gsub(/^[[:space:]]+|[[:space:]]+$/, "", l); m = m (m ~ / $/ ? "" : " ") l }
+    /[^[:space:]]/ { last = $0 }
+    END { if (!found) m = last; gsub(/\t/, " ", m); print substr(m, 1, 300) }' "$1"
 }
 
-# POV-Ray's first error line ("Parse Error: …", "Possible Parse Error: …" are not errors).
+# POV-Ray's first error ("Possible Parse Error: …" is a warning), with the lines it is wrapped into
+# (they start with a space), without the "File … line N:" before it.
 povray_message() {
-  local log=$1 line
-  line=$(grep -v 'Possible' "$log" | grep -m1 'Error' || true)
-  [ -n "$line" ] || line=$(grep -v '^[[:space:]]*$' "$log" | tail -n1 || true)
-  line=${line//$'\t'/ }
-  printf '%s' "$line" | sed -E 's/^File: [^ ]+ +Line: [0-9]+ *//' | cut -c1-300
+  awk '
+    !found && tolower($0) ~ /error/ && $0 !~ /Possible/ { found = 1; m = $0; sub(/^ +/, "", m); next }
+    found && /^ / { l = $0; sub(/^ +/, "", l); m = m " " l; next }
+    found { exit }
+    /[^[:space:]]/ { last = $0 }
+    END { if (!found) m = last; gsub(/\t/, " ", m); print substr(m, 1, 300) }' "$1"
 }
 
 # "user system wall" from GNU time's -o file (its last line; earlier lines say how the command ended)
@@ -82,14 +88,20 @@ one_scene() {
   else status=error; msg=$(povml_message "$d/povml.log")
   fi
 
-  # POV-Ray (an empty ini: the system's would add its own size and display)
+  # POV-Ray (an empty ini: the system's would add its own size and display). On a busy machine its
+  # front end may give up "waiting for worker thread startup" at once: then it is run again.
   : >"$d/empty.ini"
-  set +e
-  (cd "$d/povray" && POVINI="$d/empty.ini" nice -n 15 /usr/bin/time -o "$d/povray.time" -f '%U %S %e' \
-     timeout -k 5 "$limit" "$povray" "+I$scene" "+O$d/povray.png" "${size[@]}" "+L$sdir" "+L$include_dir" \
-     </dev/null >"$d/povray.log" 2>&1)
-  rc=$?
-  set -e
+  local attempt
+  for attempt in 1 2 3; do
+    set +e
+    (cd "$d/povray" && POVINI="$d/empty.ini" nice -n 15 /usr/bin/time -o "$d/povray.time" -f '%U %S %e' \
+       timeout -k 5 "$limit" "$povray" "+I$scene" "+O$d/povray.png" "${size[@]}" "+L$sdir" "+L$include_dir" \
+       </dev/null >"$d/povray.log" 2>&1)
+    rc=$?
+    set -e
+    grep -q 'Timed out waiting for worker thread startup' "$d/povray.log" || break
+    cp "$d/povray.log" "$d/povray-startup-$attempt.log"
+  done
   local pstatus pmsg
   if [ "$rc" -eq 0 ] && [ -s "$d/povray.png" ]; then pstatus=renders; pmsg=""
   elif [ "$rc" -eq 124 ] || [ "$rc" -eq 137 ]; then pstatus=timeout; pmsg="no image after ${limit} s"
@@ -170,7 +182,8 @@ tsv=$out/samples.tsv
 } >"$tsv"
 
 # The first blocker of a failed scene: the quoted keyword of a "not supported yet" message, else
-# the phrase it names ("a declared sky_sphere"), else the message without quoted names and numbers.
+# the phrase it names ("layered textures"), else the message up to its first colon or semicolon,
+# without quoted names, numbers and parentheses.
 blockers() {
   awk -F'\t' 'NR > 1 && $2 != "renders" {
       m = $3
@@ -181,7 +194,10 @@ blockers() {
         if (match(m, /^the function '\''[^'\'']*'\''/)) k = "function " substr(m, 15, RLENGTH - 15)
         else if (match(m, /^'\''[^'\'']*'\''/)) k = substr(m, 2, RLENGTH - 2)
         else { sub(/ \(.*$/, "", m); sub(/[:;,].*$/, "", m); k = m }
-      } else { k = m; gsub(/'\''[^'\'']*'\''/, "…", k); gsub(/[0-9]+(\.[0-9]+)?/, "N", k); sub(/[:;].*$/, "", k) }
+      } else {
+        k = m; gsub(/'\''[^'\'']*'\''/, "…", k); gsub(/"[^"]*"/, "…", k); sub(/ \(.*$/, "", k)
+        gsub(/[0-9]+(\.[0-9]+)?/, "N", k); sub(/[:;].*$/, "", k)
+      }
       n[k]++
     }
     END { for (k in n) printf "%d\t%s\n", n[k], k }' "$tsv" | LC_ALL=C sort -t$'\t' -k1,1nr -k2,2
