@@ -46,10 +46,11 @@ povml_message() {
 }
 
 # POV-Ray's first error ("Possible Parse Error: …" is a warning), with the lines it is wrapped into
-# (they start with a space), without the "File … line N:" before it.
+# (they start with a space), without the "File … line N:" before or in it.
 povray_message() {
   awk '
-    !found && tolower($0) ~ /error/ && $0 !~ /Possible/ { found = 1; m = $0; sub(/^ +/, "", m); next }
+    !found && tolower($0) ~ /error/ && $0 !~ /Possible/ {
+      found = 1; m = $0; sub(/^ +/, "", m); sub(/^File .* line [0-9]+: /, "", m); next }
     found && /^ / { l = $0; sub(/^ +/, "", l); m = m " " l; next }
     found { exit }
     /[^[:space:]]/ { last = $0 }
@@ -181,26 +182,9 @@ tsv=$out/samples.tsv
   done <"$work/list.txt"
 } >"$tsv"
 
-# The first blocker of a failed scene: the quoted keyword of a "not supported yet" message, else
-# the phrase it names ("layered textures"), else the message up to its first colon or semicolon,
-# without quoted names, numbers and parentheses.
+# The first blockers, most frequent first (blockers.awk says what a blocker is).
 blockers() {
-  awk -F'\t' 'NR > 1 && $2 != "renders" {
-      m = $3
-      if ($2 == "timeout") k = "(timeout)"
-      else if ($2 == "crash") k = "(crash)"
-      else if (m ~ /not supported yet: /) {
-        sub(/.*not supported yet: /, "", m)
-        if (match(m, /^the function '\''[^'\'']*'\''/)) k = "function " substr(m, 15, RLENGTH - 15)
-        else if (match(m, /^'\''[^'\'']*'\''/)) k = substr(m, 2, RLENGTH - 2)
-        else { sub(/ \(.*$/, "", m); sub(/[:;,].*$/, "", m); k = m }
-      } else {
-        k = m; gsub(/'\''[^'\'']*'\''/, "…", k); gsub(/"[^"]*"/, "…", k); sub(/ \(.*$/, "", k)
-        gsub(/[0-9]+(\.[0-9]+)?/, "N", k); sub(/[:;].*$/, "", k)
-      }
-      n[k]++
-    }
-    END { for (k in n) printf "%d\t%s\n", n[k], k }' "$tsv" | LC_ALL=C sort -t$'\t' -k1,1nr -k2,2
+  awk -F'\t' -f "$root/test/samples/blockers.awk" "$tsv" | LC_ALL=C sort -t$'\t' -k1,1nr -k2,2
 }
 
 # ------------------------------------------------------------------------------------------------
@@ -215,7 +199,7 @@ read -r renders identical differ unpaired errors crashes timeouts prenders < <(a
   END { print r+0, i+0, d+0, u+0, e+0, c+0, t+0, p+0 }' "$tsv")
 totals="$renders of $total render with povml: $identical identical to POV-Ray, $differ differ"
 [ "$unpaired" -eq 0 ] || totals="$totals, $unpaired not compared (POV-Ray gave no image)"
-top=$(blockers | head -n 12 | awk -F'\t' '{ printf "%s%s %d", (NR > 1 ? ", " : ""), $2, $1 }')
+top=$(blockers | grep -v -F '(POV-Ray fails too)' | head -n 12 | awk -F'\t' '{ printf "%s%s %d", (NR > 1 ? ", " : ""), $2, $1 }')
 povray_version=$("${POVRAY:-povray}" --version 2>&1 | head -n1 || true)
 
 {
@@ -241,6 +225,8 @@ povray_version=$("${POVRAY:-povray}" --version 2>&1 | head -n1 || true)
   echo "## First blockers"
   echo
   echo "The keyword of povml's first error, counted over the scenes it stops: $top …"
+  echo "The scenes POV-Ray cannot render either (its error, not a timeout) count as one row, whatever"
+  echo "povml says; test/samples/blockers.awk says how a message becomes a keyword."
   echo
   echo "| scenes | first blocker |"
   echo "|---:|---|"
