@@ -7,7 +7,7 @@ DEB_PACKAGES = libcamlimages-ocaml-dev libalcotest-ocaml-dev \
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 POVML = ./_build/default/bin/main.exe
 
-.PHONY: all deps build install render test fuzz bench report references clean
+.PHONY: all deps build install render test fuzz bench report samples references clean
 
 all: build
 
@@ -59,6 +59,12 @@ report: build
 	$(POVML) report scenes/bench/spheres.pov scenes/bench/generated/spheres_10000.pov \
 	  scenes/bench/while_spheres.pov --out docs/report +W320 +H240 --runs 2 \
 	  --thresholds 0.9,0.6,0.3,0.2,0.1,0.0 --trace-levels 1-10
+
+# Every scene of POV-Ray's sample set (povray-examples) rendered with povml and with POV-Ray at 160×120:
+# docs/samples.md and docs/samples.tsv (test/samples/run.sh). About 10 minutes on 2 cores; not part of `make test`.
+# SAMPLES_JOBS=N scenes at a time (default 2); ONLY=regex for a subset (written under /tmp, not docs/).
+samples: build
+	bash test/samples/run.sh
 
 references: deps
 	bash reference/regen.sh
