@@ -81,3 +81,5 @@ let merge a b =
     ttf_hits = a.ttf_hits + b.ttf_hits;
     csg_merge_hits = a.csg_merge_hits + b.csg_merge_hits;
   }
+
+type row = { name : string; tests : int; hits : int }

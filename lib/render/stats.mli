@@ -41,3 +41,7 @@ val create : unit -> t
 
 val merge : t -> t -> t
 (** [merge a b] is a new record with the counters of [a] and [b] added (max_level: the larger). *)
+
+type row = { name : string; tests : int; hits : int }
+(** One line of the "Ray->Shape Intersection" table: a shape's name as POV-Ray prints it, its
+    tests and the tests that succeeded. Each shape module makes its own rows. *)

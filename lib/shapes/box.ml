@@ -131,3 +131,6 @@ let bounds b = [| b.x0; b.y0; b.z0; b.x1; b.y1; b.z1 |]
 let moved_bounds { bx = b; btr } = Transform.bounds btr [| b.x0; b.y0; b.z0; b.x1; b.y1; b.z1 |]
 let pov_box b = Pov_box.of_min_max [| b.x0; b.y0; b.z0 |] [| b.x1; b.y1; b.z1 |]
 let moved_pov_box { bx; btr } = Pov_box.mapped btr (pov_box bx)
+
+let stats_rows (s : Stats.t) =
+  [ { Stats.name = "Box"; tests = s.box_tests; hits = s.box_hits } ]

@@ -47,3 +47,6 @@ val pov_box : t -> float array
 
 val moved_pov_box : moved -> float array
 (** [moved_pov_box m] is that box mapped by the transform. *)
+
+val stats_rows : Stats.t -> Stats.row list
+(** [stats_rows s] is the statistics rows of boxes, as POV-Ray names them. *)

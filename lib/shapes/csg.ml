@@ -148,3 +148,10 @@ let pov_box ~bounds:member_bounds ~pov_box c =
   | None -> ( match bounds ~bounds:member_bounds c with None -> [||] | Some b -> Pov_box.of_min_max (Array.sub b 0 3) (Array.sub b 3 3))
 
 let magnitude c = Array.fold_left (fun m o -> Float.max m o.mag) 0. c.members
+
+let stats_rows (s : Stats.t) =
+  [
+    { Stats.name = "CSG Intersection"; tests = s.csg_intersection_tests; hits = s.csg_intersection_hits };
+    { Stats.name = "CSG Merge"; tests = s.csg_merge_tests; hits = s.csg_merge_hits };
+    { Stats.name = "CSG Union"; tests = s.csg_union_tests; hits = s.csg_union_hits };
+  ]

@@ -54,3 +54,6 @@ val pov_box :
 
 val magnitude : Compiled.csg -> float
 (** [magnitude c] is the largest magnitude of its members. *)
+
+val stats_rows : Stats.t -> Stats.row list
+(** [stats_rows s] is the statistics rows of intersections (and differences), merges and kept unions, as POV-Ray names them. *)

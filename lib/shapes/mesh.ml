@@ -297,3 +297,6 @@ let placed_bounds m = if m.moved then Transform.bounds m.tr (bounds m.mesh) else
 let placed_pov_box m =
   let b = Pov_box.of_min_max (Array.sub (extent m.mesh) 0 3) (Array.sub (extent m.mesh) 3 3) in
   if m.moved then Pov_box.mapped m.tr b else b
+
+let stats_rows (s : Stats.t) =
+  [ { Stats.name = "Mesh"; tests = s.mesh_tests; hits = s.mesh_hits } ]

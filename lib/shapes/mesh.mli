@@ -105,3 +105,6 @@ val placed_bounds : placed -> float array
 
 val placed_pov_box : placed -> float array
 (** [placed_pov_box m] is POV-Ray's box: its single-precision vertices' extent, mapped when moved. *)
+
+val stats_rows : Stats.t -> Stats.row list
+(** [stats_rows s] is the statistics rows of meshes, as POV-Ray names them. *)

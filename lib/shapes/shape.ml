@@ -167,3 +167,8 @@ let face_texture obj part =
   | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _
   | Disc _ | Torus _ | Glyph _ | Csg _ ->
       -1
+
+let stats_rows s =
+  List.concat
+    [ Box.stats_rows s; Cone.stats_rows s; Disc.stats_rows s; Csg.stats_rows s; Plane.stats_rows s; Triangle.stats_rows s;
+      Mesh.stats_rows s; Sphere.stats_rows s; Torus.stats_rows s; Glyph.stats_rows s ]

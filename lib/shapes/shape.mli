@@ -65,3 +65,6 @@ val as_sphere : Compiled.shape -> Sphere.t option
 val face_texture : Compiled.obj -> int -> int
 (** [face_texture obj part] is the index of the texture of the mesh face [part] in [obj.face_surfs],
     or −1 when the object's own surface is shaded there. *)
+
+val stats_rows : Stats.t -> Stats.row list
+(** [stats_rows s] is every shape's statistics rows, in the order POV-Ray prints them. *)

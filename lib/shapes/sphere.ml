@@ -139,3 +139,6 @@ let onto cx cy cz r (q : Vec.t) =
 
 let refine s p = onto s.cx s.cy s.cz s.radius p
 let ellipsoid_refine { sp = s; etr } p = Transform.point etr (onto s.cx s.cy s.cz s.radius (Transform.inv_point etr p))
+
+let stats_rows (s : Stats.t) =
+  [ { Stats.name = "Sphere"; tests = s.sphere_tests; hits = s.sphere_hits } ]

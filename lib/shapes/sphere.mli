@@ -61,3 +61,6 @@ val refine : t -> Vec.t -> Vec.t
 
 val ellipsoid_refine : ellipsoid -> Vec.t -> Vec.t
 (** [ellipsoid_refine e p] is [refine] in object space. *)
+
+val stats_rows : Stats.t -> Stats.row list
+(** [stats_rows s] is the statistics rows of spheres and ellipsoids, as POV-Ray names them. *)

@@ -57,3 +57,6 @@ val flat_normal : t -> Vec.t
 
 val pov_box : t -> float array
 (** [pov_box t] is POV-Ray's box: the corners' extent widened by EPSILON, in single precision. *)
+
+val stats_rows : Stats.t -> Stats.row list
+(** [stats_rows s] is the statistics rows of triangles and smooth triangles, as POV-Ray names them. *)
