@@ -1,5 +1,5 @@
-(* povml's command line: POV-Ray-style switches translated to long options, one error printer, the
-   statistics. Everything it computes comes from the library. *)
+(* povml's command line: POV-Ray-style switches translated to long options, the options record
+   [run] takes, one error printer, the statistics. Everything it renders comes from the library. *)
 
 open Povml
 open Cmdliner

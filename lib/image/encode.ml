@@ -1,3 +1,5 @@
+(* From linear working colours to 8-bit file values, in POV-Ray's precision (POVRAY-3.7 §8.1). *)
+
 type t = { width : int; height : int; pixels : Bytes.t }
 
 (* The sRGB curve with single-precision constants and arithmetic, as POV-Ray evaluates it: it keeps

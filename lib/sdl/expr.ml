@@ -1,4 +1,5 @@
-(* Expressions (POVRAY-3.7 §11.2): floats, vectors, colours, strings and the built-in functions. *)
+(* Expressions (POVRAY-3.7 §11.2): floats, vectors, colours, strings, the built-in functions and
+   the transformations. *)
 
 open Token
 open Reader

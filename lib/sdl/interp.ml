@@ -1,5 +1,6 @@
-(* The interpreter: a recursive-descent reader that evaluates as it goes, the way POV-Ray does, and
-   builds an immutable Scene.t. The parser state is private to one [load] call. *)
+(* The interpreter: the statements of a scene read by a recursive-descent reader that evaluates as
+   it goes, the way POV-Ray does, then the immutable Scene.t built from them. The parser state is
+   private to one [load_string] call. *)
 
 open Token
 open Reader
