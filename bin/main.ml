@@ -1,5 +1,5 @@
-(* povml's command line: POV-Ray-style switches translated to long options, one error printer, the
-   statistics. Everything it computes comes from the library. *)
+(* povml's command line: POV-Ray-style switches translated to long options, the options record
+   [run] takes, one error printer, the statistics. Everything it renders comes from the library. *)
 
 open Povml
 open Cmdliner
@@ -135,27 +135,70 @@ let dump_scene iopts input =
       print_string (Dump.scene scene);
       `Ok 0
 
-let run input positional output width height antialias no_aa method_ depth jitter no_jitter aa_gamma
-    libs threads sr er sc ec block_size format _display _verbose clock dump robust scene_scale scene_translate
-    allow_read allow_write limits =
-  let input = match (input, positional) with Some i, _ -> Some i | None, Some p -> Some p | None, None -> None in
+(* The command line as cmdliner read it, one field per option, before any value is checked or
+   clipped (that is [run]'s work). *)
+type options = {
+  input : string option;  (** +I: the scene file *)
+  scene : string option;  (** the scene file given without +I, as the first positional argument *)
+  output : string option;  (** +O: the output file, or a directory to write it in *)
+  width : int;  (** +W: image width in pixels *)
+  height : int;  (** +H: image height in pixels *)
+  antialias : float option;  (** +A: the antialiasing threshold; [None] without +A *)
+  no_antialias : bool;  (** -A *)
+  sampling_method : int;  (** +AM: the antialiasing method, as given *)
+  aa_depth : int;  (** +R: the supersampling depth, as given *)
+  jitter : float;  (** +J: the jitter amount, as given *)
+  no_jitter : bool;  (** -J *)
+  aa_gamma : float;  (** +AG: the gamma of the antialiasing colour comparison *)
+  library_paths : string list;  (** +L: the include directories, in order *)
+  threads : int;  (** +WT: render processes, as given *)
+  start_row : float option;  (** +SR: a fraction below 1, else a 1-based row *)
+  end_row : float option;  (** +ER *)
+  start_column : float option;  (** +SC *)
+  end_column : float option;  (** +EC *)
+  block_size : int;  (** +BS: render block size, as given *)
+  format : [ `Png | `Ppm ];  (** +FN or +FP *)
+  display : bool;  (** +D or -D: accepted, without effect *)
+  verbose : bool;  (** +V or -V: accepted, without effect *)
+  clock : float;  (** +K: the value of [clock] in the scene *)
+  dump : bool;  (** --dump: print the evaluated scene instead of rendering it *)
+  robust : bool;  (** --robust: robust intersection limits instead of POV-Ray's *)
+  scene_scale : float;  (** --scene-scale: the scene scaled about the origin *)
+  scene_translate : Vec.t;  (** --scene-translate: the scene moved, after the scale *)
+  allow_read : string list;  (** --allow-read: directories the scene may read *)
+  allow_write : string list;  (** --allow-write: directories the scene may write *)
+  limits : Scene_limits.t;  (** the --max-… limits *)
+}
+
+let make_options input scene output width height antialias no_antialias sampling_method aa_depth jitter
+    no_jitter aa_gamma library_paths threads start_row end_row start_column end_column block_size format
+    display verbose clock dump robust scene_scale scene_translate allow_read allow_write limits =
+  { input; scene; output; width; height; antialias; no_antialias; sampling_method; aa_depth; jitter; no_jitter;
+    aa_gamma; library_paths; threads; start_row; end_row; start_column; end_column; block_size; format;
+    display; verbose; clock; dump; robust; scene_scale; scene_translate; allow_read; allow_write; limits }
+
+let run (args : options) =
+  let { width; height; limits; _ } = args in
+  let input = match (args.input, args.scene) with Some i, _ -> Some i | None, Some p -> Some p | None, None -> None in
   match input with
   | None -> usage_error "no scene file given: use +I<file> or give the file name"
   | Some input ->
-      let access = List.fold_left Access.allow_read Access.default allow_read in
-      let access = List.fold_left Access.allow_write access allow_write in
-      let iopts = { (Interp.default_options ~width ~height) with clock; library_paths = libs; access; limits } in
+      let access = List.fold_left Access.allow_read Access.default args.allow_read in
+      let access = List.fold_left Access.allow_write access args.allow_write in
+      let iopts =
+        { (Interp.default_options ~width ~height) with clock = args.clock; library_paths = args.library_paths; access; limits }
+      in
       if width < 1 || height < 1 then usage_error "width and height must be at least 1"
       else if width > limits.pixels / height then
         fail
           (Error.limit_error Loc.none
              (Printf.sprintf "a %d×%d image has %s pixels, more than povml's limit of %s (raise it with --max-pixels N)" width height
                 (Reader.commas (width * height)) (Reader.commas limits.pixels)))
-      else if dump then dump_scene iopts input
+      else if args.dump then dump_scene iopts input
       else
-        let fmt = match format with `Png -> Png_fmt | `Ppm -> Ppm_fmt in
+        let fmt = match args.format with `Png -> Png_fmt | `Ppm -> Ppm_fmt in
         let output =
-          match output with
+          match args.output with
           | None -> default_output input fmt
           | Some o when Sys.file_exists o && Sys.is_directory o ->
               Filename.concat o (Filename.basename (default_output input fmt))
@@ -163,32 +206,34 @@ let run input positional output width height antialias no_aa method_ depth jitte
         in
         let area =
           {
-            Render.left = max 0 (area_bound width sc ~is_end:false);
-            right = min (width - 1) (area_bound width ec ~is_end:true);
-            top = max 0 (area_bound height sr ~is_end:false);
-            bottom = min (height - 1) (area_bound height er ~is_end:true);
+            Render.left = max 0 (area_bound width args.start_column ~is_end:false);
+            right = min (width - 1) (area_bound width args.end_column ~is_end:true);
+            top = max 0 (area_bound height args.start_row ~is_end:false);
+            bottom = min (height - 1) (area_bound height args.end_row ~is_end:true);
           }
         in
         if area.left > area.right || area.top > area.bottom then usage_error "the partial render area is empty"
         else
           (* POV-Ray clips the method to 0 … 2, and method 0 is no antialiasing *)
-          let antialias = if no_aa || method_ <= 0 then None else antialias in
+          let method_ = args.sampling_method in
+          let antialias = if args.no_antialias || method_ <= 0 then None else args.antialias in
           let opts =
             {
               Render.width;
               height;
               antialias = Option.map (fun t -> Float.min 1. (Float.max 0. t)) antialias;
               aa_method = (if method_ >= 2 then Render.Adaptive else Render.Non_adaptive);
-              aa_depth = max 1 (min 9 depth);
-              jitter = (if no_jitter then 0. else Float.min 1. (Float.max 0. jitter));
-              aa_gamma;
+              aa_depth = max 1 (min 9 args.aa_depth);
+              jitter = (if args.no_jitter then 0. else Float.min 1. (Float.max 0. args.jitter));
+              aa_gamma = args.aa_gamma;
               area;
-              block_size = max 4 (min (max width height) block_size);
-              workers = max 1 threads;
+              block_size = max 4 (min (max width height) args.block_size);
+              workers = max 1 args.threads;
               progress = Unix.isatty Unix.stderr;
-              robust;
+              robust = args.robust;
             }
           in
+          let scene_scale = args.scene_scale and scene_translate = args.scene_translate in
           let move =
             if scene_scale = 1. && scene_translate = Vec.zero then None else Some (scene_scale, scene_translate)
           in
@@ -344,7 +389,13 @@ let cmd =
       $ n [ "max-pixels" ] d.pixels "An image of more than N pixels (width × height) is an error (default 67,108,864 = 8192²).")
   in
   let term =
-    Term.(ret (const run $ input $ positional $ output $ width $ height $ antialias $ no_aa $ method_ $ depth $ jitter $ no_jitter $ aa_gamma $ libs $ threads $ sr $ er $ sc $ ec $ block_size $ format $ display $ verbose $ clock $ dump $ robust $ scene_scale $ scene_translate $ allow_read $ allow_write $ limits))
+    let options =
+      Term.(
+        const make_options $ input $ positional $ output $ width $ height $ antialias $ no_aa $ method_ $ depth $ jitter
+        $ no_jitter $ aa_gamma $ libs $ threads $ sr $ er $ sc $ ec $ block_size $ format $ display $ verbose $ clock
+        $ dump $ robust $ scene_scale $ scene_translate $ allow_read $ allow_write $ limits)
+    in
+    Term.(ret (const run $ options))
   in
   Cmd.v (Cmd.info "povml" ~version:"0.1.0" ~doc ~man ~exits:[]) term
 

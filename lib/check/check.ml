@@ -1,3 +1,5 @@
+(* povml check: one scene rendered by both renderers, compared, judged against the thresholds. *)
+
 type thresholds = { max_differing : float option; max_peak : int option; min_psnr : float option }
 
 type config = {

@@ -1,3 +1,5 @@
+(* Difference heat maps of two images. *)
+
 (* The ramp's stops: blue, magenta, red, yellow; all bright, so even a 1/255 difference stands out
    against the dark grey of the equal pixels. *)
 let stops = [| (40, 90, 255); (200, 40, 220); (255, 40, 40); (255, 240, 60) |]

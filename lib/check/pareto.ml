@@ -1,3 +1,5 @@
+(* Pareto fronts: the settings no other beats on both error and time. *)
+
 let front cost xs =
   let sorted = List.stable_sort (fun a b -> compare (cost a) (cost b)) xs in
   let _, kept =

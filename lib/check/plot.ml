@@ -1,3 +1,5 @@
+(* The report's SVG plot: error against time, one panel per scene. *)
+
 let log_ticks lo hi =
   let k0 = int_of_float (floor (log10 lo)) and k1 = int_of_float (ceil (log10 hi)) in
   let within v = v >= lo *. (1. -. 1e-9) && v <= hi *. (1. +. 1e-9) in

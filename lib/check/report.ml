@@ -1,3 +1,5 @@
+(* povml report: the sweep run over every scene by both renderers, and its tables and plot written. *)
+
 type config = {
   povml : string;
   povray : string;

@@ -1,3 +1,6 @@
+(* Running povml and POV-Ray as separate processes: finding POV-Ray, private directories, timing,
+   and what a failed render said. *)
+
 type renderer = Povml of string | Povray of string
 
 let name = function Povml _ -> "povml" | Povray _ -> "POV-Ray"

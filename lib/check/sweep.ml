@@ -1,3 +1,5 @@
+(* The settings povml report sweeps, and the results measured for each. *)
+
 type setting = { antialias : float option; method_ : int; depth : int; trace_level : int option }
 
 let dedup l = List.rev (List.fold_left (fun acc x -> if List.mem x acc then acc else x :: acc) [] l)

@@ -1,3 +1,5 @@
+(* POV-Ray switches as povml check and povml report hand them to both renderers. *)
+
 (* The names POV-Ray's switches start with; the longest that matches is the switch's name. *)
 let names = [ "AM"; "AG"; "WT"; "SR"; "ER"; "SC"; "EC"; "BS"; "A"; "D"; "F"; "H"; "I"; "J"; "K"; "L"; "O"; "R"; "V"; "W" ]
 

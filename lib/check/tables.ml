@@ -1,3 +1,5 @@
+(* The report's tables: CSV and Markdown. *)
+
 let csv_field s =
   if String.exists (fun c -> c = ',' || c = '"' || c = '\n' || c = '\r') s then
     "\"" ^ String.concat "\"\"" (String.split_on_char '"' s) ^ "\""

@@ -1,3 +1,5 @@
+(* Comparing two encoded images: differing pixels, peak, RMSE, PSNR. *)
+
 type t = { pixels : int; differing : int; peak : int; rmse : float }
 
 let images (a : Encode.t) (b : Encode.t) =

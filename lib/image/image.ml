@@ -1,3 +1,5 @@
+(* Float images: the linear colours the tracer produced. *)
+
 type t = { width : int; height : int; data : Float.Array.t }
 
 let create width height = { width; height; data = Float.Array.make (3 * width * height) 0. }

@@ -1,3 +1,5 @@
+(* Writing encoded images as PNG or PPM, whole or not at all, and reading PNGs back. *)
+
 type format = Png | Ppm
 
 let write_ppm path (img : Encode.t) =

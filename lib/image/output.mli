@@ -1,4 +1,4 @@
-(** Writing encoded images: PNG (camlimages) and PPM, whole or not at all. *)
+(** Writing encoded images: PNG (camlimages) and PPM, whole or not at all; and reading PNGs back. *)
 
 type format = Png | Ppm
 

@@ -1,3 +1,6 @@
+(* SIGINT and SIGTERM during a render: a handler that records the signal and raises [Interrupted],
+   and the holds that keep it back where the work must not stop half-way. *)
+
 (* In OCaml 4.13 a signal handler runs at the next allocation or blocking system call of the
    program (a blocked waitpid or read returns EINTR, as the runtime installs handlers without
    SA_RESTART), so a handler may raise: parsing and tracing allocate all the time. Signal

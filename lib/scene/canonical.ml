@@ -3,8 +3,6 @@
    (Cone::Compute_Cone_Data, Compute_Cylinder_Data, Disc::Compute_Disc), since the last bit of a
    matrix entry can decide a pixel. *)
 
-let epsilon = 1e-10
-
 (* VLength, then VInverseScaleEq: times the reciprocal of the length *)
 let unit_and_length (v : Vec.t) =
   let len = sqrt ((v.x *. v.x) +. (v.y *. v.y) +. (v.z *. v.z)) in
@@ -14,7 +12,7 @@ let unit_and_length (v : Vec.t) =
 (* §15.2: the axis from P2 to P1; P2 maps to z = 0, P1 to z = 1 *)
 let cylinder_trans ~p1 ~p2 radius =
   let axis, len = unit_and_length (Vec.sub p1 p2) in
-  if len < epsilon then None else Some (fst (Transform.coordinate p2 axis radius len))
+  if len < Precision.epsilon then None else Some (fst (Transform.coordinate p2 axis radius len))
 
 let cylinder ~p1 ~p2 ~radius ~closed : Scene.shape option =
   Option.map
@@ -28,8 +26,8 @@ let cone ~p1 ~r1 ~p2 ~r2 ~closed : Scene.shape option =
       (fun trans -> Scene.Cone { p1 = p1; r1; p2 = p2; r2; cylinder = true; dist = 0.; closed; trans })
       (cylinder_trans ~p1 ~p2 r)
   in
-  if len < epsilon then None
-  else if Float.abs (r1 -. r2) < epsilon then as_cylinder ~p1 ~p2 r1
+  if len < Precision.epsilon then None
+  else if Float.abs (r1 -. r2) < Precision.epsilon then as_cylinder ~p1 ~p2 r1
   else
     (* §15.3: the bigger end at the top (z = 1), the apex of the full cone at z = 0 *)
     let big, rb, small, rs, axis =
@@ -38,7 +36,7 @@ let cone ~p1 ~r1 ~p2 ~r2 ~closed : Scene.shape option =
     let h = rs *. len /. (rb -. rs) in
     let origin = Vec.sub small (Vec.make (axis.x *. h) (axis.y *. h) (axis.z *. h)) in
     let tlen = h +. len in
-    if (rb -. rs) *. len /. tlen < epsilon then
+    if (rb -. rs) *. len /. tlen < Precision.epsilon then
       (* so thin a taper that POV-Ray takes it for a cylinder of the big radius *)
       Option.map
         (fun trans -> Scene.Cone { p1; r1; p2; r2; cylinder = true; dist = 0.; closed; trans })

@@ -1,3 +1,5 @@
+(* Five-channel colours: red, green, blue, filter, transmit. *)
+
 type t = { red : float; green : float; blue : float; filter : float; transmit : float }
 
 let black = { red = 0.; green = 0.; blue = 0.; filter = 0.; transmit = 0. }

@@ -1,3 +1,5 @@
+(* POV-Ray's defaults for reflection, finishes, textures and interiors (POVRAY-3.7 §10). *)
+
 open Scene
 
 let reflection =

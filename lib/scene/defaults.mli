@@ -1,4 +1,4 @@
-(** POV-Ray's defaults for finishes, interiors, textures and cameras (POVRAY-3.7 §1.1, §10). *)
+(** POV-Ray's defaults for reflection, finishes, textures and interiors (POVRAY-3.7 §10). *)
 
 val reflection : Scene.reflection
 (** [reflection] is no reflection: min = max = 0, falloff 1, exponent 1. *)

@@ -1,14 +1,11 @@
 (* Pigment patterns and colour maps, after POVRAY-3.7 §17. *)
 
-let small_tolerance = 1e-10
-let f32 x = Int32.float_of_bits (Int32.bits_of_float x)
-
 (* C's (int) cast of a double, as the checker's sum of floors is converted *)
 let c_int x = if Float.is_nan x || Float.abs x >= 2147483648. then min_int else int_of_float x
 
 (* §17.4: a coordinate that is an integer, or within 1e-10 below one, belongs to the cell above *)
 let checker (q : Vec.t) =
-  let s = floor (q.x +. small_tolerance) +. floor (q.y +. small_tolerance) +. floor (q.z +. small_tolerance) in
+  let s = Precision.(floor (q.x +. epsilon) +. floor (q.y +. epsilon) +. floor (q.z +. epsilon)) in
   if c_int s land 1 = 1 then 1. else 0.
 
 (* §17.5: values up to 1 (negatives included) pass unchanged; the wrap of §17.1 does the rest *)
@@ -40,7 +37,7 @@ let frac a =
   if f < 0. then f +. 1. else f
 
 let brick (size : Vec.t) mortar (q : Vec.t) =
-  let m = mortar +. small_tolerance in
+  let m = mortar +. Precision.epsilon in
   let x = q.x +. m and y = q.y +. m and z = q.z +. m in
   let w = size.x and h = size.y and d = size.z in
   if frac (y /. h) <= mortar /. h then 0.
@@ -93,7 +90,7 @@ let lookup (map : Scene.map_entry array) v =
     if v = cur.value || prev == cur then cur.colour
     else
       let f = (v -. prev.value) /. (cur.value -. prev.value) in
-      let mix a b = f32 (a +. f32 (f *. f32 (b -. a))) in
+      let mix a b = Precision.(f32 (a +. f32 (f *. f32 (b -. a)))) in
       let p = prev.colour and c = cur.colour in
       {
         Colour.red = mix p.red c.red;
@@ -104,7 +101,7 @@ let lookup (map : Scene.map_entry array) v =
       }
 
 let f32_colour (c : Colour.t) =
-  { Colour.red = f32 c.red; green = f32 c.green; blue = f32 c.blue; filter = f32 c.filter; transmit = f32 c.transmit }
+  Precision.{ Colour.red = f32 c.red; green = f32 c.green; blue = f32 c.blue; filter = f32 c.filter; transmit = f32 c.transmit }
 
 (* §17.2 for a pigment map: the same search; the entries' pigments are evaluated at the point the
    outer pattern saw, each through its own transform, and their colours blended *)
@@ -125,7 +122,7 @@ let rec at_pattern_point (p : Scene.patterned) q =
       if v = cur.pvalue || prev == cur then inner cur.pigment q
       else
         let f = (v -. prev.pvalue) /. (cur.pvalue -. prev.pvalue) in
-        let mix a b = f32 (a +. f32 (f *. f32 (b -. a))) in
+        let mix a b = Precision.(f32 (a +. f32 (f *. f32 (b -. a)))) in
         let c = inner cur.pigment q and p = inner prev.pigment q in
         {
           Colour.red = mix p.red c.red;
@@ -144,7 +141,7 @@ let eval (p : Scene.patterned) (x : Vec.t) = at_pattern_point p (match p.ptrans 
 
 let colour_at (p : Scene.pigment) x = match p with Solid c | Solid_placed { colour = c; _ } -> c | Pattern pp -> eval pp x
 
-let clear (c : Colour.t) = Float.abs c.filter <= small_tolerance && Float.abs c.transmit <= small_tolerance
+let clear (c : Colour.t) = Float.abs c.filter <= Precision.epsilon && Float.abs c.transmit <= Precision.epsilon
 
 let rec opaque (p : Scene.pigment) =
   match p with
@@ -155,8 +152,8 @@ let rec opaque (p : Scene.pigment) =
 
 let f32_entry v (c : Colour.t) : Scene.map_entry =
   {
-    value = f32 v;
-    colour = { Colour.red = f32 c.red; green = f32 c.green; blue = f32 c.blue; filter = f32 c.filter; transmit = f32 c.transmit };
+    value = Precision.f32 v;
+    colour = f32_colour c;
   }
 
 let rgb r g b = { Colour.black with red = r; green = g; blue = b }

@@ -1,4 +1,5 @@
-(** Pigment evaluation: patterns, the value wrap and waves, and colour-map lookup (POVRAY-3.7 §17). *)
+(** Pigment evaluation: patterns, the value wrap and waves, and colour-map lookup; the default maps,
+    and a pigment's transform (POVRAY-3.7 §17). *)
 
 val checker : Vec.t -> float
 (** [checker q] is 0 or 1: the parity of [floor(c + 1e-10)] summed over the three coordinates (§17.4). *)

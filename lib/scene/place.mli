@@ -1,6 +1,7 @@
 (** Moving shapes: what one [translate], [rotate], [scale], [matrix] or [transform] modifier does
     to a shape (POVRAY-3.7 §14.4), shape by shape as POV-Ray's [Translate], [Rotate], [Scale] and
-    [Transform] methods do it. Apply the modifiers one by one in text order. *)
+    [Transform] methods do it. Apply the modifiers one by one in text order. Also the whole scene
+    moved, for [--scene-scale] and [--scene-translate]. *)
 
 (** One object modifier. [Scale] vectors arrive with zero components already replaced by 1
     (§14.2); [Transform] carries a matrix or a whole [transform {…}] (inverse already applied). *)

@@ -1,3 +1,5 @@
+(* Three-channel colours, stored unboxed. *)
+
 type t = { r : float; g : float; b : float }
 
 let[@inline] make r g b = { r; g; b }

@@ -14,7 +14,7 @@ open Settings
 let rec parse_rvalue ?(store = ignore) st : V.t * bool =
   let loc = peek_loc st in
   match peek st with
-  | Ident "light_source" -> ((match parse_light_source st with Lone l -> V.Light l | Shaped o -> V.Object o), false)
+  | Ident "light_source" -> ((match parse_light_source st with Lights.Lone l -> V.Light l | Shaped o -> V.Object o), false)
   | Ident s when Names.mem object_set s -> (V.Object (parse_object st), false)
   | Ident "pigment" -> advance st; (V.Pigment (parse_pigment st (Scene.Solid Colour.black)), false)
   | Ident "finish" -> advance st; (V.Finish (parse_finish st Defaults.finish), false)

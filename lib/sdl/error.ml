@@ -1,3 +1,6 @@
+(* Errors and warnings in scenes, and their one printed form: the message, the source line with a
+   caret under the column, the notes. *)
+
 type kind = Scene | Limit | Access
 type t = { loc : Loc.t; msg : string; notes : (Loc.t * string) list; kind : kind }
 

@@ -1,4 +1,5 @@
-(* Expressions (POVRAY-3.7 §11.2): floats, vectors, colours, strings and the built-in functions. *)
+(* Expressions (POVRAY-3.7 §11.2): floats, vectors, colours, strings, the built-in functions and
+   the transformations. *)
 
 open Token
 open Reader
@@ -144,7 +145,6 @@ and logic loc f a b =
 
 and parse_relational st =
   (* comparisons chain left to right: (1 < 2 < 3) is ((1 < 2) < 3) *)
-  let eps = 1e-10 in
   let rec loop lhs =
     let rel f =
       let loc = peek_loc st in
@@ -158,11 +158,11 @@ and parse_relational st =
     in
     match peek_follow st with
     | Lt -> rel (fun a b -> a < b)
-    | Le -> rel (fun a b -> a < b || Float.abs (a -. b) < eps)
+    | Le -> rel (fun a b -> a < b || Float.abs (a -. b) < Precision.epsilon)
     | Gt -> rel (fun a b -> a > b)
-    | Ge -> rel (fun a b -> a > b || Float.abs (a -. b) < eps)
-    | Eq -> rel (fun a b -> Float.abs (a -. b) < eps)
-    | Ne -> rel (fun a b -> Float.abs (a -. b) >= eps)
+    | Ge -> rel (fun a b -> a > b || Float.abs (a -. b) < Precision.epsilon)
+    | Eq -> rel (fun a b -> Float.abs (a -. b) < Precision.epsilon)
+    | Ne -> rel (fun a b -> Float.abs (a -. b) >= Precision.epsilon)
     | _ -> lhs
   in
   loop (parse_expr st)

@@ -1,5 +1,6 @@
-(* The interpreter: a recursive-descent reader that evaluates as it goes, the way POV-Ray does, and
-   builds an immutable Scene.t. The parser state is private to one [load] call. *)
+(* The interpreter: the statements of a scene read by a recursive-descent reader that evaluates as
+   it goes, the way POV-Ray does, then the immutable Scene.t built from them. The parser state is
+   private to one [load_string] call. *)
 
 open Token
 open Reader
@@ -32,7 +33,7 @@ let rec parse_statements st =
       st.camera <- Some (parse_camera st);
       parse_statements st
   | Ident "light_source" ->
-      (match parse_light_source st with Lone l -> st.lights <- l :: st.lights | Shaped o -> add_object st o);
+      (match parse_light_source st with Lights.Lone l -> st.lights <- l :: st.lights | Shaped o -> Csg_build.add_object st o);
       parse_statements st
   | Ident "background" -> parse_background st; parse_statements st
   | Ident "sky_sphere" -> parse_sky_sphere st; parse_statements st
@@ -43,7 +44,7 @@ let rec parse_statements st =
   | Ident ("declare" | "include" as d) ->
       warn st loc "should have '#' before '%s'" d;
       advance st; directive st d loc; parse_statements st
-  | _ when object_follows st -> add_object st (parse_object st); parse_statements st
+  | _ when object_follows st -> Csg_build.add_object st (parse_object st); parse_statements st
   | _ -> unexpected st "an object, light_source, camera or directive"
 
 let finish_scene st : Scene.t =

@@ -1,3 +1,6 @@
+(* The lexer: scene text to located tokens, read on demand, and the fast path that reads a vector
+   of plain numbers straight from the text (POVRAY-3.7 §11.1). *)
+
 open Token
 
 let is_digit c = c >= '0' && c <= '9'

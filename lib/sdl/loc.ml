@@ -1,3 +1,5 @@
+(* Source locations. *)
+
 type t = { file : string; line : int; col : int }
 
 let none = { file = ""; line = 0; col = 0 }

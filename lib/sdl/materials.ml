@@ -95,9 +95,7 @@ let pigment_of (g : pig) : Scene.pigment =
       let map = match g.map with Some m -> m | None -> Pigment.default_map pattern in
       Pattern { pattern; frequency = g.frequency; phase = g.phase; wave = g.wave; map; ptrans = g.trans; pigments = g.pigments }
 
-let default_brick = Scene.Brick { size = Vec.make 8. 3. 4.5; mortar = Int32.float_of_bits (Int32.bits_of_float (0.5 -. 2e-10)) }
-
-let f32 x = Int32.float_of_bits (Int32.bits_of_float x)
+let default_brick = Scene.Brick { size = Vec.make 8. 3. 4.5; mortar = Precision.f32 (0.5 -. 2e-10) }
 
 (* The pigment body read up to [close] ('}' of a pigment block, or ']' of a pigment_map entry),
    editing [base] (§17.9). *)
@@ -182,7 +180,7 @@ let rec parse_pigment_body st ~close (base : Scene.pigment) : Scene.pigment =
         advance st;
         let m = parse_float st in
         match g.pat with
-        | Some (Brick b) -> loop { g with pat = Some (Brick { b with mortar = f32 (m -. 2e-10) }) }
+        | Some (Brick b) -> loop { g with pat = Some (Brick { b with mortar = Precision.f32 (m -. 2e-10) }) }
         | Some (Checker | Gradient _ | Hexagon) | None -> Error.raise_at loc "'mortar' is only valid in a brick pattern")
     | Ident (("color_map" | "colour_map") as kw) -> (
         advance st;
@@ -195,14 +193,14 @@ let rec parse_pigment_body st ~close (base : Scene.pigment) : Scene.pigment =
         | Some (Checker | Hexagon | Brick _) -> Error.raise_at loc "cannot use pigment_map with this pattern type"
         | Some (Gradient _) | None -> loop { g with pigments = parse_pigment_map st })
     (* §17.1: frequency, phase, the poly_wave exponent and the mortar are stored in single precision *)
-    | Ident "frequency" -> advance st; loop { g with frequency = f32 (parse_float st) }
-    | Ident "phase" -> advance st; loop { g with phase = f32 (parse_float st) }
+    | Ident "frequency" -> advance st; loop { g with frequency = Precision.f32 (parse_float st) }
+    | Ident "phase" -> advance st; loop { g with phase = Precision.f32 (parse_float st) }
     | Ident "ramp_wave" -> advance st; loop { g with wave = Ramp }
     | Ident "triangle_wave" -> advance st; loop { g with wave = Triangle_wave }
     | Ident "sine_wave" -> advance st; loop { g with wave = Sine_wave }
     | Ident "scallop_wave" -> advance st; loop { g with wave = Scallop_wave }
     | Ident "cubic_wave" -> advance st; loop { g with wave = Cubic_wave }
-    | Ident "poly_wave" -> advance st; loop { g with wave = Poly_wave (if float_follows st then f32 (parse_float st) else 1.) }
+    | Ident "poly_wave" -> advance st; loop { g with wave = Poly_wave (if float_follows st then Precision.f32 (parse_float st) else 1.) }
     | Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") ->
         (* §17.1: pigment transforms compose into the pigment's own transform *)
         let t = Place.op_transform (parse_op st) in
@@ -231,7 +229,7 @@ and parse_pigment_map st : Scene.pigment_entry array =
             let v = parse_float st in
             ignore (accept st Comma);
             let pg = parse_pigment_body st ~close:RBracket st.default_texture.pigment in
-            entries ({ Scene.pvalue = f32 v; pigment = pg } :: acc) (n + 1)
+            entries ({ Scene.pvalue = Precision.f32 v; pigment = pg } :: acc) (n + 1)
         | _ -> unexpected st "'[' starting a pigment_map entry, or '}'"
       in
       let es = entries [] 0 in

@@ -347,6 +347,7 @@ let open_block st what = expect st LBrace (Printf.sprintf "'{' after '%s'" what)
 let close_block st what = expect st RBrace (Printf.sprintf "'}' closing '%s' or one of its keywords" what)
 
 let accept st k = if peek st == k then (advance st; true) else false
+let skip_comma st = ignore (accept st Comma)
 let is_ident st s = match peek st with Ident i -> String.equal i s | _ -> false
 
 let accept_ident st s =

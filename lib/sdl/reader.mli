@@ -180,6 +180,9 @@ val close_block : st -> string -> unit
 val accept : st -> Token.kind -> bool
 (** [accept st k] consumes [k] if it comes next. *)
 
+val skip_comma : st -> unit
+(** [skip_comma st] consumes a ',' if one comes next (where the comma between arguments is optional). *)
+
 val is_ident : st -> string -> bool
 (** [is_ident st s] tells whether the next token is the identifier [s]. *)
 

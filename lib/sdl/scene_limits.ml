@@ -1,3 +1,5 @@
+(* The limits on what a scene may ask for, and their defaults. *)
+
 type t = {
   include_depth : int;
   macro_depth : int;

@@ -1,3 +1,5 @@
+(* "Did you mean …": the names nearest a misspelt one by edit distance, case ignored. *)
+
 let distance a b =
   let la = String.length a and lb = String.length b in
   let prev = Array.init (lb + 1) (fun j -> j) and cur = Array.make (lb + 1) 0 in

@@ -1,3 +1,5 @@
+(* Tokens of the scene language, and how a message names one. *)
+
 type kind =
   | Num of float
   | Str of string

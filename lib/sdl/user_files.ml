@@ -1,5 +1,5 @@
-(* The scene's own files. What each directive accepts, writes and reads was checked against
-   POV-Ray 3.7.0.10 (the cases are in test/cram/file_io.t). *)
+(* The scene's own files: #fopen, #read, #write and #fclose. What each directive accepts, writes
+   and reads was checked against POV-Ray 3.7.0.10 (the cases are in test/cram/file_io.t). *)
 
 open Token
 open Reader

@@ -1,3 +1,5 @@
+(* Values of the scene language and POV-Ray's arithmetic on them (POVRAY-3.7 §11.2). *)
+
 type obj = {
   shape : shape;
   texture : Scene.texture option;

@@ -1,0 +1,115 @@
+(* CSG as POV-Ray builds it: inversion by De Morgan's rule, and how an object as read enters the
+   scene, a union dissolved into its members and any other CSG kept whole (POVRAY-3.7 §16). *)
+
+open Reader
+
+(* §16.3, Invert_Object and Invert_CSG_Object: a plane turns over (normal and distance negated),
+   another primitive toggles its inverted flag, a CSG inverts every member and morphs by De
+   Morgan's rule: an inverted union or merge is an intersection, an inverted intersection a merge.
+   A light has no geometry to invert. *)
+let rec invert (o : V.obj) : V.obj =
+  match o.shape with
+  | Prim (Plane { normal; offset; trans }) -> { o with shape = Prim (Plane { normal = Vec.neg normal; offset = -.offset; trans }) }
+  | Prim (Sphere _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Csg _ | Glyph _) -> { o with inverted = not o.inverted }
+  | Csg { members; _ } when List.for_all (function V.Member_light _ -> true | V.Member_obj _ -> false) members ->
+      o (* lights only (a light in object position): nothing to invert *)
+  | Csg { kind = Clipped; members = V.Member_obj c :: clips; split } ->
+      (* the object is inverted, its clip objects are not *)
+      { o with shape = Csg { kind = Clipped; members = V.Member_obj (invert c) :: clips; split } }
+  | Csg { kind = (Union | Merge | Intersection | Clipped) as kind; members; split } ->
+      let kind : Scene.csg_kind = match kind with Union | Merge -> Intersection | Intersection | Clipped -> Merge in
+      let members = List.map (function V.Member_obj c -> V.Member_obj (invert c) | V.Member_light _ as l -> l) members in
+      (* the CSG keeps an inverted flag too: an enclosing intersection leaves it out of its box *)
+      { o with shape = Csg { kind; members; split }; inverted = not o.inverted }
+
+(* §2.7: every object gets a texture and an interior; a legacy finish ior goes into the interior. *)
+let resolved st (o : V.obj) =
+  let texture = match o.texture with Some t -> t | None -> st.default_texture in
+  let interior = match o.interior with Some i -> i | None -> Defaults.interior in
+  let interior = match texture.finish.legacy_ior with Some ior -> { interior with ior } | None -> interior in
+  let interior = if interior.ior = 0. then { interior with ior = 1. } else interior in
+  (texture, interior)
+
+(* The scene object of [o] with [shape], [texture], [interior] and [no_shadow]; its other flags and
+   place are [o]'s. *)
+let scene_obj (o : V.obj) ?(no_shadow = o.no_shadow) shape texture interior : Scene.obj =
+  { Scene.shape; texture; interior; no_shadow; loc = o.oloc; no_image = o.no_image; no_reflection = o.no_reflection; double_illuminate = o.double_illuminate; looks_like = o.looks_like }
+
+let finish_prim st (o : V.obj) shape : Scene.obj =
+  let texture, interior = resolved st o in
+  scene_obj o shape texture interior
+
+(* A member's interior: its own, or its parent's shared (§16.5). *)
+let member_interior (c : V.obj) parent =
+  match c.interior with
+  | Some i -> ((if i.ior = 0. then { i with Scene.ior = 1. } else i), true)
+  | None -> (parent, false)
+
+(* A CSG kept whole (§16.4, §16.5, §19.1): every member gets the parent's texture unless it has its
+   own and shares the parent's interior unless it has its own; the parent's no_shadow goes to every
+   member (only the top level's is ever tested); lights join the scene's lights. *)
+let rec kept_obj st ~texture ~interior (o : V.obj) : Scene.obj =
+  match o.shape with
+  | Prim shape -> scene_obj o shape texture interior
+  | Csg { kind; members; split = _ } ->
+      let members =
+        List.filter_map
+          (function
+            | V.Member_light l -> count_object st o.oloc; st.lights <- l :: st.lights; None
+            | V.Member_obj c ->
+                let texture = match c.texture with Some t -> t | None -> texture in
+                let interior, own_interior = member_interior c interior in
+                (* §16.5: the flags pass down to every member *)
+                let c =
+                  {
+                    c with
+                    no_shadow = c.no_shadow || o.no_shadow;
+                    no_image = c.no_image || o.no_image;
+                    no_reflection = c.no_reflection || o.no_reflection;
+                  }
+                in
+                Some { Scene.mobj = kept_obj st ~texture ~interior c; inverted = c.inverted; own_interior })
+          members
+      in
+      (* §16.4: a union whose members all have no_shadow has it too *)
+      let no_shadow =
+        o.no_shadow
+        || (match kind with Union -> members <> [] && List.for_all (fun (m : Scene.member) -> m.mobj.no_shadow) members | Merge | Intersection | Clipped -> false)
+      in
+      scene_obj o ~no_shadow (Csg { kind; members }) texture interior
+
+(* An object entering the scene (§16.4, §16.5): a union that may be split is dissolved, its members
+   without a texture or interior take the union's, and its no_shadow goes to every member; its
+   lights join the scene's. Another CSG enters whole. An inverted primitive enters as an
+   intersection of itself alone, which has the same surface and the negated Inside (§16.3). *)
+let rec add_object st (o : V.obj) =
+  match o.shape with
+  | Prim shape when not o.inverted ->
+      count_object st o.oloc;
+      st.objects <- finish_prim st o shape :: st.objects
+  | Prim _ ->
+      (* an inverted primitive: the intersection holds its texture and interior, so the camera's
+         interior list and the hits name the same interior, as for POV-Ray's one object *)
+      let m = V.Member_obj { o with texture = None; interior = None } in
+      add_object st { o with shape = Csg { kind = Intersection; members = [ m ]; split = false }; inverted = false }
+  | Csg { kind = Union; members = ms; split = true } ->
+      List.iter
+        (function
+          | V.Member_light l -> count_object st o.oloc; st.lights <- l :: st.lights
+          | V.Member_obj c ->
+              add_object st
+                {
+                  c with
+                  texture = (match c.texture with Some _ -> c.texture | None -> o.texture);
+                  interior = (match c.interior with Some _ -> c.interior | None -> o.interior);
+                  no_shadow = c.no_shadow || o.no_shadow;
+                  no_image = c.no_image || o.no_image;
+                  no_reflection = c.no_reflection || o.no_reflection;
+                  looks_like = c.looks_like || o.looks_like;
+                })
+        ms
+  | Csg { kind = Union | Merge | Intersection | Clipped; members = _; split = _ } ->
+      count_object st o.oloc;
+      let texture, interior = resolved st o in
+      let obj = kept_obj st ~texture ~interior o in
+      st.objects <- obj :: st.objects

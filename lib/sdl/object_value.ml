@@ -1,0 +1,54 @@
+(* Objects as read (Value.obj), before they enter the scene: a new one, and what the modifiers
+   that reach every member do to one (POVRAY-3.7 §14.7, §15.5, §16.5). *)
+
+module V = Value
+
+let new_obj_of shape loc =
+  {
+    V.shape;
+    texture = None;
+    interior = None;
+    no_shadow = false;
+    oloc = loc;
+    no_image = false;
+    no_reflection = false;
+    double_illuminate = false;
+    looks_like = false;
+    inverted = false;
+  }
+
+let new_obj shape loc = new_obj_of (V.Prim shape) loc
+
+let move_shape op s = Place.shape s op
+
+(* §14.8: a light's centre and point_at move as points; the direction between them is taken
+   when the scene is compiled *)
+let move_light op (l : Scene.light) =
+  let t = Place.op_transform op in
+  { l with position = Transform.point t l.position; point_at = Transform.point t l.point_at }
+
+(* §14.7: an object's texture, if it has one yet, moves with it; members' textures with them *)
+let rec move_obj op (o : V.obj) =
+  let texture = Option.map (fun t -> Place.texture t op) o.texture in
+  match o.shape with
+  | Prim s -> { o with shape = Prim (move_shape op s); texture }
+  | Csg c -> { o with shape = Csg { c with members = List.map (move_member op) c.members }; texture }
+
+and move_member op = function
+  | V.Member_obj o -> V.Member_obj (move_obj op o)
+  | V.Member_light l -> V.Member_light (move_light op l)
+
+(* §16.5: double_illuminate on a union is set on every member at once, at any depth *)
+let rec set_double_illuminate b (o : V.obj) =
+  match o.shape with
+  | Prim _ -> { o with double_illuminate = b }
+  | Csg c ->
+      let member = function V.Member_obj c -> V.Member_obj (set_double_illuminate b c) | V.Member_light _ as m -> m in
+      { o with double_illuminate = b; shape = Csg { c with members = List.map member c.members } }
+
+(* §15.5: a torus takes [sturm] (solve with Sturm sequences) among its modifiers, wherever it
+   stands *)
+let is_torus (o : V.obj) = match o.shape with Prim (Torus _) -> true | Prim _ | Csg _ -> false
+
+let set_sturm (o : V.obj) =
+  match o.shape with Prim (Torus t) -> { o with shape = Prim (Torus { t with sturm = true }) } | Prim _ | Csg _ -> o

@@ -1,0 +1,26 @@
+(** Objects as read ([Value.obj]), before they enter the scene: making one, and what the modifiers
+    that reach every member of a CSG do to one (POVRAY-3.7 §14.7, §15.5, §16.5). *)
+
+val new_obj_of : Value.shape -> Loc.t -> Value.obj
+(** [new_obj_of shape loc] is an object of [shape] written at [loc], with no texture, interior or
+    flag yet. *)
+
+val new_obj : Scene.shape -> Loc.t -> Value.obj
+(** [new_obj shape loc] is [new_obj_of] of the primitive [shape]. *)
+
+val move_light : Place.op -> Scene.light -> Scene.light
+(** [move_light op l] is [l] with its centre and point_at moved by [op] as points (§14.8). *)
+
+val move_obj : Place.op -> Value.obj -> Value.obj
+(** [move_obj op o] is [o] moved by [op], its members, their lights and every texture already
+    given with it (§14.7). *)
+
+val set_double_illuminate : bool -> Value.obj -> Value.obj
+(** [set_double_illuminate b o] is [o] with double_illuminate [b] on itself and every member at
+    any depth (§16.5). *)
+
+val is_torus : Value.obj -> bool
+(** [is_torus o] holds when [o] is a torus, the one object that takes [sturm] (§15.5). *)
+
+val set_sturm : Value.obj -> Value.obj
+(** [set_sturm o] is the torus [o] solved with Sturm sequences; any other object unchanged. *)
