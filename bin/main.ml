@@ -74,22 +74,10 @@ let print_stats (r : Pipeline.result) (o : Render.options) =
     (if pixels = 0 then 0. else float_of_int s.samples /. float_of_int pixels);
   Printf.eprintf "Rays:        %11d   Max Level: %d/%d\n%s\n" rays s.max_level r.scene.max_trace_level line;
   Printf.eprintf "Ray->Shape Intersection          Tests       Succeeded  Percentage\n%s\n" line;
-  if s.box_tests > 0 then Printf.eprintf "Box                        %11d     %11d  %10.2f\n" s.box_tests s.box_hits (pct s.box_hits s.box_tests);
-  if s.cone_tests > 0 then Printf.eprintf "Cone/Cylinder              %11d     %11d  %10.2f\n" s.cone_tests s.cone_hits (pct s.cone_hits s.cone_tests);
-  if s.disc_tests > 0 then Printf.eprintf "Disc                       %11d     %11d  %10.2f\n" s.disc_tests s.disc_hits (pct s.disc_hits s.disc_tests);
-  let row name t h = if t > 0 then Printf.eprintf "%-27s%11d     %11d  %10.2f\n" name t h (pct h t) in
-  row "CSG Intersection" s.csg_intersection_tests s.csg_intersection_hits;
-  row "CSG Merge" s.csg_merge_tests s.csg_merge_hits;
-  row "CSG Union" s.csg_union_tests s.csg_union_hits;
-  if s.plane_tests > 0 then Printf.eprintf "Plane                      %11d     %11d  %10.2f\n" s.plane_tests s.plane_hits (pct s.plane_hits s.plane_tests);
-  if s.triangle_tests > 0 then Printf.eprintf "Triangle                   %11d     %11d  %10.2f\n" s.triangle_tests s.triangle_hits (pct s.triangle_hits s.triangle_tests);
-  if s.mesh_tests > 0 then Printf.eprintf "Mesh                       %11d     %11d  %10.2f\n" s.mesh_tests s.mesh_hits (pct s.mesh_hits s.mesh_tests);
-  if s.sphere_tests > 0 then Printf.eprintf "Sphere                     %11d     %11d  %10.2f\n" s.sphere_tests s.sphere_hits (pct s.sphere_hits s.sphere_tests);
-  if s.torus_tests > 0 then begin
-    Printf.eprintf "Torus                      %11d     %11d  %10.2f\n" s.torus_tests s.torus_hits (pct s.torus_hits s.torus_tests);
-    Printf.eprintf "Torus Bound                %11d     %11d  %10.2f\n" s.torus_tests s.torus_bound_hits (pct s.torus_bound_hits s.torus_tests)
-  end;
-  row "True Type Font" s.ttf_tests s.ttf_hits;
+  (* each shape's rows, as its module names them, in POV-Ray's order; a shape never tested has none *)
+  List.iter
+    (fun (r : Stats.row) -> if r.tests > 0 then Printf.eprintf "%-27s%11d     %11d  %10.2f\n" r.name r.tests r.hits (pct r.hits r.tests))
+    (Shape.stats_rows s);
   Printf.eprintf "%s\n" line;
   if s.roots_tested > 0 then
     Printf.eprintf "Roots tested:%22d   eliminated:%21d\n" s.roots_tested s.roots_eliminated;

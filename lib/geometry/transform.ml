@@ -158,6 +158,12 @@ let matrix (a : float array) =
 (* Compose_Transforms(a, b): MTimesA(a.M, b.M), MTimesB(b.I, a.I). *)
 let compose a b = make (mul (mat a) (mat b)) (mul (inv b) (inv a))
 
+(* A transform set up from its inverse, the other matrix by MInvers (a polygon's frame, §15.7). *)
+let of_inverse (i : float array) = Option.map (fun m -> make m (Array.copy i)) (invert i)
+
+let product = mul
+let inverse_matrix = inv
+
 (* Parse_Transform_Block with inverse: MInvers on each matrix in place. *)
 let inverse t =
   match (invert (mat t), invert (inv t)) with

@@ -40,6 +40,18 @@ val matrix : float array -> (t * string list, string) result
     warning POV-Ray prints (one per such column). A zero determinant is POV-Ray's fatal
     "Singular matrix" error. [Invalid_argument] if [a] does not hold 12 numbers. *)
 
+val of_inverse : float array -> t option
+(** [of_inverse i] is the transform whose inverse matrix is [i] (16 entries, row by row) and whose
+    matrix is [i] inverted by cofactor expansion ([MInvers]); None when [i] is singular. POV-Ray
+    sets up a polygon's frame this way (§15.7). *)
+
+val product : float array -> float array -> float array
+(** [product a b] is the 4×4 product [a·b] of two matrices given row by row (16 entries), each
+    entry summed over k = 0..3 from left to right, as [MTimesA], [MTimesB] and [MTimesC] do. *)
+
+val inverse_matrix : t -> float array
+(** [inverse_matrix t] is [I], row by row (16 entries). *)
+
 val compose : t -> t -> t
 (** [compose a b] is "first [a], then [b]": [M = a.M·b.M], [I = b.I·a.I]
     ([Compose_Transforms]). *)

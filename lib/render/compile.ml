@@ -181,7 +181,8 @@ let scene (s : Scene.t) : Compiled.t =
           in
           let members = Array.of_list members in
           Some (Csg { kind; members; cbox = Shape.pov_box (Csg { kind; members; cbox = [||] }) })
-      | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Glyph _ ->
+      | _ ->
+          (* a primitive: [Shape.compile] knows every one *)
           let sh = Shape.compile o.shape in
           if sh <> None then incr next;
           sh
@@ -190,22 +191,15 @@ let scene (s : Scene.t) : Compiled.t =
     | None -> None
     | Some shape ->
         let surf = surface_of o.texture in
-        let face_surfs =
-          match o.shape with
-          | Mesh m -> Array.map surface_of m.textures
-          | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Box _ | Cone _ | Disc _ | Torus _ | Glyph _ | Csg _ -> [||]
-        in
+        (* a mesh's faces may carry textures of their own; no other shape has any *)
+        let face_textures = match o.shape with Mesh m -> m.textures | _ -> [||] in
+        let face_surfs = Array.map surface_of face_textures in
         let opaque =
           match shape with
           | Csg { members; _ } -> Array.for_all (fun m -> m.opaque) members
-          | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _
-          | Disc _ | Torus _ | Glyph _ -> (
+          | _ ->
               (* §17.8: opaque only if no colour the pigment can give is transparent *)
-              pigment_opaque o.texture.pigment
-              &&
-              match o.shape with
-              | Mesh m -> Array.for_all (fun (t : Scene.texture) -> pigment_opaque t.pigment) m.textures
-              | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Box _ | Cone _ | Disc _ | Torus _ | Glyph _ | Csg _ -> true)
+              pigment_opaque o.texture.pigment && Array.for_all (fun (t : Scene.texture) -> pigment_opaque t.pigment) face_textures
         in
         let ob =
           {

@@ -50,6 +50,8 @@ type shape =
       (** §16: a CSG kept whole, a top-level object or a member of one. The tracer never reports a
           CSG as the object hit but the member primitive (a leaf), whose own surface is shaded. *)
   | Glyph of Glyph.t  (** §15.9: a text object's letter, always through its transform *)
+  | Polygon of Polygon.t  (** §15.7, §14.5 (b): the outline in polygon space, placed by its transform *)
+  | Quadric of Quadric.t  (** quadrics.cpp: in world space, the ray as it is *)
 
 (** A CSG's members and how their hits are kept (§16.2, §16.3). *)
 and csg = {

@@ -34,6 +34,10 @@ type t = {
   mutable csg_merge_hits : int;
   mutable ttf_tests : int;
   mutable ttf_hits : int;
+  mutable polygon_tests : int;
+  mutable polygon_hits : int;
+  mutable quadric_tests : int;
+  mutable quadric_hits : int;
 }
 
 let create () =
@@ -43,6 +47,7 @@ let create () =
     torus_tests = 0; torus_hits = 0; torus_bound_hits = 0; roots_tested = 0; roots_eliminated = 0; max_level = 0; samples = 0;
     csg_union_tests = 0; csg_union_hits = 0; csg_intersection_tests = 0; csg_intersection_hits = 0; csg_merge_tests = 0;
     csg_merge_hits = 0; ttf_tests = 0; ttf_hits = 0;
+    polygon_tests = 0; polygon_hits = 0; quadric_tests = 0; quadric_hits = 0;
   }
 
 let merge a b =
@@ -80,6 +85,10 @@ let merge a b =
     ttf_tests = a.ttf_tests + b.ttf_tests;
     ttf_hits = a.ttf_hits + b.ttf_hits;
     csg_merge_hits = a.csg_merge_hits + b.csg_merge_hits;
+    polygon_tests = a.polygon_tests + b.polygon_tests;
+    polygon_hits = a.polygon_hits + b.polygon_hits;
+    quadric_tests = a.quadric_tests + b.quadric_tests;
+    quadric_hits = a.quadric_hits + b.quadric_hits;
   }
 
 type row = { name : string; tests : int; hits : int }

@@ -34,6 +34,10 @@ type t = {
   mutable csg_merge_hits : int;
   mutable ttf_tests : int;  (** text letters tested (§15.9) *)
   mutable ttf_hits : int;  (** tests that found a crossing beyond 1e-6 *)
+  mutable polygon_tests : int;  (** polygons tested, degenerate ones not (§15.7) *)
+  mutable polygon_hits : int;  (** tests whose crossing is within the depth limits and the outline *)
+  mutable quadric_tests : int;  (** quadrics tested *)
+  mutable quadric_hits : int;  (** tests that found a root pair or a linear root, whatever its depth *)
 }
 
 val create : unit -> t

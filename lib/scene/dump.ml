@@ -120,6 +120,16 @@ let rec shape = function
         (num b.(2)) (num b.(3)) (num b.(4)) (num b.(5))
         (if Array.length textures > 0 then Printf.sprintf ", %d face textures" (Array.length textures) else "")
         (trans t)
+  | Polygon { tr; points; degenerate } ->
+      let n = Array.length points / 2 in
+      let uv k = Printf.sprintf "<%s, %s>" (num points.(2 * k)) (num points.((2 * k) + 1)) in
+      Printf.sprintf "polygon { %d, %s // the points in its own plane%s%s" n (String.concat ", " (List.init n uv))
+        (if degenerate then ", degenerate: never hit" else "")
+        (trans (Some tr))
+  | Quadric q ->
+      Printf.sprintf "quadric { <%s, %s, %s>, <%s, %s, %s>, <%s, %s, %s>, %s // box <%s, %s, %s> + <%s, %s, %s>" (num q.xx)
+        (num q.yy) (num q.zz) (num q.xy) (num q.xz) (num q.yz) (num q.lx) (num q.ly) (num q.lz) (num q.k) (num q.box_llx)
+        (num q.box_lly) (num q.box_llz) (num q.box_lenx) (num q.box_leny) (num q.box_lenz)
   | Csg { kind; members } ->
       let member (m : member) =
         String.concat "\n  " (String.split_on_char '\n' (String.trim (obj m.mobj)))

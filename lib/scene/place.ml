@@ -128,6 +128,12 @@ let rec shape (s : Scene.shape) op : Scene.shape =
       (* §15.4, Disc::Transform: the normal by the inverse transpose, normalised, at every step *)
       let t = op_transform op in
       Disc { d with normal = Transform.normalize (Transform.normal t d.normal); trans = Transform.compose d.trans t }
+  | Polygon p ->
+      (* §15.7, Polygon::Translate/Rotate/Scale all call Transform: composed into its Trans *)
+      Polygon (Polygon.transform p (op_transform op))
+  | Quadric q ->
+      (* Quadric::Translate/Rotate/Scale all call Transform: the coefficients change *)
+      Quadric (Quadric.transform q (op_transform op))
   | Csg { kind; members } ->
       (* §16: a CSG's transform moves every member *)
       Csg { kind; members = List.map (fun (m : Scene.member) -> { m with mobj = { m.mobj with shape = shape m.mobj.shape op; texture = texture m.mobj.texture op } }) members }
@@ -145,12 +151,13 @@ let scene ~scale ~translate (s : Scene.t) : Scene.t =
     let scaling =
       match o.shape with
       | Smooth_triangle _ -> Transform (Transform.scale sv)
-      | Sphere _ | Plane _ | Triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Csg _ | Glyph _ -> Scale sv
+      | Sphere _ | Plane _ | Triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Csg _ | Glyph _ | Polygon _ | Quadric _ -> Scale sv
     in
     let sh =
       match o.shape with
       | Csg { kind; members } -> Scene.Csg { kind; members = List.map (fun (m : Scene.member) -> { m with mobj = obj m.mobj }) members }
-      | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Glyph _ -> shape (shape o.shape scaling) (Translate translate)
+      | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ ->
+          shape (shape o.shape scaling) (Translate translate)
     in
     let texture = texture (texture o.texture (Scale sv)) (Translate translate) in
     { o with shape = sh; texture; interior = { o.interior with fade_distance = o.interior.fade_distance *. scale } }

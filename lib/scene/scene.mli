@@ -113,6 +113,12 @@ type shape =
       (** §15.5: R and r as written, the tube's core circle in the XZ plane, mapped by [trans]
           (a torus always has one: every modifier composes into it, §14.4); [inverse] is
           CSG's, as for every primitive (§16.3) *)
+  | Polygon of Polygon.t
+      (** §15.7: the outline in its own plane, placed by its transform (its frame, then every
+          modifier); flat, with no inside *)
+  | Quadric of Quadric.t
+      (** quadrics.cpp: in world space; every modifier transforms its coefficients and maps its
+          box, [inverse] negates the coefficients (and sets [inverted], as POV-Ray's flag) *)
   | Csg of { kind : csg_kind; members : member list }
       (** §16: a CSG kept whole (a merge, an intersection or difference, a union with
           [split_union off]); its members are already moved by its transforms and carry the

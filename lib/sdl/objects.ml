@@ -10,8 +10,8 @@ open Csg_build
 
 (* Objects povml does not render yet: inside a union they are reported as "not supported yet". *)
 let unsupported_objects =
-  [ "polygon"; "prism"; "lathe"; "sor"; "blob"; "height_field";
-    "isosurface"; "superellipsoid"; "julia_fractal"; "parametric"; "bicubic_patch"; "ovus"; "quadric"; "cubic";
+  [ "prism"; "lathe"; "sor"; "blob"; "height_field";
+    "isosurface"; "superellipsoid"; "julia_fractal"; "parametric"; "bicubic_patch"; "ovus"; "cubic";
     "quartic"; "poly"; "sphere_sweep"; "lemon" ]
 
 let show_vec (v : Vec.t) = Printf.sprintf "<%g, %g, %g>" v.x v.y v.z
@@ -131,6 +131,10 @@ let rec parse_object st : V.obj =
       let minor = parse_float st in
       let shape = Scene.Torus { major; minor; sturm = false; trans = Transform.identity } in
       parse_object_mods st (new_obj shape loc) "torus"
+  | Ident ("polygon" | "quadric" as kw) ->
+      advance st;
+      open_block st kw;
+      parse_object_mods st (new_obj (if kw = "polygon" then Shape_reader.polygon st loc else Shape_reader.quadric st) loc) kw
   | Ident "text" ->
       (* §15.9: a union of one extruded glyph per character, then the modifiers, which move every
          letter *)

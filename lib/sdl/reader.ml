@@ -117,16 +117,15 @@ let keywords =
     "mesh2"; "vertex_vectors"; "normal_vectors"; "uv_vectors"; "texture_list"; "face_indices"; "normal_indices";
     "uv_indices"; "inside_vector"; "box"; "no_image"; "no_reflection"; "double_illuminate"; "spotlight";
     "parallel"; "point_at"; "radius"; "tightness"; "orthographic"; "looks_like"; "cylinder"; "cone"; "disc";
-    "open"; "torus"; "union"; "merge"; "intersection"; "difference"; "inverse"; "split_union"; "clipped_by"; "text"; "ttf" ]
+    "open"; "torus"; "union"; "merge"; "intersection"; "difference"; "inverse"; "split_union"; "clipped_by"; "text"; "ttf"; "polygon"; "quadric" ]
   (* pigment patterns (POVRAY-3.7 §17) *)
   @ [ "checker"; "gradient"; "hexagon"; "brick"; "brick_size"; "mortar"; "color_map"; "colour_map"; "frequency";
       "phase"; "ramp_wave"; "triangle_wave"; "sine_wave"; "scallop_wave"; "cubic_wave"; "poly_wave"; "pigment_map" ]
 
 (* POV-Ray keywords that a later povml will read; meeting one is a located "not supported yet". *)
 let unsupported =
-  [ "polygon";
-    "prism"; "lathe"; "sor"; "blob"; "height_field"; "isosurface"; "superellipsoid"; "julia_fractal";
-    "parametric"; "bicubic_patch"; "ovus"; "quadric"; "cubic"; "quartic"; "poly"; "rotate"; "scale"; "matrix"; "transform";
+  [ "prism"; "lathe"; "sor"; "blob"; "height_field"; "isosurface"; "superellipsoid"; "julia_fractal";
+    "parametric"; "bicubic_patch"; "ovus"; "cubic"; "quartic"; "poly"; "rotate"; "scale"; "matrix"; "transform";
     "normal"; "material"; "image_map";
     "bozo"; "marble"; "wood"; "agate"; "granite"; "spotted"; "leopard"; "onion"; "radial"; "spiral1";
     "spiral2"; "ripples"; "waves"; "wrinkles"; "bumps"; "dents"; "crackle";

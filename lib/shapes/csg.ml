@@ -130,14 +130,31 @@ let bounds ~bounds c =
         c.members
       |> Option.map (fun b -> if b.(0) > b.(3) then [| 0.; 0.; 0.; 0.; 0.; 0. |] else b)
   | (Intersection | Clipped), None ->
+      let overlap a b = Array.init 6 (fun i -> if i < 3 then Float.max a.(i) b.(i) else Float.min a.(i) b.(i)) in
+      let is_quadric m = match m.shape with Quadric _ -> true | _ -> false in
       let b =
         Array.fold_left
           (fun acc m ->
-            match (m.inverted, acc, bounds m.shape) with
+            match (m.inverted || is_quadric m, acc, bounds m.shape) with
             | false, None, Some b -> Some b
-            | false, Some a, Some b -> Some (Array.init 6 (fun i -> if i < 3 then Float.max a.(i) b.(i) else Float.min a.(i) b.(i)))
+            | false, Some a, Some b -> Some (overlap a b)
             | false, acc, None | true, acc, _ -> acc)
           None c.members
+      in
+      (* CSG::Compute_BBox takes the quadrics last, each bounded within the others' box
+         (Quadric::Compute_BBox with that box as its clip); clipped_by does the same *)
+      let b =
+        Array.fold_left
+          (fun acc m ->
+            match (m.inverted, m.shape) with
+            | false, Quadric q -> (
+                let lo, hi = match acc with Some a -> (Array.sub a 0 3, Array.sub a 3 3) | None -> (Array.make 3 (-2e10), Array.make 3 2e10) in
+                match (acc, Quadric.bounds_within q lo hi) with
+                | _, None -> acc
+                | None, Some qb -> Some qb
+                | Some a, Some qb -> Some (overlap a qb))
+            | _ -> acc)
+          b c.members
       in
       (* an empty overlap: nothing can be hit; POV-Ray then keeps its unbounded box *)
       Option.bind b (fun b -> if b.(0) > b.(3) || b.(1) > b.(4) || b.(2) > b.(5) then None else Some b)

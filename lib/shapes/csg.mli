@@ -39,7 +39,8 @@ val bounds : bounds:(Compiled.shape -> float array option) -> Compiled.csg -> fl
     counts as inverted: its surfaces are bounded, its inside is not); None when unbounded. A plane
     is unbounded here (POV-Ray bounds an axis-aligned one on one side: that changes only
     equal-depth ties). An inverted primitive written alone, an intersection of itself, keeps the
-    primitive's own box. *)
+    primitive's own box. POV-Ray bounds an intersection's quadrics last, each within the box of
+    the other members. *)
 
 val lone_inverted : Compiled.csg -> Compiled.obj option
 (** [lone_inverted c] is the member of an intersection that holds one inverted primitive alone (an

@@ -81,3 +81,11 @@ let nearest_crossing w n lo =
   done;
   if !best < infinity then w.part <- !part;
   !best
+
+let nearest_depth w n lo =
+  let best = ref infinity in
+  for i = n - 1 downto 0 do
+    let t = w.crossings.(i) in
+    if t < !best && t >= lo then best := t
+  done;
+  !best

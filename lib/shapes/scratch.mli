@@ -50,3 +50,7 @@ val nearest_crossing : t -> int -> float -> float
 (** [nearest_crossing w n lo] is the nearest of the [n] (depth, part) pairs in [w.crossings] at
     least [lo], its part left in [w.part]; or infinity. POV-Ray takes them from the top of its
     intersection stack, keeping a strictly nearer one, so of equal depths the last found wins. *)
+
+val nearest_depth : t -> int -> float -> float
+(** [nearest_depth w n lo] is the nearest of the [n] plain depths in [w.crossings] at least [lo],
+    or infinity; of equal depths the last found wins, as for [nearest_crossing]. *)

@@ -26,6 +26,8 @@ let compile (s : Scene.shape) =
   | Disc { normal; radius; hole; trans; _ } -> if finite trans then Some (Disc (Disc.make ~normal ~radius ~hole trans)) else None
   | Torus { major; minor; sturm; trans } -> Some (Torus { Torus.major; minor; sturm; tr = trans })
   | Glyph { outline; depth; trans } -> if finite trans then Some (Glyph { Glyph.outline; depth; tr = trans }) else None
+  | Polygon p -> Some (Polygon p)
+  | Quadric q -> Some (Quadric q)
   | Csg _ -> None
 
 (* a primitive crossed once at most *)
@@ -46,6 +48,8 @@ let rec depth w shape o d lo =
   | Glyph g -> Glyph.depth w g o d lo
   | Triangle t | Smooth_triangle t -> Triangle.depth w t o d lo
   | Mesh m -> Mesh.depth w m o d lo
+  | Polygon p -> Polygon.depth w p o d lo
+  | Quadric q -> Quadric.depth w q o d lo
 
 and all_hits w ob o d lo n =
   let id = ob.id in
@@ -63,6 +67,8 @@ and all_hits w ob o d lo n =
   | Disc dc -> Disc.hits w dc id o d lo n
   | Torus t -> Torus.hits w t id o d lo n
   | Glyph g -> Glyph.hits w g id o d lo n
+  | Polygon p -> Polygon.hits w p id o d lo n
+  | Quadric q -> Quadric.hits w q id o d lo n
 
 and inside stack shape p =
   match shape with
@@ -79,10 +85,21 @@ and inside stack shape p =
   | Plane_trans pl -> Plane.moved_inside pl p
   | Triangle _ | Smooth_triangle _ -> false
   | Mesh m -> Mesh.placed_inside stack m p
+  | Polygon pg -> Polygon.inside pg p
+  | Quadric q -> Quadric.inside q p
 
 and inside_member stack (m : obj) p =
-  (* an inverted CSG was morphed: its own Inside already holds the inversion (§16.3) *)
-  if Csg.is_csg m.shape then inside stack m.shape p else inside stack m.shape p <> m.inverted
+  match m.shape with
+  | Csg _ ->
+      (* an inverted CSG was morphed: its own Inside already holds the inversion (§16.3) *)
+      inside stack m.shape p
+  | Quadric _ ->
+      (* Quadric::Invert negated the coefficients, and its Inside is then asked as it is: an
+         inverted quadric holds its surface too *)
+      inside stack m.shape p
+  | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _
+  | Disc _ | Torus _ | Glyph _ | Polygon _ ->
+      inside stack m.shape p <> m.inverted
 
 let hit_object (w : Scratch.t) ob = if Csg.is_csg ob.shape then w.leaf else ob.id
 
@@ -102,18 +119,24 @@ let normal obj part p =
   | Triangle t -> Triangle.flat_normal t
   | Smooth_triangle t -> Triangle.smooth_normal t p
   | Mesh m -> Mesh.placed_normal m part p
+  | Polygon pg -> Polygon.normal pg p
+  | Quadric q -> Quadric.normal q p
 
 let geometric_normal obj part p =
   match obj.shape with
   | Smooth_triangle t -> Triangle.flat_normal t
   | Mesh m -> Mesh.placed_face_normal m part
-  | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Csg _ -> normal obj part p
+  | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _
+  | Csg _ ->
+      normal obj part p
 
 let refine obj p =
   match obj.shape with
   | Sphere s -> Sphere.refine s p
   | Ellipsoid e -> Sphere.ellipsoid_refine e p
-  | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Csg _ -> p
+  | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _
+  | Csg _ ->
+      p
 
 let rec bounds = function
   | Csg c -> Csg.bounds ~bounds c
@@ -128,6 +151,8 @@ let rec bounds = function
   | Disc d -> Some (Disc.bounds d)
   | Torus t -> Some (Torus.bounds t)
   | Glyph g -> Some (Glyph.bounds g)
+  | Polygon p -> Polygon.bounds p
+  | Quadric q -> Quadric.bounds q
 
 let magnitude shape =
   let max_abs a = Array.fold_left (fun m x -> Float.max m (Float.abs x)) 0. a in
@@ -136,6 +161,8 @@ let magnitude shape =
   | None, Plane p -> Plane.magnitude p
   | None, Plane_trans p -> Plane.moved_magnitude p
   | None, Csg c -> Csg.magnitude c
+  | _, Polygon p -> Polygon.magnitude p
+  | _, Quadric q -> Quadric.magnitude q
   | None, (Sphere _ | Ellipsoid _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _) -> 0.
 
 let rec pov_box shape =
@@ -151,24 +178,29 @@ let rec pov_box shape =
   | Disc d -> Disc.pov_box d
   | Torus t -> Torus.pov_box t
   | Glyph g -> Glyph.pov_box g
+  | Polygon p -> Polygon.pov_box p
+  | Quadric q -> Quadric.pov_box q
   | Csg c -> Csg.pov_box ~bounds ~pov_box c
 
 let costly = function
-  | Ellipsoid _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ -> true
+  | Ellipsoid _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ -> true
   | Sphere _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Csg _ -> false
 
 let as_sphere = function
   | Sphere s -> Some s
-  | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Csg _ -> None
+  | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _
+  | Quadric _ | Csg _ ->
+      None
 
 let face_texture obj part =
   match obj.shape with
   | Mesh m when part >= 0 -> Mesh.texture m.mesh part
   | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _
-  | Disc _ | Torus _ | Glyph _ | Csg _ ->
+  | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Csg _ ->
       -1
 
 let stats_rows s =
   List.concat
-    [ Box.stats_rows s; Cone.stats_rows s; Disc.stats_rows s; Csg.stats_rows s; Plane.stats_rows s; Triangle.stats_rows s;
+    [ Box.stats_rows s; Cone.stats_rows s; Disc.stats_rows s; Csg.stats_rows s; Plane.stats_rows s; Polygon.stats_rows s; Quadric.stats_rows s;
+      Triangle.stats_rows s;
       Mesh.stats_rows s; Sphere.stats_rows s; Torus.stats_rows s; Glyph.stats_rows s ]

@@ -145,6 +145,25 @@ A zero plane normal is an error in POV-Ray ("Degenerate plane normal.") and in p
         |         ^
   [exit 1, no image]
 
+A polygon needs at least three points, as in POV-Ray ("Polygon needs at least three points."),
+and as many as it says; an outline that is not closed is closed with a warning, as POV-Ray does:
+
+  $ sh run.sh polygon_too_few.pov
+  polygon_too_few.pov:5:11: error: a polygon needs at least three points, not 2
+      5 | polygon { 2, <0,0>, <1,0> pigment { rgb 1 } }
+        |           ^
+  [exit 1, no image]
+  $ sh run.sh polygon_missing_points.pov
+  polygon_missing_points.pov:5:41: error: the polygon has 5 points but only 4 are written
+      5 | polygon { 5, <0,0>, <1,0>, <1,1>, <0,0> }
+        |                                         ^
+  [exit 1, no image]
+  $ sh run.sh polygon_not_closed.pov
+  polygon_not_closed.pov:5:1: warning: polygon not closed: POV-Ray closes it with the first point of its last outline
+      5 | polygon { 3, <0,0>, <1,0>, <0,1> pigment { rgb 1 } }
+        | ^
+  [exit 0, image written]
+
 An out-of-range mesh index (POV-Ray: "Mesh face index out of range"):
 
   $ sh run.sh mesh_index_out_of_range.pov

@@ -56,10 +56,10 @@ let the_object (s : Scene.t) =
   match s.objects with [ o ] -> o | l -> Alcotest.failf "expected one object, got %d" (List.length l)
 
 let sphere_of (o : Scene.obj) =
-  match o.shape with Sphere { centre; radius; _ } -> (centre, radius) | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Glyph _ | Csg _ -> Alcotest.fail "expected a sphere"
+  match o.shape with Sphere { centre; radius; _ } -> (centre, radius) | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Csg _ -> Alcotest.fail "expected a sphere"
 
 let plane_of (o : Scene.obj) =
-  match o.shape with Plane { normal; offset; _ } -> (normal, offset) | Sphere _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Glyph _ | Csg _ -> Alcotest.fail "expected a plane"
+  match o.shape with Plane { normal; offset; _ } -> (normal, offset) | Sphere _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Csg _ -> Alcotest.fail "expected a plane"
 
 let pigment_of (o : Scene.obj) = match o.texture.pigment with Solid c | Solid_placed { colour = c; _ } -> c | Pattern _ -> Alcotest.fail "a pattern pigment"
 

@@ -21,6 +21,8 @@ let () =
       ("Box", Test_box.tests);
       ("Lights, orthographic camera, flags", Test_lights.tests);
       ("Quadrics", Test_quadrics.tests);
+      ("Quadric (quadric { })", Test_quadric.tests);
+      ("Polygon", Test_polygon.tests);
       ("Polysolv", Test_polysolv.tests);
       ("Torus", Test_torus.tests);
       ("Text", Test_text.tests);

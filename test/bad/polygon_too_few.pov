@@ -1,0 +1,5 @@
+#version 3.7;
+global_settings { assumed_gamma 1 }
+camera { location <0,0,-5> look_at 0 }
+light_source { <5,5,-5>, rgb 1 }
+polygon { 2, <0,0>, <1,0> pigment { rgb 1 } }
