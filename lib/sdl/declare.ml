@@ -86,7 +86,10 @@ and parse_array ?(store = ignore) st =
       expect st RBracket "']' after an array dimension";
       let acc = int_of_float n :: acc in
       let dims_so_far = Array.of_list (List.rev acc) in
-      dims acc (Some (dims_so_far, make dims_so_far))
+      let made = Some (dims_so_far, make dims_so_far) in
+      (* array[3] is complete here: what the look for a '[' or '{' runs is not part of it *)
+      ignore (peek_past st);
+      dims acc made
     end
     else made
   in
@@ -94,20 +97,25 @@ and parse_array ?(store = ignore) st =
     match dims [] None with Some m -> m | None -> Error.raise_at loc "'array' needs a size: array[N]"
   in
   if peek st == LBrace then begin
-    (* nested braces, one level per dimension *)
+    (* nested braces, one level per dimension; a comma may follow each element and each '}', the
+       last ones included, and may be left out (POV-Ray's Parse_Initalizer, tokenize.cpp: an
+       element, then Parse_Comma), so { 1, 2 3 } and { {1, 2} {3, 4} } are read as POV-Ray reads them *)
     let rec fill_level d offset =
       let bl = peek_loc st in
       expect st LBrace "'{' of an array initialiser";
       let stride = Array.fold_left ( * ) 1 (Array.sub dims (d + 1) (Array.length dims - d - 1)) in
       for i = 0 to dims.(d) - 1 do
-        if i > 0 then expect st Comma "',' between array elements";
         if peek st == RBrace then Error.raise_at bl "this initialiser has %d elements; the array dimension is %d" i dims.(d);
-        if d = Array.length dims - 1 then cells.(offset + i) <- Some (fst (parse_rvalue st))
+        if d = Array.length dims - 1 then begin
+          cells.(offset + i) <- Some (fst (parse_rvalue st));
+          ignore (accept st Comma)
+        end
         else fill_level (d + 1) (offset + (i * stride))
       done;
-      ignore (accept st Comma);
       if peek st != RBrace then Error.raise_at (peek_loc st) "too many elements in an array initialiser: the dimension is %d" dims.(d);
-      advance st
+      advance st;
+      (* after the outermost '}' the array is complete (see [dims]) *)
+      if (if d = 0 then peek_past st else peek st) == Comma then advance st
     in
     fill_level 0 0
   end;
@@ -142,16 +150,23 @@ let assign st ~local name value =
   | false, None -> Names.replace st.global name (ref value)
 
 (* After an unsupported feature inside a declaration: skip the rest of the declared value, that is
-   the blocks it opened, or at its own level up to a ';' or through its first block. *)
-let skip_declaration st d0 =
-  let rec close () = if st.depth > d0 && peek st != Eof then (advance st; close ()) in
+   the blocks and parentheses it opened (a macro call's arguments: M(pigment { wood }, 2.2)), then
+   what an operator joins to them, or at its own level up to a ';' or through its first block. *)
+let skip_declaration st ~d0 ~p0 =
+  let rec close () = if (st.depth > d0 || st.parens > p0) && peek st != Eof then (advance st; close ()) in
   let rec scan () =
     match peek st with
     | Semi | RBrace | Eof -> ()
     | LBrace -> advance st; close ()
     | _ -> advance st; scan ()
   in
-  if st.depth > d0 then close () else scan ();
+  let in_parens = st.parens > p0 in
+  if st.depth > d0 || in_parens then begin
+    close ();
+    (* F(max_extent(S).x) * 2; goes on after the call *)
+    if in_parens then match peek_follow st with Plus | Minus | Star | Slash | Dot -> scan () | _ -> ()
+  end
+  else scan ();
   (* the further layers of a layered texture: texture {…} texture {…} *)
   while (match peek_follow st with Ident "texture" -> true | _ -> false) do advance st; scan () done
 
@@ -179,7 +194,7 @@ let parse_declare st ~local dloc =
   in
   let name = match target with `Name s | `Element (s, _, _) -> s in
   expect st Eq (Printf.sprintf "'=' after '%s'" name);
-  let d0 = st.depth in
+  let d0 = st.depth and p0 = st.parens in
   let in_main = List.length st.frames = 1 in
   let store value = match target with `Name s -> assign st ~local s value | `Element (_, a, i) -> a.cells.(i) <- Some value in
   let value, needs_semi =
@@ -187,7 +202,7 @@ let parse_declare st ~local dloc =
     with Unsupported (l, what, _) ->
       (* a declaration povml cannot make yet is no error until it is used (issue: include files
          declare much more than a scene uses) *)
-      skip_declaration st d0;
+      skip_declaration st ~d0 ~p0;
       if in_main then warn st dloc "'%s' uses %s, which povml does not support yet; using it will be an error" name what;
       (V.Unsupported { what; at = l }, false)
   in

@@ -187,8 +187,11 @@ and parse_vector_literal st loc =
       (* the commas between terms are optional, as everywhere in POV-Ray: <0 20 0> is <0,20,0>
          (and <1 -2 3> is <1-2, 3>) *)
       let rec terms acc n =
-        let next = accept st Comma || (match peek st with Num _ | LParen | Ident _ | Plus | Minus | Lt -> true | _ -> false) in
-        if next then begin
+        let comma = accept st Comma in
+        (* a comma may also follow the second, third or fourth term: <1,0,0,> is <1,0,0> (POV-Ray's
+           Parse_Num_Factor, express.cpp: Parse_Comma after each of those terms, none after the fifth) *)
+        if comma && n >= 2 && n <= 4 && peek st == Gt then acc
+        else if comma || (match peek st with Num _ | LParen | Ident _ | Plus | Minus | Lt -> true | _ -> false) then begin
           if n >= 5 then Error.raise_at (peek_loc st) "a vector has at most 5 terms";
           terms (parse_float st :: acc) (n + 1)
         end

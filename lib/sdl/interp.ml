@@ -113,7 +113,7 @@ let load_string opts ~file text =
     {
       frames = [ { lx = lexer; kind = Main; conds = [] } ];
       cur = { Token.kind = Eof; loc = Loc.none }; have = false; cur_elem = None; no_expand = false; defer = false; streams = [||];
-      depth = 0; opts; global; tables = [ global ]; includes = 0; macro_depth = 0;
+      depth = 0; parens = 0; opts; global; tables = [ global ]; includes = 0; macro_depth = 0;
       macro_calls = 0; iterations = 0; nesting = 0; braces = 0; object_count = 0;
       version = 370; version_set = false; charset = Ascii; warnings = [];
       objects = []; lights = []; camera = None; background = None; sky = None;
@@ -128,8 +128,7 @@ let load_string opts ~file text =
   (* the scene's files are closed when its text has been read, or at its first error *)
   Fun.protect ~finally:(fun () -> User_files.close_all st) (fun () ->
       try parse_statements st with
-      | Unsupported (loc, what, notes) ->
-          raise (Error.Scene_error { loc; msg = "not supported yet: " ^ what; notes = notes @ chain st; kind = Scene })
+      | Unsupported (loc, what, notes) -> raise (unsupported_error loc what (notes @ chain st))
       | Error.Scene_error e -> raise (Error.Scene_error { e with notes = e.notes @ chain st })
       (* the limits above should come first; these are the last line of defence, located where the
          reader was *)

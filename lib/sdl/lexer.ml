@@ -224,8 +224,7 @@ let next lx =
           while !p < len && (text.[!p] = ' ' || text.[!p] = '\t') do incr p done;
           let s = !p in
           while !p < len && is_ident text.[!p] do incr p done;
-          if !p = s then Error.raise_at (loc_at lx pos) "'#' must be followed by a directive name";
-          tok (Directive (String.sub text s (!p - s))) (!p - pos)
+          if !p = s then tok Hash 1 else tok (Directive (String.sub text s (!p - s))) (!p - pos)
       | c when is_ident_start c ->
           let p = ref (pos + 1) in
           while !p < len && is_ident text.[!p] do incr p done;

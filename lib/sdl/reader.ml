@@ -67,6 +67,7 @@ type st = {
   mutable defer : bool;  (* reading past a complete value: a directive is kept, not run *)
   mutable streams : V.stream array;  (* the random streams made by seed() *)  (* reading the argument of defined(): a macro name is not called *)
   mutable depth : int;  (* '{' minus '}' consumed: how a declaration that fails is skipped *)
+  mutable parens : int;  (* '(' minus ')' consumed: the same for a macro call's arguments *)
   opts : options;
   global : V.t ref Names.t;
   mutable tables : V.t ref Names.t list;  (* innermost first; the global table is last *)
@@ -151,6 +152,9 @@ let unsupported_set = set_of unsupported
 let is_keyword s = Names.mem keyword_set s
 let is_unsupported s = Names.mem unsupported_set s
 
+(* An [Unsupported] that no declaration may absorb: the located error the scene ends with. *)
+let unsupported_error loc what notes = Error.Scene_error { loc; msg = "not supported yet: " ^ what; notes; kind = Scene }
+
 (* ---------------------------------------------------------------------------------------------- *)
 (* Token access
 
@@ -215,15 +219,26 @@ let closes_branch f d =
   | "end" -> ( match f.conds with [] -> (match f.kind with Macro_body _ -> true | Main | Included _ -> false) | (If_branch _ | Switch_case _) :: _ -> true | (While_loop _ | For_loop _) :: _ -> false)
   | _ -> false
 
+(* A directive runs where it stands: what it cannot do is an error there, never part of a value
+   being declared around it (a declaration that is looking for its next token runs the directives
+   after it, and its recovery could not skip the rest of a half-run #if). *)
+let run_directive st d loc =
+  try st.directive st d loc with Unsupported (l, what, notes) -> raise (unsupported_error l what notes)
+
 let rec fill st =
   let f = top st in
   let t = Lexer.next f.lx in
   match t.kind with
   | Eof -> end_of_frame st f t
+  | Hash ->
+      (* POV-Ray reads the token after a '#' as a directive name and, when it is not one, goes on
+         with that token: a '#' with no name after it is ignored (Parse_Directive in tokenize.cpp) *)
+      st.warnings <- Error.warning t.loc "'#' is not followed by a directive name; it is ignored, as POV-Ray does" :: st.warnings;
+      fill st
   | Directive d ->
       if st.defer && not (closes_branch f d) then begin st.cur <- t; st.have <- true; st.cur_elem <- None end
       else begin
-        st.directive st d t.loc;
+        run_directive st d t.loc;
         if not st.have then fill st
       end
   | Ident s -> (
@@ -266,7 +281,7 @@ let rec run_pending st =
   match st.cur.kind with
   | Directive d when st.have ->
       st.have <- false;
-      st.directive st d st.cur.loc;
+      run_directive st d st.cur.loc;
       if not st.have then fill st;
       run_pending st
   | _ -> ()
@@ -283,6 +298,11 @@ let peek_follow st =
     st.defer <- false
   end;
   st.cur.kind
+
+(* The token after a complete value that may still go on (an array's '[' or '{', the comma after an
+   initialiser), read as [peek] reads, running directives and calling macros. What those cannot do
+   belongs to what follows the value, so it is an error there, not a declaration povml cannot make. *)
+let peek_past st = try peek st with Unsupported (l, what, notes) -> raise (unsupported_error l what notes)
 
 (* The value of the identifier [name] that is the current token (an array element if subscripted). *)
 let cur_value st name =
@@ -303,6 +323,8 @@ let advance st =
       if st.braces + 1 >= 200 then st.warnings <- Error.warning st.cur.loc "too many nested '{' braces" :: st.warnings
       else st.braces <- st.braces + 1
   | RBrace -> st.depth <- st.depth - 1; st.braces <- st.braces - 1
+  | LParen -> st.parens <- st.parens + 1
+  | RParen -> st.parens <- st.parens - 1
   | _ -> ());
   if st.cur.kind != Eof then st.have <- false
 

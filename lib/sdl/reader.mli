@@ -62,7 +62,8 @@ type st = {
   mutable no_expand : bool;
   mutable defer : bool;
   mutable streams : V.stream array;
-  mutable depth : int;
+  mutable depth : int;  (** '{' minus '}' consumed *)
+  mutable parens : int;  (** '(' minus ')' consumed *)
   opts : options;
   global : V.t ref Names.t;
   mutable tables : V.t ref Names.t list;
@@ -144,6 +145,10 @@ val peek : st -> Token.kind
 val peek_follow : st -> Token.kind
 (** [peek_follow st] is the token after a complete value; a directive there waits until the value is used. *)
 
+val peek_past : st -> Token.kind
+(** [peek_past st] is [peek st] after a complete value: an [Unsupported] raised by the directives and
+    macro calls read there is raised as the located error [Error.Scene_error]. *)
+
 val cur_value : st -> string -> V.t option
 (** [cur_value st name] is the value of the current identifier token (an array element if subscripted). *)
 
@@ -155,6 +160,9 @@ val advance : st -> unit
 
 val warn : st -> Loc.t -> ('a, unit, string, unit) format4 -> 'a
 (** [warn st loc fmt …] records a warning at [loc]. *)
+
+val unsupported_error : Loc.t -> string -> (Loc.t * string) list -> exn
+(** [unsupported_error loc what notes] is the error "not supported yet: [what]" at [loc]. *)
 
 val not_supported : Loc.t -> string -> 'a
 (** [not_supported loc what] raises [Unsupported] for [what] at [loc]. *)

@@ -8,6 +8,7 @@ type kind =
   | LBrace | RBrace | LParen | RParen | Lt | Gt | LBracket | RBracket
   | Comma | Semi | Plus | Minus | Star | Slash | Dot | Eq | Ne | Le | Ge
   | Bang | Amp | Bar | Quest | Colon
+  | Hash  (* a '#' with no directive name after it, which the reader ignores *)
   | Eof
 
 type t = { kind : kind; loc : Loc.t }
@@ -21,5 +22,5 @@ let describe = function
   | Lt -> "'<'" | Gt -> "'>'" | LBracket -> "'['" | RBracket -> "']'"
   | Comma -> "','" | Semi -> "';'" | Plus -> "'+'" | Minus -> "'-'" | Star -> "'*'"
   | Slash -> "'/'" | Dot -> "'.'" | Eq -> "'='" | Ne -> "'!='" | Le -> "'<='" | Ge -> "'>='"
-  | Bang -> "'!'" | Amp -> "'&'" | Bar -> "'|'" | Quest -> "'?'" | Colon -> "':'"
+  | Bang -> "'!'" | Amp -> "'&'" | Bar -> "'|'" | Quest -> "'?'" | Colon -> "':'" | Hash -> "'#'"
   | Eof -> "end of file"

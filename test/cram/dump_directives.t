@@ -561,3 +561,40 @@ array[2.5], strcmp's difference of codes, file_exists without ".inc" appended:
   dims=2 0 0
   strcmp=99 -32 file_exists(l)=0 file_exists(l.inc)=1
   warning: no objects in scene
+
+Found in POV-Ray's sample scenes and then fixed (checked with POV-Ray 3.7.0.10, which prints the
+same values and renders the same image): array initialisers with commas left out, after elements
+and after inner braces, and with a comma after the closing brace (Parse_Initalizer in tokenize.cpp
+reads an element, then an optional comma; textures/patterns/tiling.pov, advanced/grenadine/lemon.inc),
+a comma before the '>' of a vector (Parse_Num_Factor in express.cpp; animations/float4/float4.pov),
+and a '#' with no directive name after it, which POV-Ray ignores without a message (Parse_Directive
+in tokenize.cpp; language/image_size.pov) and povml ignores with a warning:
+
+  $ cat > found.pov <<'POV'
+  > #version 3.7;
+  > global_settings { assumed_gamma 1 }
+  > #declare A = array[3] { 1, 2 3 }
+  > #declare B = array[2][2] { {<1,2> <3,4>} {<5,6>, <7,8>,}, },
+  > #declare S = array[2] { "a" "b" }
+  > #declare C = rgb<0.2,0.1,0.5,>;
+  > #declare V = <1,2,3,4,>;
+  > #debug concat("A[2]=", str(A[2],0,0), " B[1][1]=", vstr(2, B[1][1], ",", 0, 0), " S=", S[0], S[1], "\n")
+  > #debug concat("C=", vstr(5, C, ",", 0, 1), " V=", vstr(4, V, ",", 0, 0), "\n")
+  > camera { location -5*z look_at 0#
+  > }
+  > sphere { 0, 1 pigment { C } }
+  > POV
+  $ povml --dump found.pov
+  A[2]=3 B[1][1]=7,8 S=ab
+  C=0.2,0.1,0.5,0.0,0.0 V=1,2,3,4
+  // version 3.7, working gamma 1
+  global_settings { max_trace_level 5 adc_bailout 0.003921568627 ambient_light rgb <1, 1, 1> }
+  camera { location <0, 0, -5> direction <0, 0, 1> up <0, 1, 0> right <1.33, 0, 0> }
+  background { rgb <0, 0, 0> }
+  sphere { <0, 0, 0>, 1
+    texture { pigment { rgb <0.2, 0.1, 0.5> } }
+  } // found.pov:12:1
+  // 1 objects, 0 lights
+  found.pov:10:33: warning: '#' is not followed by a directive name; it is ignored, as POV-Ray does
+     10 | camera { location -5*z look_at 0#
+        |                                 ^

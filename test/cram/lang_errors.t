@@ -253,9 +253,21 @@ Arrays:
   > #declare A = array[3] {1, 2};
   > POV
   $ povml --dump init.pov
-  init.pov:1:28: error: expected ',' between array elements but found '}'
+  init.pov:1:23: error: this initialiser has 2 elements; the array dimension is 3
       1 | #declare A = array[3] {1, 2};
-        |                            ^
+        |                       ^
+  [1]
+
+The commas between elements are optional, as in POV-Ray, so { 1 -2 } is the one element 1-2
+(POV-Ray refuses it too, saying "Attempted to redefine float identifier as …"):
+
+  $ cat > init1.pov <<'POV'
+  > #declare A = array[2] { 1 -2 };
+  > POV
+  $ povml --dump init1.pov
+  init1.pov:1:23: error: this initialiser has 1 elements; the array dimension is 2
+      1 | #declare A = array[2] { 1 -2 };
+        |                       ^
   [1]
   $ cat > init2.pov <<'POV'
   > #declare A = array[2] {1, 2, 3};
@@ -275,6 +287,23 @@ Arrays:
   forstep.pov:1:14: error: the step of '#for' must not be 0
       1 | #for (I, 1, 3, 0) #end
         |              ^
+  [1]
+
+A comma may end a vector of two to four terms, not one of one or five terms (POV-Ray's
+Parse_Num_Factor, express.cpp; POV-Ray says "Expected 'numeric expression', > found instead" and
+"Expected '>', , found instead"):
+
+  $ echo 'sphere { <1,>, 1 }' > vec1.pov
+  $ povml --dump vec1.pov
+  vec1.pov:1:13: error: expected a numeric expression but found '>'
+      1 | sphere { <1,>, 1 }
+        |             ^
+  [1]
+  $ echo 'sphere { 0, 1 pigment { rgbft <1,1,1,0,0,> } }' > vec5.pov
+  $ povml --dump vec5.pov
+  vec5.pov:1:42: error: a vector has at most 5 terms
+      1 | sphere { 0, 1 pigment { rgbft <1,1,1,0,0,> } }
+        |                                          ^
   [1]
 
 Mathematical and string errors:
@@ -385,6 +414,51 @@ textures.inc uses a marble pigment; in the main file the declaration also warns.
   unsup.pov:3:15: error: not supported yet: 'normal'
       3 | sphere { 0, R normal { N } }
         |               ^
+  [1]
+
+A macro call with such an argument is such a value too: it is skipped through the call's ')', so
+the sphere after it is read, and using it is the error (POV-Ray renders both scenes: it has wood;
+textures/pigments/blkhole.pov calls Correct_Pigment_Gamma(pigment { DMFWood4 … }, 2.2)):
+
+  $ cat > macroarg.pov <<'POV'
+  > #version 3.7;
+  > global_settings { assumed_gamma 1 }
+  > #macro M(P, G) pigment { P } #end
+  > #declare Tree = M(pigment { wood }, 2.2)
+  > sphere { 0, 1 pigment { rgb 1 } }
+  > POV
+  $ povml --dump macroarg.pov | tail -1
+  macroarg.pov:4:1: warning: 'Tree' uses 'wood' in a pigment, which povml does not support yet; using it will be an error
+      4 | #declare Tree = M(pigment { wood }, 2.2)
+        | ^
+  // 1 objects, 0 lights
+  $ echo 'sphere { 0, 1 pigment { Tree } }' >> macroarg.pov
+  $ povml --dump macroarg.pov
+  macroarg.pov:6:25: error: not supported yet: 'wood' in a pigment (used through 'Tree')
+      6 | sphere { 0, 1 pigment { Tree } }
+        |                         ^
+  macroarg.pov:4:29: note: 'Tree' was declared here
+  [1]
+
+A directive is no part of a declared value, even when the declaration runs it while looking past
+its value (array[3] looks for a '{'): an unsupported value in its condition is the error there
+(POV-Ray takes the branch max_extent decides, here the false one; incdemo/circletext.pov reaches
+the same through Circle_Text in shapes.inc):
+
+  $ cat > ifunsup.pov <<'POV'
+  > #declare S = sphere { 0, 1 }
+  > #declare FW = max_extent(S).x;
+  > #local C = array[3]
+  > #if (FW > 2)
+  >   #error "too long"
+  > #end
+  > sphere { 0, 1 }
+  > POV
+  $ povml --dump ifunsup.pov
+  ifunsup.pov:4:6: error: not supported yet: the function 'max_extent' (used through 'FW')
+      4 | #if (FW > 2)
+        |      ^
+  ifunsup.pov:2:15: note: 'FW' was declared here
   [1]
 
 Not checked here, because POV-Ray refuses them and povml does not (povml accepts each silently):
