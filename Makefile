@@ -61,7 +61,7 @@ report: build
 	  --thresholds 0.9,0.6,0.3,0.2,0.1,0.0 --trace-levels 1-10
 
 # Every scene of POV-Ray's sample set (povray-examples) rendered with povml and with POV-Ray at 160×120:
-# docs/samples.md and docs/samples.tsv (test/samples/run.sh). About 10 minutes on 2 cores; not part of `make test`.
+# docs/samples.md and docs/samples.tsv (test/samples/run.sh). 5 to 10 minutes on 2 cores; not part of `make test`.
 # SAMPLES_JOBS=N scenes at a time (default 2); ONLY=regex for a subset (written under /tmp, not docs/).
 samples: build
 	bash test/samples/run.sh

@@ -117,7 +117,7 @@ type shadow_mode =
   | Any_hit  (** every occluder is opaque: the first surface met decides *)
   | Filtered  (** some occluder is transparent: walk every crossing *)
 
-(** Objects as the tracer searches them: unbounded ones (planes) one by one, the others through a
+(** Objects as the tracer searches them: unbounded ones (planes, infinite quadrics, …) one by one, the others through a
     bounding-volume hierarchy whose leaves index [bounded]. *)
 type group = {
   unbounded : obj array;
@@ -127,8 +127,8 @@ type group = {
       (** 4 per bounded object: a sphere's centre and radius², tested without touching the object
           record; radius² is nan for other shapes *)
   boxes : float array;
-      (** 6 per bounded object: the box of a shape costlier to test than a box (ellipsoid,
-          transformed box, cone, disc, torus), as its hierarchy leaf would hold it alone (min x, y,
+      (** 6 per bounded object: the box of a shape costlier to test than a box
+          ([Shape.costly]), as its hierarchy leaf would hold it alone (min x, y,
           z, max x, y, z), met by a ray before the shape itself is tried; nan for other shapes *)
 }
 

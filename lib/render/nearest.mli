@@ -1,5 +1,5 @@
-(** The nearest hit along a ray (POVRAY-3.7 §2.1), with POV-Ray's tie rules: planes one by one,
-    the other objects through the bounding hierarchy, and of equal (or, where POV-Ray's bounding
+(** The nearest hit along a ray (POVRAY-3.7 §2.1), with POV-Ray's tie rules: unbounded objects
+    (planes, infinite quadrics) one by one, the others through the bounding hierarchy, and of equal (or, where POV-Ray's bounding
     tree decides it, nearly equal) depths the object POV-Ray meets first. *)
 
 val search : Context.t -> Compiled.group -> Vec.t -> Vec.t -> float -> float -> int

@@ -1,6 +1,8 @@
-(* The recursive Whitted tracer, in the order of the lecture it follows: trace a ray → nearest hit
-   → local illumination (ambient, diffuse, specular, each light through its shadow feeler) →
-   reflected ray → transmitted ray → termination. POVRAY-3.7 §2–§7. The colour seen along a ray is
+(* The recursive Whitted tracer, with the steps of the lecture it follows: trace a ray (stopped by
+   termination: the trace level or the ray's weight) → nearest hit → local illumination (ambient,
+   diffuse, specular, each light through its shadow feeler) → transmitted ray → reflected ray. The
+   lecture adds k_r·RayTrace(R) before k_t·RayTrace(T); POV-Ray traces the transmitted ray first,
+   and so does this tracer, because the order shows in the shadow cache. POVRAY-3.7 §2–§7. The colour seen along a ray is
    a function of the compiled scene and the ray; what each step needs lives in a module of its own:
    Nearest (the nearest hit and POV-Ray's tie rules), Lighting and Shadow (local illumination and
    shadow feelers), Optics (Fresnel, interiors, fade), Sky, Robust (the robust mode's origins). *)

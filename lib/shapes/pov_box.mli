@@ -1,6 +1,6 @@
 (** POV-Ray's bounding box of an object as it stores it: the lower corner and the lengths, each
     rounded to single precision, [[| llx; lly; llz; lx; ly; lz |]]; [[||]] for an unbounded object
-    (a plane). POV-Ray's bounding tree meets objects in the order the ray enters these boxes,
+    (a plane, an infinite quadric). POV-Ray's bounding tree meets objects in the order the ray enters these boxes,
     which decides exact depth ties (§2.1), and it tests a CSG's box before the CSG (§15.8). *)
 
 val of_min_max : float array -> float array -> float array

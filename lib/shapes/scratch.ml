@@ -26,7 +26,7 @@ type t = {
 let hit_width = 6
 
 (* A cylinder or cone has at most 4 crossings listed (two on the side, the two ends), a disc one,
-   a torus 4 depths. *)
+   a torus 4 depths, a quadric 2, a polygon 1. *)
 let max_crossings = 8
 
 let create ~robust stats =

@@ -22,7 +22,9 @@ type t = {
   slab : slab;  (** a box's crossings … *)
   mutable side_near : int;  (** … the side entered (0: none) … *)
   mutable side_far : int;  (** … and the side left *)
-  crossings : float array;  (** one cylinder's, cone's or disc's crossings as (depth, part) pairs; a torus's depths *)
+  crossings : float array;
+      (** one cylinder's, cone's or disc's crossings as (depth, part) pairs; a torus's, polygon's or
+          quadric's plain depths *)
   glyph_crossings : growable;  (** one text letter's crossings as (depth, part) pairs *)
   hits : growable;  (** the hits of a CSG's members, [hit_width] floats each *)
   coeffs : float array;  (** a torus's quartic … *)

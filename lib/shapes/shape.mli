@@ -1,6 +1,7 @@
 (** Every operation on a shape, dispatched by one direct [match] to the shape's own module
-    (lib/shapes/): the only place the tracer and the compile step learn which shapes exist. A new
-    shape is a module of its own and one case in each function here. *)
+    (lib/shapes/). The tracer and the compile step reach shapes through it (besides the scene
+    search's flat-array sphere test, [Sphere.depth_at], and [Csg.is_csg]). A new shape is a module
+    of its own and one case in each function here. *)
 
 val compile : Scene.shape -> Compiled.shape option
 (** [compile s] is the primitive [s] ready to trace; None for a CSG (the compile step builds it,
@@ -41,7 +42,8 @@ val inside : float array -> Compiled.shape -> Vec.t -> bool
 
 val inside_member : float array -> Compiled.obj -> Vec.t -> bool
 (** [inside_member stack m p] is the Inside test of the CSG member [m]: a primitive's negated when
-    it is inverted, an inverted (morphed) CSG's as it is (§16.3). *)
+    it is inverted; an inverted (morphed) CSG's and an inverted quadric's (its coefficients negated)
+    as they are (§16.3). *)
 
 val bounds : Compiled.shape -> float array option
 (** [bounds shape] is the box of a bounded shape (min x, y, z, max x, y, z); None for an unbounded
@@ -49,14 +51,16 @@ val bounds : Compiled.shape -> float array option
 
 val magnitude : Compiled.shape -> float
 (** [magnitude shape] is the largest coordinate magnitude the shape's intersection works with: its
-    box's, or for a plane its point nearest the origin; the robust mode's scale of rounding errors. *)
+    box's; for an unbounded shape, a plane's point nearest the origin, a quadric's scale from its
+    coefficients, a CSG's largest member's; the robust mode's scale of rounding errors. *)
 
 val pov_box : Compiled.shape -> float array
 (** [pov_box shape] is POV-Ray's box of the shape as it stores it ([Pov_box]); [[||]] when unbounded. *)
 
 val costly : Compiled.shape -> bool
 (** [costly shape] is true for the shapes costlier to test than their own box (ellipsoid,
-    transformed box, cylinder and cone, disc, torus, letter): the scene's search tries the box first. *)
+    transformed box, cylinder and cone, disc, torus, letter, polygon, quadric): the scene's search
+    tries the box first. *)
 
 val as_sphere : Compiled.shape -> Sphere.t option
 (** [as_sphere shape] is the sphere that [shape] is, which the scene's search tests straight from
