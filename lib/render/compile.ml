@@ -87,7 +87,7 @@ let coloured ~legacy ~ambient_light (f : Scene.finish) base (c : Colour.t) =
     transparent = c.filter <> 0. || c.transmit <> 0.;
   }
 
-let surface ~legacy ~ambient_light (t : Scene.texture) =
+let surface ~legacy ~noise ~ambient_light (t : Scene.texture) =
   let f0 = t.finish in
   (* finish scalars are single precision too *)
   let f =
@@ -131,7 +131,7 @@ let surface ~legacy ~ambient_light (t : Scene.texture) =
   | Solid c | Solid_placed { colour = c; _ } -> coloured ~legacy ~ambient_light f base (colour32 c)
   | Pattern p ->
       (* §17.1: the map colours are single precision already, and so is their blend *)
-      let at x = coloured ~legacy ~ambient_light f base (Pigment.eval p x) in
+      let at hit x = coloured ~legacy ~ambient_light f base (Pigment.eval noise p hit x) in
       (* shading takes the surface at the point; [transparent] here says whether any colour of the
          pattern lets light through, which the shadow cache asks of a CSG's own texture *)
       { base with paint = Varying at; transparent = not (Pigment.opaque t.pigment) }
@@ -156,10 +156,11 @@ let scene (s : Scene.t) : Compiled.t =
   let legacy = s.version < 370 in
   let memo = Texture_memo.create 16 in
   let surface ~legacy ~ambient_light t =
+    let noise = s.noise_generator in
     match Texture_memo.find_opt memo t with
     | Some sf -> sf
     | None ->
-        let sf = surface ~legacy ~ambient_light t in
+        let sf = surface ~legacy ~noise ~ambient_light t in
         Texture_memo.add memo t sf;
         sf
   in
@@ -310,6 +311,7 @@ let scene (s : Scene.t) : Compiled.t =
     sky = s.sky;
     max_trace_level = s.max_trace_level;
     adc_bailout = s.adc_bailout;
+    noise_generator = s.noise_generator;
     legacy;
     camera = s.camera;
     start_interiors;

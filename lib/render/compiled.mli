@@ -27,7 +27,7 @@ type surface = {
 (** Whether a surface's colour depends on the point. *)
 and paint =
   | Fixed  (** a plain pigment: the surface is the same everywhere *)
-  | Varying of (Vec.t -> surface)
+  | Varying of (Patterns.hit -> Vec.t -> surface)
       (** a pattern pigment: the surface at a world point, its colour-dependent fields (colour, att,
           emitted, filcol, transparent) computed from the pigment there *)
 
@@ -147,6 +147,7 @@ type t = {
   sky : Scene.sky option;
   max_trace_level : int;
   adc_bailout : float;
+  noise_generator : int;  (** the scene's, for patterns that name none *)
   legacy : bool;  (** effective version < 3.70 *)
   camera : Scene.camera;
   start_interiors : int list;  (** interiors containing the camera, last entered first (§6.4) *)

@@ -8,7 +8,7 @@ let colour sc (d : Vec.t) : Traced.t =
   | None -> if sc.legacy then { r = bg.red; g = bg.green; b = bg.blue; tr = bg.transmit } else { r = bg.red; g = bg.green; b = bg.blue; tr = 0. }
   | Some sky ->
       let p = match sky.sky_trans with None -> d | Some t -> Transform.inv_point t d in
-      let pigs = List.rev_map (fun pg -> Pigment.colour_at pg p) sky.sky_pigments in
+      let pigs = List.rev_map (fun pg -> Pigment.colour_at sc.noise_generator pg Patterns.no_hit p) sky.sky_pigments in
       let e = sky.sky_emission in
       if not sc.legacy then
         let col, fil =

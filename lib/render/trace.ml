@@ -47,9 +47,9 @@ and shade ctx ~reflected obj part depth ~level ~weight ~interiors (o : Vec.t) (d
     let p = Vec.madd o depth d in
     let p = if ctx.robust then Shape.refine obj p else p in
     let s = Surfaces.at obj part in
-    let s = match s.paint with Fixed -> s | Varying at -> at p in
     let n = Shape.normal obj part p in
     let n = if Vec.dot n d > 0. then Vec.neg n else n in
+    let s = match s.paint with Fixed -> s | Varying at -> at { Patterns.normal = n; dir = d } p in
     (* where secondary rays leave from in the robust mode *)
     let ng = if ctx.robust then Shape.geometric_normal obj part p else n in
     let e = if ctx.robust then Robust.error_bound o p obj.mag else 0. in

@@ -22,5 +22,5 @@ let finish =
     legacy_ior = None;
   }
 
-let texture = { pigment = Solid Colour.black; finish }
+let texture = { pigment = Solid Colour.black; normal = None; finish }
 let interior = { ior = 1.; fade_distance = 0.; fade_power = 0.; fade_colour = Rgb.black }

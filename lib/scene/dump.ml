@@ -48,6 +48,77 @@ let finish (f : finish) =
   (match f.legacy_ior with Some i -> add true ("ior " ^ num i) | None -> ());
   String.concat " " (List.rev !items)
 
+(* The other patterns by their keyword and main values. *)
+let pattern_name (p : pattern) =
+  match p with
+  | Checker -> "checker"
+  | Gradient v -> "gradient " ^ vec v
+  | Hexagon -> "hexagon"
+  | Brick _ -> "brick"
+  | Square -> "square"
+  | Triangular -> "triangular"
+  | Cubic -> "cubic"
+  | Agate t -> "agate agate_turb " ^ num t
+  | Bozo -> "bozo"
+  | Spotted -> "spotted"
+  | Bumps -> "bumps"
+  | Granite -> "granite"
+  | Leopard -> "leopard"
+  | Marble -> "marble"
+  | Wood -> "wood"
+  | Onion -> "onion"
+  | Radial -> "radial"
+  | Cells -> "cells"
+  | Crackle { form; metric; offset; solid } ->
+      Printf.sprintf "crackle form %s metric %s offset %s%s" (vec form) (num metric) (num offset) (if solid then " solid" else "")
+  | Wrinkles -> "wrinkles"
+  | Dents -> "dents"
+  | Waves -> "waves"
+  | Ripples -> "ripples"
+  | Quilted { control0; control1 } -> Printf.sprintf "quilted control0 %s control1 %s" (num control0) (num control1)
+  | Facets { fsize; coords; fmetric } ->
+      Printf.sprintf "facets%s size %s metric %s" (if coords then " coords" else "") (num fsize) (num fmetric)
+  | Spiral1 n -> Printf.sprintf "spiral1 %d" n
+  | Spiral2 n -> Printf.sprintf "spiral2 %d" n
+  | Planar -> "planar"
+  | Boxed -> "boxed"
+  | Spherical -> "spherical"
+  | Cylindrical -> "cylindrical"
+  | Fractal f ->
+      let kind =
+        match f.fkind with
+        | Mandel -> "mandel"
+        | Julia (a, b) -> Printf.sprintf "julia <%s, %s>" (num a) (num b)
+        | Magnet_mandel n -> Printf.sprintf "magnet %d mandel" n
+        | Magnet_julia (n, (a, b)) -> Printf.sprintf "magnet %d julia <%s, %s>" n (num a) (num b)
+      in
+      Printf.sprintf "%s %d exponent %d interior %d, %s exterior %d, %s" kind f.iterations f.exponent f.interior_type
+        (num f.ifactor) f.exterior_type (num f.efactor)
+  | Pavement v ->
+      Printf.sprintf "pavement number_of_sides %d number_of_tiles %d pattern %d exterior %d interior %d form %d" v.side
+        v.tile v.number v.exterior v.interior v.form
+  | Tiling n -> Printf.sprintf "tiling %d" n
+  | Aoi -> "aoi"
+  | Slope s -> "slope " ^ vec s.slope_vector
+  | Average -> "average"
+
+let turb (t : turb) =
+  Printf.sprintf "turbulence %s octaves %d omega %s lambda %s" (vec t.turbulence) t.octaves (num t.omega) (num t.lambda)
+
+let warp (w : warp) =
+  match w with
+  | Transform_warp t -> matrix t
+  | Classic_turb t -> turb t
+  | Turb_warp t -> "warp { " ^ turb t ^ " }"
+  | Repeat_warp r -> Printf.sprintf "warp { repeat axis %d width %s offset %s flip %s }" r.axis (num r.width) (vec r.offset) (vec r.flip)
+  | Black_hole b -> Printf.sprintf "warp { black_hole %s, %s strength %s falloff %s }" (vec b.centre) (num b.radius) (num b.strength) (num b.power)
+  | Cylindrical_warp c -> Printf.sprintf "warp { cylindrical orientation %s dist_exp %s }" (vec c.orientation) (num c.dist_exp)
+  | Spherical_warp c -> Printf.sprintf "warp { spherical orientation %s dist_exp %s }" (vec c.orientation) (num c.dist_exp)
+  | Toroidal_warp c ->
+      Printf.sprintf "warp { toroidal orientation %s dist_exp %s major_radius %s }" (vec c.orientation) (num c.dist_exp) (num c.major_radius)
+  | Planar_warp c -> Printf.sprintf "warp { planar %s, %s }" (vec c.orientation) (num c.offset)
+  | Cubic_warp -> "warp { cubic }"
+
 (* A pattern pigment with its whole map and its composed transform (POVRAY-3.7 §17). *)
 let rec pigment = function
   | Solid c | Solid_placed { colour = c; _ } -> colour c
@@ -58,6 +129,7 @@ let rec pigment = function
         | Gradient v -> "gradient " ^ vec v
         | Hexagon -> "hexagon"
         | Brick { size; mortar } -> Printf.sprintf "brick brick_size %s mortar %s" (vec size) (num mortar)
+        | other -> pattern_name other
       in
       let wave =
         match p.wave with
@@ -77,7 +149,7 @@ let rec pigment = function
           Printf.sprintf "pigment_map { %s }" (String.concat " " entries)
       in
       Printf.sprintf "%s frequency %s phase %s%s %s%s" pat (num p.frequency) (num p.phase) wave map
-        (match p.ptrans with None -> "" | Some t -> " " ^ matrix t)
+        (String.concat "" (List.rev_map (fun w -> " " ^ warp w) p.warps))
 
 let texture (t : texture) =
   let f = finish t.finish in

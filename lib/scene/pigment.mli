@@ -2,19 +2,16 @@
     and a pigment's transform (POVRAY-3.7 §17). *)
 
 val checker : Vec.t -> float
-(** [checker q] is 0 or 1: the parity of [floor(c + 1e-10)] summed over the three coordinates (§17.4). *)
+(** [checker] is {!Patterns.checker} (§17.4). *)
 
 val gradient : Vec.t -> Vec.t -> float
-(** [gradient v q] is [q·v], reduced by [fmod 1] only when above 1 (§17.5); [v] is unit length. *)
+(** [gradient] is {!Patterns.gradient} (§17.5). *)
 
 val hexagon : Vec.t -> float
-(** [hexagon q] is 0, 1 or 2: the hexagonal cell of [q] in the XZ plane (§17.6). *)
+(** [hexagon] is {!Patterns.hexagon} (§17.6). *)
 
 val brick : Vec.t -> float -> Vec.t -> float
-(** [brick size mortar q] is 0 in the mortar and 1 in a brick (§17.7); [mortar] is the stored width. *)
-
-val pattern_value : Scene.pattern -> Vec.t -> float
-(** [pattern_value p q] is the raw value of pattern [p] at the pattern-space point [q]. *)
+(** [brick] is {!Patterns.brick} (§17.7). *)
 
 val shape_value : frequency:float -> phase:float -> Scene.wave -> float -> float
 (** [shape_value ~frequency ~phase w v] wraps [v] by [fmod(v·frequency + phase, 1.00001)] when
@@ -24,12 +21,13 @@ val lookup : Scene.map_entry array -> float -> Colour.t
 (** [lookup map v] is the colour of [map] at [v], by POV-Ray's search of unsorted entries and linear
     blend of all five channels in single precision (§17.2). [map] is not empty. *)
 
-val eval : Scene.patterned -> Vec.t -> Colour.t
-(** [eval p x] is the colour of the pattern pigment [p] at the world point [x]: [x] through the
-    inverse of the pigment's transform, the pattern, the wrap and wave, the map (§17.1). *)
+val eval : int -> Scene.patterned -> Patterns.hit -> Vec.t -> Colour.t
+(** [eval gen p hit x] is the colour of the pattern pigment [p] at the world point [x]: [x]
+    through the pigment's warps (its transforms among them), the pattern, the wrap and wave, the
+    map (§17.1); [gen] is the scene's noise generator, used where [p] names none. *)
 
-val colour_at : Scene.pigment -> Vec.t -> Colour.t
-(** [colour_at p x] is the colour of any pigment at the world point [x]. *)
+val colour_at : int -> Scene.pigment -> Patterns.hit -> Vec.t -> Colour.t
+(** [colour_at gen p hit x] is the colour of any pigment at the world point [x]. *)
 
 val opaque : Scene.pigment -> bool
 (** [opaque p] holds when no colour of [p] has a filter or transmit above 1e-10 in magnitude (§17.8). *)
@@ -39,8 +37,14 @@ val f32_entry : float -> Colour.t -> Scene.map_entry
     stores them (§17.2). *)
 
 val default_map : Scene.pattern -> Scene.map_entry array
-(** [default_map p] is the map of [p] written without colours: blue/green for checker, blue, green,
-    red for hexagon, grey 0.5 and <0.6,0.15,0.15> for brick, black to white for gradient (§17.3–§17.7). *)
+(** [default_map p] is the map of [p] written without colours, POV-Ray's tables: blue/green for
+    checker, blue, green, red for hexagon, grey 0.5 and <0.6,0.15,0.15> for brick (§17.3–§17.7),
+    the bozo, wood, mandel, radial, agate, marble, square, triangular and cubic maps, and black to
+    white for the others. *)
+
+val transform_warps : Scene.warp list -> Transform.t -> Scene.warp list
+(** [transform_warps ws t] is [ws] with [t] composed into its head transform, or a new head
+    transform when the head is a warp (POV-Ray's Transform_Tpattern). *)
 
 val transform : Scene.pigment -> Transform.t -> Scene.pigment
 (** [transform p t] is [p] with [t] composed after its transform (§14.7, §17.1); a plain colour

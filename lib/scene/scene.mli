@@ -1,15 +1,112 @@
 (** The immutable scene: what the interpreter produces and the compile step reads.
     Every value reachable from [t] is immutable. *)
 
-(** A pattern: a function from a point in pattern space to a value (POVRAY-3.7 §17.4–§17.7). *)
+(** A pattern: a function from a point in pattern space to a value (POVRAY-3.7 §17.4–§17.7;
+    the others as POV-Ray 3.7's pattern.cpp defines them). Values stored in single precision by
+    POV-Ray ([SNGL]) are rounded when parsed. *)
 type pattern =
   | Checker  (** §17.4: 0 or 1 by the parity of the unit cell *)
   | Gradient of Vec.t  (** §17.5: the direction, normalised when parsed *)
   | Hexagon  (** §17.6: 0, 1 or 2 in the XZ plane *)
   | Brick of { size : Vec.t; mortar : float }  (** §17.7: 0 in the mortar, 1 in a brick; [mortar] as stored (m − 2e-10) *)
+  | Square  (** 0…3: four cells of a square tiling of the XZ plane *)
+  | Triangular  (** 0…5: six cells of a triangular tiling of the XZ plane *)
+  | Cubic  (** 0…5: the six pyramids of the unit cube around the origin *)
+  | Agate of float  (** agate, with [agate_turb] (single precision, 1 by default) *)
+  | Bozo  (** the solid noise *)
+  | Spotted  (** the solid noise (as bozo) *)
+  | Bumps  (** the solid noise as a pigment; its own normal *)
+  | Granite
+  | Leopard
+  | Marble  (** uses the classic turbulence itself; triangle_wave by default *)
+  | Wood  (** uses the classic turbulence itself; triangle_wave by default *)
+  | Onion
+  | Radial
+  | Cells
+  | Crackle of { form : Vec.t; metric : float; offset : float; solid : bool }
+      (** defaults: form <-1,1,0>, metric 2, offset 0, not solid *)
+  | Wrinkles
+  | Dents
+  | Waves
+  | Ripples
+  | Quilted of { control0 : float; control1 : float }  (** single precision, 1 and 1 by default *)
+  | Facets of { fsize : float; coords : bool; fmetric : float }  (** normal only: size 0.1, metric 2 *)
+  | Spiral1 of int  (** the number of arms *)
+  | Spiral2 of int
+  | Planar
+  | Boxed
+  | Spherical
+  | Cylindrical
+  | Fractal of fractal  (** mandel, julia, magnet *)
+  | Pavement of { side : int; tile : int; number : int; exterior : int; interior : int; form : int }
+      (** defaults: side 3, tile 1, number 1, exterior 0, interior 0, form 0 *)
+  | Tiling of int  (** the tiling's number, 1…27 *)
+  | Aoi  (** the angle between the ray and the surface normal *)
+  | Slope of slope
+  | Average  (** a normal's [average] of the entries of its normal_map *)
+
+(** mandel, julia and magnet patterns (pattern.cpp's fractal fields). *)
+and fractal = {
+  fkind : fractal_kind;
+  iterations : int;
+  exponent : int;  (** 2 by default for mandel and julia; 0 for magnet *)
+  interior_type : int;  (** 0 by default *)
+  exterior_type : int;  (** 1 by default *)
+  ifactor : float;  (** 1 by default *)
+  efactor : float;  (** 1 by default *)
+}
+
+and fractal_kind =
+  | Mandel
+  | Julia of float * float  (** the complex parameter *)
+  | Magnet_mandel of int  (** magnet 1 or 2 mandel *)
+  | Magnet_julia of int * (float * float)  (** magnet 1 or 2 julia, with its parameter *)
+
+(** The slope pattern's fields as POV-Ray stores them after parsing. *)
+and slope = {
+  slope_vector : Vec.t;  (** normalised unless of zero length *)
+  altit_vector : Vec.t;
+  slope_base : int;  (** ±(axis + 1) when [slope_vector] is ±x, ±y or ±z, else 0 *)
+  altit_base : int;
+  slope_len : float;  (** the slope's share, slope_len + altit_len = 1 *)
+  altit_len : float;
+  slope_mod : float * float;  (** low and (high − low), or 0, 0 *)
+  altit_mod : float * float;
+  point_at : bool;
+}
 
 (** How the wrapped pattern value is shaped before the map lookup (§17.1). *)
 type wave = Ramp | Triangle_wave | Sine_wave | Scallop_wave | Cubic_wave | Poly_wave of float
+
+(** Turbulence: the amount per axis, octaves (1…10, 6 by default), omega (0.5) and lambda (2),
+    the last two in single precision. *)
+type turb = { turbulence : Vec.t; octaves : int; omega : float; lambda : float }
+
+(** A warp of pattern space (warps.cpp). A pattern's warps are a list whose head is the last one
+    written: the point is taken through them from the head (undoing the last transform first). *)
+type warp =
+  | Transform_warp of Transform.t  (** consecutive transforms compose into one *)
+  | Classic_turb of turb
+      (** the [turbulence] keyword written directly in a pattern: always the list's last element;
+          marble and wood skip it here and use it themselves *)
+  | Turb_warp of turb  (** [warp { turbulence … }] *)
+  | Repeat_warp of { axis : int; width : float; offset : Vec.t; flip : Vec.t }
+      (** [width] single precision; [flip] components are −1 (flipped) or 1 *)
+  | Black_hole of {
+      centre : Vec.t;
+      radius : float;
+      strength : float;
+      power : float;  (** [falloff], 2 by default *)
+      inverted : bool;
+      bh_type : int;
+      repeat : Vec.t option;
+      uncertainty : Vec.t option;  (** [turbulence] in a black hole *)
+    }
+  | Cylindrical_warp of { orientation : Vec.t; dist_exp : float }  (** orientation <0,0,1> by default *)
+  | Spherical_warp of { orientation : Vec.t; dist_exp : float }
+  | Toroidal_warp of { orientation : Vec.t; dist_exp : float; major_radius : float }  (** major radius 1 *)
+  | Planar_warp of { orientation : Vec.t; offset : float }
+  | Cubic_warp
 
 (** One entry of a colour map: its value (single precision, §17.2) and colour. *)
 type map_entry = { value : float; colour : Colour.t }
@@ -22,7 +119,8 @@ type patterned = {
   phase : float;
   wave : wave;
   map : map_entry array;
-  ptrans : Transform.t option;
+  warps : warp list;  (** transforms and warps, the last written first *)
+  noise_generator : int;  (** 1, 2 or 3; 0: the scene's ([global_settings], 2 by default) *)
   pigments : pigment_entry array;
       (** a [pigment_map] or [checker pigment {…}, pigment {…}] (§17.3): when not empty, these
           entries are looked up instead of [map], their pigments evaluated at the same
@@ -67,8 +165,34 @@ type finish = {
   legacy_ior : float option;  (** legacy [finish { ior }], copied into the interior (§2.7) *)
 }
 
-(** A plain texture: one pigment and one finish. *)
-type texture = { pigment : pigment; finish : finish }
+(** A normal: a pattern perturbing the surface normal (normal.cpp). *)
+type normal = {
+  npattern : pattern;
+  nfrequency : float;
+  nphase : float;
+  nwave : wave;
+  nwarps : warp list;  (** as a pigment's *)
+  nnoise_generator : int;
+  amount : float;  (** the bump size, single precision *)
+  accuracy : float;  (** the finite-difference step, 0.02 by default, single precision *)
+  no_bump_scale : bool;
+  nmap : normal_map;
+}
+
+(** What a normal's pattern value is turned into. *)
+and normal_map =
+  | No_map  (** the pattern's own normal, or its value's slope *)
+  | Slope_map of slope_entry array
+  | Normal_map of normal_entry array
+
+(** One entry of a slope_map: its value, height and slope (single precision). *)
+and slope_entry = { svalue : float; height : float; slope : float }
+
+(** One entry of a normal_map: its value and normal. *)
+and normal_entry = { nvalue : float; nnormal : normal }
+
+(** A plain texture: one pigment, an optional normal and one finish. *)
+type texture = { pigment : pigment; normal : normal option; finish : finish }
 
 (** An interior (§6, §10.1). *)
 type interior = { ior : float; fade_distance : float; fade_power : float; fade_colour : Rgb.t }
@@ -209,5 +333,6 @@ type t = {
   max_trace_level : int;
   adc_bailout : float;
   version : int;  (** effective language version × 100 (§8.1): 362 without #version *)
+  noise_generator : int;  (** [global_settings { noise_generator }]: 1, 2 (the default) or 3 *)
   gamma : gamma;
 }

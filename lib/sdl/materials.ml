@@ -68,14 +68,15 @@ type pig = {
   frequency : float;
   phase : float;
   wave : Scene.wave;
-  trans : Transform.t option;
+  warps : Scene.warp list;  (** the head is the last written *)
+  noise : int;
 }
 
 let pig_of (p : Scene.pigment) =
   match p with
-  | Solid c -> { solid = c; pat = None; map = None; pigments = [||]; frequency = 1.; phase = 0.; wave = Ramp; trans = None }
+  | Solid c -> { solid = c; pat = None; map = None; pigments = [||]; frequency = 1.; phase = 0.; wave = Ramp; warps = []; noise = 0 }
   | Solid_placed { colour; strans } ->
-      { solid = colour; pat = None; map = None; pigments = [||]; frequency = 1.; phase = 0.; wave = Ramp; trans = Some strans }
+      { solid = colour; pat = None; map = None; pigments = [||]; frequency = 1.; phase = 0.; wave = Ramp; warps = [ Transform_warp strans ]; noise = 0 }
   | Pattern pp ->
       {
         solid = Colour.black;
@@ -85,15 +86,21 @@ let pig_of (p : Scene.pigment) =
         frequency = pp.frequency;
         phase = pp.phase;
         wave = pp.wave;
-        trans = pp.ptrans;
+        warps = pp.warps;
+        noise = pp.noise_generator;
       }
 
 let pigment_of (g : pig) : Scene.pigment =
   match g.pat with
-  | None -> ( match g.trans with None -> Solid g.solid | Some strans -> Solid_placed { colour = g.solid; strans })
+  | None -> (
+      (* a plain colour keeps only its transform (Post_Pigment drops its warps) *)
+      match List.find_map (function Scene.Transform_warp t -> Some t | _ -> None) g.warps with
+      | None -> Solid g.solid
+      | Some strans -> Solid_placed { colour = g.solid; strans })
   | Some pattern ->
       let map = match g.map with Some m -> m | None -> Pigment.default_map pattern in
-      Pattern { pattern; frequency = g.frequency; phase = g.phase; wave = g.wave; map; ptrans = g.trans; pigments = g.pigments }
+      Pattern
+        { pattern; frequency = g.frequency; phase = g.phase; wave = g.wave; map; warps = g.warps; noise_generator = g.noise; pigments = g.pigments }
 
 let default_brick = Scene.Brick { size = Vec.make 8. 3. 4.5; mortar = Precision.f32 (0.5 -. 2e-10) }
 
@@ -175,23 +182,23 @@ let rec parse_pigment_body st ~close (base : Scene.pigment) : Scene.pigment =
         let v = parse_vector st in
         match g.pat with
         | Some (Brick b) -> loop { g with pat = Some (Brick { b with size = v }) }
-        | Some (Checker | Gradient _ | Hexagon) | None -> Error.raise_at loc "'brick_size' is only valid in a brick pattern")
+        | Some _ | None -> Error.raise_at loc "'brick_size' is only valid in a brick pattern")
     | Ident "mortar" -> (
         advance st;
         let m = parse_float st in
         match g.pat with
         | Some (Brick b) -> loop { g with pat = Some (Brick { b with mortar = Precision.f32 (m -. 2e-10) }) }
-        | Some (Checker | Gradient _ | Hexagon) | None -> Error.raise_at loc "'mortar' is only valid in a brick pattern")
+        | Some _ | None -> Error.raise_at loc "'mortar' is only valid in a brick pattern")
     | Ident (("color_map" | "colour_map") as kw) -> (
         advance st;
         match g.pat with
         | Some (Checker | Hexagon | Brick _) -> Error.raise_at loc "cannot use %s with this pattern type" kw
-        | Some (Gradient _) | None -> loop { g with map = Some (parse_colour_map st kw); pigments = [||] })
+        | Some _ | None -> loop { g with map = Some (parse_colour_map st kw); pigments = [||] })
     | Ident "pigment_map" -> (
         advance st;
         match g.pat with
         | Some (Checker | Hexagon | Brick _) -> Error.raise_at loc "cannot use pigment_map with this pattern type"
-        | Some (Gradient _) | None -> loop { g with pigments = parse_pigment_map st })
+        | Some _ | None -> loop { g with pigments = parse_pigment_map st })
     (* §17.1: frequency, phase, the poly_wave exponent and the mortar are stored in single precision *)
     | Ident "frequency" -> advance st; loop { g with frequency = Precision.f32 (parse_float st) }
     | Ident "phase" -> advance st; loop { g with phase = Precision.f32 (parse_float st) }
@@ -204,7 +211,7 @@ let rec parse_pigment_body st ~close (base : Scene.pigment) : Scene.pigment =
     | Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") ->
         (* §17.1: pigment transforms compose into the pigment's own transform *)
         let t = Place.op_transform (parse_op st) in
-        loop { g with trans = Some (Transform.compose (Option.value g.trans ~default:Transform.identity) t) }
+        loop { g with warps = Pigment.transform_warps g.warps t }
     | Ident ("quick_color" | "quick_colour") -> advance st; ignore (parse_colour st); loop g
     | Ident ("noise_generator" as s) -> not_supported loc (Printf.sprintf "'%s' in a pigment" s)
     | Ident s when is_unsupported s -> not_supported loc (Printf.sprintf "'%s' in a pigment" s)

@@ -90,6 +90,7 @@ type st = {
   mutable assumed_gamma : float option;
   mutable max_trace_level : int;
   mutable adc_bailout : float;
+  mutable noise_generator : int;
   mutable ambient_light : Rgb.t;
   mutable default_texture : Scene.texture;
   mutable directive : st -> string -> Loc.t -> unit;  (* the directive reader, tied below *)

@@ -86,6 +86,7 @@ type st = {
   mutable assumed_gamma : float option;
   mutable max_trace_level : int;
   mutable adc_bailout : float;
+  mutable noise_generator : int;  (** global_settings: 1, 2 (default) or 3 *)
   mutable ambient_light : Rgb.t;
   mutable default_texture : Scene.texture;
   mutable directive : st -> string -> Loc.t -> unit;

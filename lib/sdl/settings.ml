@@ -120,7 +120,12 @@ let parse_global_settings st =
         loop ()
     | Ident "adc_bailout" -> advance st; st.adc_bailout <- parse_float st; loop ()
     | Ident "ambient_light" -> advance st; st.ambient_light <- parse_rgb st "ambient_light"; loop ()
-    | Ident ("number_of_waves" | "noise_generator") -> advance st; ignore (parse_float st); loop ()
+    | Ident "number_of_waves" -> advance st; ignore (parse_float st); loop ()
+    | Ident "noise_generator" ->
+        (* parse.cpp: 1, 2 or 3, anything else clipped into that range *)
+        advance st;
+        st.noise_generator <- max 1 (min 3 (int_of_float (parse_float st)));
+        loop ()
     | Ident "irid_wavelength" -> advance st; ignore (parse_rgb st "irid_wavelength"); loop ()
     | Ident "charset" ->
         (* §15.9: ascii (the default), utf8 or sys *)

@@ -1,0 +1,28 @@
+(** The value of every pattern at a point of pattern space (pattern.cpp), before the frequency,
+    phase and wave of §17.1 are applied. *)
+
+(** What a few patterns need to know about the surface: aoi and slope. *)
+type hit = {
+  normal : Vec.t;  (** the surface normal at the point, world space, unit length *)
+  dir : Vec.t;  (** the ray's direction, unit length *)
+}
+
+val no_hit : hit
+(** [no_hit] is the hit given where there is no surface (a sky_sphere): normal <0,1,0>, dir <0,0,1>. *)
+
+val checker : Vec.t -> float
+(** [checker q] is 0 or 1: the parity of [floor(c + 1e-10)] summed over the three coordinates (§17.4). *)
+
+val gradient : Vec.t -> Vec.t -> float
+(** [gradient v q] is [q·v], reduced by [fmod 1] only when above 1 (§17.5); [v] is unit length. *)
+
+val hexagon : Vec.t -> float
+(** [hexagon q] is 0, 1 or 2: the hexagonal cell of [q] in the XZ plane (§17.6). *)
+
+val brick : Vec.t -> float -> Vec.t -> float
+(** [brick size mortar q] is 0 in the mortar and 1 in a brick (§17.7); [mortar] is the stored width. *)
+
+val value : Scene.pattern -> Scene.warp list -> int -> hit -> Vec.t -> float
+(** [value pat warps gen hit q] is the raw value of [pat] at the already warped point [q], with
+    noise generator [gen] (1, 2 or 3); [warps] is the pattern's warp list, which marble, wood,
+    agate and spiral read their classic turbulence from (POV-Ray's Evaluate_TPat switch). *)
