@@ -405,7 +405,10 @@ let parse_reflection_block st (r : Scene.reflection) : Scene.reflection =
     if peek st == RBrace then (r, false)
     else
       let mn = parse_rgb st "reflection" in
-      if accept st Comma then ({ r with rmin = mn; rmax = parse_rgb st "reflection" }, false)
+      (* the comma between the two colours is optional: any expression starts the second *)
+      ignore (accept st Comma);
+      let vector_ident = match peek st with Ident s -> (match cur_value st s with Some (V.Vector _) -> true | _ -> false) | _ -> false in
+      if float_follows st || is_colour_start st || vector_ident || peek st = Lt then ({ r with rmin = mn; rmax = parse_rgb st "reflection" }, false)
       else ({ r with rmin = mn; rmax = mn }, true)
   in
   let rec loop (r : Scene.reflection) =
