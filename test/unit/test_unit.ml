@@ -28,6 +28,7 @@ let () =
       ("Text", Test_text.tests);
       ("CSG", Test_csg.tests);
       ("Patterns", Test_patterns.tests);
+      ("Noise", Test_noise.tests);
       ("Trace", Test_trace.tests);
       ("Render", Test_render.tests);
       ("Jitter", Test_jitter.tests);
