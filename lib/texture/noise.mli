@@ -34,3 +34,9 @@ val wave_source : int -> Vec.t
 
 val wave_frequency : int -> float
 (** [wave_frequency i] is the frequency of the [i]th wave, in [0.01, 1.01). *)
+
+val cycloidal : float -> float
+(** [cycloidal v] is POV-Ray's cycloidal: sin(2π·frac v) for [v] ≥ 0, −cycloidal(−v) below. *)
+
+val triangle_wave : float -> float
+(** [triangle_wave v] is POV-Ray's Triangle_Wave: 2·frac v below a half, 2·(1 − frac v) from it. *)
