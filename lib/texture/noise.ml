@@ -3,7 +3,8 @@
    never written again. The arithmetic follows texture.cpp operation for operation: the same sums
    in the same order, C's truncating (int) casts, its 32-bit wrap-around and its masks, so the
    values are POV-Ray's to the last bit. The functions are written to allocate nothing but their
-   result: helpers are [@inline] so that their floats stay unboxed. *)
+   result (and one three-float scratch record for the vector noise): the helpers are [@inline]
+   so that their floats stay unboxed. *)
 
 (* ---------------------------------------------------------------------------------------------- *)
 (* C arithmetic *)
