@@ -56,9 +56,11 @@ let repeated_centre (centre : Vec.t) (r : Vec.t) uncertainty (p : Vec.t) =
         z = centre.z +. (Noise.random_double (seed + 2) *. u.z) +. (r.z *. float bz);
       }
 
-(* Inside the radius, a type-0 black hole pulls the point toward its centre (pushes it away when
-   inverted) by the share ((radius − distance) / radius)^falloff · strength of the way, at most all
-   of it; other types leave the point alone. *)
+(* Inside the radius, a type-0 black hole moves the sampled point away from its centre by
+   s·(p − centre), s = ((radius − distance) / radius)^falloff · strength, at most 1, so that the
+   pattern looks drawn into the hole; inverted, it moves the point toward the centre. Other types
+   leave the point alone. The fields arrive one by one because an inline record cannot be passed
+   on whole. *)
 let black_hole centre radius strength power inverted bh_type repeat uncertainty (p : Vec.t) =
   let c = match repeat with None -> centre | Some r -> repeated_centre centre r uncertainty p in
   let dx = p.x -. c.x and dy = p.y -. c.y and dz = p.z -. c.z in
