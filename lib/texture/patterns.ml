@@ -273,21 +273,9 @@ let spiral2 arms warps gen (q : Vec.t) =
 
 let number_of_waves = 10
 
-(* each source is the vector noise at <i,0,0>, normalised by division; each frequency comes from
-   a linear congruential sequence in 32-bit C ints *)
-let wave_sources =
-  lazy
-    (let sources = Array.make number_of_waves Vec.zero and freqs = Array.make number_of_waves 0. in
-     let next_rand = ref (-560851967) in
-     for i = 0 to number_of_waves - 1 do
-       let d = Noise.dnoise (Vec.make (float_of_int i) 0. 0.) in
-       let l = sqrt ((d.x *. d.x) +. (d.y *. d.y) +. (d.z *. d.z)) in
-       sources.(i) <- (if l <> 0. then Vec.make (d.x /. l) (d.y /. l) (d.z /. l) else d);
-       let r = ((!next_rand * 1812433253) + 12345) land 0xFFFFFFFF in
-       next_rand := if r >= 0x80000000 then r - 0x100000000 else r;
-       freqs.(i) <- (float_of_int ((!next_rand asr 16) land 0x7FFF) *. 0.000030518509476) +. 0.01
-     done;
-     (sources, freqs))
+(* the sources and frequencies of Initialize_Waves, tabled once *)
+let wave_sources = Array.init number_of_waves Noise.wave_source
+let wave_frequencies = Array.init number_of_waves Noise.wave_frequency
 
 (* the distance to a source, 1 at the source itself *)
 let[@inline] source_distance (q : Vec.t) (s : Vec.t) =
@@ -296,7 +284,7 @@ let[@inline] source_distance (q : Vec.t) (s : Vec.t) =
   if l = 0.0 then 1.0 else l
 
 let waves frequency phase q =
-  let sources, freqs = Lazy.force wave_sources in
+  let sources = wave_sources and freqs = wave_frequencies in
   let scalar = ref 0.0 in
   for i = 0 to number_of_waves - 1 do
     let index = (source_distance q sources.(i) *. frequency *. freqs.(i)) +. phase in
@@ -305,7 +293,7 @@ let waves frequency phase q =
   0.2 *. (2.5 +. (!scalar /. float_of_int number_of_waves))
 
 let ripples frequency phase q =
-  let sources, _ = Lazy.force wave_sources in
+  let sources = wave_sources in
   let scalar = ref 0.0 in
   for i = 0 to number_of_waves - 1 do
     scalar := !scalar +. cycloidal ((source_distance q sources.(i) *. frequency) +. phase)
