@@ -6,6 +6,8 @@ type hit = {
   normal : Vec.t;  (** the surface normal at the point, world space, unit length *)
   dir : Vec.t;  (** the ray's direction, unit length *)
 }
+(** (slope's [point_at] would also need the intersection point itself, which POV-Ray uses; the
+    pattern-space point stands for it.) *)
 
 val no_hit : hit
 (** [no_hit] is the hit given where there is no surface (a sky_sphere): normal <0,1,0>, dir <0,0,1>. *)
