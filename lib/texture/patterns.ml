@@ -1909,8 +1909,8 @@ module Pavement = struct
   (* Squares. The cell [0,1)² of the unit grid, and its edges and corners:
        5---1---6
        |       |
-       4       2        edges 1, 2, 4, 8 (top, right, bottom, left as drawn),
-       |       |        corners 0x10, 0x20, 0x40, 0x80 for 5, 6, 7, 8
+       4       2        edges 1, 2, 3, 4 are the bits 0x01, 0x02, 0x04, 0x08 (z up),
+       |       |        corners 5, 6, 7, 8 the bits 0x10, 0x20, 0x40, 0x80
        8---3---7 *)
   let tetragonal tile number form interior exterior (p : Vec.t) =
     let x = p.x and y = p.z in
@@ -2024,8 +2024,9 @@ module Pavement = struct
       | _ -> 0x0F
     in
     let x = x -. floor x and y = y -. floor y in
-    (* the first of the corners 6, 5, 8, 7 (as drawn) where two borders meet at a tile's outer
-       corner: forms 0 to 2 shape it and return at once *)
+    (* a cell where the tile turns: two borders and the corner opposite them (0x16: edges 2 and 3
+       with corner 5; 0x2C: 3, 4 and 6; 0x49: 1, 4 and 7; 0x83: 1, 2 and 8); forms 0, 1 and 2
+       make the turn square, cut or round, and return at once *)
     let corner =
       if how land 0x16 = 0x16 then 1
       else if how land 0x2C = 0x2C then 2
