@@ -125,6 +125,8 @@ let surface ~legacy ~noise ~ambient_light (t : Scene.texture) =
       transparent = false;
       conserve = f.conserve_energy;
       paint = Fixed;
+      (* the normal, if any, is perturbed at each hit; without one the tracer never looks *)
+      bump = (match t.normal with None -> Smooth | Some nm -> Bumpy nm);
     }
   in
   match t.pigment with
