@@ -151,9 +151,38 @@ let rec pigment = function
       Printf.sprintf "%s frequency %s phase %s%s %s%s" pat (num p.frequency) (num p.phase) wave map
         (String.concat "" (List.rev_map (fun w -> " " ^ warp w) p.warps))
 
+let wave_name (w : wave) =
+  match w with
+  | Ramp -> ""
+  | Triangle_wave -> " triangle_wave"
+  | Sine_wave -> " sine_wave"
+  | Scallop_wave -> " scallop_wave"
+  | Cubic_wave -> " cubic_wave"
+  | Poly_wave e -> " poly_wave " ^ num e
+
+(* A normal with its amount, accuracy, map and warps. *)
+let rec normal (n : normal) =
+  let map =
+    match n.nmap with
+    | No_map -> ""
+    | Slope_map es ->
+        Printf.sprintf " slope_map { %s }"
+          (String.concat " " (Array.to_list (Array.map (fun (e : slope_entry) -> Printf.sprintf "[%s <%s, %s>]" (num e.svalue) (num e.height) (num e.slope)) es)))
+    | Normal_map es ->
+        Printf.sprintf " normal_map { %s }"
+          (String.concat " " (Array.to_list (Array.map (fun (e : normal_entry) -> Printf.sprintf "[%s %s]" (num e.nvalue) (normal e.nnormal)) es)))
+  in
+  Printf.sprintf "%s %s accuracy %s frequency %s phase %s%s%s%s%s" (pattern_name n.npattern) (num n.amount) (num n.accuracy)
+    (num n.nfrequency) (num n.nphase) (wave_name n.nwave)
+    (if n.no_bump_scale then " no_bump_scale" else "")
+    map
+    (String.concat "" (List.rev_map (fun w -> " " ^ warp w) n.nwarps))
+
 let texture (t : texture) =
   let f = finish t.finish in
-  Printf.sprintf "texture { pigment { %s }%s }" (pigment t.pigment) (if f = "" then "" else Printf.sprintf " finish { %s }" f)
+  Printf.sprintf "texture { pigment { %s }%s%s }" (pigment t.pigment)
+    (match t.normal with None -> "" | Some n -> Printf.sprintf " normal { %s }" (normal n))
+    (if f = "" then "" else Printf.sprintf " finish { %s }" f)
 
 let interior (i : interior) =
   if i = Defaults.interior then ""

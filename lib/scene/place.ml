@@ -45,7 +45,10 @@ let move_point op (p : Vec.t) =
   | Rotate _ | Transform _ -> Transform.point (op_transform op) p
 
 (* §14.7: a texture attached before a transform moves with the object *)
-let texture (t : Scene.texture) op = { t with pigment = Pigment.transform t.pigment (op_transform op) }
+let texture (t : Scene.texture) op =
+  let m = op_transform op in
+  let normal = match t.normal with None -> None | Some n -> Some { n with nwarps = Pigment.transform_warps n.nwarps m } in
+  { t with pigment = Pigment.transform t.pigment m; normal }
 
 let rec shape (s : Scene.shape) op : Scene.shape =
   match s with

@@ -240,8 +240,9 @@ let directive st d loc =
         | Ident "texture" -> advance st; st.default_texture <- parse_texture st st.default_texture; loop ()
         | Ident "pigment" -> advance st; st.default_texture <- { st.default_texture with pigment = parse_pigment st st.default_texture.pigment }; loop ()
         | Ident "finish" -> advance st; st.default_texture <- { st.default_texture with finish = parse_finish st st.default_texture.finish }; loop ()
-        | Ident s when List.mem s [ "normal"; "radiosity"; "media" ] -> not_supported l (Printf.sprintf "'%s' in #default" s)
-        | _ -> unexpected st "'texture', 'pigment', 'finish' or '}' in #default"
+        | Ident "normal" -> advance st; st.default_texture <- { st.default_texture with normal = Some (parse_normal st st.default_texture.normal) }; loop ()
+        | Ident s when List.mem s [ "radiosity"; "media" ] -> not_supported l (Printf.sprintf "'%s' in #default" s)
+        | _ -> unexpected st "'texture', 'pigment', 'normal', 'finish' or '}' in #default"
       in
       loop ()
   | "fopen" -> User_files.fopen st

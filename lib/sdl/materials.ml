@@ -57,52 +57,66 @@ let parse_colour_map st what : Scene.map_entry array =
       if List.length es > 256 then Error.raise_at loc "a %s has at most 256 entries" what;
       Array.of_list es
 
-(* A pigment while it is read: what POV-Ray edits in place (§17.9). [pat] is None for a plain
+(* A pigment while it is read: what POV-Ray edits in place (§17.9). [h.pat] is None for a plain
    colour; [map] is None until colours or a color_map are given; [pigments] is not empty for a
    pigment_map or a list of pigments. *)
-type pig = {
-  solid : Colour.t;
-  pat : Scene.pattern option;
-  map : Scene.map_entry array option;
-  pigments : Scene.pigment_entry array;
-  frequency : float;
-  phase : float;
-  wave : Scene.wave;
-  warps : Scene.warp list;  (** the head is the last written *)
-  noise : int;
-}
+type pig = { solid : Colour.t; h : Pattern_reader.header; map : Scene.map_entry array option; pigments : Scene.pigment_entry array }
 
 let pig_of (p : Scene.pigment) =
+  let plain = Pattern_reader.plain in
   match p with
-  | Solid c -> { solid = c; pat = None; map = None; pigments = [||]; frequency = 1.; phase = 0.; wave = Ramp; warps = []; noise = 0 }
-  | Solid_placed { colour; strans } ->
-      { solid = colour; pat = None; map = None; pigments = [||]; frequency = 1.; phase = 0.; wave = Ramp; warps = [ Transform_warp strans ]; noise = 0 }
+  | Solid c -> { solid = c; h = plain; map = None; pigments = [||] }
+  | Solid_placed { colour; strans } -> { solid = colour; h = { plain with warps = [ Transform_warp strans ] }; map = None; pigments = [||] }
   | Pattern pp ->
       {
         solid = Colour.black;
-        pat = Some pp.pattern;
+        h = { pat = Some pp.pattern; frequency = pp.frequency; phase = pp.phase; wave = pp.wave; warps = pp.warps; noise = pp.noise_generator };
         map = Some pp.map;
         pigments = pp.pigments;
-        frequency = pp.frequency;
-        phase = pp.phase;
-        wave = pp.wave;
-        warps = pp.warps;
-        noise = pp.noise_generator;
       }
 
 let pigment_of (g : pig) : Scene.pigment =
-  match g.pat with
+  let h = g.h in
+  match h.pat with
   | None -> (
       (* a plain colour keeps only its transform (Post_Pigment drops its warps) *)
-      match List.find_map (function Scene.Transform_warp t -> Some t | _ -> None) g.warps with
+      match List.find_map (function Scene.Transform_warp t -> Some t | _ -> None) h.warps with
       | None -> Solid g.solid
       | Some strans -> Solid_placed { colour = g.solid; strans })
   | Some pattern ->
       let map = match g.map with Some m -> m | None -> Pigment.default_map pattern in
       Pattern
-        { pattern; frequency = g.frequency; phase = g.phase; wave = g.wave; map; warps = g.warps; noise_generator = g.noise; pigments = g.pigments }
+        { pattern; frequency = h.frequency; phase = h.phase; wave = h.wave; map; warps = h.warps; noise_generator = h.noise; pigments = g.pigments }
 
 let default_brick = Scene.Brick { size = Vec.make 8. 3. 4.5; mortar = Precision.f32 (0.5 -. 2e-10) }
+
+(* The block patterns: their keyword, pattern and number of listed colours, pigments or normals
+   (§17.4, §17.6, §17.7; square, triangular and cubic as pattern.cpp). *)
+let block_pattern st (current : Scene.pattern option) =
+  match peek st with
+  | Ident "checker" -> Some (Scene.Checker, 2)
+  | Ident "hexagon" -> Some (Hexagon, 3)
+  | Ident "brick" ->
+      (* a brick keeps its size and mortar when written again *)
+      Some ((match current with Some (Brick _ as b) -> b | _ -> default_brick), 2)
+  | Ident "square" -> Some (Square, 4)
+  | Ident "triangular" -> Some (Triangular, 6)
+  | Ident "cubic" -> Some (Cubic, 6)
+  | _ -> None
+
+let is_block (p : Scene.pattern option) =
+  match p with Some (Checker | Hexagon | Brick _ | Square | Triangular | Cubic) -> true | _ -> false
+
+let is_pattern_start st =
+  match peek st with
+  | Ident s ->
+      block_pattern st None <> None
+      || List.mem s
+           [ "agate"; "bozo"; "spotted"; "bumps"; "granite"; "leopard"; "marble"; "wood"; "onion"; "radial"; "cells"; "crackle";
+             "wrinkles"; "dents"; "waves"; "ripples"; "quilted"; "facets"; "spiral1"; "spiral2"; "planar"; "boxed"; "spherical";
+             "cylindrical"; "aoi"; "average"; "mandel"; "julia"; "magnet"; "pavement"; "tiling"; "slope"; "gradient"; "object";
+             "image_map"; "bump_map"; "image_pattern"; "function"; "pigment_pattern"; "density_file"; "uv_mapping" ]
+  | _ -> false
 
 (* The pigment body read up to [close] ('}' of a pigment block, or ']' of a pigment_map entry),
    editing [base] (§17.9). *)
@@ -112,10 +126,10 @@ let rec parse_pigment_body st ~close (base : Scene.pigment) : Scene.pigment =
     | Some p -> p
     | None -> base
   in
-  (* checker, hexagon and brick: up to [n] colours (commas optional) replacing the first entries of
-     the default map, or [n] pigments { … } (§17.4, §17.6, §17.7) *)
+  (* block patterns: up to [n] colours (commas optional) replacing the first entries of the
+     default map, or [n] pigments { … } *)
   let listed (g : pig) pattern n =
-    let g = { g with pat = Some pattern; frequency = 0. (* §17.1: no value wrap *) } in
+    let g = { g with h = { g.h with pat = Some pattern; frequency = 0. (* §17.1: no value wrap *) } } in
     if is_ident st "pigment" then begin
       let rec go i acc =
         if i < n && (i = 0 || (ignore (accept st Comma); is_ident st "pigment")) then begin
@@ -132,7 +146,7 @@ let rec parse_pigment_body st ~close (base : Scene.pigment) : Scene.pigment =
         Array.init (Array.length defaults) (fun i ->
             match List.nth_opt given i with
             | Some e -> e
-            | None -> { Scene.pvalue = float_of_int i; pigment = Solid defaults.(i).colour })
+            | None -> { Scene.pvalue = defaults.(i).value; pigment = Solid defaults.(i).colour })
       in
       { g with map = None; pigments }
     end
@@ -160,61 +174,41 @@ let rec parse_pigment_body st ~close (base : Scene.pigment) : Scene.pigment =
     let started = not !first in
     first := false;
     match item with
-    | k when k == close -> advance st; pigment_of g
-    | Ident s when (is_colour_start st || List.mem s [ "checker"; "hexagon"; "brick"; "gradient" ]) && started ->
+    | k when k == close -> advance st; pigment_of { g with h = Pattern_reader.finish st loc g.h }
+    | Ident s when (is_colour_start st || is_pattern_start st) && started ->
         Error.raise_at loc "expected %s but found '%s': the colour or pattern comes first in a %s"
           (if close == RBrace then "'}' closing the pigment" else "']' closing the pigment_map entry")
           s
           (if close == RBrace then "pigment" else "pigment_map entry")
-    | Ident s when is_colour_start st -> ignore s; loop { g with solid = parse_colour st; pat = None; map = None; pigments = [||] }
-    | Ident "checker" -> advance st; loop (listed g Checker 2)
-    | Ident "hexagon" -> advance st; loop (listed g Hexagon 3)
-    | Ident "brick" -> advance st; loop (listed g default_brick 2)
-    | Ident "gradient" ->
+    | Ident _ when is_colour_start st -> loop { solid = parse_colour st; h = { g.h with pat = None }; map = None; pigments = [||] }
+    | Ident _ when block_pattern st g.h.pat <> None ->
+        let pattern, n = Option.get (block_pattern st g.h.pat) in
         advance st;
-        let vl = peek_loc st in
-        let v = parse_vector st in
-        (* §17.5: the direction is normalised when parsed *)
-        if Vec.length v = 0. then Error.raise_at vl "the gradient vector is <0,0,0>";
-        loop { g with pat = Some (Gradient (Vec.normalize v)); map = None; pigments = [||] }
-    | Ident "brick_size" -> (
+        loop (listed g pattern n)
+    | Ident (("color_map" | "colour_map") as kw) ->
         advance st;
-        let v = parse_vector st in
-        match g.pat with
-        | Some (Brick b) -> loop { g with pat = Some (Brick { b with size = v }) }
-        | Some _ | None -> Error.raise_at loc "'brick_size' is only valid in a brick pattern")
-    | Ident "mortar" -> (
+        if is_block g.h.pat then Error.raise_at loc "cannot use %s with this pattern type" kw;
+        loop { g with map = Some (parse_colour_map st kw); pigments = [||] }
+    | Ident "pigment_map" ->
         advance st;
-        let m = parse_float st in
-        match g.pat with
-        | Some (Brick b) -> loop { g with pat = Some (Brick { b with mortar = Precision.f32 (m -. 2e-10) }) }
-        | Some _ | None -> Error.raise_at loc "'mortar' is only valid in a brick pattern")
-    | Ident (("color_map" | "colour_map") as kw) -> (
-        advance st;
-        match g.pat with
-        | Some (Checker | Hexagon | Brick _) -> Error.raise_at loc "cannot use %s with this pattern type" kw
-        | Some _ | None -> loop { g with map = Some (parse_colour_map st kw); pigments = [||] })
-    | Ident "pigment_map" -> (
-        advance st;
-        match g.pat with
-        | Some (Checker | Hexagon | Brick _) -> Error.raise_at loc "cannot use pigment_map with this pattern type"
-        | Some _ | None -> loop { g with pigments = parse_pigment_map st })
-    (* §17.1: frequency, phase, the poly_wave exponent and the mortar are stored in single precision *)
-    | Ident "frequency" -> advance st; loop { g with frequency = Precision.f32 (parse_float st) }
-    | Ident "phase" -> advance st; loop { g with phase = Precision.f32 (parse_float st) }
-    | Ident "ramp_wave" -> advance st; loop { g with wave = Ramp }
-    | Ident "triangle_wave" -> advance st; loop { g with wave = Triangle_wave }
-    | Ident "sine_wave" -> advance st; loop { g with wave = Sine_wave }
-    | Ident "scallop_wave" -> advance st; loop { g with wave = Scallop_wave }
-    | Ident "cubic_wave" -> advance st; loop { g with wave = Cubic_wave }
-    | Ident "poly_wave" -> advance st; loop { g with wave = Poly_wave (if float_follows st then Precision.f32 (parse_float st) else 1.) }
-    | Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") ->
-        (* §17.1: pigment transforms compose into the pigment's own transform *)
-        let t = Place.op_transform (parse_op st) in
-        loop { g with warps = Pigment.transform_warps g.warps t }
+        if is_block g.h.pat then Error.raise_at loc "cannot use pigment_map with this pattern type";
+        loop { g with pigments = parse_pigment_map st }
     | Ident ("quick_color" | "quick_colour") -> advance st; ignore (parse_colour st); loop g
-    | Ident ("noise_generator" as s) -> not_supported loc (Printf.sprintf "'%s' in a pigment" s)
-    | Ident s when is_unsupported s -> not_supported loc (Printf.sprintf "'%s' in a pigment" s)
+    | Ident _ when started || not (is_pattern_start st) -> (
+        match Pattern_reader.modifier st g.h with
+        | Some h -> loop { g with h }
+        | None -> (
+            match item with
+            | Ident s when is_unsupported s -> not_supported loc (Printf.sprintf "'%s' in a pigment" s)
+            | _ ->
+                unexpected st
+                  (if close == RBrace then "a colour, a pattern or '}' in a pigment" else "a colour, a pattern or ']' in a pigment_map entry")))
+    | Ident _ -> (
+        match Pattern_reader.pattern_keyword st Pigment_pattern { g.h with pat = None } with
+        | Some h ->
+            (* a new pattern starts from the default map unless one was given for the old one *)
+            loop { g with h; map = (if is_block g.h.pat then None else g.map); pigments = (if is_block g.h.pat then [||] else g.pigments) }
+        | None -> unexpected st "a pattern")
     | _ -> unexpected st (if close == RBrace then "a colour, a pattern or '}' in a pigment" else "a colour, a pattern or ']' in a pigment_map entry")
   in
   loop (pig_of p)
@@ -246,6 +240,163 @@ and parse_pigment_map st : Scene.pigment_entry array =
 and parse_pigment st (base : Scene.pigment) : Scene.pigment =
   open_block st "pigment";
   parse_pigment_body st ~close:RBrace base
+
+(* A normal while it is read (normal.cpp's Tnormal: a pattern with an amount). *)
+type nrm = { nh : Pattern_reader.header; amount : float; accuracy : float; no_bump_scale : bool; nmap : Scene.normal_map }
+
+let fresh_normal = { nh = Pattern_reader.plain; amount = 0.5; accuracy = Precision.f32 0.02; no_bump_scale = false; nmap = No_map }
+
+let nrm_of (n : Scene.normal) =
+  {
+    nh = { pat = Some n.npattern; frequency = n.nfrequency; phase = n.nphase; wave = n.nwave; warps = n.nwarps; noise = n.nnoise_generator };
+    amount = n.amount;
+    accuracy = n.accuracy;
+    no_bump_scale = n.no_bump_scale;
+    nmap = n.nmap;
+  }
+
+(* Post_Tnormal: no_bump_scale is passed down to the normals of a normal_map *)
+let rec with_no_bump_scale (n : Scene.normal) =
+  match n.nmap with
+  | Normal_map es when n.no_bump_scale ->
+      { n with nmap = Normal_map (Array.map (fun (e : Scene.normal_entry) -> { e with nnormal = with_no_bump_scale { e.nnormal with no_bump_scale = true } }) es) }
+  | No_map | Slope_map _ | Normal_map _ -> n
+
+let normal_of loc (n : nrm) : Scene.normal =
+  match n.nh.pat with
+  | None -> Error.raise_at loc "a normal needs a pattern"
+  | Some npattern ->
+      (match (npattern, n.nmap) with
+      | Average, (No_map | Slope_map _) -> Error.raise_at loc "an average normal needs a normal_map"
+      | _ -> ());
+      with_no_bump_scale
+        {
+          npattern;
+          nfrequency = n.nh.frequency;
+          nphase = n.nh.phase;
+          nwave = n.nh.wave;
+          nwarps = n.nh.warps;
+          nnoise_generator = n.nh.noise;
+          amount = n.amount;
+          accuracy = n.accuracy;
+          no_bump_scale = n.no_bump_scale;
+          nmap = n.nmap;
+        }
+
+let default_normal st = match st.default_texture.normal with Some n -> nrm_of n | None -> fresh_normal
+
+(* The normal body read up to [close] ('}' of a normal block, or ']' of a normal_map entry), editing
+   [base] (Parse_Tnormal, Parse_Pattern for NORMAL_TYPE). *)
+let rec parse_normal_body st ~close (base : Scene.normal option) : Scene.normal =
+  let start = peek_loc st in
+  let n =
+    match ident_of_kind st (function V.Normal n -> Some n | _ -> None) with
+    | Some n -> nrm_of n
+    | None -> ( match base with Some n -> nrm_of n | None -> default_normal st)
+  in
+  (* the pattern (once), then an optional amount, then modifiers *)
+  let n =
+    match block_pattern st n.nh.pat with
+    | Some (pattern, count) ->
+        advance st;
+        let h = { n.nh with pat = Some pattern; frequency = 0. } in
+        let rec go i acc =
+          if i < count && (i = 0 || (ignore (accept st Comma); is_ident st "normal")) && is_ident st "normal" then begin
+            advance st;
+            let nm = parse_normal st None in
+            go (i + 1) ({ Scene.nvalue = float_of_int i; nnormal = nm } :: acc)
+          end
+          else List.rev acc
+        in
+        let given = go 0 [] in
+        (* no normals listed: no map, the pattern's slope *)
+        { n with nh = h; nmap = (if given = [] then No_map else Normal_map (Array.of_list given)) }
+    | None -> (
+        match Pattern_reader.pattern_keyword st Normal_pattern { n.nh with pat = None } with
+        | Some h -> { n with nh = h }
+        | None -> n)
+  in
+  ignore (accept st Comma);
+  let n = if float_follows st then { n with amount = Precision.f32 (parse_float st) } else n in
+  let rec loop (n : nrm) =
+    let loc = peek_loc st in
+    match peek st with
+    | k when k == close -> advance st; normal_of start { n with nh = Pattern_reader.finish st loc n.nh }
+    | Ident "bump_size" -> advance st; loop { n with amount = Precision.f32 (parse_float st) }
+    | Ident "accuracy" -> advance st; loop { n with accuracy = Precision.f32 (parse_float st) }
+    | Ident "no_bump_scale" -> advance st; loop { n with no_bump_scale = parse_bool_opt st }
+    | Ident "slope_map" ->
+        advance st;
+        if is_block n.nh.pat then Error.raise_at loc "cannot use slope_map with this normal type";
+        loop { n with nmap = Slope_map (parse_slope_map st) }
+    | Ident "normal_map" ->
+        advance st;
+        (match n.nh.pat with
+        | Some (Facets _) -> Error.raise_at loc "cannot use normal_map with this normal type"
+        | _ -> if is_block n.nh.pat then Error.raise_at loc "cannot use normal_map with this normal type");
+        loop { n with nmap = Normal_map (parse_normal_map st n.nh.pat) }
+    | Ident ("color_map" | "colour_map" | "pigment_map" as kw) -> Error.raise_at loc "'%s' can only be used in a pigment" kw
+    | Ident s when is_colour_start st || is_pattern_start st ->
+        Error.raise_at loc "expected %s but found '%s': the pattern comes first in a normal"
+          (if close == RBrace then "'}' closing the normal" else "']' closing the normal_map entry")
+          s
+    | Ident _ -> (
+        match Pattern_reader.modifier st n.nh with
+        | Some nh -> loop { n with nh }
+        | None -> (
+            match peek st with
+            | Ident s when is_unsupported s -> not_supported loc (Printf.sprintf "'%s' in a normal" s)
+            | _ -> unexpected st (if close == RBrace then "a normal modifier or '}'" else "a normal modifier or ']'")))
+    | _ -> unexpected st (if close == RBrace then "a normal modifier or '}'" else "a normal modifier or ']'")
+  in
+  loop n
+
+(* normal_map { [v NORMAL_BODY] … }: an average's entries may omit the value (weight 1) *)
+and parse_normal_map st (pat : Scene.pattern option) : Scene.normal_entry array =
+  let loc = peek_loc st in
+  open_block st "normal_map";
+  let rec entries acc n =
+    match peek st with
+    | RBrace -> advance st; List.rev acc
+    | LBracket ->
+        let el = peek_loc st in
+        if n >= 256 then Error.raise_at el "a normal_map has at most 256 entries";
+        advance st;
+        let v = match pat with Some Average -> if float_follows st then parse_float st else 1. | _ -> parse_float st in
+        ignore (accept st Comma);
+        let nm = parse_normal_body st ~close:RBracket st.default_texture.normal in
+        entries ({ Scene.nvalue = Precision.f32 v; nnormal = nm } :: acc) (n + 1)
+    | _ -> unexpected st "'[' starting a normal_map entry, or '}'"
+  in
+  let es = entries [] 0 in
+  if es = [] then Error.raise_at loc "a normal_map needs at least one entry";
+  Array.of_list es
+
+(* slope_map { [v <height, slope>] … } *)
+and parse_slope_map st : Scene.slope_entry array =
+  let loc = peek_loc st in
+  open_block st "slope_map";
+  let rec entries acc n =
+    match peek st with
+    | RBrace -> advance st; List.rev acc
+    | LBracket ->
+        let el = peek_loc st in
+        if n >= 256 then Error.raise_at el "a slope_map has at most 256 entries";
+        advance st;
+        let v = parse_float st in
+        ignore (accept st Comma);
+        let height, slope = Pattern_reader.uv st "a slope_map entry" in
+        expect st RBracket "']' closing a slope_map entry";
+        entries ({ Scene.svalue = Precision.f32 v; height; slope } :: acc) (n + 1)
+    | _ -> unexpected st "'[' starting a slope_map entry, or '}'"
+  in
+  let es = entries [] 0 in
+  if es = [] then Error.raise_at loc "a slope_map needs at least one entry";
+  Array.of_list es
+
+and parse_normal st (base : Scene.normal option) : Scene.normal =
+  open_block st "normal";
+  parse_normal_body st ~close:RBrace base
 
 let parse_reflection_block st (r : Scene.reflection) : Scene.reflection =
   (* reflection { MIN [, MAX] [fresnel [b]] [falloff F] [exponent E] [metallic [M]] } (§5.1) *)
@@ -343,9 +494,10 @@ let parse_texture st (base : Scene.texture) : Scene.texture =
     | RBrace -> advance st; t
     | Ident "pigment" -> advance st; loop { t with pigment = parse_pigment st t.pigment }
     | Ident "finish" -> advance st; loop { t with finish = parse_finish st t.finish }
+    | Ident "normal" -> advance st; loop { t with normal = Some (parse_normal st t.normal) }
     | Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") -> loop (Place.texture t (parse_op st))
     | Ident s when is_unsupported s -> not_supported loc (Printf.sprintf "'%s' in a texture" s)
-    | _ -> unexpected st "'pigment', 'finish' or '}' in a texture"
+    | _ -> unexpected st "'pigment', 'normal', 'finish' or '}' in a texture"
   in
   loop t
 

@@ -13,6 +13,10 @@ val parse_pigment_map : Reader.st -> Scene.pigment_entry array
 val parse_pigment : Reader.st -> Scene.pigment -> Scene.pigment
 (** [parse_pigment st base] reads a pigment block that modifies [base]. *)
 
+val parse_normal : Reader.st -> Scene.normal option -> Scene.normal
+(** [parse_normal st base] reads a normal block that modifies [base] (else the default texture's
+    normal, else a new one: bump size 0.5, accuracy 0.02). *)
+
 val parse_finish : Reader.st -> Scene.finish -> Scene.finish
 (** [parse_finish st base] reads a finish block that modifies [base]. *)
 

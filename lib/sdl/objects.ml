@@ -216,6 +216,7 @@ and parse_object_mods st (o : V.obj) what : V.obj =
     | RBrace -> advance st; o
     | Ident "pigment" -> advance st; let t = tex o in loop { o with texture = Some { t with pigment = parse_pigment st t.pigment } }
     | Ident "finish" -> advance st; let t = tex o in loop { o with texture = Some { t with finish = parse_finish st t.finish } }
+    | Ident "normal" -> advance st; let t = tex o in loop { o with texture = Some { t with normal = Some (parse_normal st t.normal) } }
     | Ident "texture" ->
         advance st;
         if o.texture <> None then not_supported loc "layered textures (a texture added to an object that has one)";

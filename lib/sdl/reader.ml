@@ -123,25 +123,30 @@ let keywords =
   (* pigment patterns (POVRAY-3.7 §17) *)
   @ [ "checker"; "gradient"; "hexagon"; "brick"; "brick_size"; "mortar"; "color_map"; "colour_map"; "frequency";
       "phase"; "ramp_wave"; "triangle_wave"; "sine_wave"; "scallop_wave"; "cubic_wave"; "poly_wave"; "pigment_map" ]
+  (* the other patterns, their modifiers, warps and normals *)
+  @ [ "agate"; "agate_turb"; "aoi"; "average"; "boxed"; "bozo"; "bumps"; "cells"; "control0"; "control1"; "crackle";
+      "cubic"; "cylindrical"; "dents"; "facets"; "granite"; "julia"; "leopard"; "magnet"; "mandel"; "marble"; "onion";
+      "pavement"; "planar"; "quilted"; "radial"; "ripples"; "slope"; "spherical"; "spiral1"; "spiral2"; "spotted";
+      "square"; "tiling"; "triangular"; "waves"; "wood"; "wrinkles"; "turbulence"; "octaves"; "omega"; "lambda";
+      "warp"; "form"; "metric"; "offset"; "solid"; "coords"; "size"; "exterior"; "number_of_sides";
+      "number_of_tiles"; "pattern"; "repeat"; "flip"; "black_hole"; "strength"; "type"; "orientation"; "dist_exp";
+      "toroidal"; "major_radius"; "altitude"; "normal"; "bump_size"; "accuracy"; "no_bump_scale"; "slope_map";
+      "normal_map" ]
 
 (* POV-Ray keywords that a later povml will read; meeting one is a located "not supported yet". *)
 let unsupported =
   [ "prism"; "lathe"; "sor"; "blob"; "height_field"; "isosurface"; "superellipsoid"; "julia_fractal";
-    "parametric"; "bicubic_patch"; "ovus"; "cubic"; "quartic"; "poly"; "rotate"; "scale"; "matrix"; "transform";
-    "normal"; "material"; "image_map";
-    "bozo"; "marble"; "wood"; "agate"; "granite"; "spotted"; "leopard"; "onion"; "radial"; "spiral1";
-    "spiral2"; "ripples"; "waves"; "wrinkles"; "bumps"; "dents"; "crackle";
+    "parametric"; "bicubic_patch"; "ovus"; "quartic"; "poly"; "rotate"; "scale"; "matrix"; "transform";
+    "material"; "image_map"; "bump_map";
     "texture_map"; "area_light";
     "projected_through"; "fisheye"; "panoramic"; "ultra_wide_angle"; "omnimax";
-    "cylindrical"; "spherical"; "aperture"; "focal_point"; "blur_samples"; "radiosity"; "photons";
+    "aperture"; "focal_point"; "blur_samples"; "radiosity"; "photons";
     "media"; "fog"; "rainbow"; "irid"; "crand"; "dispersion"; "dispersion_samples"; "caustics";
     "bounded_by"; "uv_mapping"; "srgb"; "srgbf"; "srgbt"; "srgbft"; "subsurface";
     "interior_texture"; "light_group"; "no_radiosity"; "cutaway_textures"; "sturm";
     "phong_albedo"; "metallic_albedo"; "translucency" ]
   (* patterns and pattern modifiers not read yet (POVRAY-3.7 §17) *)
-  @ [ "turbulence"; "octaves"; "omega"; "lambda"; "warp"; "agate_turb"; "mandel"; "julia"; "magnet"; "quilted";
-      "control0"; "control1"; "tiling"; "pavement"; "square"; "triangular"; "facets"; "cells"; "boxed"; "planar";
-      "aoi"; "slope"; "pigment_pattern"; "image_pattern"; "density_file"; "average"; "object_pattern"; "color_list" ]
+  @ [ "pigment_pattern"; "image_pattern"; "density_file"; "object_pattern"; "color_list" ]
 
 let set_of l =
   let h = Names.create 64 in

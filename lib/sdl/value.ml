@@ -51,6 +51,7 @@ type t =
   | Colour of float array
   | String of string
   | Pigment of Scene.pigment
+  | Normal of Scene.normal
   | Finish of Scene.finish
   | Texture of Scene.texture
   | Interior of Scene.interior
@@ -75,6 +76,7 @@ let kind_name = function
   | Colour _ -> "a colour"
   | String _ -> "a string"
   | Pigment _ -> "a pigment"
+  | Normal _ -> "a normal"
   | Finish _ -> "a finish"
   | Texture _ -> "a texture"
   | Interior _ -> "an interior"
@@ -92,14 +94,14 @@ let kind_name = function
 let terms = function
   | Float _ -> 1
   | Vector a | Colour a -> Array.length a
-  | String _ | Pigment _ | Finish _ | Texture _ | Interior _ | Object _ | Light _ | Camera _ | Array _ | Macro _ | Transform _ | Unsupported _ | File _ | Colour_map _ | Pigment_map _ -> 0
+  | String _ | Pigment _ | Normal _ | Finish _ | Texture _ | Interior _ | Object _ | Light _ | Camera _ | Array _ | Macro _ | Transform _ | Unsupported _ | File _ | Colour_map _ | Pigment_map _ -> 0
 
 (* POVRAY-3.7 §11.2: a float is replicated into every term, a shorter vector is padded with zeros. *)
 let promote v n =
   match v with
   | Float f -> Array.make n f
   | Vector a | Colour a -> Array.init n (fun i -> if i < Array.length a then a.(i) else 0.)
-  | String _ | Pigment _ | Finish _ | Texture _ | Interior _ | Object _ | Light _ | Camera _ | Array _ | Macro _ | Transform _ | Unsupported _ | File _ | Colour_map _ | Pigment_map _ -> invalid_arg "Value.promote"
+  | String _ | Pigment _ | Normal _ | Finish _ | Texture _ | Interior _ | Object _ | Light _ | Camera _ | Array _ | Macro _ | Transform _ | Unsupported _ | File _ | Colour_map _ | Pigment_map _ -> invalid_arg "Value.promote"
 
 let numeric v = terms v > 0
 
@@ -118,4 +120,4 @@ let map f = function
   | Float x -> Some (Float (f x))
   | Vector a -> Some (Vector (Array.map f a))
   | Colour a -> Some (Colour (Array.map f a))
-  | String _ | Pigment _ | Finish _ | Texture _ | Interior _ | Object _ | Light _ | Camera _ | Array _ | Macro _ | Transform _ | Unsupported _ | File _ | Colour_map _ | Pigment_map _ -> None
+  | String _ | Pigment _ | Normal _ | Finish _ | Texture _ | Interior _ | Object _ | Light _ | Camera _ | Array _ | Macro _ | Transform _ | Unsupported _ | File _ | Colour_map _ | Pigment_map _ -> None

@@ -52,6 +52,7 @@ type t =
   | Colour of float array  (** always 5 terms: r g b f t *)
   | String of string
   | Pigment of Scene.pigment
+  | Normal of Scene.normal  (** a declared [normal] *)
   | Finish of Scene.finish
   | Texture of Scene.texture
   | Interior of Scene.interior
