@@ -15,7 +15,12 @@ let f32 = Precision.f32
 type result = Traced.t = { r : float; g : float; b : float; tr : float }
 type nonrec ctx = Context.t
 
-let make_ctx = Context.make
+(* A context for one block. POV-Ray's facets cache belongs to a render thread, and a block is
+   rendered as by a fresh thread: the scene's cache is emptied first. *)
+let make_ctx ?robust (sc : Compiled.t) stats =
+  let reset (s : surface) = match s.bump with Smooth -> () | Bumpy { facets; _ } -> Normals.reset_facets facets in
+  Array.iter (fun (o : obj) -> reset o.surf; Array.iter reset o.face_surfs) sc.objects;
+  Context.make ?robust sc stats
 let black = Traced.black
 
 (* ComputeReflection's direction off a bent normal [n]: the mirror direction, unless it points
@@ -68,11 +73,11 @@ and shade ctx ~reflected obj part depth ~level ~weight ~interiors (o : Vec.t) (d
     | Smooth ->
         let s = match s.paint with Fixed -> s | Varying at -> at { Patterns.normal = n; dir = d } p in
         lit ctx ~reflected obj s depth ~level ~weight ~interiors o d p n ng ~raw:n ~bumpy:false
-    | Bumpy nm ->
+    | Bumpy { normal = nm; facets } ->
         (* trace.cpp: the texture's normal bends N before the pigment is evaluated (whose slope and
            aoi patterns see the bent normal); the bent normal shades, reflects and refracts, and
            the raw one keeps the reflected ray on the surface's side *)
-        let pn = Normals.perturb sc.noise_generator nm p { Patterns.normal = n; dir = d } n in
+        let pn = Normals.perturb ~facets sc.noise_generator nm p { Patterns.normal = n; dir = d } n in
         let s = match s.paint with Fixed -> s | Varying at -> at { Patterns.normal = pn; dir = d } p in
         lit ctx ~reflected obj s depth ~level ~weight ~interiors o d p (Normals.layer_normal nm pn) ng ~raw:n ~bumpy:true
 

@@ -172,28 +172,54 @@ let facet_offsets =
   done;
   Array.of_list (List.rev !l)
 
+(* POV-Ray's facets keeps, per render thread, the random points of the 81 cubes around the last
+   cube it searched, and the hash ("seed") of that cube: a later point whose cube has the same
+   hash reuses them, even when it is another cube (4096 hashes for all cubes). *)
+type facets_cache = { mutable last_seed : int; points : Vec.t array }
+
+(* Facets_Last_Seed starts at 0x80000000, which no hash (0…4095) equals *)
+let no_seed = -0x80000000
+let facets_cache () = { last_seed = no_seed; points = Array.make (Array.length facet_offsets) Vec.zero }
+let reset_facets c = c.last_seed <- no_seed
+
+(* The hash of the cube holding [tv], as PickInCube returns it *)
+let cube_seed (tv : Vec.t) =
+  let fx = floor (tv.x -. Precision.epsilon) and fy = floor (tv.y -. Precision.epsilon) and fz = floor (tv.z -. Precision.epsilon) in
+  Noise.hash3d (int_of_float fx) (int_of_float fy) (int_of_float fz)
+
 (* facets: the nearest random cube point to the scaled normal (or, with coords, to the scaled point)
    under the metric; without coords it becomes the normal, with coords the vector noise there,
-   less its component along the normal, is added to it *)
-let facets ~size ~coords ~metric (q : Vec.t) (n : Vec.t) =
+   less its component along the normal, is added to it. The candidates are the cached ones when
+   the cube's hash is the cache's, else the 81 around [tv] (stored in the cache when there is one). *)
+let facets cache ~size ~coords ~metric (q : Vec.t) (n : Vec.t) =
   let n = Transform.normalize n in
   let tv = if coords then q else n in
   let scale = if size < 1e-6 then 1e6 else 1. /. size in
   let tv = Vec.make (tv.x *. scale) (tv.y *. scale) (tv.z *. scale) in
+  let points =
+    match cache with
+    | Some c ->
+        let seed = cube_seed tv in
+        if seed <> c.last_seed then begin
+          Array.iteri (fun i o -> c.points.(i) <- pick_in_cube (Vec.add tv o)) facet_offsets;
+          c.last_seed <- seed
+        end;
+        c.points
+    | None -> Array.map (fun o -> pick_in_cube (Vec.add tv o)) facet_offsets
+  in
   let distance (c : Vec.t) =
     let dx = c.x -. tv.x and dy = c.y -. tv.y and dz = c.z -. tv.z in
     if metric = 2. then (dx *. dx) +. (dy *. dy) +. (dz *. dz)
     else if metric = 1. then dx +. dy +. dz
     else Float.pow (Float.abs dx) metric +. Float.pow (Float.abs dy) metric +. Float.pow (Float.abs dz) metric
   in
-  let best = ref (pick_in_cube (Vec.add tv facet_offsets.(0))) in
+  let best = ref points.(0) in
   let best_d = ref (distance !best) in
-  for i = 1 to Array.length facet_offsets - 1 do
-    let c = pick_in_cube (Vec.add tv facet_offsets.(i)) in
-    let d = distance c in
+  for i = 1 to Array.length points - 1 do
+    let d = distance points.(i) in
     if d < !best_d then begin
       best_d := d;
-      best := c
+      best := points.(i)
     end
   done;
   if coords then
@@ -243,7 +269,7 @@ let warp_point (nm : Scene.normal) p = Warp.point nm.nwarps nm.npattern p
    the call starts (the slope and aoi patterns read it): every call leaves its result there, so a
    map's second entry and an average's later entries see the one before. [keep_scale] is
    no_bump_scale, passed down from a normal to the normals of its map (Post_Tnormal). *)
-let rec perturb_in gen ~keep_scale (nm : Scene.normal) (p : Vec.t) (hit : Patterns.hit) (n : Vec.t) : Vec.t =
+let rec perturb_in cache gen ~keep_scale (nm : Scene.normal) (p : Vec.t) (hit : Patterns.hit) (n : Vec.t) : Vec.t =
   let keep_scale = keep_scale || nm.no_bump_scale in
   match (nm.nmap, nm.npattern) with
   | Normal_map entries, pat when (match pat with Average -> false | _ -> true) ->
@@ -252,11 +278,11 @@ let rec perturb_in gen ~keep_scale (nm : Scene.normal) (p : Vec.t) (hit : Patter
       let value_of i = f32 entries.(i).nvalue in
       let prev, cur = search (Array.length entries) value_of v in
       let n = warp_normal nm.nwarps ~keep_scale n in
-      let nc = perturb_in gen ~keep_scale entries.(cur).nnormal q hit n in
+      let nc = perturb_in cache gen ~keep_scale entries.(cur).nnormal q hit n in
       let n =
         if prev = cur then nc
         else
-          let np = perturb_in gen ~keep_scale entries.(prev).nnormal q { hit with normal = nc } n in
+          let np = perturb_in cache gen ~keep_scale entries.(prev).nnormal q { hit with normal = nc } n in
           let w2 = (v -. value_of prev) /. (value_of cur -. value_of prev) in
           let w1 = 1.0 -. w2 in
           Vec.make ((w1 *. np.x) +. (w2 *. nc.x)) ((w1 *. np.y) +. (w2 *. nc.y)) ((w1 *. np.z) +. (w2 *. nc.z))
@@ -280,8 +306,8 @@ let rec perturb_in gen ~keep_scale (nm : Scene.normal) (p : Vec.t) (hit : Patter
       | Waves -> own (waves_normal nm amount)
       | Wrinkles -> own (wrinkles amount)
       | Quilted { control0; control1 } -> own (quilted amount control0 control1)
-      | Facets { fsize; coords; fmetric } -> own (facets ~size:fsize ~coords ~metric:fmetric)
-      | Average -> own (average gen ~keep_scale nm hit)
+      | Facets { fsize; coords; fmetric } -> own (facets cache ~size:fsize ~coords ~metric:fmetric)
+      | Average -> own (average cache gen ~keep_scale nm hit)
       | Checker | Gradient _ | Hexagon | Brick _ | Square | Triangular | Cubic | Agate _ | Bozo | Spotted | Granite | Leopard
       | Marble | Wood | Onion | Radial | Cells | Crackle _ | Spiral1 _ | Spiral2 _ | Planar | Boxed | Spherical | Cylindrical
       | Fractal _ | Pavement _ | Tiling _ | Aoi | Slope _ ->
@@ -303,13 +329,13 @@ let rec perturb_in gen ~keep_scale (nm : Scene.normal) (p : Vec.t) (hit : Patter
 
 (* Do_Average_Normals: each entry of the map perturbs the (pattern-space) normal, and the results
    are averaged with the entries' values as weights, summed in single precision *)
-and average gen ~keep_scale (nm : Scene.normal) hit (q : Vec.t) (n : Vec.t) =
+and average cache gen ~keep_scale (nm : Scene.normal) hit (q : Vec.t) (n : Vec.t) =
   let entries = match nm.nmap with Normal_map e -> e | No_map | Slope_map _ -> [||] in
   let sum = ref Vec.zero and total = ref 0. and pnormal = ref hit.Patterns.normal in
   Array.iter
     (fun (e : Scene.normal_entry) ->
       let w = f32 e.nvalue in
-      let v = perturb_in gen ~keep_scale e.nnormal q { hit with normal = !pnormal } n in
+      let v = perturb_in cache gen ~keep_scale e.nnormal q { hit with normal = !pnormal } n in
       pnormal := v;
       sum := Vec.madd !sum w v;
       total := f32 (!total +. w))
@@ -317,7 +343,7 @@ and average gen ~keep_scale (nm : Scene.normal) hit (q : Vec.t) (n : Vec.t) =
   let k = 1.0 /. !total in
   Vec.make (!sum.x *. k) (!sum.y *. k) (!sum.z *. k)
 
-let perturb gen nm p hit n = perturb_in gen ~keep_scale:false nm p hit n
+let perturb ?facets gen nm p hit n = perturb_in facets gen ~keep_scale:false nm p hit n
 
 (* trace.cpp: after a no_bump_scale normal, Vector3d::normalize (a division by the length) *)
 let layer_normal (nm : Scene.normal) (v : Vec.t) =

@@ -1,7 +1,17 @@
 (** Perturbed normals (normal.cpp): a normal pattern bends the surface normal at a point. *)
 
-val perturb : int -> Scene.normal -> Vec.t -> Patterns.hit -> Vec.t -> Vec.t
-(** [perturb gen nm p hit n] is the normal [n] (unit, world space, turned toward the ray) at the
+type facets_cache
+(** The points facets searched last and the hash of their cube, which POV-Ray keeps per render
+    thread and reuses for any later cube of the same hash (normal.cpp, Facets_Last_Seed). *)
+
+val facets_cache : unit -> facets_cache
+(** [facets_cache ()] is an empty cache, as at the start of a POV-Ray render thread. *)
+
+val reset_facets : facets_cache -> unit
+(** [reset_facets c] empties [c]. *)
+
+val perturb : ?facets:facets_cache -> int -> Scene.normal -> Vec.t -> Patterns.hit -> Vec.t -> Vec.t
+(** [perturb ?facets gen nm p hit n] is the normal [n] (unit, world space, turned toward the ray) at the
     world point [p] bent by [nm], as POV-Ray's Perturb_Normal: with a normal_map, the entries'
     normals blended by the pattern's value; else the pattern's own normal function where it has
     one (bumps, dents, ripples, waves, wrinkles, quilted, facets, average), else the
@@ -9,7 +19,9 @@ val perturb : int -> Scene.normal -> Vec.t -> Patterns.hit -> Vec.t -> Vec.t
     all in the normal's own space (its warps' transforms). [hit] is the hit the slope and aoi
     patterns see ([hit.normal] the normal before perturbation); [gen] is the scene's noise
     generator, used where the normal names none. The result is the vector POV-Ray leaves as the
-    intersection's perturbed normal: unit length unless [no_bump_scale] (see {!layer_normal}). *)
+    intersection's perturbed normal: unit length unless [no_bump_scale] (see {!layer_normal}).
+    facets searches the cube points in [facets] when its hash is the cache's (and updates it), as
+    POV-Ray does; without [facets], the points around the point itself. *)
 
 val layer_normal : Scene.normal -> Vec.t -> Vec.t
 (** [layer_normal nm v] is the shading normal from the result [v] of [perturb]: [v] itself, or,
