@@ -19,6 +19,7 @@ let rec parse_rvalue ?(store = ignore) st : V.t * bool =
   | Ident "pigment" -> advance st; (V.Pigment (parse_pigment st (Scene.Solid Colour.black)), false)
   | Ident "finish" -> advance st; (V.Finish (parse_finish st Defaults.finish), false)
   | Ident "normal" -> advance st; (V.Normal (parse_normal st None), false)
+  | Ident "sky_sphere" -> advance st; (V.Sky (Settings.parse_sky st), false)
   | Ident (("color_map" | "colour_map") as kw) -> advance st; (V.Colour_map (parse_colour_map st kw), false)
   | Ident "pigment_map" -> advance st; (V.Pigment_map (parse_pigment_map st), false)
   | Ident "texture" ->

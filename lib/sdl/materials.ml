@@ -405,7 +405,10 @@ let parse_reflection_block st (r : Scene.reflection) : Scene.reflection =
     if peek st == RBrace then (r, false)
     else
       let mn = parse_rgb st "reflection" in
-      if accept st Comma then ({ r with rmin = mn; rmax = parse_rgb st "reflection" }, false)
+      (* the comma between the two colours is optional: any expression starts the second *)
+      ignore (accept st Comma);
+      let vector_ident = match peek st with Ident s -> (match cur_value st s with Some (V.Vector _) -> true | _ -> false) | _ -> false in
+      if float_follows st || is_colour_start st || vector_ident || peek st = Lt then ({ r with rmin = mn; rmax = parse_rgb st "reflection" }, false)
       else ({ r with rmin = mn; rmax = mn }, true)
   in
   let rec loop (r : Scene.reflection) =
@@ -488,6 +491,16 @@ let parse_finish st (base : Scene.finish) : Scene.finish =
 let parse_texture st (base : Scene.texture) : Scene.texture =
   open_block st "texture";
   let t = match ident_of_kind st (function V.Texture t -> Some t | _ -> None) with Some t -> t | None -> base in
+  (* Parse_Texture: pigment, normal and finish identifiers may stand for their blocks here, a
+     concession POV-Ray makes to old scenes ("texture { Jade }") *)
+  let rec ids (t : Scene.texture) =
+    match ident_of_kind st (function V.Pigment p -> Some (`P p) | V.Normal n -> Some (`N n) | V.Finish f -> Some (`F f) | _ -> None) with
+    | Some (`P p) -> ids { t with pigment = p }
+    | Some (`N n) -> ids { t with normal = Some n }
+    | Some (`F f) -> ids { t with finish = f }
+    | None -> t
+  in
+  let t = ids t in
   let rec loop (t : Scene.texture) =
     let loc = peek_loc st in
     match peek st with

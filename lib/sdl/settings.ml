@@ -141,11 +141,12 @@ let parse_global_settings st =
   in
   loop ()
 
-let parse_sky_sphere st =
+(* The block of a sky_sphere after its keyword: a declared sky_sphere's identifier first, whose
+   pigments the new ones are added to (Parse_Skysphere). *)
+let parse_sky st : Scene.sky =
   let loc = peek_loc st in
-  advance st;
   open_block st "sky_sphere";
-  if st.sky <> None then warn st loc "a second sky_sphere replaces the first";
+  let base = Materials.ident_of_kind st (function V.Sky s -> Some s | _ -> None) in
   (* §18.1: the sky's transforms compose into its own transform, which the lookup point goes
      through before each pigment's *)
   let rec loop pigs emission trans =
@@ -163,7 +164,15 @@ let parse_sky_sphere st =
     | Ident s when is_unsupported s -> not_supported l (Printf.sprintf "'%s' in a sky_sphere" s)
     | _ -> unexpected st "'pigment' or '}' in a sky_sphere"
   in
-  st.sky <- Some (loop [] Rgb.white None)
+  match base with
+  | None -> loop [] Rgb.white None
+  | Some b -> loop (List.rev b.sky_pigments) b.sky_emission b.sky_trans
+
+let parse_sky_sphere st =
+  let loc = peek_loc st in
+  advance st;
+  if st.sky <> None then warn st loc "a second sky_sphere replaces the first";
+  st.sky <- Some (parse_sky st)
 
 (* §8.1: the version POV-Ray's renderer sees so far: 3.62 until a #version has been read. *)
 let effective_version st = if st.version_set then st.version else 362

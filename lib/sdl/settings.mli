@@ -12,6 +12,10 @@ val build_camera : Reader.st -> Reader.camera_spec -> Scene.camera
 val parse_global_settings : Reader.st -> unit
 (** [parse_global_settings st] reads a global_settings block (after the keyword). *)
 
+val parse_sky : Reader.st -> Scene.sky
+(** [parse_sky st] reads a sky_sphere block after its keyword: a declared sky_sphere first, if
+    any, to which its pigments are added. *)
+
 val parse_sky_sphere : Reader.st -> unit
 (** [parse_sky_sphere st] reads a sky_sphere (the keyword is the next token). *)
 

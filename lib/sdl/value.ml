@@ -52,6 +52,7 @@ type t =
   | String of string
   | Pigment of Scene.pigment
   | Normal of Scene.normal
+  | Sky of Scene.sky
   | Finish of Scene.finish
   | Texture of Scene.texture
   | Interior of Scene.interior
@@ -77,6 +78,7 @@ let kind_name = function
   | String _ -> "a string"
   | Pigment _ -> "a pigment"
   | Normal _ -> "a normal"
+  | Sky _ -> "a sky_sphere"
   | Finish _ -> "a finish"
   | Texture _ -> "a texture"
   | Interior _ -> "an interior"
@@ -94,14 +96,14 @@ let kind_name = function
 let terms = function
   | Float _ -> 1
   | Vector a | Colour a -> Array.length a
-  | String _ | Pigment _ | Normal _ | Finish _ | Texture _ | Interior _ | Object _ | Light _ | Camera _ | Array _ | Macro _ | Transform _ | Unsupported _ | File _ | Colour_map _ | Pigment_map _ -> 0
+  | String _ | Pigment _ | Normal _ | Sky _ | Finish _ | Texture _ | Interior _ | Object _ | Light _ | Camera _ | Array _ | Macro _ | Transform _ | Unsupported _ | File _ | Colour_map _ | Pigment_map _ -> 0
 
 (* POVRAY-3.7 §11.2: a float is replicated into every term, a shorter vector is padded with zeros. *)
 let promote v n =
   match v with
   | Float f -> Array.make n f
   | Vector a | Colour a -> Array.init n (fun i -> if i < Array.length a then a.(i) else 0.)
-  | String _ | Pigment _ | Normal _ | Finish _ | Texture _ | Interior _ | Object _ | Light _ | Camera _ | Array _ | Macro _ | Transform _ | Unsupported _ | File _ | Colour_map _ | Pigment_map _ -> invalid_arg "Value.promote"
+  | String _ | Pigment _ | Normal _ | Sky _ | Finish _ | Texture _ | Interior _ | Object _ | Light _ | Camera _ | Array _ | Macro _ | Transform _ | Unsupported _ | File _ | Colour_map _ | Pigment_map _ -> invalid_arg "Value.promote"
 
 let numeric v = terms v > 0
 
@@ -120,4 +122,4 @@ let map f = function
   | Float x -> Some (Float (f x))
   | Vector a -> Some (Vector (Array.map f a))
   | Colour a -> Some (Colour (Array.map f a))
-  | String _ | Pigment _ | Normal _ | Finish _ | Texture _ | Interior _ | Object _ | Light _ | Camera _ | Array _ | Macro _ | Transform _ | Unsupported _ | File _ | Colour_map _ | Pigment_map _ -> None
+  | String _ | Pigment _ | Normal _ | Sky _ | Finish _ | Texture _ | Interior _ | Object _ | Light _ | Camera _ | Array _ | Macro _ | Transform _ | Unsupported _ | File _ | Colour_map _ | Pigment_map _ -> None

@@ -53,6 +53,7 @@ type t =
   | String of string
   | Pigment of Scene.pigment
   | Normal of Scene.normal  (** a declared [normal] *)
+  | Sky of Scene.sky  (** a declared [sky_sphere] *)
   | Finish of Scene.finish
   | Texture of Scene.texture
   | Interior of Scene.interior

@@ -28,3 +28,9 @@ val hash2d : int -> int -> int
 val random_double : int -> float
 (** [random_double i] is the [i]th value (taken modulo 32768, [i] ≥ 0) of POV-Ray's
     RandomDoubleSequence(0, 1, 32768), the table behind PatternRands and WarpRands. *)
+
+val wave_source : int -> Vec.t
+(** [wave_source i] is the centre of the [i]th (from 0) wave of the waves and ripples patterns. *)
+
+val wave_frequency : int -> float
+(** [wave_frequency i] is the frequency of the [i]th wave, in [0.01, 1.01). *)

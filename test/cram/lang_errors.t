@@ -374,33 +374,33 @@ Mathematical and string errors:
         |                ^
   [1]
 
-Declared values that povml cannot render yet are an error only where they are used: Jade in
-textures.inc uses a marble pigment; in the main file the declaration also warns.
+Declared values that povml cannot render yet are an error only where they are used: DMFWood6 in
+textures.inc is a layered texture; in the main file the declaration also warns.
 
   $ cat > jade.pov <<'POV'
   > #include "textures.inc"
-  > sphere { 0, 1 texture { Jade } }
+  > sphere { 0, 1 texture { DMFWood6 } }
   > POV
   $ povml --dump jade.pov
-  jade.pov:2:25: error: not supported yet: 'marble' in a pigment (used through 'Jade')
-      2 | sphere { 0, 1 texture { Jade } }
+  jade.pov:2:25: error: not supported yet: layered textures (used through 'DMFWood6')
+      2 | sphere { 0, 1 texture { DMFWood6 } }
         |                         ^
-  /usr/share/povray-3.7/include/textures.inc:63:5: note: 'Jade' was declared here
+  /usr/share/povray-3.7/include/textures.inc:518:1: note: 'DMFWood6' was declared here
   [1]
   $ cat > unsup3.pov <<'POV'
   > #version 3.7;
   > global_settings { assumed_gamma 1 }
-  > #declare P = pigment { marble }
+  > #declare P = pigment { function { x } }
   > #declare Q = pigment { rgb 1 }
   > sphere { 0, 1 pigment { Q } }
   > POV
   $ povml --dump unsup3.pov > /dev/null
-  unsup3.pov:3:1: warning: 'P' uses 'marble' in a pigment, which povml does not support yet; using it will be an error
-      3 | #declare P = pigment { marble }
+  unsup3.pov:3:1: warning: 'P' uses 'function' as a pattern, which povml does not support yet; using it will be an error
+      3 | #declare P = pigment { function { x } }
         | ^
   $ echo 'sphere { 0, 1 pigment { P } }' >> unsup3.pov
   $ povml --dump unsup3.pov
-  unsup3.pov:6:25: error: not supported yet: 'marble' in a pigment (used through 'P')
+  unsup3.pov:6:25: error: not supported yet: 'function' as a pattern (used through 'P')
       6 | sphere { 0, 1 pigment { P } }
         |                         ^
   unsup3.pov:3:24: note: 'P' was declared here
@@ -411,10 +411,16 @@ textures.inc uses a marble pigment; in the main file the declaration also warns.
   > sphere { 0, R normal { N } }
   > POV
   $ povml --dump unsup.pov
-  unsup.pov:3:15: error: not supported yet: 'normal'
-      3 | sphere { 0, R normal { N } }
-        |               ^
-  [1]
+  // version 3.62, no gamma correction
+  global_settings { max_trace_level 5 adc_bailout 0.003921568627 ambient_light rgb <1, 1, 1> }
+  camera { location <0, 0, 0> direction <0, 0, 1> up <0, 1, 0> right <1.33, 0, 0> }
+  background { rgbft <0, 0, 0, 0, 1> }
+  sphere { <0, 0, 0>, 2
+    texture { pigment { rgb <0, 0, 0> } normal { bumps 0.5 accuracy 0.01999999955 frequency 1 phase 0 } }
+  } // unsup.pov:3:1
+  // 1 objects, 0 lights
+  warning: assumed_gamma not specified, so gamma correction is turned off for compatibility with this pre POV-Ray 3.7 scene
+  warning: this scene did not contain a #version directive; it is rendered as a POV-Ray 3.62 scene (no gamma correction, legacy transparency); add '#version 3.7;' at the start
 
 A macro call with such an argument is such a value too: it is skipped through the call's ')', so
 the sphere after it is read, and using it is the error (POV-Ray renders both scenes: it has wood;
@@ -424,17 +430,17 @@ textures/pigments/blkhole.pov calls Correct_Pigment_Gamma(pigment { DMFWood4 …
   > #version 3.7;
   > global_settings { assumed_gamma 1 }
   > #macro M(P, G) pigment { P } #end
-  > #declare Tree = M(pigment { wood }, 2.2)
+  > #declare Tree = M(pigment { function { x } }, 2.2)
   > sphere { 0, 1 pigment { rgb 1 } }
   > POV
   $ povml --dump macroarg.pov | tail -1
-  macroarg.pov:4:1: warning: 'Tree' uses 'wood' in a pigment, which povml does not support yet; using it will be an error
-      4 | #declare Tree = M(pigment { wood }, 2.2)
+  macroarg.pov:4:1: warning: 'Tree' uses 'function' as a pattern, which povml does not support yet; using it will be an error
+      4 | #declare Tree = M(pigment { function { x } }, 2.2)
         | ^
   // 1 objects, 0 lights
   $ echo 'sphere { 0, 1 pigment { Tree } }' >> macroarg.pov
   $ povml --dump macroarg.pov
-  macroarg.pov:6:25: error: not supported yet: 'wood' in a pigment (used through 'Tree')
+  macroarg.pov:6:25: error: not supported yet: 'function' as a pattern (used through 'Tree')
       6 | sphere { 0, 1 pigment { Tree } }
         |                         ^
   macroarg.pov:4:29: note: 'Tree' was declared here

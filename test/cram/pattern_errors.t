@@ -63,21 +63,21 @@ brick_size and mortar belong to brick; gradient needs a direction:
 
 A pattern povml does not read yet, directly and through a declaration:
 
-  $ printf 'plane { y, 0 pigment { wood } }\n' > wood.pov
+  $ printf 'plane { y, 0 pigment { function { x } } }\n' > wood.pov
   $ povml wood.pov +W10 +H10 -D
-  wood.pov:1:24: error: not supported yet: 'wood' in a pigment
-      1 | plane { y, 0 pigment { wood } }
+  wood.pov:1:24: error: not supported yet: 'function' as a pattern
+      1 | plane { y, 0 pigment { function { x } } }
         |                        ^
   [1]
   $ cat > turb.pov <<'POV'
-  > #declare P = pigment { gradient x turbulence 0.5 }
+  > #declare P = pigment { pigment_pattern { checker } warp { turbulence 0.5 } }
   > plane { y, 0 pigment { P } }
   > POV
   $ povml turb.pov +W10 +H10 -D
-  turb.pov:2:24: error: not supported yet: 'turbulence' in a pigment (used through 'P')
+  turb.pov:2:24: error: not supported yet: 'pigment_pattern' as a pattern (used through 'P')
       2 | plane { y, 0 pigment { P } }
         |                        ^
-  turb.pov:1:35: note: 'P' was declared here
+  turb.pov:1:24: note: 'P' was declared here
   [1]
 
 The dump shows a pattern pigment with its whole map and its transform, object transforms

@@ -28,6 +28,8 @@ let () =
       ("Text", Test_text.tests);
       ("CSG", Test_csg.tests);
       ("Patterns", Test_patterns.tests);
+      ("Noise", Test_noise.tests);
+      ("Warp", Test_warp.tests);
       ("Trace", Test_trace.tests);
       ("Render", Test_render.tests);
       ("Jitter", Test_jitter.tests);

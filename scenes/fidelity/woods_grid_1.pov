@@ -1,0 +1,19 @@
+// povml fidelity scene: woods_grid_1
+// Rule: woods.inc's textures as POV-Ray renders them: P_WoodGrain1A, P_WoodGrain1B, P_WoodGrain2A, P_WoodGrain2B, P_WoodGrain3A, P_WoodGrain3B, P_WoodGrain4A, P_WoodGrain4B, P_WoodGrain5A
+// Nine tiles, each a slanted box with one texture, lit by one light (a pigment is shown with
+// the default finish).
+#version 3.7;
+global_settings { assumed_gamma 1 }
+#include "colors.inc"
+#include "woods.inc"
+camera { location <0, 6, -5> look_at <0, 0, 0> angle 50 }
+light_source { <-3, 10, -6> rgb 1 }
+box { <-1, -0.1, -1>, <1, 0.1, 1> pigment { P_WoodGrain1A } rotate <10, 0, 0> translate <-2.1, 0, 2.1> }
+box { <-1, -0.1, -1>, <1, 0.1, 1> pigment { P_WoodGrain1B } rotate <10, 17, 0> translate <0.0, 0, 2.1> }
+box { <-1, -0.1, -1>, <1, 0.1, 1> pigment { P_WoodGrain2A } rotate <10, 34, 0> translate <2.1, 0, 2.1> }
+box { <-1, -0.1, -1>, <1, 0.1, 1> pigment { P_WoodGrain2B } rotate <10, 51, 0> translate <-2.1, 0, 0.0> }
+box { <-1, -0.1, -1>, <1, 0.1, 1> pigment { P_WoodGrain3A } rotate <10, 68, 0> translate <0.0, 0, 0.0> }
+box { <-1, -0.1, -1>, <1, 0.1, 1> pigment { P_WoodGrain3B } rotate <10, 85, 0> translate <2.1, 0, 0.0> }
+box { <-1, -0.1, -1>, <1, 0.1, 1> pigment { P_WoodGrain4A } rotate <10, 102, 0> translate <-2.1, 0, -2.1> }
+box { <-1, -0.1, -1>, <1, 0.1, 1> pigment { P_WoodGrain4B } rotate <10, 119, 0> translate <0.0, 0, -2.1> }
+box { <-1, -0.1, -1>, <1, 0.1, 1> pigment { P_WoodGrain5A } rotate <10, 136, 0> translate <2.1, 0, -2.1> }
