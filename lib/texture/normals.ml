@@ -66,38 +66,19 @@ let cycloidal v =
    integers) *)
 let pov_floor x = if x >= 0. then floor x else 0. -. floor (0. -. x) -. 1.
 
-(* C's 32-bit int arithmetic, which Initialize_Waves's random numbers wrap in *)
-let wrap32 x =
-  let x = x land 0xFFFFFFFF in
-  if x >= 0x80000000 then x - 0x100000000 else x
-
+(* POV-Ray's default number_of_waves; Scene.t has no global_settings { number_of_waves } *)
 let number_of_waves = 10
 
-type waves = { sources : Vec.t array; frequencies : float array }
-
-(* Initialize_Waves with POV-Ray's default number_of_waves (10): the sources are the vector noise
-   at <i, 0, 0> made unit (Vector3d::normalized divides by the length), the frequencies come from a
-   linear congruential sequence. Built on first use: the vector noise is another module's table. *)
-let waves =
-  lazy
-    (let sources = Array.make number_of_waves Vec.zero and frequencies = Array.make number_of_waves 0. in
-     let next = ref (-560851967) in
-     for i = 0 to number_of_waves - 1 do
-       let d = Noise.dnoise (Vec.make (float_of_int i) 0. 0.) in
-       let l = sqrt ((d.x *. d.x) +. (d.y *. d.y) +. (d.z *. d.z)) in
-       sources.(i) <- (if l <> 0. then Vec.make (d.x /. l) (d.y /. l) (d.z /. l) else d);
-       next := wrap32 ((!next * 1812433253) + 12345);
-       frequencies.(i) <- (float_of_int ((!next asr 16) land 0x7FFF) *. 0.000030518509476) +. 0.01
-     done;
-     { sources; frequencies })
+(* Initialize_Waves: the sources and frequencies of the waves, built once *)
+let wave_sources = Array.init number_of_waves Noise.wave_source
+let wave_frequencies = Array.init number_of_waves Noise.wave_frequency
 
 (* ripples: each source adds the vector from it to the point, scaled by the sine of its distance *)
 let ripples (nm : Scene.normal) amount (q : Vec.t) (n : Vec.t) =
-  let w = Lazy.force waves in
   let count = float_of_int number_of_waves in
   let n = ref n in
   for i = 0 to number_of_waves - 1 do
-    let pt = Vec.sub q w.sources.(i) in
+    let pt = Vec.sub q wave_sources.(i) in
     let len = sqrt ((pt.x *. pt.x) +. (pt.y *. pt.y) +. (pt.z *. pt.z)) in
     let len = if len = 0. then 1. else len in
     let index = (len *. f32 nm.nfrequency) +. f32 nm.nphase in
@@ -108,14 +89,13 @@ let ripples (nm : Scene.normal) amount (q : Vec.t) (n : Vec.t) =
 
 (* waves: as ripples, each source with its own frequency, its amplitude divided by it *)
 let waves_normal (nm : Scene.normal) amount (q : Vec.t) (n : Vec.t) =
-  let w = Lazy.force waves in
   let count = float_of_int number_of_waves in
   let n = ref n in
   for i = 0 to number_of_waves - 1 do
-    let pt = Vec.sub q w.sources.(i) in
+    let pt = Vec.sub q wave_sources.(i) in
     let len = sqrt ((pt.x *. pt.x) +. (pt.y *. pt.y) +. (pt.z *. pt.z)) in
     let len = if len = 0. then 1. else len in
-    let fr = w.frequencies.(i) in
+    let fr = wave_frequencies.(i) in
     let index = (len *. f32 nm.nfrequency *. fr) +. f32 nm.nphase in
     let scalar = cycloidal index *. amount /. fr in
     n := Vec.madd !n (scalar /. (len *. count)) pt

@@ -149,3 +149,29 @@ let tests =
     Alcotest.test_case "quilted" `Quick test_quilted;
     Alcotest.test_case "cycloidal" `Quick test_cycloidal;
   ]
+
+(* facets with coords 1, size 1: the cube points nearest the point itself. POV-Ray's cache holds
+   the points around the last cube and is reused for a later cube of the same hash. *)
+let test_facets_cache () =
+  let nm = normal (Facets { fsize = 1.; coords = true; fmetric = 2. }) 0.5 in
+  let at p = Normals.perturb 2 nm p hit up in
+  (* a cube other than <0,0,0>'s with the same hash *)
+  let h0 = Noise.hash3d 0 0 0 in
+  let rec find i = if Noise.hash3d i 0 0 = h0 then i else find (i + 1) in
+  let i = find 1 in
+  let a = v 0.5 0.5 0.5 and b = v (float_of_int i +. 0.5) 0.5 0.5 in
+  let cache = Normals.facets_cache () in
+  let cached p = Normals.perturb ~facets:cache 2 nm p hit up in
+  vec_eq ~eps:0. "a fresh cache: the points around the point" (at a) (cached a);
+  let stale = cached b in
+  Alcotest.(check bool) "the same hash elsewhere reuses the points" false (Vec.sub stale (at b) = Vec.zero);
+  vec_eq ~eps:0. "the cached points are the first cube's" (Normals.perturb 2 nm (v 0.5 0.5 0.5) hit up) (cached (v 0.5 0.5 0.5));
+  Normals.reset_facets cache;
+  vec_eq ~eps:0. "after a reset" (at b) (cached b);
+  (* the normal without coords: the nearest cube point to 10·N, unit after the unwarp *)
+  let plain = normal (Facets { fsize = 0.1; coords = false; fmetric = 2. }) 0.5 in
+  float_eq ~eps:1e-15 "facets: unit" 1. (Vec.length (Normals.perturb 2 plain (v 0.3 0. 0.2) hit up));
+  Alcotest.(check bool) "facets: the same normal within a facet" true
+    (Normals.perturb 2 plain (v 0.3 0. 0.2) hit up = Normals.perturb 2 plain (v 5. 0. (-3.)) hit up)
+
+let tests = tests @ [ Alcotest.test_case "facets and its cache" `Quick test_facets_cache ]
