@@ -4,8 +4,9 @@
    lecture adds k_r·RayTrace(R) before k_t·RayTrace(T); POV-Ray traces the transmitted ray first,
    and so does this tracer, because the order shows in the shadow cache. POVRAY-3.7 §2–§7. The colour seen along a ray is
    a function of the compiled scene and the ray; what each step needs lives in a module of its own:
-   Nearest (the nearest hit and POV-Ray's tie rules), Lighting and Shadow (local illumination and
-   shadow feelers), Optics (Fresnel, interiors, fade), Sky, Robust (the robust mode's origins). *)
+   Nearest (the nearest hit and POV-Ray's tie rules), Normals (a texture's normal bending the
+   surface normal), Lighting and Shadow (local illumination and shadow feelers), Optics (Fresnel,
+   interiors, fade), Sky, Robust (the robust mode's origins). *)
 
 open Compiled
 open Context
@@ -69,76 +70,65 @@ and shade ctx ~reflected obj part depth ~level ~weight ~interiors (o : Vec.t) (d
     let n = if Vec.dot n d > 0. then Vec.neg n else n in
     (* where secondary rays leave from in the robust mode *)
     let ng = if ctx.robust then Shape.geometric_normal obj part p else n in
-    match s.bump with
-    | Smooth ->
-        let s = match s.paint with Fixed -> s | Varying at -> at { Patterns.normal = n; dir = d } p in
-        lit ctx ~reflected obj s depth ~level ~weight ~interiors o d p n ng ~raw:n ~bumpy:false
-    | Bumpy { normal = nm; facets } ->
-        (* trace.cpp: the texture's normal bends N before the pigment is evaluated (whose slope and
-           aoi patterns see the bent normal); the bent normal shades, reflects and refracts, and
-           the raw one keeps the reflected ray on the surface's side *)
-        let pn = Normals.perturb ~facets sc.noise_generator nm p { Patterns.normal = n; dir = d } n in
-        let s = match s.paint with Fixed -> s | Varying at -> at { Patterns.normal = pn; dir = d } p in
-        lit ctx ~reflected obj s depth ~level ~weight ~interiors o d p (Normals.layer_normal nm pn) ng ~raw:n ~bumpy:true
-
-(* The surface [s] at the hit point [p], lit and shaded with the normal [n]: [raw] is the shape's
-   normal turned toward the ray, which [n] is too unless the surface is [bumpy], and [ng] the normal
-   secondary rays leave by in the robust mode. *)
-and lit ctx ~reflected obj s depth ~level ~weight ~interiors (o : Vec.t) (d : Vec.t) p n ng ~raw ~bumpy : result =
-  let sc = ctx.scene in
-  let e = if ctx.robust then Robust.error_bound o p obj.mag else 0. in
-  (* k_r, the reflection colour at the cosine of incidence N·E (E = −d, the way to the eye) *)
-  let ci = -.Vec.dot d n in
-  let refl = if s.reflects then Optics.reflectivity sc s obj interiors ci else Rgb.black in
-  (* §5.2: the reflected ray's weight, taken before the metallic tint *)
-  let w_refl =
-    f32 (if s.refl.fresnel then weight *. Rgb.max3 refl else weight *. Float.max (Rgb.max3 s.refl.rmax) (Rgb.max3 s.refl.rmin))
-  in
-  let refl = if s.reflects && s.refl.refl_metallic <> 0. then Lighting.metallic_factor s.refl.refl_metallic ci s.colour refl else refl in
-  (* local illumination: ambient and emission, then each light through its shadow feeler *)
-  let local = if s.lit then Lighting.add_lights ctx ~level ~di:obj.double_illuminate s p n ng e d interiors s.emitted else s.emitted in
-  (* the transmitted ray, weighted by k_t, the filter colour (§6). POV-Ray traces it before the
-     reflected ray, and the order shows: both rays' shadow feelers share the shadow cache *)
-  let local, tr, tir =
-    if not s.transparent then (local, 0., false)
-    else
-      let filcol = Optics.conserved s refl in
-      let trans = Float.min 1. (Float.abs (Rgb.intensity filcol)) in
-      (* a ray too weak to matter (below adc_bailout) is not traced *)
-      if not (trans > sc.adc_bailout) then (local, 0., false)
+    (* normal.cpp: a texture's normal bends N before the pigment is evaluated, whose slope and
+       aoi patterns see the bent normal [pn]; [sn], the bent normal made unit, shades, reflects
+       and refracts, and the raw N keeps the reflected ray on the surface's side (trace.cpp) *)
+    let pn = match s.bump with Smooth -> n | Bumpy b -> Normals.perturb ~facets:b.facets sc.noise_generator b.normal p { Patterns.normal = n; dir = d } n in
+    let s = match s.paint with Fixed -> s | Varying at -> at { Patterns.normal = pn; dir = d } p in
+    let sn = match s.bump with Smooth -> n | Bumpy b -> Normals.layer_normal b.normal pn in
+    let e = if ctx.robust then Robust.error_bound o p obj.mag else 0. in
+    (* k_r, the reflection colour at the cosine of incidence N·E (E = −d, the way to the eye) *)
+    let ci = -.Vec.dot d sn in
+    let refl = if s.reflects then Optics.reflectivity sc s obj interiors ci else Rgb.black in
+    (* §5.2: the reflected ray's weight, taken before the metallic tint *)
+    let w_refl =
+      f32 (if s.refl.fresnel then weight *. Rgb.max3 refl else weight *. Float.max (Rgb.max3 s.refl.rmax) (Rgb.max3 s.refl.rmin))
+    in
+    let refl = if s.reflects && s.refl.refl_metallic <> 0. then Lighting.metallic_factor s.refl.refl_metallic ci s.colour refl else refl in
+    (* local illumination: ambient and emission, then each light through its shadow feeler *)
+    let local = if s.lit then Lighting.add_lights ctx ~level ~di:obj.double_illuminate s p sn ng e d interiors s.emitted else s.emitted in
+    (* the transmitted ray, weighted by k_t, the filter colour (§6). POV-Ray traces it before the
+       reflected ray, and the order shows: both rays' shadow feelers share the shadow cache *)
+    let local, tr, tir =
+      if not s.transparent then (local, 0., false)
       else
-        let w = f32 (weight *. Float.max (Float.abs filcol.r) (Float.max (Float.abs filcol.g) (Float.abs filcol.b))) in
-        let ct, tir = refract ctx ~reflected obj ~level ~weight:w ~interiors p ng e d n ~raw ~bumpy in
-        (* the interior's fade when the ray travelled inside [obj] *)
-        let att = Rgb.grey obj.old_refract in
-        let att = if Optics.fades obj && List.mem obj.iid interiors then Optics.fade obj depth att else att in
-        if tir then (Rgb.make (f32 (local.r +. f32 (att.r *. ct.r))) (f32 (local.g +. f32 (att.g *. ct.g))) (f32 (local.b +. f32 (att.b *. ct.b))), 0., true)
+        let filcol = Optics.conserved s refl in
+        let trans = Float.min 1. (Float.abs (Rgb.intensity filcol)) in
+        (* a ray too weak to matter (below adc_bailout) is not traced *)
+        if not (trans > sc.adc_bailout) then (local, 0., false)
         else
-          ( Rgb.make
-              (f32 (local.r +. f32 (f32 (att.r *. ct.r) *. filcol.r)))
-              (f32 (local.g +. f32 (f32 (att.g *. ct.g) *. filcol.g)))
-              (f32 (local.b +. f32 (f32 (att.b *. ct.b) *. filcol.b))),
-            f32 (Rgb.intensity att *. ct.tr *. trans),
-            false )
-  in
-  (* the reflected ray R = −E + 2(N·E)N, weighted by k_r (§5.3); none after total internal
-     reflection, which was the reflected ray already *)
-  if tir || Rgb.is_zero refl then { r = local.r; g = local.g; b = local.b; tr }
-  else
-    let rd = if bumpy then bent_reflection d n raw else Vec.normalize (Vec.madd d (-2. *. Vec.dot d n) n) in
-    ctx.stats.reflected_rays <- ctx.stats.reflected_rays + 1;
-    let c = trace_ray ctx ~reflected:true ~level ~weight:w_refl ~interiors ~continued:false (Robust.origin ctx p ng e rd) rd in
-    let e = s.refl.exponent in
-    if e <> 1. then
-      let ie = 1. /. e in
-      let ie = f32 ie in
-      { r = f32 (local.r +. (refl.r *. Float.pow c.r ie)); g = f32 (local.g +. (refl.g *. Float.pow c.g ie)); b = f32 (local.b +. (refl.b *. Float.pow c.b ie)); tr }
-    else { r = f32 (local.r +. f32 (refl.r *. c.r)); g = f32 (local.g +. f32 (refl.g *. c.g)); b = f32 (local.b +. f32 (refl.b *. c.b)); tr }
+          let w = f32 (weight *. Float.max (Float.abs filcol.r) (Float.max (Float.abs filcol.g) (Float.abs filcol.b))) in
+          let ct, tir = refract ctx ~reflected obj ~level ~weight:w ~interiors p ng e d sn ~raw:n ~bump:s.bump in
+          (* the interior's fade when the ray travelled inside [obj] *)
+          let att = Rgb.grey obj.old_refract in
+          let att = if Optics.fades obj && List.mem obj.iid interiors then Optics.fade obj depth att else att in
+          if tir then (Rgb.make (f32 (local.r +. f32 (att.r *. ct.r))) (f32 (local.g +. f32 (att.g *. ct.g))) (f32 (local.b +. f32 (att.b *. ct.b))), 0., true)
+          else
+            ( Rgb.make
+                (f32 (local.r +. f32 (f32 (att.r *. ct.r) *. filcol.r)))
+                (f32 (local.g +. f32 (f32 (att.g *. ct.g) *. filcol.g)))
+                (f32 (local.b +. f32 (f32 (att.b *. ct.b) *. filcol.b))),
+              f32 (Rgb.intensity att *. ct.tr *. trans),
+              false )
+    in
+    (* the reflected ray R = −E + 2(N·E)N, weighted by k_r (§5.3); none after total internal
+       reflection, which was the reflected ray already *)
+    if tir || Rgb.is_zero refl then { r = local.r; g = local.g; b = local.b; tr }
+    else
+      let rd = match s.bump with Smooth -> Vec.normalize (Vec.madd d (-2. *. Vec.dot d n) n) | Bumpy _ -> bent_reflection d sn n in
+      ctx.stats.reflected_rays <- ctx.stats.reflected_rays + 1;
+      let c = trace_ray ctx ~reflected:true ~level ~weight:w_refl ~interiors ~continued:false (Robust.origin ctx p ng e rd) rd in
+      let e = s.refl.exponent in
+      if e <> 1. then
+        let ie = 1. /. e in
+        let ie = f32 ie in
+        { r = f32 (local.r +. (refl.r *. Float.pow c.r ie)); g = f32 (local.g +. (refl.g *. Float.pow c.g ie)); b = f32 (local.b +. (refl.b *. Float.pow c.b ie)); tr }
+      else { r = f32 (local.r +. f32 (refl.r *. c.r)); g = f32 (local.g +. f32 (refl.g *. c.g)); b = f32 (local.b +. f32 (refl.b *. c.b)); tr }
 
 (* §6.2: the transmitted ray by Snell's law, n₁ sin θ₁ = n₂ sin θ₂, with the ratio of the indices
    of the interiors the ray leaves and enters; its colour, and whether total internal reflection
    happened (no real θ₂: the ray is reflected instead). *)
-and refract ctx ~reflected obj ~level ~weight ~interiors p ng e d n ~raw ~bumpy : result * bool =
+and refract ctx ~reflected obj ~level ~weight ~interiors p ng e d n ~raw ~bump : result * bool =
   let sc = ctx.scene in
   let ior, inner =
     match interiors with
@@ -157,7 +147,7 @@ and refract ctx ~reflected obj ~level ~weight ~interiors p ng e d n ~raw ~bumpy 
     (* cos² θ₂ = 1 − (n₁/n₂)²(1 − cos² θ₁) *)
     let t = 1. +. (ior *. ior *. ((nn *. nn) -. 1.)) in
     if t < 0. then
-      let rd = if bumpy then bent_reflection d n raw else Vec.normalize (Vec.madd d (-2. *. dn) n) in
+      let rd = match bump with Smooth -> Vec.normalize (Vec.madd d (-2. *. dn) n) | Bumpy _ -> bent_reflection d n raw in
       (* total internal reflection: a reflected ray (§16.6) *)
       (trace_ray ctx ~reflected:true ~level ~weight ~interiors ~continued:false (Robust.origin ctx p ng e rd) rd, true)
     else
