@@ -87,7 +87,8 @@ and inner gen (pg : Scene.pigment) hit q =
   | Solid c | Solid_placed { colour = c; _ } -> f32_colour c
   | Pattern p -> at_pattern_point gen p hit (warped p q)
 
-and warped (p : Scene.patterned) q = match p.warps with [] -> q | ws -> Warp.point ws p.pattern q
+(* Warp_EPoint: the warps, then the clamp of every coordinate to ±1e17, even without warps *)
+and warped (p : Scene.patterned) q = Warp.point p.warps p.pattern q
 
 let eval gen (p : Scene.patterned) hit (x : Vec.t) = at_pattern_point gen p hit (warped p x)
 

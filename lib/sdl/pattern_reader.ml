@@ -48,6 +48,35 @@ let unit_vector st =
   if len = 0. then Error.raise_at loc "a zero-length vector cannot be normalised";
   Vec.scale (1. /. len) v
 
+(* Check_BH_Parameters, run when a repeating black hole gets its repeat or its turbulence: on each
+   repeated axis the centre is at least the radius, and the repeat at least the centre plus the
+   radius plus the uncertainty (with a warning), or ignored below 1e-10 *)
+let check_black_hole st loc (centre : Vec.t) radius (repeat : Vec.t) (uncertainty : Vec.t option) =
+  let u = Option.value uncertainty ~default:Vec.zero in
+  let axis name c r u =
+    if r > 0. then begin
+      let c = if c < radius then radius else c in
+      let r =
+        if r < c +. radius +. u then begin
+          let r = c +. radius +. u in
+          warn st loc "black hole repeat vector %s too small; increased to %g" name r;
+          r
+        end
+        else r
+      in
+      if r < Precision.epsilon then begin
+        warn st loc "black hole repeat vector %s is less than %f; ignored" name (Precision.f32 Precision.epsilon);
+        (c, 0.)
+      end
+      else (c, r)
+    end
+    else (c, r)
+  in
+  let cx, rx = axis "X" centre.x repeat.x u.x in
+  let cy, ry = axis "Y" centre.y repeat.y u.y in
+  let cz, rz = axis "Z" centre.z repeat.z u.z in
+  (Vec.make cx cy cz, Vec.make rx ry rz)
+
 (* warp { … } after the keyword: one warp, pushed on the head of the list (Parse_Warp) *)
 let parse_warp st (ws : Scene.warp list) : Scene.warp list =
   open_block st "warp";
@@ -98,8 +127,19 @@ let parse_warp st (ws : Scene.warp list) : Scene.warp list =
           | Black_hole r, Ident "falloff" -> advance st; mods (Black_hole { r with power = parse_float st })
           | Black_hole r, Ident "inverse" -> advance st; mods (Black_hole { r with inverted = true })
           | Black_hole r, Ident "type" -> advance st; mods (Black_hole { r with bh_type = int_of_float (parse_float st) })
-          | Black_hole r, Ident "repeat" -> advance st; mods (Black_hole { r with repeat = Some (parse_vector st) })
-          | Black_hole r, Ident "turbulence" -> advance st; mods (Black_hole { r with uncertainty = Some (parse_vector st) })
+          | Black_hole r, Ident "repeat" ->
+              advance st;
+              let v = parse_vector st in
+              let centre, repeat = check_black_hole st loc r.centre r.radius v r.uncertainty in
+              mods (Black_hole { r with centre; repeat = Some repeat })
+          | Black_hole r, Ident "turbulence" -> (
+              advance st;
+              let u = parse_vector st in
+              match r.repeat with
+              | None -> mods (Black_hole { r with uncertainty = Some u })
+              | Some v ->
+                  let centre, repeat = check_black_hole st loc r.centre r.radius v (Some u) in
+                  mods (Black_hole { r with centre; repeat = Some repeat; uncertainty = Some u }))
           | _ -> b
         in
         mods (Black_hole { centre; radius; strength = 1.; power = 2.; inverted = false; bh_type = 0; repeat = None; uncertainty = None })

@@ -3,7 +3,8 @@
    never written again. The arithmetic follows texture.cpp operation for operation: the same sums
    in the same order, C's truncating (int) casts, its 32-bit wrap-around and its masks, so the
    values are POV-Ray's to the last bit. The functions are written to allocate nothing but their
-   result: helpers are [@inline] so that their floats stay unboxed. *)
+   result (and one three-float scratch record for the vector noise): the helpers are [@inline]
+   so that their floats stay unboxed. *)
 
 (* ---------------------------------------------------------------------------------------------- *)
 (* C arithmetic *)
@@ -358,3 +359,19 @@ let wave_frequency i =
   let rec draw next k = if k = 0 then next else draw (lcg_step next) (k - 1) in
   let next = draw (-560851967 land 0xFFFFFFFF) (i + 1) in
   (float (lcg_bits next) *. 0.000030518509476) +. 0.01
+
+(* ---------------------------------------------------------------------------------------------- *)
+(* The two waveforms of texture.cpp that patterns and normals use. cycloidal is sin(2π·frac v),
+   the fraction taken by way of 50000ths; below 0 it is computed from −v, as −cycloidal(−v), which
+   rounds differently from taking the fraction of v itself. triangle_wave rises from 0 to 1 over
+   [0, 0.5) and falls back over [0.5, 1). *)
+
+let two_pi = 2. *. Float.pi
+
+let cycloidal v =
+  if v >= 0.0 then sin ((v -. floor v) *. 50000.0 /. 50000.0 *. two_pi)
+  else 0.0 -. sin ((0.0 -. (v +. floor (0.0 -. v))) *. 50000.0 /. 50000.0 *. two_pi)
+
+let triangle_wave v =
+  let offset = if v >= 0.0 then v -. floor v else v +. 1.0 +. floor (Float.abs v) in
+  if offset >= 0.5 then 2.0 *. (1.0 -. offset) else 2.0 *. offset

@@ -25,4 +25,13 @@ val brick : Vec.t -> float -> Vec.t -> float
 val value : Scene.pattern -> Scene.warp list -> int -> hit -> Vec.t -> float
 (** [value pat warps gen hit q] is the raw value of [pat] at the already warped point [q], with
     noise generator [gen] (1, 2 or 3); [warps] is the pattern's warp list, which marble, wood,
-    agate and spiral read their classic turbulence from (POV-Ray's Evaluate_TPat switch). *)
+    agate and spiral read their classic turbulence from (POV-Ray's Evaluate_TPat switch). Waves
+    and ripples take frequency 1 and phase 0 here: see [value_with]. [hit] is [no_hit] where
+    there is no surface, and aoi and slope are then 0, as POV-Ray's are without an intersection.
+    Raises [Invalid_argument] for [Facets] and [Average], which have no value in POV-Ray. *)
+
+val value_with : frequency:float -> phase:float -> Scene.pattern -> Scene.warp list -> int -> hit -> Vec.t -> float
+(** [value_with ~frequency ~phase pat warps gen hit q] is [value pat warps gen hit q] for a
+    pattern whose [frequency] and [phase] are those given: waves and ripples use them inside their
+    value (as POV-Ray's waves_pattern and ripples_pattern do), before the wrap of §17.1 uses them
+    again; every other pattern ignores them. *)

@@ -46,20 +46,21 @@ let[@inline] block p r = if r >= Precision.epsilon then c_int (floor (p /. r)) e
    uncertainty (WarpRands at the block's Hash3d) and by the block times the repeat vector. *)
 let repeated_centre (centre : Vec.t) (r : Vec.t) uncertainty (p : Vec.t) =
   let bx = block p.x r.x and by = block p.y r.y and bz = block p.z r.z in
-  let cx, cy, cz =
-    match uncertainty with
-    | None -> (centre.x, centre.y, centre.z)
-    | Some (u : Vec.t) ->
-        let seed = Noise.hash3d bx by bz in
-        ( centre.x +. (Noise.random_double seed *. u.x),
-          centre.y +. (Noise.random_double (seed + 1) *. u.y),
-          centre.z +. (Noise.random_double (seed + 2) *. u.z) )
-  in
-  { Vec.x = cx +. (r.x *. float bx); y = cy +. (r.y *. float by); z = cz +. (r.z *. float bz) }
+  match uncertainty with
+  | None -> { Vec.x = centre.x +. (r.x *. float bx); y = centre.y +. (r.y *. float by); z = centre.z +. (r.z *. float bz) }
+  | Some (u : Vec.t) ->
+      let seed = Noise.hash3d bx by bz in
+      {
+        Vec.x = centre.x +. (Noise.random_double seed *. u.x) +. (r.x *. float bx);
+        y = centre.y +. (Noise.random_double (seed + 1) *. u.y) +. (r.y *. float by);
+        z = centre.z +. (Noise.random_double (seed + 2) *. u.z) +. (r.z *. float bz);
+      }
 
-(* Inside the radius, a type-0 black hole pulls the point toward its centre (pushes it away when
-   inverted) by the share ((radius − distance) / radius)^falloff · strength of the way, at most all
-   of it; other types leave the point alone. *)
+(* Inside the radius, a type-0 black hole moves the sampled point away from its centre by
+   s·(p − centre), s = ((radius − distance) / radius)^falloff · strength, at most 1, so that the
+   pattern looks drawn into the hole; inverted, it moves the point toward the centre. Other types
+   leave the point alone. The fields arrive one by one because an inline record cannot be passed
+   on whole. *)
 let black_hole centre radius strength power inverted bh_type repeat uncertainty (p : Vec.t) =
   let c = match repeat with None -> centre | Some r -> repeated_centre centre r uncertainty p in
   let dx = p.x -. c.x and dy = p.y -. c.y and dz = p.z -. c.z in
@@ -155,12 +156,16 @@ let cubic (p : Vec.t) =
 
 (* ---------------------------------------------------------------------------------------------- *)
 
+let[@inline] within_limit v = not (v > coordinate_limit || v < -.coordinate_limit)
+
 let[@inline] clamp_coordinate v =
   if v > coordinate_limit then coordinate_limit else if v < -.coordinate_limit then -.coordinate_limit else v
 
 let rec through (pat : Scene.pattern) (p : Vec.t) (ws : Scene.warp list) =
   match ws with
-  | [] -> { Vec.x = clamp_coordinate p.x; y = clamp_coordinate p.y; z = clamp_coordinate p.z }
+  | [] ->
+      if within_limit p.x && within_limit p.y && within_limit p.z then p
+      else { Vec.x = clamp_coordinate p.x; y = clamp_coordinate p.y; z = clamp_coordinate p.z }
   | w :: rest ->
       let p =
         match w with

@@ -4,7 +4,8 @@
    noise.pov (f_noise_generator at 38 points), turbulence.pov (marble with turbulence <1,0,0>,
    frequency 0 and ramp_wave, which is x + Turbulence(p)), dnoise.pov (gradient x/y/z with a
    turbulence warp and frequency 0, which is the warped coordinate p + DTurbulence(p)) and
-   random.pov (cells, ripples, waves). Every value must print the same 20 decimals: bit-exact.
+   random.pov (cells, ripples, waves) and waveforms.pov (ripples with a
+   negative phase, wood, spiral2: cycloidal and Triangle_Wave below 0). Every value must print the same 20 decimals: bit-exact.
    noise.pov also shows that f_noise3d uses the scene's noise_generator (1 there): its values are
    the generator-1 ones. *)
 
@@ -482,6 +483,54 @@ let waves_values =
     (5, "0.63637124597199867804");
   ]
 
+let waveform_points =
+  [|
+    (0.3, 0.4, 0.5);
+    ((-1.2), 0.7, (-2.5));
+    (2.25, (-3.5), (-0.75));
+    ((-0.1), (-0.2), (-7.3));
+    (12.5, (-7.25), 3.125);
+    ((-0.05), 0.6, (-0.45));
+    (5.5, 5.5, (-5.5));
+    ((-3.3), (-4.4), 1.1);
+  |]
+
+let ripples_phase_values =
+  [
+    (0, "0.70392986184321104659");
+    (1, "0.82271416730075896950");
+    (2, "0.72397443538917150008");
+    (3, "0.94964656911000711048");
+    (4, "0.62907363238146718487");
+    (5, "0.67005129944761909755");
+    (6, "0.75513275945559277247");
+    (7, "0.78683227490531049142");
+  ]
+
+let wood_values =
+  [
+    (0, "1.86238795926056455166");
+    (1, "1.71986542322295976604");
+    (2, "4.20307192092317816190");
+    (3, "1.40312051212117161469");
+    (4, "14.72407019469352640328");
+    (5, "1.41842519524334309544");
+    (6, "7.83448178011088725015");
+    (7, "5.07787067173295625366");
+  ]
+
+let spiral2_values =
+  [
+    (0, "1.38550170590260002257");
+    (1, "1.00427395272548736216");
+    (2, "0.95441289546487340090");
+    (3, "1.04275085295129832375");
+    (4, "1.04948851395732845049");
+    (5, "1.41228705606277027407");
+    (6, "1.25000000000000000000");
+    (7, "1.58550170590260108838");
+  ]
+
 (* ---------------------------------------------------------------------------------------------- *)
 (* Checks *)
 
@@ -568,16 +617,10 @@ let test_cells () =
          (Printf.sprintf "point %d" i, expected, v))
        cells_values)
 
-(* POV-Ray's cycloidal (texture.cpp): sin of the fractional part, by way of 50000ths. *)
-let cycloidal v =
-  let two_pi = 2. *. Float.pi in
-  if v >= 0.0 then sin ((v -. floor v) *. 50000.0 /. 50000.0 *. two_pi)
-  else 0.0 -. sin ((0.0 -. (v +. floor (0.0 -. v))) *. 50000.0 /. 50000.0 *. two_pi)
-
 let number_of_waves = 10
 
-(* Frequency 1, phase 0: then fmod(v, 1.00001) and the negative wrap (Evaluate_TPat). *)
-let frequency_one v = wrap_negative (Float.rem ((v *. 1.0) +. 0.0) 1.00001)
+(* Frequency 1 and a phase: fmod(v + phase, 1.00001) and the negative wrap (Evaluate_TPat). *)
+let frequency_one ?(phase = 0.0) v = wrap_negative (Float.rem ((v *. 1.0) +. phase) 1.00001)
 
 let distance_to_source (p : Vec.t) i =
   let s = Noise.wave_source i in
@@ -585,18 +628,18 @@ let distance_to_source (p : Vec.t) i =
   let l = sqrt ((dx *. dx) +. (dy *. dy) +. (dz *. dz)) in
   if l = 0.0 then 1.0 else l
 
-let ripples p =
+let ripples ?(phase = 0.0) p =
   let sum = ref 0.0 in
   for i = 0 to number_of_waves - 1 do
-    sum := !sum +. cycloidal ((distance_to_source p i *. 1.0) +. 0.0)
+    sum := !sum +. Noise.cycloidal ((distance_to_source p i *. 1.0) +. phase)
   done;
-  frequency_one (0.5 *. (1.0 +. (!sum /. float number_of_waves)))
+  frequency_one ~phase (0.5 *. (1.0 +. (!sum /. float number_of_waves)))
 
 let waves p =
   let sum = ref 0.0 in
   for i = 0 to number_of_waves - 1 do
     let f = Noise.wave_frequency i in
-    sum := !sum +. (cycloidal ((distance_to_source p i *. 1.0 *. f) +. 0.0) /. f)
+    sum := !sum +. (Noise.cycloidal ((distance_to_source p i *. 1.0 *. f) +. 0.0) /. f)
   done;
   frequency_one (0.2 *. (2.5 +. (!sum /. float number_of_waves)))
 
@@ -605,6 +648,36 @@ let test_waves () =
     (List.map (fun (i, expected) -> (Printf.sprintf "point %d" i, expected, ripples (vec_of wave_points.(i)))) ripples_values);
   check_all "waves"
     (List.map (fun (i, expected) -> (Printf.sprintf "point %d" i, expected, waves (vec_of wave_points.(i)))) waves_values)
+
+(* wood (pattern.cpp): the point moved by cycloidal((x + DTurbulence.x)·t.x) and the same in y,
+   then its distance from the z axis. *)
+let wood (p : Vec.t) =
+  let t = turb (Vec.make 0.8 1.3 0.) 3 0.5 2. in
+  let d = Noise.dturbulence t p in
+  let px = Noise.cycloidal ((p.x +. d.x) *. t.turbulence.x) +. p.x in
+  let py = Noise.cycloidal ((p.y +. d.y) *. t.turbulence.y) +. p.y in
+  sqrt ((px *. px) +. (py *. py) +. (0.0 *. 0.0))
+
+(* spiral2 with 3 arms and no turbulence (pattern.cpp): two triangle waves. *)
+let spiral2 (p : Vec.t) =
+  let half_pi = Float.pi /. 2. in
+  let rad = sqrt ((p.x *. p.x) +. (p.y *. p.y)) in
+  let phi = if rad = 0.0 then 0.0 else if p.x < 0.0 then (3.0 *. half_pi) -. asin (p.y /. rad) else half_pi +. asin (p.y /. rad) in
+  let turb_val = Noise.triangle_wave (p.z +. rad +. (3. *. phi /. (2. *. Float.pi)) +. 0.0) in
+  Noise.triangle_wave rad +. turb_val
+
+let test_waveforms () =
+  let on values f =
+    List.map (fun (i, expected) -> (Printf.sprintf "point %d" i, expected, f (vec_of waveform_points.(i)))) values
+  in
+  (* the phase is stored in single precision (TPATTERN's SNGL Phase) *)
+  check_all "ripples with phase -3.7" (on ripples_phase_values (ripples ~phase:(Precision.f32 (-3.7))));
+  check_all "wood" (on wood_values wood);
+  check_all "spiral2" (on spiral2_values spiral2);
+  Alcotest.(check (float 0.)) "triangle_wave 0.25" 0.5 (Noise.triangle_wave 0.25);
+  Alcotest.(check (float 0.)) "triangle_wave 0.75" 0.5 (Noise.triangle_wave 0.75);
+  Alcotest.(check (float 0.)) "triangle_wave −0.25" 0.5 (Noise.triangle_wave (-0.25));
+  Alcotest.(check (float 1e-15)) "cycloidal is odd" (-.Noise.cycloidal 0.3) (Noise.cycloidal (-0.3))
 
 (* ---------------------------------------------------------------------------------------------- *)
 (* Properties of the tables *)
@@ -644,6 +717,7 @@ let tests =
     Alcotest.test_case "dturbulence with one octave is dnoise" `Quick test_dnoise_is_one_octave;
     Alcotest.test_case "random table through cells" `Quick test_cells;
     Alcotest.test_case "wave sources and frequencies through ripples and waves" `Quick test_waves;
+    Alcotest.test_case "cycloidal and triangle_wave through ripples, wood, spiral2" `Quick test_waveforms;
     Alcotest.test_case "the hash table" `Quick test_hash_is_permutation;
     Alcotest.test_case "the random table" `Quick test_random_table;
     Alcotest.test_case "noise stays in [0, 1]" `Quick test_range;

@@ -28,6 +28,9 @@ let () =
       ("Text", Test_text.tests);
       ("CSG", Test_csg.tests);
       ("Patterns", Test_patterns.tests);
+      ("pattern values", Test_pattern_values.tests);
+      ("pattern values (surface)", Test_pattern_values.surface_tests);
+      ("pattern values (noise)", Test_pattern_values.noise_tests);
       ("Noise", Test_noise.tests);
       ("Warp", Test_warp.tests);
       ("Trace", Test_trace.tests);
