@@ -238,10 +238,12 @@ let slope_value (map : Scene.slope_entry array) v =
 let mapped_value (m : Scene.normal_map) v =
   match m with No_map | Normal_map _ -> v | Slope_map map -> slope_value map v
 
-(* Evaluate_TPat: the raw pattern value at the pattern-space point, wrapped and shaped *)
+(* Evaluate_TPat: the raw pattern value at the pattern-space point (waves and ripples use the
+   frequency and phase inside it too), wrapped and shaped *)
 let pattern_value gen (nm : Scene.normal) hit q =
   let g = if nm.nnoise_generator = 0 then gen else nm.nnoise_generator in
-  Pigment.shape_value ~frequency:(f32 nm.nfrequency) ~phase:(f32 nm.nphase) nm.nwave (Patterns.value nm.npattern nm.nwarps g hit q)
+  let frequency = f32 nm.nfrequency and phase = f32 nm.nphase in
+  Pigment.shape_value ~frequency ~phase nm.nwave (Patterns.value_with ~frequency ~phase nm.npattern nm.nwarps g hit q)
 
 let warp_point (nm : Scene.normal) p = Warp.point nm.nwarps nm.npattern p
 
