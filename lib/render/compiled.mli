@@ -22,6 +22,7 @@ type surface = {
   transparent : bool;  (** filter or transmit non-zero: a transmitted ray may be traced *)
   conserve : bool;
   paint : paint;
+  bump : bump;
 }
 
 (** Whether a surface's colour depends on the point. *)
@@ -30,6 +31,15 @@ and paint =
   | Varying of (Patterns.hit -> Vec.t -> surface)
       (** a pattern pigment: the surface at a world point, its colour-dependent fields (colour, att,
           emitted, filcol, transparent) computed from the pigment there *)
+
+(** Whether a surface's normal is bent by a normal pattern (normal.cpp). *)
+and bump =
+  | Smooth  (** no normal: the surface is shaded with the shape's normal *)
+  | Bumpy of { normal : Scene.normal; facets : Normals.facets_cache }
+      (** the texture's normal: at each hit it bends the shape's normal ({!Normals.perturb}), which
+          then serves diffuse, highlights, the reflectivity's angle, the reflected and the
+          transmitted rays. [facets] is POV-Ray's per-thread facets cache, one for the whole
+          scene, emptied at the start of each block as a render thread's would be at its start. *)
 
 (** The shapes as the tracer meets them; everything about each is in its module (lib/shapes/),
     and [Shape] dispatches to it. *)

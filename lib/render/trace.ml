@@ -4,8 +4,9 @@
    lecture adds k_r·RayTrace(R) before k_t·RayTrace(T); POV-Ray traces the transmitted ray first,
    and so does this tracer, because the order shows in the shadow cache. POVRAY-3.7 §2–§7. The colour seen along a ray is
    a function of the compiled scene and the ray; what each step needs lives in a module of its own:
-   Nearest (the nearest hit and POV-Ray's tie rules), Lighting and Shadow (local illumination and
-   shadow feelers), Optics (Fresnel, interiors, fade), Sky, Robust (the robust mode's origins). *)
+   Nearest (the nearest hit and POV-Ray's tie rules), Normals (a texture's normal bending the
+   surface normal), Lighting and Shadow (local illumination and shadow feelers), Optics (Fresnel,
+   interiors, fade), Sky, Robust (the robust mode's origins). *)
 
 open Compiled
 open Context
@@ -15,8 +16,26 @@ let f32 = Precision.f32
 type result = Traced.t = { r : float; g : float; b : float; tr : float }
 type nonrec ctx = Context.t
 
-let make_ctx = Context.make
+(* A context for one block. POV-Ray's facets cache belongs to a render thread, and a block is
+   rendered as by a fresh thread: the scene's cache is emptied first. *)
+let make_ctx ?robust (sc : Compiled.t) stats =
+  let reset (s : surface) = match s.bump with Smooth -> () | Bumpy { facets; _ } -> Normals.reset_facets facets in
+  Array.iter (fun (o : obj) -> reset o.surf; Array.iter reset o.face_surfs) sc.objects;
+  Context.make ?robust sc stats
 let black = Traced.black
+
+(* ComputeReflection's direction off a bent normal [n]: the mirror direction, unless it points
+   below the surface by the raw normal [raw] (the "reflection bugfix" of trace.cpp): then the
+   mirror direction off [raw] when it is below the bent normal's plane too, else the mirror
+   direction reflected again in the raw normal's plane. Normalised last. *)
+let bent_reflection (d : Vec.t) (n : Vec.t) (raw : Vec.t) =
+  let r = Vec.madd d (-2. *. Vec.dot d n) n in
+  let below = Vec.dot r raw in
+  let r =
+    if below < 0. then if Vec.dot r n < 0. then Vec.madd d (-2. *. Vec.dot d raw) raw else Vec.madd r (below *. -2.) raw
+    else r
+  in
+  Vec.normalize r
 
 (* Trace a ray. §16.6: a ray is a reflection ray ([reflected]) when it or an ancestor was
    reflected, else an image ray; each kind searches the objects it can meet. *)
@@ -49,12 +68,17 @@ and shade ctx ~reflected obj part depth ~level ~weight ~interiors (o : Vec.t) (d
     let s = Surfaces.at obj part in
     let n = Shape.normal obj part p in
     let n = if Vec.dot n d > 0. then Vec.neg n else n in
-    let s = match s.paint with Fixed -> s | Varying at -> at { Patterns.normal = n; dir = d } p in
     (* where secondary rays leave from in the robust mode *)
     let ng = if ctx.robust then Shape.geometric_normal obj part p else n in
+    (* normal.cpp: a texture's normal bends N before the pigment is evaluated, whose slope and
+       aoi patterns see the bent normal [pn]; [sn], the bent normal made unit, shades, reflects
+       and refracts, and the raw N keeps the reflected ray on the surface's side (trace.cpp) *)
+    let pn = match s.bump with Smooth -> n | Bumpy b -> Normals.perturb ~facets:b.facets sc.noise_generator b.normal p { Patterns.normal = n; dir = d } n in
+    let s = match s.paint with Fixed -> s | Varying at -> at { Patterns.normal = pn; dir = d } p in
+    let sn = match s.bump with Smooth -> n | Bumpy b -> Normals.layer_normal b.normal pn in
     let e = if ctx.robust then Robust.error_bound o p obj.mag else 0. in
     (* k_r, the reflection colour at the cosine of incidence N·E (E = −d, the way to the eye) *)
-    let ci = -.Vec.dot d n in
+    let ci = -.Vec.dot d sn in
     let refl = if s.reflects then Optics.reflectivity sc s obj interiors ci else Rgb.black in
     (* §5.2: the reflected ray's weight, taken before the metallic tint *)
     let w_refl =
@@ -62,7 +86,7 @@ and shade ctx ~reflected obj part depth ~level ~weight ~interiors (o : Vec.t) (d
     in
     let refl = if s.reflects && s.refl.refl_metallic <> 0. then Lighting.metallic_factor s.refl.refl_metallic ci s.colour refl else refl in
     (* local illumination: ambient and emission, then each light through its shadow feeler *)
-    let local = if s.lit then Lighting.add_lights ctx ~level ~di:obj.double_illuminate s p n ng e d interiors s.emitted else s.emitted in
+    let local = if s.lit then Lighting.add_lights ctx ~level ~di:obj.double_illuminate s p sn ng e d interiors s.emitted else s.emitted in
     (* the transmitted ray, weighted by k_t, the filter colour (§6). POV-Ray traces it before the
        reflected ray, and the order shows: both rays' shadow feelers share the shadow cache *)
     let local, tr, tir =
@@ -74,7 +98,7 @@ and shade ctx ~reflected obj part depth ~level ~weight ~interiors (o : Vec.t) (d
         if not (trans > sc.adc_bailout) then (local, 0., false)
         else
           let w = f32 (weight *. Float.max (Float.abs filcol.r) (Float.max (Float.abs filcol.g) (Float.abs filcol.b))) in
-          let ct, tir = refract ctx ~reflected obj ~level ~weight:w ~interiors p ng e d n in
+          let ct, tir = refract ctx ~reflected obj ~level ~weight:w ~interiors p ng e d sn ~raw:n ~bump:s.bump in
           (* the interior's fade when the ray travelled inside [obj] *)
           let att = Rgb.grey obj.old_refract in
           let att = if Optics.fades obj && List.mem obj.iid interiors then Optics.fade obj depth att else att in
@@ -91,7 +115,7 @@ and shade ctx ~reflected obj part depth ~level ~weight ~interiors (o : Vec.t) (d
        reflection, which was the reflected ray already *)
     if tir || Rgb.is_zero refl then { r = local.r; g = local.g; b = local.b; tr }
     else
-      let rd = Vec.normalize (Vec.madd d (-2. *. Vec.dot d n) n) in
+      let rd = match s.bump with Smooth -> Vec.normalize (Vec.madd d (-2. *. Vec.dot d n) n) | Bumpy _ -> bent_reflection d sn n in
       ctx.stats.reflected_rays <- ctx.stats.reflected_rays + 1;
       let c = trace_ray ctx ~reflected:true ~level ~weight:w_refl ~interiors ~continued:false (Robust.origin ctx p ng e rd) rd in
       let e = s.refl.exponent in
@@ -104,7 +128,7 @@ and shade ctx ~reflected obj part depth ~level ~weight ~interiors (o : Vec.t) (d
 (* §6.2: the transmitted ray by Snell's law, n₁ sin θ₁ = n₂ sin θ₂, with the ratio of the indices
    of the interiors the ray leaves and enters; its colour, and whether total internal reflection
    happened (no real θ₂: the ray is reflected instead). *)
-and refract ctx ~reflected obj ~level ~weight ~interiors p ng e d n : result * bool =
+and refract ctx ~reflected obj ~level ~weight ~interiors p ng e d n ~raw ~bump : result * bool =
   let sc = ctx.scene in
   let ior, inner =
     match interiors with
@@ -123,7 +147,7 @@ and refract ctx ~reflected obj ~level ~weight ~interiors p ng e d n : result * b
     (* cos² θ₂ = 1 − (n₁/n₂)²(1 − cos² θ₁) *)
     let t = 1. +. (ior *. ior *. ((nn *. nn) -. 1.)) in
     if t < 0. then
-      let rd = Vec.normalize (Vec.madd d (-2. *. dn) n) in
+      let rd = match bump with Smooth -> Vec.normalize (Vec.madd d (-2. *. dn) n) | Bumpy _ -> bent_reflection d n raw in
       (* total internal reflection: a reflected ray (§16.6) *)
       (trace_ray ctx ~reflected:true ~level ~weight ~interiors ~continued:false (Robust.origin ctx p ng e rd) rd, true)
     else

@@ -49,4 +49,5 @@ let () =
       ("POV-Ray source rules (Lexer)", Test_lexer.source_rules);
       ("POV-Ray source rules (Interp)", Test_interp.source_rules);
       ("Interrupt", Test_interrupt.tests);
+      ("Normals (perturbed normals)", Test_normals.tests);
     ])
