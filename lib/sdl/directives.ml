@@ -85,10 +85,7 @@ let return_from_macro st =
   st.macro_depth <- st.macro_depth - 1
 
 
-let directive_names =
-  [ "declare"; "local"; "undef"; "version"; "include"; "if"; "ifdef"; "ifndef"; "elseif"; "else"; "end"; "while";
-    "for"; "switch"; "case"; "range"; "break"; "macro"; "debug"; "warning"; "error"; "default"; "fopen"; "fclose";
-    "read"; "write"; "render"; "statistics" ]
+let directive_names = Lexer.directive_names
 
 let directive st d loc =
   let f = top st in
