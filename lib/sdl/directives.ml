@@ -237,7 +237,19 @@ let directive st d loc =
         | Ident "texture" -> advance st; st.default_texture <- parse_texture st st.default_texture; loop ()
         | Ident "pigment" -> advance st; st.default_texture <- { st.default_texture with pigment = parse_pigment st st.default_texture.pigment }; loop ()
         | Ident "finish" -> advance st; st.default_texture <- { st.default_texture with finish = parse_finish st st.default_texture.finish }; loop ()
-        | Ident s when List.mem s [ "normal"; "radiosity"; "media" ] -> not_supported l (Printf.sprintf "'%s' in #default" s)
+        | Ident "radiosity" ->
+            (* the default radiosity importance, which only radiosity reads (Parse_Default) *)
+            advance st;
+            open_block st "radiosity";
+            while is_ident st "importance" do
+              advance st;
+              let il = peek_loc st in
+              let i = parse_float st in
+              if not (i > 0. && i <= 1.) then Error.raise_at il "radiosity importance must be greater than 0 and at most 1, not %g" i
+            done;
+            close_block st "radiosity";
+            loop ()
+        | Ident s when List.mem s [ "normal"; "camera"; "media" ] -> not_supported l (Printf.sprintf "'%s' in #default" s)
         | _ -> unexpected st "'texture', 'pigment', 'finish' or '}' in #default"
       in
       loop ()

@@ -14,7 +14,8 @@ let component_index = function
   | _ -> None
 
 let colour_keywords =
-  [ "color"; "colour"; "rgb"; "rgbf"; "rgbt"; "rgbft"; "srgb"; "srgbf"; "srgbt"; "srgbft"; "red"; "green"; "blue"; "filter"; "transmit" ]
+  [ "color"; "colour"; "rgb"; "rgbf"; "rgbt"; "rgbft"; "srgb"; "srgbf"; "srgbt"; "srgbft"; "red"; "green"; "blue"; "filter"; "transmit";
+    "alpha" ]
 let colour_set = set_of colour_keywords
 
 let is_colour_start st =
@@ -254,8 +255,8 @@ and parse_ident_value st loc name =
       | Some (V.Unsupported u) -> unsupported_use loc name u.what u.at
       | Some v -> Error.raise_at loc "expected a numeric expression but '%s' is %s" name (V.kind_name v)
       | None ->
-          if is_unsupported name then not_supported loc (Printf.sprintf "'%s'" name)
-          else if List.mem name unsupported_functions then not_supported loc (Printf.sprintf "the function '%s'" name)
+          if List.mem name unsupported_functions then not_supported loc (Printf.sprintf "the function '%s'" name)
+          else if is_unsupported name then not_supported loc (Printf.sprintf "'%s'" name)
           else if is_keyword name then Error.raise_at loc "expected a numeric expression but found '%s'" name
           else unknown_identifier st loc name)
 
@@ -530,6 +531,12 @@ and parse_colour st : Colour.t =
         advance st; keyword_seen := true;
         let i = match component_index k with Some i -> i | None -> assert false in
         c.(i) <- parse_float st;
+        loop ()
+    | Ident "alpha" ->
+        (* the old name of filter, still read with POV-Ray's warning *)
+        advance st; keyword_seen := true;
+        warn st loc "Keyword ALPHA discontinued. Use FILTER instead.";
+        c.(3) <- parse_float st;
         loop ()
     | Ident ("srgb" | "srgbf" | "srgbt" | "srgbft" as k) when not !body_seen ->
         (* as the rgb forms, then red, green and blue decoded; POV-Ray refuses them before

@@ -12,7 +12,7 @@ open Csg_build
 let unsupported_objects =
   [ "prism"; "lathe"; "sor"; "blob"; "height_field";
     "isosurface"; "superellipsoid"; "julia_fractal"; "parametric"; "bicubic_patch"; "ovus"; "cubic";
-    "quartic"; "poly"; "sphere_sweep"; "lemon" ]
+    "quartic"; "poly"; "polynomial"; "sphere_sweep"; "lemon"; "composite" ]
 
 let show_vec (v : Vec.t) = Printf.sprintf "<%g, %g, %g>" v.x v.y v.z
 

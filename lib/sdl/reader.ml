@@ -131,7 +131,7 @@ let keywords =
       "vrotate"; "vstr"; "array"; "ascii"; "utf8"; "sys"; "append"; "deprecated"; "once"; "internal"; "sint8";
       "sint16be"; "sint16le"; "sint32be"; "sint32le"; "uint8"; "uint16be"; "uint16le"; "hf_gray_16"; "mm_per_unit";
       "max_intersections"; "dtag"; "no_radiosity"; "importance"; "target"; "pass_through"; "collect"; "hierarchy";
-      "bokeh"; "confidence"; "variance"; "aperture"; "focal_point"; "blur_samples" ]
+      "bokeh"; "confidence"; "variance"; "aperture"; "focal_point"; "blur_samples"; "alpha" ]
 
 (* POV-Ray keywords that a later povml will read; meeting one is a located "not supported yet". *)
 let unsupported =
@@ -151,13 +151,39 @@ let unsupported =
   @ [ "turbulence"; "octaves"; "omega"; "lambda"; "warp"; "agate_turb"; "mandel"; "julia"; "magnet"; "quilted";
       "control0"; "control1"; "tiling"; "pavement"; "square"; "triangular"; "facets"; "cells"; "boxed"; "planar";
       "aoi"; "slope"; "pigment_pattern"; "image_pattern"; "density_file"; "average"; "object_pattern"; "color_list" ]
+  (* more of POV-Ray 3.7's reserved words that start something povml does not read, each found
+     where POV-Ray reads it in an object, a light_source, a texture or an expression (checked word
+     by word with POV-Ray: parser/reswords.cpp) *)
+  @ [ "sphere_sweep"; "polynomial"; "composite"; "mesh_camera"; "adaptive"; "area_illumination"; "circular"; "jitter";
+      "orient"; "media_attenuation"; "media_interaction"; "tiles"; "material_map"; "no_bump_scale"; "bump_map";
+      "normal_map"; "slope_map"; "density"; "density_map"; "spline"; "inside"; "trace"; "max_extent"; "min_extent";
+      "vturbulence"; "datetime"; "function" ]
+
+(* The rest of POV-Ray 3.7's reserved words (parser/reswords.cpp), none of which povml reads: words
+   inside blocks povml does not read yet (a fog's fog_type, an isosurface's accuracy, the sums and
+   products of a user function …). They cannot
+   be declared, as in POV-Ray; found out of place they are the user's error, as they are POV-Ray's
+   (POV-Ray lets sred, sgreen, sblue and global be declared: they are not in this list). *)
+let reserved =
+  [ "aa_level"; "aa_threshold"; "absorption"; "accuracy"; "all"; "all_intersections"; "altitude"; "always_sample";
+    "anisotropy"; "arc_angle"; "autostop"; "b_spline"; "bezier_spline"; "black_hole"; "bmp"; "bump_size"; "component";
+    "conic_sweep"; "contained_by"; "cube"; "cubic_spline"; "df3"; "dist_exp"; "distance"; "eccentricity"; "evaluate";
+    "expand_thresholds"; "exr"; "exterior"; "extinction"; "falloff_angle"; "flatness"; "flip"; "fog_alt"; "fog_offset";
+    "fog_type"; "form"; "gamma"; "gather"; "gif"; "global_lights"; "hdr"; "hypercomplex"; "iff"; "interpolate";
+    "intervals"; "jpeg"; "linear_spline"; "linear_sweep"; "load_file"; "major_radius"; "map_type"; "max_gradient";
+    "max_iteration"; "max_sample"; "max_trace"; "method"; "natural_spline"; "number_of_sides"; "number_of_tiles";
+    "offset"; "orientation"; "pattern"; "pgm"; "png"; "pot"; "ppm"; "precision"; "precompute"; "premultiplied";
+    "pretrace_end"; "pretrace_start"; "prod"; "sum"; "pwr"; "quadratic_spline"; "quaternion"; "ratio"; "repeat"; "samples";
+    "save_file"; "scattering"; "slice"; "smooth"; "spacing"; "steps"; "strength"; "tga"; "thickness"; "threshold";
+    "tiff"; "tile2"; "tolerance"; "toroidal"; "turb_depth"; "type"; "u_steps"; "use_alpha"; "use_color"; "use_colour";
+    "use_index"; "v_steps"; "water_level"; "width"; "xyz" ]
 
 let set_of l =
   let h = Names.create 64 in
   List.iter (fun s -> Names.replace h s ()) l;
   h
 
-let keyword_set = set_of (keywords @ unsupported)
+let keyword_set = set_of (keywords @ unsupported @ reserved)
 let unsupported_set = set_of unsupported
 let is_keyword s = Names.mem keyword_set s
 let is_unsupported s = Names.mem unsupported_set s
