@@ -210,8 +210,13 @@ and parse_vector_literal st loc =
         let comma = accept st Comma in
         (* a comma may also follow the second, third or fourth term: <1,0,0,> is <1,0,0> (POV-Ray's
            Parse_Num_Factor, express.cpp: Parse_Comma after each of those terms, none after the fifth) *)
+        let term_follows () = match peek st with Num _ | LParen | Ident _ | Plus | Minus | Lt -> true | _ -> false in
         if comma && n >= 2 && n <= 4 && peek st == Gt then acc
-        else if comma || (match peek st with Num _ | LParen | Ident _ | Plus | Minus | Lt -> true | _ -> false) then begin
+        else if n >= 5 && (not comma) && term_follows () then
+          (* no comma is looked for after the fifth term, and a term after it replaces it:
+             <1,2,3,4,5 6> is <1,2,3,4,6> (checked with POV-Ray) *)
+          terms (parse_float st :: List.tl acc) n
+        else if comma || term_follows () then begin
           if n >= 5 then Error.raise_at (peek_loc st) "a vector has at most 5 terms";
           terms (parse_float st :: acc) (n + 1)
         end

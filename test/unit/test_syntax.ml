@@ -42,6 +42,20 @@ let test_hash () =
   expect_scene_error "unknown" (v37 ^ "#delcare X = 1;") ~line:3 ~col:1 ~sub:"unknown directive '#delcare'; did you mean '#declare'?";
   expect_scene_error "unknown, after a blank" (v37 ^ "# foreach (I, 1, 3)") ~line:3 ~col:1 ~sub:"unknown directive '#foreach'"
 
+(* ---- vectors (express.cpp: Parse_Num_Factor) ---- *)
+
+(* A comma may end the second, third or fourth term; none is looked for after the fifth, where a
+   further term replaces the fifth. Checked with POV-Ray (#debug vstr(5, V, ",", 0, 1)):
+   <1,2,3,4,5 6> is 1,2,3,4,6; <1,2,3,4,5 -6 7> is 1,2,3,4,7 (5 -6 is one term); <0,0,-1,> is a
+   3-term vector; <1,2,3,4,5,> is refused ("Expected '>'"). *)
+let test_vectors () =
+  let colour text = pigment (v37 ^ text) in
+  colour_eq "<1,2,3,4,5 6>" (colour5 0.1 0.2 0.3 0.4 0.6) (colour "sphere { 0, 1 pigment { rgbft <0.1,0.2,0.3,0.4,0.5 0.6> } }");
+  colour_eq "<1,2,3,4,5 -6 7>" (colour5 0.1 0.2 0.3 0.4 0.7)
+    (colour "sphere { 0, 1 pigment { rgbft <0.1,0.2,0.3,0.4,0.5 -0.6 0.7> } }");
+  vec_eq "<0,0,-1,>" (v 0. 0. (-1.)) (fst (sphere_of (the_object (scene (v37 ^ "sphere { <0,0,-1,>, 1 }")))));
+  expect_scene_error "<1,2,3,4,5 6,>" (v37 ^ "#declare V = <1,2,3,4,5 6,>;") ~line:3 ~col:27 ~sub:"at most 5 terms"
+
 (* ---- strings (tokenize.cpp: Parse_String_Literal) ---- *)
 
 let test_multiline_strings () =
@@ -183,6 +197,7 @@ let test_object_modifiers () =
 let tests =
   [
     Alcotest.test_case "what follows a '#'" `Quick test_hash;
+    Alcotest.test_case "vectors: commas and a sixth term" `Quick test_vectors;
     Alcotest.test_case "strings over several lines" `Quick test_multiline_strings;
     Alcotest.test_case "sRGB colours" `Quick test_srgb;
     Alcotest.test_case "global_settings and the top level" `Quick test_global_settings;
