@@ -129,11 +129,10 @@ place they are the scene's error ("No matching } in 'sphere', width found instea
   [1]
 
 Not checked here, because POV-Ray 3.7 refuses them and povml reads them (each checked with POV-Ray):
-- '#declare X = 1' with no ';' before the next statement: POV-Ray stops ("All #declares of float,
-  vector, and color require semi-colon ';' at end if the language version is set to 3.5 or
-  higher."), povml warns and goes on.
-- 'camera { location 1 orthographic }': POV-Ray wants the projection first ("Expected
-  'perspective camera modifier', orthographic found instead").
-- 'camera { C location … }' with C a declared camera: POV-Ray reads only transformations after
-  the identifier ("No matching } in 'camera', location found instead").
-- '#declare X = 1 # ;': inside a float's declaration POV-Ray keeps the '#' as a token and refuses it.
+'#declare X = 1' with no ';' before the next statement (POV-Ray stops: "All #declares of float,
+vector, and color require semi-colon ';' at end if the language version is set to 3.5 or higher.";
+povml warns and goes on); 'camera { location 1 orthographic }' (POV-Ray wants the projection first:
+"Expected 'perspective camera modifier', orthographic found instead"); 'camera { C location … }'
+with C a declared camera (POV-Ray reads only transformations after the identifier: "No matching }
+in 'camera', location found instead"); '#declare X = 1 # ;' (inside a float's declaration POV-Ray
+keeps the '#' as a token and refuses it).
