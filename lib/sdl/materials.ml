@@ -508,6 +508,7 @@ let parse_texture st (base : Scene.texture) : Scene.texture =
     | Ident "pigment" -> advance st; loop { t with pigment = parse_pigment st t.pigment }
     | Ident "finish" -> advance st; loop { t with finish = parse_finish st t.finish }
     | Ident "normal" -> advance st; loop { t with normal = Some (parse_normal st t.normal) }
+    | Ident s when is_pattern_start st -> not_supported loc (Printf.sprintf "patterned textures ('%s' in a texture)" s)
     | Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") -> loop (Place.texture t (parse_op st))
     | Ident s when is_unsupported s -> not_supported loc (Printf.sprintf "'%s' in a texture" s)
     | _ -> unexpected st "'pigment', 'normal', 'finish' or '}' in a texture"

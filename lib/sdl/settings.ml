@@ -89,7 +89,7 @@ let parse_camera st =
         pigments ();
         close_block st "bokeh";
         loop c
-    | Ident s when is_unsupported s -> not_supported loc (Printf.sprintf "'%s' in a camera" s)
+    | Ident s when is_unsupported s || s = "normal" (* a perturbed camera *) -> not_supported loc (Printf.sprintf "'%s' in a camera" s)
     | _ -> unexpected st "a camera keyword or '}'"
   in
   loop base
