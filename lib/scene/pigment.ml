@@ -56,7 +56,7 @@ let f32_colour (c : Colour.t) =
    outer pattern saw (its warps applied), each through its own warps, and their colours blended *)
 let rec at_pattern_point gen (p : Scene.patterned) hit q =
   let g = if p.noise_generator = 0 then gen else p.noise_generator in
-  let v = shape_value ~frequency:p.frequency ~phase:p.phase p.wave (Patterns.value p.pattern p.warps g hit q) in
+  let v = shape_value ~frequency:p.frequency ~phase:p.phase p.wave (Patterns.value_with ~frequency:p.frequency ~phase:p.phase p.pattern p.warps g hit q) in
   if Array.length p.pigments = 0 then lookup p.map v
   else
     let map = p.pigments in

@@ -85,10 +85,7 @@ let return_from_macro st =
   st.macro_depth <- st.macro_depth - 1
 
 
-let directive_names =
-  [ "declare"; "local"; "undef"; "version"; "include"; "if"; "ifdef"; "ifndef"; "elseif"; "else"; "end"; "while";
-    "for"; "switch"; "case"; "range"; "break"; "macro"; "debug"; "warning"; "error"; "default"; "fopen"; "fclose";
-    "read"; "write"; "render"; "statistics" ]
+let directive_names = Lexer.directive_names
 
 let directive st d loc =
   let f = top st in
@@ -241,7 +238,19 @@ let directive st d loc =
         | Ident "pigment" -> advance st; st.default_texture <- { st.default_texture with pigment = parse_pigment st st.default_texture.pigment }; loop ()
         | Ident "finish" -> advance st; st.default_texture <- { st.default_texture with finish = parse_finish st st.default_texture.finish }; loop ()
         | Ident "normal" -> advance st; st.default_texture <- { st.default_texture with normal = Some (parse_normal st st.default_texture.normal) }; loop ()
-        | Ident s when List.mem s [ "radiosity"; "media" ] -> not_supported l (Printf.sprintf "'%s' in #default" s)
+        | Ident "radiosity" ->
+            (* the default radiosity importance, which only radiosity reads (Parse_Default) *)
+            advance st;
+            open_block st "radiosity";
+            while is_ident st "importance" do
+              advance st;
+              let il = peek_loc st in
+              let i = parse_float st in
+              if not (i > 0. && i <= 1.) then Error.raise_at il "radiosity importance must be greater than 0 and at most 1, not %g" i
+            done;
+            close_block st "radiosity";
+            loop ()
+        | Ident s when List.mem s [ "camera"; "media" ] -> not_supported l (Printf.sprintf "'%s' in #default" s)
         | _ -> unexpected st "'texture', 'pigment', 'normal', 'finish' or '}' in #default"
       in
       loop ()

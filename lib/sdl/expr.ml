@@ -13,7 +13,9 @@ let component_index = function
   | "transmit" -> Some 4
   | _ -> None
 
-let colour_keywords = [ "color"; "colour"; "rgb"; "rgbf"; "rgbt"; "rgbft"; "red"; "green"; "blue"; "filter"; "transmit" ]
+let colour_keywords =
+  [ "color"; "colour"; "rgb"; "rgbf"; "rgbt"; "rgbft"; "srgb"; "srgbf"; "srgbt"; "srgbft"; "red"; "green"; "blue"; "filter"; "transmit";
+    "alpha" ]
 let colour_set = set_of colour_keywords
 
 let is_colour_start st =
@@ -38,6 +40,24 @@ let object_set =
       "union"; "merge"; "intersection"; "difference"; "text"; "polygon"; "quadric" ]
 
 let truth x = Float.abs x > 1e-10
+
+(* sRGB colours (srgb, srgbf, srgbt, srgbft): POV-Ray 3.7 decodes the red, green and blue terms
+   from sRGB into the working colour space of assumed_gamma, in single precision (Parse_Colour in
+   express.cpp with workingGammaToSRGB, the gamma curves of base/image/colourspace.cpp). *)
+let srgb_to_linear x =
+  let f = Precision.f32 in
+  (* SRGBGammaCurve::Decode *)
+  if x < f 0.04045 then f (x /. f 12.92) else f (Float.pow (f (f (x +. f 0.055) /. f 1.055)) (f 2.4))
+
+(* The working gamma's curve, as TranscodingGammaCurve::Get builds it for assumed_gamma G: the
+   power law of encoding exponent 1/G (in single precision) is neutral within 1% of 1
+   (PowerLawGammaCurve::IsNeutral), and then the sRGB value is only made linear; otherwise the
+   linear value is encoded with x^(1/G). *)
+let srgb_decode ~assumed_gamma x =
+  let f = Precision.f32 in
+  let enc = f (1. /. f assumed_gamma) in
+  let linear = srgb_to_linear (f x) in
+  if Float.abs (1. -. enc) <= 0.01 then linear else f (Float.pow (Float.max linear 0.) enc)
 
 (* C's (int) cast on x86: truncation, and -2147483648 for what does not fit (checked with POV-Ray). *)
 let c_int x = if Float.is_nan x || Float.abs x >= 2147483648. then -2147483648. else Float.trunc x
@@ -190,8 +210,13 @@ and parse_vector_literal st loc =
         let comma = accept st Comma in
         (* a comma may also follow the second, third or fourth term: <1,0,0,> is <1,0,0> (POV-Ray's
            Parse_Num_Factor, express.cpp: Parse_Comma after each of those terms, none after the fifth) *)
+        let term_follows () = match peek st with Num _ | LParen | Ident _ | Plus | Minus | Lt -> true | _ -> false in
         if comma && n >= 2 && n <= 4 && peek st == Gt then acc
-        else if comma || (match peek st with Num _ | LParen | Ident _ | Plus | Minus | Lt -> true | _ -> false) then begin
+        else if n >= 5 && (not comma) && term_follows () then
+          (* no comma is looked for after the fifth term, and a term after it replaces it:
+             <1,2,3,4,5 6> is <1,2,3,4,6> (checked with POV-Ray) *)
+          terms (parse_float st :: List.tl acc) n
+        else if comma || term_follows () then begin
           if n >= 5 then Error.raise_at (peek_loc st) "a vector has at most 5 terms";
           terms (parse_float st :: acc) (n + 1)
         end
@@ -235,8 +260,8 @@ and parse_ident_value st loc name =
       | Some (V.Unsupported u) -> unsupported_use loc name u.what u.at
       | Some v -> Error.raise_at loc "expected a numeric expression but '%s' is %s" name (V.kind_name v)
       | None ->
-          if is_unsupported name then not_supported loc (Printf.sprintf "'%s'" name)
-          else if List.mem name unsupported_functions then not_supported loc (Printf.sprintf "the function '%s'" name)
+          if List.mem name unsupported_functions then not_supported loc (Printf.sprintf "the function '%s'" name)
+          else if is_unsupported name then not_supported loc (Printf.sprintf "'%s'" name)
           else if is_keyword name then Error.raise_at loc "expected a numeric expression but found '%s'" name
           else unknown_identifier st loc name)
 
@@ -512,7 +537,29 @@ and parse_colour st : Colour.t =
         let i = match component_index k with Some i -> i | None -> assert false in
         c.(i) <- parse_float st;
         loop ()
-    | Ident ("srgb" | "srgbf" | "srgbt" | "srgbft" as k) -> not_supported loc (Printf.sprintf "'%s'" k)
+    | Ident "alpha" ->
+        (* the old name of filter, still read with POV-Ray's warning *)
+        advance st; keyword_seen := true;
+        warn st loc "Keyword ALPHA discontinued. Use FILTER instead.";
+        c.(3) <- parse_float st;
+        loop ()
+    | Ident ("srgb" | "srgbf" | "srgbt" | "srgbft" as k) when not !body_seen ->
+        (* as the rgb forms, then red, green and blue decoded; POV-Ray refuses them before
+           assumed_gamma is known *)
+        let assumed_gamma =
+          match st.assumed_gamma with
+          | Some g -> g
+          | None ->
+              Error.raise_at loc "the sRGB colour '%s' needs assumed_gamma, and none has been set yet (POV-Ray refuses it too: set it in global_settings before the first sRGB colour)" k
+        in
+        advance st; body ();
+        (match k with
+        | "srgb" -> ignore (set_terms loc 3 (parse_expr st))
+        | "srgbf" -> let a = set_terms loc 4 (parse_expr st) in c.(3) <- a.(3)
+        | "srgbt" -> let a = set_terms loc 4 (parse_expr st) in c.(3) <- 0.; c.(4) <- a.(3)
+        | _ -> ignore (set_terms loc 5 (parse_expr st)));
+        for i = 0 to 2 do c.(i) <- srgb_decode ~assumed_gamma c.(i) done;
+        loop ()
     | _ -> ()
   in
   (* A leading colour identifier or plain expression sets all five terms: a float is replicated

@@ -13,6 +13,14 @@ val is_colour_start : Reader.st -> bool
 val truth : float -> bool
 (** [truth x] is POV-Ray's truth: |x| > 1e-10. *)
 
+val c_int : float -> float
+(** [c_int x] is C's [(int)x] on x86: [x] truncated toward zero, and -2147483648 for NaN and what
+    does not fit in 32 bits. *)
+
+val srgb_decode : assumed_gamma:float -> float -> float
+(** [srgb_decode ~assumed_gamma x] is the sRGB term [x] in the working colour space of
+    [assumed_gamma], in single precision, as POV-Ray 3.7 reads the terms of [srgb] colours. *)
+
 val parse_expr : Reader.st -> Value.t
 (** [parse_expr st] reads an arithmetic expression (no relational operators outside parentheses). *)
 

@@ -38,6 +38,19 @@ let rec parse_statements st =
   | Ident "background" -> parse_background st; parse_statements st
   | Ident "sky_sphere" -> parse_sky_sphere st; parse_statements st
   | Ident "global_settings" -> advance st; parse_global_settings st; parse_statements st
+  | Ident "max_trace_level" ->
+      (* the old place of max_trace_level, still read, with POV-Ray's two warnings (Parse_Frame) *)
+      advance st;
+      if st.version >= 350 then
+        warn st loc "'max_trace_level' should be in global_settings block. Future versions may not support 'max_trace_level' outside global_settings.";
+      if st.version >= 300 then warn st loc "'max_trace_level' should be in 'global_settings{...}' statement.";
+      parse_max_trace_level st loc;
+      parse_statements st
+  | Ident "max_intersections" ->
+      advance st;
+      ignore (Expr.parse_float st);
+      if st.version >= 370 then warn st loc "'max_intersections' is no longer needed and has no effect in POV-Ray 3.7 or later.";
+      parse_statements st
   | Ident ("default" | "version" as d) ->
       (* old scenes write these directives without '#' where an object may stand; POV-Ray takes them *)
       advance st; directive st d loc; parse_statements st

@@ -62,17 +62,32 @@ let check_length lx pos n what =
   if n > max_token then
     Error.raise_at (loc_at lx pos) "this %s is %d characters long; POV-Ray allows at most %d" what n max_token
 
-(* A string from just after its opening quote; returns the token and the offset after it. *)
+(* A string from just after its opening quote; returns the token and the offset after it. A
+   line break inside the quotes is part of the string, as one '\n' whatever the file's line ends
+   (POV-Ray's Parse_String_Literal in tokenize.cpp reads to the closing quote, and its text stream
+   turns CR LF, LF CR and a lone CR into one '\n': shapes3.inc's #warning at line 881 spans three
+   lines); only the end of the file, or a '\' just before a line break, leaves it unterminated. *)
 let lex_string lx pos =
   let text = lx.text and len = lx.len in
   let loc = loc_at lx (pos - 1) in
   let buf = Buffer.create 16 in
+  (* characters as POV-Ray counts them for its length limit: as written, a line end as one *)
+  let written = ref 0 in
   let unicode_at p = p + 5 < len && String.for_all is_hex (String.sub text (p + 2) 4) in
+  (* a line end at [p]: the offset after it, the lines counted *)
+  let line_end p =
+    match text.[p] with
+    | '\n' -> newline lx p; if p + 1 < len && text.[p + 1] = '\r' then p + 2 else p + 1
+    | _ (* '\r' *) -> if p + 1 < len && text.[p + 1] = '\n' then (newline lx (p + 1); p + 2) else p + 1
+  in
   let rec go p =
-    if p >= len || text.[p] = '\n' then Error.raise_at loc "unterminated string: missing closing '\"'"
+    if p >= len then Error.raise_at loc "unterminated string: missing closing '\"'"
     else
       match text.[p] with
       | '"' -> p + 1
+      | '\n' | '\r' -> Buffer.add_char buf '\n'; incr written; go (line_end p)
+      | '\\' when p + 1 < len && (text.[p + 1] = '\n' || text.[p + 1] = '\r') ->
+          Error.raise_at (loc_at lx p) "unterminated string: a '\\' ends the line (POV-Ray refuses it; a backslash is written '\\\\')"
       | '\\' when p + 1 < len ->
           let e = text.[p + 1] in
           (match e with
@@ -90,11 +105,14 @@ let lex_string lx pos =
               let cp = int_of_string ("0x" ^ String.sub text (p + 2) 4) in
               Buffer.add_utf_8_uchar buf (if Uchar.is_valid cp then Uchar.of_int cp else Uchar.rep)
           | _ -> Buffer.add_char buf '\\'; Buffer.add_char buf e);
-          go (if e = 'u' && unicode_at p then p + 6 else p + 2)
-      | c -> Buffer.add_char buf c; go (p + 1)
+          let n = if e = 'u' && unicode_at p then 6 else 2 in
+          written := !written + n;
+          go (p + n)
+      | c -> Buffer.add_char buf c; incr written; go (p + 1)
   in
   let p = go pos in
-  check_length lx (pos - 1) (p - pos - 1) "string";
+  if !written > max_token then
+    Error.raise_at loc "this string is %d characters long; POV-Ray allows at most %d" !written max_token;
   ({ kind = Str (Buffer.contents buf); loc }, p)
 
 (* A number: digits, an optional fraction, an optional exponent (§11.1). *)
@@ -197,6 +215,32 @@ let scan_vector3 lx (out : float array) =
   if not ok then begin lx.line <- line; lx.bol <- bol end;
   ok
 
+(* POV-Ray's directive names (Parse_Directive in tokenize.cpp). *)
+let directive_names =
+  [ "declare"; "local"; "undef"; "version"; "include"; "if"; "ifdef"; "ifndef"; "elseif"; "else"; "end"; "while";
+    "for"; "switch"; "case"; "range"; "break"; "macro"; "debug"; "warning"; "error"; "default"; "fopen"; "fclose";
+    "read"; "write"; "render"; "statistics" ]
+
+let directive_table =
+  let h = Hashtbl.create 64 in
+  List.iter (fun d -> Hashtbl.replace h d ()) directive_names;
+  h
+
+let is_directive_name s = Hashtbl.mem directive_table s
+
+(* From [p], past white space (lines counted) and comments: the offset of the next token. *)
+let rec skip_blank lx p =
+  let text = lx.text and len = lx.len in
+  if p >= len then p
+  else
+    match String.unsafe_get text p with
+    | '\n' -> newline lx p; skip_blank lx (p + 1)
+    | ' ' | '\t' | '\r' | '\012' | '\011' | '\026' | '\000' -> skip_blank lx (p + 1)
+    | '/' when p + 1 < len && text.[p + 1] = '/' ->
+        (match String.index_from_opt text p '\n' with Some q -> skip_blank lx q | None -> len)
+    | '/' when p + 1 < len && text.[p + 1] = '*' -> skip_blank lx (skip_block lx (p + 2) (loc_at lx p))
+    | _ -> p
+
 let next lx =
   let text = lx.text and len = lx.len in
   let rec go pos =
@@ -220,11 +264,16 @@ let next lx =
       | '0' .. '9' -> let t, p = lex_number lx pos in check_length lx pos (p - pos) "number"; lx.pos <- p; t
       | '.' when pos + 1 < len && is_digit text.[pos + 1] -> let t, p = lex_number lx pos in check_length lx pos (p - pos) "number"; lx.pos <- p; t
       | '#' ->
-          let p = ref (pos + 1) in
-          while !p < len && (text.[!p] = ' ' || text.[!p] = '\t') do incr p done;
-          let s = !p in
+          (* POV-Ray reads the token after a '#', wherever it is (Parse_Directive in tokenize.cpp):
+             a directive name on a later line or after a comment is still the directive. Any other
+             token is left to be read as usual after a [Hash]. *)
+          let loc = loc_at lx pos and line = lx.line and bol = lx.bol in
+          let s = skip_blank lx (pos + 1) in
+          let p = ref s in
           while !p < len && is_ident text.[!p] do incr p done;
-          if !p = s then tok Hash 1 else tok (Directive (String.sub text s (!p - s))) (!p - pos)
+          let name = String.sub text s (!p - s) in
+          if is_directive_name name then begin lx.pos <- !p; { kind = Directive name; loc } end
+          else begin lx.line <- line; lx.bol <- bol; lx.pos <- pos + 1; { kind = Hash; loc } end
       | c when is_ident_start c ->
           let p = ref (pos + 1) in
           while !p < len && is_ident text.[!p] do incr p done;

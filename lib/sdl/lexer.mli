@@ -9,8 +9,16 @@ val create : file:string -> string -> t
 
 val next : t -> Token.t
 (** [next lx] is the next token, [Eof] at the end (and again after it). Nested comments are skipped.
-    Raises [Error.Scene_error] on an unterminated comment or string or a character that cannot
-    start a token. *)
+    A '#' followed (after white space and comments, line breaks included) by a directive name is
+    one [Directive] token located at the '#'; any other '#' is a [Hash] token, and what follows it
+    is read as the next token. Raises [Error.Scene_error] on an unterminated comment or string or a
+    character that cannot start a token. *)
+
+val directive_names : string list
+(** [directive_names] are POV-Ray's directive names (what may follow a '#'). *)
+
+val is_directive_name : string -> bool
+(** [is_directive_name s] tells whether [s] is one of [directive_names]. *)
 
 val scan_vector3 : t -> float array -> bool
 (** [scan_vector3 lx out], just after a '<': if the text goes on with three plain decimals

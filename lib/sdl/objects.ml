@@ -12,7 +12,7 @@ open Csg_build
 let unsupported_objects =
   [ "prism"; "lathe"; "sor"; "blob"; "height_field";
     "isosurface"; "superellipsoid"; "julia_fractal"; "parametric"; "bicubic_patch"; "ovus"; "cubic";
-    "quartic"; "poly"; "sphere_sweep"; "lemon" ]
+    "quartic"; "poly"; "polynomial"; "sphere_sweep"; "lemon"; "composite" ]
 
 let show_vec (v : Vec.t) = Printf.sprintf "<%g, %g, %g>" v.x v.y v.z
 
@@ -266,6 +266,52 @@ and parse_object_mods st (o : V.obj) what : V.obj =
               V.Member_obj { o with texture = None; interior = None; no_shadow = false } :: cl
         in
         loop { o with shape = Csg { kind = Clipped; members; split = false }; inverted = false }
+    (* What only photon mapping or radiosity reads, which are off unless global_settings turns
+       them on (and povml refuses that there): read as POV-Ray reads it (Parse_Object_Mods), and
+       nothing changes (trace.cpp tests photonsEnabled before any photon flag). *)
+    | Ident "photons" ->
+        advance st;
+        open_block st "photons";
+        let rec items () =
+          match peek st with
+          | Ident "target" -> advance st; if float_follows st then ignore (parse_float st); items ()
+          | Ident ("refraction" | "reflection") -> advance st; ignore (parse_float st); items ()
+          | Ident ("pass_through" | "collect") -> advance st; ignore (parse_bool_opt st); items ()
+          | _ -> ()
+        in
+        items ();
+        close_block st "photons";
+        loop o
+    | Ident "radiosity" ->
+        advance st;
+        open_block st "radiosity";
+        while is_ident st "importance" do
+          advance st;
+          let l = peek_loc st in
+          let i = parse_float st in
+          if not (i > 0. && i <= 1.) then Error.raise_at l "radiosity importance must be greater than 0 and at most 1, not %g" i
+        done;
+        close_block st "radiosity";
+        loop o
+    | Ident "no_radiosity" -> advance st; ignore (parse_bool_opt st); loop o
+    | Ident "hierarchy" -> (
+        (* a mesh's own bounding hierarchy, which only changes how fast it is traced *)
+        advance st;
+        ignore (parse_bool_opt st);
+        match o.shape with
+        | Prim (Mesh _) -> loop o
+        | Prim _ | Csg _ -> Error.raise_at loc "'hierarchy' cannot be used with this object (only with a mesh)")
+    | Ident "dtag" ->
+        (* a debugging tag, unused by the render *)
+        advance st;
+        let l = peek_loc st in
+        (match parse_expr st with V.String _ -> () | v -> Error.raise_at l "'dtag' needs a string, not %s" (V.kind_name v));
+        loop o
+    | _ when is_colour_start st ->
+        (* a colour written straight in an object: POV-Ray reads it and ignores it *)
+        ignore (parse_colour st);
+        warn st loc "Quick color belongs in texture. Color ignored.";
+        loop o
     | Ident s when is_unsupported s -> not_supported loc (Printf.sprintf "'%s'" s)
     | _ -> unexpected st (Printf.sprintf "an object modifier or '}' closing '%s'" what)
   in

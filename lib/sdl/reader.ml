@@ -132,6 +132,15 @@ let keywords =
       "number_of_tiles"; "pattern"; "repeat"; "flip"; "black_hole"; "strength"; "type"; "orientation"; "dist_exp";
       "toroidal"; "major_radius"; "altitude"; "normal"; "bump_size"; "accuracy"; "no_bump_scale"; "slope_map";
       "normal_map" ]
+  (* sRGB colours, and POV-Ray 3.7's reserved words povml reads outside these lists: functions,
+     charset names, #fopen and #write words, declaration modifiers (parser/reswords.cpp) *)
+  @ [ "srgb"; "srgbf"; "srgbt"; "srgbft"; "acosh"; "asinh"; "atanh"; "asc"; "bitwise_and"; "bitwise_or"; "bitwise_xor";
+      "chr"; "clock_on"; "concat"; "cosh"; "defined"; "dimension_size"; "dimensions"; "file_exists"; "now"; "rand";
+      "seed"; "sinh"; "str"; "strcmp"; "strlen"; "strlwr"; "strupr"; "substr"; "tanh"; "val"; "vaxis_rotate";
+      "vrotate"; "vstr"; "array"; "ascii"; "utf8"; "sys"; "append"; "deprecated"; "once"; "internal"; "sint8";
+      "sint16be"; "sint16le"; "sint32be"; "sint32le"; "uint8"; "uint16be"; "uint16le"; "hf_gray_16"; "mm_per_unit";
+      "max_intersections"; "dtag"; "no_radiosity"; "importance"; "target"; "pass_through"; "collect"; "hierarchy";
+      "bokeh"; "confidence"; "variance"; "aperture"; "focal_point"; "blur_samples"; "alpha" ]
 
 (* POV-Ray keywords that a later povml will read; meeting one is a located "not supported yet". *)
 let unsupported =
@@ -140,20 +149,45 @@ let unsupported =
     "material"; "image_map"; "bump_map";
     "texture_map"; "area_light";
     "projected_through"; "fisheye"; "panoramic"; "ultra_wide_angle"; "omnimax";
-    "aperture"; "focal_point"; "blur_samples"; "radiosity"; "photons";
+    "radiosity"; "photons";
     "media"; "fog"; "rainbow"; "irid"; "crand"; "dispersion"; "dispersion_samples"; "caustics";
-    "bounded_by"; "uv_mapping"; "srgb"; "srgbf"; "srgbt"; "srgbft"; "subsurface";
-    "interior_texture"; "light_group"; "no_radiosity"; "cutaway_textures"; "sturm";
+    "bounded_by"; "uv_mapping"; "subsurface";
+    "interior_texture"; "light_group"; "cutaway_textures"; "sturm";
     "phong_albedo"; "metallic_albedo"; "translucency" ]
   (* patterns and pattern modifiers not read yet (POVRAY-3.7 §17) *)
   @ [ "pigment_pattern"; "image_pattern"; "density_file"; "object_pattern"; "color_list" ]
+  (* more of POV-Ray 3.7's reserved words that start something povml does not read, each found
+     where POV-Ray reads it in an object, a light_source, a texture or an expression (checked word
+     by word with POV-Ray: parser/reswords.cpp) *)
+  @ [ "sphere_sweep"; "polynomial"; "composite"; "mesh_camera"; "adaptive"; "area_illumination"; "circular"; "jitter";
+      "orient"; "media_attenuation"; "media_interaction"; "tiles"; "material_map"; "bump_map"; "density"; "density_map"; "spline"; "inside"; "trace"; "max_extent"; "min_extent";
+      "vturbulence"; "datetime"; "function" ]
+
+(* The rest of POV-Ray 3.7's reserved words (parser/reswords.cpp), none of which povml reads: words
+   inside blocks povml does not read yet (a fog's fog_type, an isosurface's accuracy, the sums and
+   products of a user function …). They cannot
+   be declared, as in POV-Ray; found out of place they are the user's error, as they are POV-Ray's
+   (POV-Ray lets sred, sgreen, sblue and global be declared: they are not in this list). *)
+let reserved =
+  [ "aa_level"; "aa_threshold"; "absorption"; "accuracy"; "all"; "all_intersections"; "altitude"; "always_sample";
+    "anisotropy"; "arc_angle"; "autostop"; "b_spline"; "bezier_spline"; "black_hole"; "bmp"; "bump_size"; "component";
+    "conic_sweep"; "contained_by"; "cube"; "cubic_spline"; "df3"; "dist_exp"; "distance"; "eccentricity"; "evaluate";
+    "expand_thresholds"; "exr"; "exterior"; "extinction"; "falloff_angle"; "flatness"; "flip"; "fog_alt"; "fog_offset";
+    "fog_type"; "form"; "gamma"; "gather"; "gif"; "global_lights"; "hdr"; "hypercomplex"; "iff"; "interpolate";
+    "intervals"; "jpeg"; "linear_spline"; "linear_sweep"; "load_file"; "major_radius"; "map_type"; "max_gradient";
+    "max_iteration"; "max_sample"; "max_trace"; "method"; "natural_spline"; "number_of_sides"; "number_of_tiles";
+    "offset"; "orientation"; "pattern"; "pgm"; "png"; "pot"; "ppm"; "precision"; "precompute"; "premultiplied";
+    "pretrace_end"; "pretrace_start"; "prod"; "sum"; "pwr"; "quadratic_spline"; "quaternion"; "ratio"; "repeat"; "samples";
+    "save_file"; "scattering"; "slice"; "smooth"; "spacing"; "steps"; "strength"; "tga"; "thickness"; "threshold";
+    "tiff"; "tile2"; "tolerance"; "toroidal"; "turb_depth"; "type"; "u_steps"; "use_alpha"; "use_color"; "use_colour";
+    "use_index"; "v_steps"; "water_level"; "width"; "xyz" ]
 
 let set_of l =
   let h = Names.create 64 in
   List.iter (fun s -> Names.replace h s ()) l;
   h
 
-let keyword_set = set_of (keywords @ unsupported)
+let keyword_set = set_of (keywords @ unsupported @ reserved)
 let unsupported_set = set_of unsupported
 let is_keyword s = Names.mem keyword_set s
 let is_unsupported s = Names.mem unsupported_set s
@@ -231,16 +265,31 @@ let closes_branch f d =
 let run_directive st d loc =
   try st.directive st d loc with Unsupported (l, what, notes) -> raise (unsupported_error l what notes)
 
+(* POV-Ray's float functions and constants (the FLOAT_FUNCT tokens of reswords.h other than
+   version): after a '#' one of them, a number or a float identifier is an error, where any other
+   token is read as if the '#' were not there (Parse_Directive in tokenize.cpp). *)
+let float_tokens =
+  [ "abs"; "acos"; "acosh"; "asc"; "asin"; "asinh"; "atan"; "atan2"; "atanh"; "bitwise_and"; "bitwise_or";
+    "bitwise_xor"; "ceil"; "clock"; "clock_on"; "cos"; "cosh"; "defined"; "degrees"; "dimension_size"; "dimensions";
+    "div"; "exp"; "false"; "file_exists"; "floor"; "inside"; "int"; "ln"; "log"; "max"; "min"; "mod"; "no"; "now";
+    "off"; "on"; "pi"; "pow"; "prod"; "radians"; "rand"; "seed"; "select"; "sin"; "sinh"; "sqrt"; "strcmp";
+    "strlen"; "sum"; "tan"; "tanh"; "true"; "val"; "vdot"; "vlength"; "yes" ]
+
+let float_token_set =
+  let h = Names.create 64 in
+  List.iter (fun s -> Names.replace h s ()) float_tokens;
+  h
+
 let rec fill st =
   let f = top st in
-  let t = Lexer.next f.lx in
+  take st f (Lexer.next f.lx)
+
+(* The token [t] just read from frame [f]: a directive runs, a macro is called, anything else
+   becomes the current token. *)
+and take st f t =
   match t.kind with
   | Eof -> end_of_frame st f t
-  | Hash ->
-      (* POV-Ray reads the token after a '#' as a directive name and, when it is not one, goes on
-         with that token: a '#' with no name after it is ignored (Parse_Directive in tokenize.cpp) *)
-      st.warnings <- Error.warning t.loc "'#' is not followed by a directive name; it is ignored, as POV-Ray does" :: st.warnings;
-      fill st
+  | Hash -> after_hash st f t.loc (Lexer.next f.lx)
   | Directive d ->
       if st.defer && not (closes_branch f d) then begin st.cur <- t; st.have <- true; st.cur_elem <- None end
       else begin
@@ -258,6 +307,29 @@ let rec fill st =
           st.cur <- t; st.have <- true; st.cur_elem <- Some (a, i)
       | _ -> st.cur <- t; st.have <- true; st.cur_elem <- None)
   | _ -> st.cur <- t; st.have <- true; st.cur_elem <- None
+
+(* A '#' not followed by a directive name: POV-Ray reads the token after it as usual, so a '#'
+   before a keyword, an identifier, a macro call or punctuation is ignored, silently as POV-Ray
+   does (language/image_size.pov:25 ends "look_at <0,2,0>#"), except before a float (checked with
+   POV-Ray: "Expected 'object or directive.', float function 'clock' found instead"). A name that
+   is neither a keyword nor declared is a misspelt directive. *)
+and after_hash st f hash t =
+  let not_a_directive what = Error.raise_at t.loc "expected a directive or an object after '#' but found %s" what in
+  (match t.kind with
+  | Num _ -> not_a_directive (describe t.kind)
+  | Ident s when Names.mem float_token_set s -> not_a_directive (describe t.kind)
+  | Ident s -> (
+      match lookup st s with
+      | Some (V.Float _) -> not_a_directive (Printf.sprintf "'%s', which is a float" s)
+      | Some _ -> ()
+      | None when is_keyword s -> ()
+      | None -> (
+          match Suggest.nearest s Lexer.directive_names with
+          | [] -> Error.raise_at hash "unknown directive '#%s'" s
+          | sug -> Error.raise_at hash "unknown directive '#%s'; did you mean %s?" s (String.concat " or " (List.map (Printf.sprintf "'#%s'") sug))))
+  | Str _ | Directive _ | LBrace | RBrace | LParen | RParen | Lt | Gt | LBracket | RBracket | Comma | Semi | Plus
+  | Minus | Star | Slash | Dot | Eq | Ne | Le | Ge | Bang | Amp | Bar | Quest | Colon | Hash | Eof -> ());
+  take st f t
 
 and end_of_frame st f t =
   (match f.conds with

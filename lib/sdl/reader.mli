@@ -101,11 +101,15 @@ val keywords : string list
 val unsupported : string list
 (** [unsupported] are POV-Ray keywords povml reports as "not supported yet". *)
 
+val reserved : string list
+(** [reserved] are POV-Ray's other reserved words, which povml does not read: keywords that cannot
+    be declared, reported as out of place where they are met. *)
+
 val set_of : string list -> unit Names.t
 (** [set_of l] is the set of the names in [l]. *)
 
 val is_keyword : string -> bool
-(** [is_keyword s] tells whether [s] is a keyword (read or not yet supported). *)
+(** [is_keyword s] tells whether [s] is a keyword (read, not yet supported, or reserved). *)
 
 val is_unsupported : string -> bool
 (** [is_unsupported s] tells whether [s] is a keyword povml does not read yet. *)

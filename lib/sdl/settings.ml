@@ -12,19 +12,38 @@ let m_pi_360 = Float.pi /. 360.
 let empty_camera =
   { c_location = None; c_direction = None; c_up = None; c_right = None; c_sky = None; c_look_at = None; c_angle = None; c_trans = None; c_ortho = false }
 
+(* POV-Ray's camera types other than perspective and orthographic (Parse_Camera in parse.cpp). *)
+let other_projections = [ "fisheye"; "ultra_wide_angle"; "omnimax"; "panoramic"; "spherical"; "cylinder"; "mesh_camera" ]
+
 let parse_camera st =
   open_block st "camera";
-  let base =
+  let base, from_identifier =
     match peek st with
-    | Ident s -> ( match cur_value st s with Some (V.Camera c) -> advance st; c | _ -> empty_camera)
-    | _ -> empty_camera
+    | Ident s -> ( match cur_value st s with Some (V.Camera c) -> advance st; (c, true) | _ -> (empty_camera, false))
+    | _ -> (empty_camera, false)
   in
+  (* Focal blur: POV-Ray blurs only when the aperture is not 0 and blur_samples was given
+     (tracepixel.cpp: useFocalBlur), so focal_point, confidence, variance and bokeh change nothing
+     without both. The last aperture written counts; after a camera identifier, whose aperture
+     and samples povml does not keep, either of them is taken as turning the blur on. *)
+  let aperture = ref None and samples = ref None in
   let rec loop c =
     let loc = peek_loc st in
     match peek st with
-    | RBrace -> advance st; c
+    | RBrace ->
+        let blur_at =
+          match (!aperture, !samples) with
+          | Some (a, l), Some _ when a <> 0. -> Some l
+          | Some (a, l), None when a <> 0. && from_identifier -> Some l
+          | (None | Some _), Some l when from_identifier && (match !aperture with Some (a, _) -> a <> 0. | None -> true) -> Some l
+          | (None | Some _), (None | Some _) -> None
+        in
+        (match blur_at with Some l -> not_supported l "focal blur (a camera with a nonzero aperture and blur_samples)" | None -> ());
+        advance st;
+        c
     | Ident "perspective" -> advance st; loop { c with c_ortho = false }
     | Ident "orthographic" -> advance st; loop { c with c_ortho = true }
+    | Ident s when List.mem s other_projections -> not_supported loc (Printf.sprintf "'%s' in a camera (the %s projection)" s s)
     | Ident "location" -> advance st; loop { c with c_location = Some (parse_vector st) }
     | Ident "direction" -> advance st; loop { c with c_direction = Some (parse_vector st) }
     | Ident "up" -> advance st; loop { c with c_up = Some (parse_vector st) }
@@ -35,6 +54,41 @@ let parse_camera st =
     | Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") ->
         let t = Place.op_transform (parse_op st) in
         loop { c with c_trans = Some (match c.c_trans with None -> t | Some t0 -> Transform.compose t0 t) }
+    | Ident "aperture" -> advance st; aperture := Some (parse_float st, loc); loop c
+    | Ident "blur_samples" ->
+        (* blur_samples [MIN,] MAX, both truncated to integers (Parse_Camera_Mods) *)
+        advance st;
+        let l = peek_loc st in
+        let first = int_of_float (c_int (parse_float st)) in
+        if first <= 0 then Error.raise_at l "illegal number of focal blur samples: %d (it must be at least 1)" first;
+        skip_comma st;
+        let ml = peek_loc st in
+        let second = if float_follows st then int_of_float (c_int (parse_float st)) else 0 in
+        if second <> 0 && first > second then
+          Error.raise_at ml "focal blur samples minimum %d must not be larger than maximum %d" first second;
+        samples := Some loc;
+        loop c
+    | Ident "focal_point" -> advance st; ignore (parse_vector st); loop c
+    | Ident "confidence" ->
+        advance st;
+        let l = peek_loc st in
+        let k = parse_float st in
+        if not (k > 0. && k < 1.) then warn st l "Illegal confidence value. Default is used.";
+        loop c
+    | Ident "variance" ->
+        advance st;
+        let l = peek_loc st in
+        let k = parse_float st in
+        if not (k >= 0. && k <= 1.) then warn st l "Illegal variance value. Default is used.";
+        loop c
+    | Ident "bokeh" ->
+        (* bokeh { pigment { … } … }: the shape of the blur, read and unused without blur *)
+        advance st;
+        open_block st "bokeh";
+        let rec pigments () = if accept_ident st "pigment" then (ignore (parse_pigment st (Scene.Solid Colour.black)); pigments ()) in
+        pigments ();
+        close_block st "bokeh";
+        loop c
     | Ident s when is_unsupported s -> not_supported loc (Printf.sprintf "'%s' in a camera" s)
     | _ -> unexpected st "a camera keyword or '}'"
   in
@@ -98,6 +152,12 @@ let build_camera st (c : camera_spec) : Scene.camera =
         projection;
       }
 
+(* §7: clipped to 1 … 256; POV-Ray warns above 256 (not below 1) *)
+let parse_max_trace_level st loc =
+  let n = int_of_float (c_int (parse_float st)) in
+  if n > 256 then warn st loc "Maximum max_trace_level is 256 but %d was specified. Going to use max_trace_level 256." n;
+  st.max_trace_level <- max 1 (min 256 n)
+
 let parse_global_settings st =
   open_block st "global_settings";
   let rec loop () =
@@ -106,26 +166,47 @@ let parse_global_settings st =
     | RBrace -> advance st
     | Ident "assumed_gamma" ->
         advance st;
+        if is_ident st "srgb" then not_supported (peek_loc st) "'srgb' as the assumed_gamma";
         let g = parse_float st in
         if g <= 0. then Error.raise_at loc "assumed_gamma must be positive, not %g" g;
+        (* Parse_Gamma (parstxtr.cpp) warns below 1 once the scene's gamma mode is set, which it
+           is by then *)
+        if g < 1. then warn st loc "Suspicious value %g specified for gamma. Did you mean %g?" g (1. /. g);
         if st.assumed_gamma = None then st.assumed_gamma <- Some g
         else warn st loc "new instance of assumed_gamma ignored";
         loop ()
-    | Ident "max_trace_level" ->
-        advance st;
-        (* §7: clipped to 1 … 256; POV-Ray warns above 256 (not below 1) *)
-        let n = int_of_float (parse_float st) in
-        if n > 256 then warn st loc "Maximum max_trace_level is 256 but %d was specified. Going to use max_trace_level 256." n;
-        st.max_trace_level <- max 1 (min 256 n);
-        loop ()
+    | Ident "max_trace_level" -> advance st; parse_max_trace_level st loc; loop ()
     | Ident "adc_bailout" -> advance st; st.adc_bailout <- parse_float st; loop ()
     | Ident "ambient_light" -> advance st; st.ambient_light <- parse_rgb st "ambient_light"; loop ()
-    | Ident "number_of_waves" -> advance st; ignore (parse_float st); loop ()
-    | Ident "noise_generator" ->
-        (* parse.cpp: 1, 2 or 3, anything else clipped into that range *)
+    | Ident "number_of_waves" ->
+        (* read and checked as POV-Ray does; povml has no waves or ripples pattern to use it *)
         advance st;
-        st.noise_generator <- max 1 (min 3 (int_of_float (parse_float st)));
+        let l = peek_loc st in
+        if c_int (parse_float st) <= 0. then warn st l "Illegal Value: number_of_waves must be greater than 0. Changed to 1.";
         loop ()
+    | Ident "noise_generator" ->
+        (* parse.cpp: 1, 2 or 3; anything else is an error *)
+        advance st;
+        let l = peek_loc st in
+        let n = c_int (parse_float st) in
+        if n < 1. || n > 3. then Error.raise_at l "the noise_generator must be 1, 2 or 3, not %g" n;
+        st.noise_generator <- int_of_float n;
+        loop ()
+    | Ident "max_intersections" ->
+        advance st;
+        ignore (parse_float st);
+        if st.version >= 370 then warn st loc "'max_intersections' is no longer needed and has no effect in POV-Ray 3.7 or later.";
+        loop ()
+    | Ident "hf_gray_16" ->
+        (* POV-Ray 3.7 ignores it, with a warning: grey output is a command-line option there *)
+        advance st;
+        if float_follows st then ignore (parse_float st);
+        warn st loc
+          "In POV-Ray 3.7 and later 'hf_gray_16' has to be specified as an option on the command-line (e.g. '+FNg'), in an INI file (e.g. 'Grayscale_Output=true'), or (on some platforms) in a dialog. The 'hf_gray_16' setting here is ignored.";
+        loop ()
+    | Ident "mm_per_unit" ->
+        (* the scale of subsurface scattering only, which povml does not have *)
+        advance st; ignore (parse_float st); loop ()
     | Ident "irid_wavelength" -> advance st; ignore (parse_rgb st "irid_wavelength"); loop ()
     | Ident "charset" ->
         (* §15.9: ascii (the default), utf8 or sys *)

@@ -9,6 +9,10 @@ val parse_camera : Reader.st -> Reader.camera_spec
 val build_camera : Reader.st -> Reader.camera_spec -> Scene.camera
 (** [build_camera st c] applies the rules of §1.3 and the camera's transforms. *)
 
+val parse_max_trace_level : Reader.st -> Loc.t -> unit
+(** [parse_max_trace_level st loc] reads the number after [max_trace_level] (written at [loc]) into
+    [st], clipped to 1 … 256 as POV-Ray does. *)
+
 val parse_global_settings : Reader.st -> unit
 (** [parse_global_settings st] reads a global_settings block (after the keyword). *)
 

@@ -16,8 +16,8 @@ let c_int x = if Float.is_nan x || Float.abs x >= 2147483648. then -2147483648 e
 
 (* std::max and std::min as POV-Ray calls them: the first argument unless the comparison says
    otherwise, which decides NaNs and signed zeros *)
-let[@inline] fmax a b = if a < b then b else a
-let[@inline] fmin a b = if b < a then b else a
+let[@inline] fmax (a : float) b = if a < b then b else a
+let[@inline] fmin (a : float) b = if b < a then b else a
 let[@inline] max3 a b c = fmax a (fmax b c)
 
 (* CLIP_DENSITY: 1 − r inside [0, 1], 1 below and 0 above *)
@@ -169,7 +169,7 @@ let granite gen (q : Vec.t) =
   !noise
 
 (* one octave of wrinkles: the noise, stretched and clipped to [0, 1] by the newer generators *)
-let wrinkle_octave gen p =
+let[@inline] wrinkle_octave gen p =
   if gen > 1 then fmin (fmax ((Noise.noise gen p *. 2.0) -. 0.5) 0.0) 1.0 else Noise.noise gen p
 
 (* wrinkles: ten octaves, each at twice the frequency and half the weight of the last *)
@@ -216,6 +216,7 @@ let cells (q : Vec.t) =
 (* ---------------------------------------------------------------------------------------------- *)
 (* Shapes of space *)
 
+(* leopard: the square of the mean of the coordinates' sines *)
 let leopard (q : Vec.t) =
   let t1 = sin q.x and t2 = sin q.y and t3 = sin q.z in
   let v = (t1 +. t2 +. t3) /. 3.0 in
@@ -224,7 +225,7 @@ let leopard (q : Vec.t) =
 (* 0-1, 0-1, … with the distance from the origin *)
 let onion (q : Vec.t) = Float.rem (sqrt ((q.x *. q.x) +. (q.y *. q.y) +. (q.z *. q.z))) 1.0
 
-(* the angle around the y axis, a quarter turn past −z *)
+(* the angle around the y axis from −z, in turns, plus a quarter turn; 0.25 on the axis *)
 let radial (q : Vec.t) =
   if Float.abs q.x < 0.001 && Float.abs q.z < 0.001 then 0.25
   else 0.25 +. ((Float.atan2 q.x q.z +. Float.pi) /. two_pi)
@@ -334,7 +335,9 @@ let[@inline] crackle_distance metric dx dy dz =
 
 (* the distance from [q] to the random point of the [i]-th cube around <flox,floy,floz> *)
 let[@inline] crackle_distance_to metric flox floy floz i (q : Vec.t) =
-  let cx = flox + crackle_cubes.(3 * i) and cy = floy + crackle_cubes.((3 * i) + 1) and cz = floz + crackle_cubes.((3 * i) + 2) in
+  let cx = flox + crackle_cubes.(3 * i)
+  and cy = floy + crackle_cubes.((3 * i) + 1)
+  and cz = floz + crackle_cubes.((3 * i) + 2) in
   let seed = cube_seed cx cy cz in
   let px = float_of_int cx +. Noise.random_double seed
   and py = float_of_int cy +. Noise.random_double (seed + 1)
@@ -347,7 +350,9 @@ let crackle (form : Vec.t) metric offset solid gen (q : Vec.t) =
   and floz = c_int (floor (q.z -. Precision.epsilon)) in
   (* the three smallest distances, kept sorted, and which cube has the smallest; the first three
      are sorted as POV-Ray does, whose ties then decide the cube *)
-  let minsum = ref (crackle_distance_to metric flox floy floz 0 q) and minsum2 = ref (crackle_distance_to metric flox floy floz 1 q) and minsum3 = ref (crackle_distance_to metric flox floy floz 2 q) in
+  let minsum = ref (crackle_distance_to metric flox floy floz 0 q)
+  and minsum2 = ref (crackle_distance_to metric flox floy floz 1 q)
+  and minsum3 = ref (crackle_distance_to metric flox floy floz 2 q) in
   let nearest = ref 0 in
   if !minsum2 < !minsum then begin
     let tf = !minsum in
@@ -389,7 +394,9 @@ let crackle (form : Vec.t) metric offset solid gen (q : Vec.t) =
   let tf =
     if solid then
       let i = !nearest in
-      let cx = flox + crackle_cubes.(3 * i) and cy = floy + crackle_cubes.((3 * i) + 1) and cz = floz + crackle_cubes.((3 * i) + 2) in
+      let cx = flox + crackle_cubes.(3 * i)
+      and cy = floy + crackle_cubes.((3 * i) + 1)
+      and cz = floz + crackle_cubes.((3 * i) + 2) in
       let seed = cube_seed cx cy cz in
       Noise.noise gen
         (Vec.make
@@ -487,14 +494,14 @@ let power_set (f : Scene.fractal) e cr ci (q : Vec.t) =
         let new_a = ref (Float.pow x (float_of_int e)) in
         let k = ref 2 in
         while !k <= e do
-          new_a :=
-            !new_a +. (float_of_int binomial.(coeff + !k) *. Float.pow x (float_of_int (e - !k)) *. Float.pow y (float_of_int !k));
+          let c = float_of_int binomial.(coeff + !k) in
+          new_a := !new_a +. (c *. Float.pow x (float_of_int (e - !k)) *. Float.pow y (float_of_int !k));
           k := !k + 2
         done;
         let new_b = ref 0. and l = ref 1 in
         while !l <= e do
-          new_b :=
-            !new_b +. (float_of_int binomial.(coeff + !l) *. Float.pow x (float_of_int (e - !l)) *. Float.pow y (float_of_int !l));
+          let c = float_of_int binomial.(coeff + !l) in
+          new_b := !new_b +. (c *. Float.pow x (float_of_int (e - !l)) *. Float.pow y (float_of_int !l));
           l := !l + 2
         done;
         a := !new_a +. cr;
@@ -539,7 +546,9 @@ let magnet (f : Scene.fractal) kind mandel cr ci (q : Vec.t) =
     and tmp2r =
       if kind = 1 then (2. *. a0) +. cr -. 2.
       else (3. *. (a20 -. b20)) +. (3. *. ((a0 *. c2r) -. (b0 *. ci))) +. c1c2r +. 1.
-    and tmp2i = if kind = 1 then (2. *. b0) +. ci else (6. *. a0 *. b0) +. (3. *. ((a0 *. ci) +. (b0 *. c2r))) +. c1c2i in
+    and tmp2i =
+      if kind = 1 then (2. *. b0) +. ci else (6. *. a0 *. b0) +. (3. *. ((a0 *. ci) +. (b0 *. c2r))) +. c1c2i
+    in
     let tmp = (tmp2r *. tmp2r) +. (tmp2i *. tmp2i) in
     let na = ((tmp1r *. tmp2r) +. (tmp1i *. tmp2i)) /. tmp in
     let nb = ((tmp1i *. tmp2r) -. (tmp1r *. tmp2i)) /. tmp in
@@ -571,7 +580,11 @@ let fractal (f : Scene.fractal) (q : Vec.t) =
 
 let[@inline] component (v : Vec.t) axis = match axis with 0 -> v.x | 1 -> v.y | _ -> v.z
 
-(* the value wrapped into [0, 1), exactly 1 kept just below 1 *)
+(* slope: the angle of the normal to the slope vector, taken to [0, 1] and shaped by the slope's
+   range, mixed with the height along the altitude vector; wrapped into [0, 1), exactly 1 kept
+   just below 1. [point_at] aims at the slope vector from the point: POV-Ray takes the
+   intersection point itself, which [hit] does not carry, and this takes the pattern-space point
+   [q] (the same when the pattern is not transformed or warped). *)
 let slope (s : Scene.slope) (hit : hit) (q : Vec.t) =
   if hit == no_hit then 0.0
   else
@@ -616,11 +629,11 @@ let aoi (hit : hit) =
    tile the value is 1 on its edge and falls to 0 inside; with several kinds each has its own
    band of values. Each folds the point into a fundamental cell by translations and mirrors. *)
 
-(* a point of the XZ plane being folded or taken through a substitution: an all-float record, so
-   that its fields are stored unboxed *)
-type point2 = { mutable px : float; mutable pz : float }
-
 module Tiling = struct
+  (* a point of the XZ plane taken through a substitution: an all-float record, so that its fields
+     are stored unboxed *)
+  type point2 = { mutable px : float; mutable pz : float }
+
   let sin18 = 0.30901699437494742410229341718282
   let sin36 = 0.58778525229247312916870595463907
   let sin54 = 0.80901699437494742410229341718282
@@ -1336,7 +1349,8 @@ module Tiling = struct
                 and dist2 = Float.abs ((sin108 *. (px -. 1.)) -. (cos108 *. pz)) *. 5.55 in
                 max3 (1.0 -. (dist1 /. 2.)) (1.0 -. (dist2 /. 2.)) (0.5 +. tiling_epsilon)
               else
-                let dist1 = Float.abs pz *. 5.55 and dist2 = Float.abs ((sin72 *. (px -. invphi)) -. (cos72 *. pz)) *. 5.55 in
+                let dist1 = Float.abs pz *. 5.55
+                and dist2 = Float.abs ((sin72 *. (px -. invphi)) -. (cos72 *. pz)) *. 5.55 in
                 fmin (max3 (0.5 -. (dist1 /. 2.)) (0.5 -. (dist2 /. 2.)) 0.0) (0.5 -. tiling_epsilon)
             else
               let dist1 = Float.abs ((sin36 *. px) -. (cos36 *. pz)) *. 4.46
@@ -1377,7 +1391,8 @@ module Tiling = struct
   let into_wedge (s : point2) r =
     s.pz <- Float.abs s.pz;
     if s.px < r *. cos36 then begin
-      let rot_sin = if s.px < r *. cos108 then sin144 else sin72 and rot_cos = if s.px < r *. cos108 then cos144 else cos72 in
+      let far = s.px < r *. cos108 in
+      let rot_sin = if far then sin144 else sin72 and rot_cos = if far then cos144 else cos72 in
       let rot_x = (s.px *. rot_cos) +. (s.pz *. rot_sin) and rot_z = (s.pz *. rot_cos) -. (s.px *. rot_sin) in
       s.px <- rot_x;
       s.pz <- Float.abs rot_z
@@ -1467,7 +1482,9 @@ module Tiling = struct
             into_wedge s (distance s);
             fin := true;
             result :=
-              fmin (fmax ((2.0 /. 6.) -. (pentagon_dist s.px /. 6.)) ((1.0 /. 6.) +. tiling_epsilon)) ((2.0 /. 6.) -. tiling_epsilon)
+              fmin
+                (fmax ((2.0 /. 6.) -. (pentagon_dist s.px /. 6.)) ((1.0 /. 6.) +. tiling_epsilon))
+                ((2.0 /. 6.) -. tiling_epsilon)
           end
       | Pentagon3 ->
           let px = s.px and pz = s.pz and wedge = !side in
@@ -1485,7 +1502,9 @@ module Tiling = struct
             into_wedge s (distance s);
             fin := true;
             result :=
-              fmin (fmax ((3.0 /. 6.) -. (pentagon_dist s.px /. 6.)) ((2.0 /. 6.) +. tiling_epsilon)) ((3.0 /. 6.) -. tiling_epsilon)
+              fmin
+                (fmax ((3.0 /. 6.) -. (pentagon_dist s.px /. 6.)) ((2.0 /. 6.) +. tiling_epsilon))
+                ((3.0 /. 6.) -. tiling_epsilon)
           end
       | Star ->
           let px = s.px and pz = s.pz in
@@ -1495,7 +1514,8 @@ module Tiling = struct
           else begin
             fin := true;
             let dist = Float.abs ((sin162 *. (px -. (phi *. 0.5 /. sin36))) -. (cos162 *. pz)) *. 5.55 *. invphi in
-            result := fmin (fmax ((4.0 /. 6.) -. (dist /. 6.)) ((3.0 /. 6.) +. tiling_epsilon)) ((4.0 /. 6.) -. tiling_epsilon)
+            result :=
+              fmin (fmax ((4.0 /. 6.) -. (dist /. 6.)) ((3.0 /. 6.) +. tiling_epsilon)) ((4.0 /. 6.) -. tiling_epsilon)
           end
       | Boat ->
           let px = s.px and pz = s.pz and wedge = !side in
@@ -1522,7 +1542,8 @@ module Tiling = struct
           else begin
             fin := true;
             let dist = Float.abs ((sin18 *. (px +. (invphi *. 0.5 /. sin36))) -. (cos18 *. pz)) *. 5.55 *. invphi in
-            result := fmin (fmax ((6.0 /. 6.) -. (dist /. 6.)) ((5.0 /. 6.) +. tiling_epsilon)) ((6.0 /. 6.) -. tiling_epsilon)
+            result :=
+              fmin (fmax ((6.0 /. 6.) -. (dist /. 6.)) ((5.0 /. 6.) +. tiling_epsilon)) ((6.0 /. 6.) -. tiling_epsilon)
           end
     done;
     !result
@@ -1539,6 +1560,13 @@ module Tiling = struct
       penrose1_tiles (s.px *. k) (s.pz *. k) (depth * 4)
     end
 
+  (* the tilings by number: 1 squares, 2 hexagons, 3 triangles, 4 lozenges, 5 rhombs, 6 and 18
+     rectangles, 7 octagons and squares, 8 and 21 squares and triangles, 9 hexagons and
+     triangles, 10 offset squares, 11 and 12 squares and rectangles, 13 and 14 squares at 45° in
+     squares, 15 squares of two sizes, 16 and 17 hexagons, squares and triangles, 19 and 20
+     hexagons and triangles in shifted rows, 22 dodecagons and triangles, 23 and 24 dodecagons,
+     hexagons and squares, 25 Penrose's P1, 26 his kites and darts, 27 his rhombs; any other
+     number is 1, as in POV-Ray's switch *)
   let value n (p : Vec.t) =
     match n with
     | 27 -> penrose true false p
@@ -1881,8 +1909,8 @@ module Pavement = struct
   (* Squares. The cell [0,1)² of the unit grid, and its edges and corners:
        5---1---6
        |       |
-       4       2        edges 1, 2, 4, 8 (top, right, bottom, left as drawn),
-       |       |        corners 0x10, 0x20, 0x40, 0x80 for 5, 6, 7, 8
+       4       2        edges 1, 2, 3, 4 are the bits 0x01, 0x02, 0x04, 0x08 (z up),
+       |       |        corners 5, 6, 7, 8 the bits 0x10, 0x20, 0x40, 0x80
        8---3---7 *)
   let tetragonal tile number form interior exterior (p : Vec.t) =
     let x = p.x and y = p.z in
@@ -1996,8 +2024,9 @@ module Pavement = struct
       | _ -> 0x0F
     in
     let x = x -. floor x and y = y -. floor y in
-    (* the first of the corners 6, 5, 8, 7 (as drawn) where two borders meet at a tile's outer
-       corner: forms 0 to 2 shape it and return at once *)
+    (* a cell where the tile turns: two borders and the corner opposite them (0x16: edges 2 and 3
+       with corner 5; 0x2C: 3, 4 and 6; 0x49: 1, 4 and 7; 0x83: 1, 2 and 8); forms 0, 1 and 2
+       make the turn square, cut or round, and return at once *)
     let corner =
       if how land 0x16 = 0x16 then 1
       else if how land 0x2C = 0x2C then 2
@@ -2015,12 +2044,15 @@ module Pavement = struct
       | 1 ->
           (* a cut corner *)
           let v1 = 2. *. x and v2 = if corner = 1 || corner = 3 then 2. *. y else 2. -. (2. *. y) in
-          if corner = 1 || corner = 4 then fmin (Float.abs (v1 -. v2 +. 1.0)) 1.0 else fmin (Float.abs (v2 -. v1 +. 1.0)) 1.0
+          if corner = 1 || corner = 4 then fmin (Float.abs (v1 -. v2 +. 1.0)) 1.0
+          else fmin (Float.abs (v2 -. v1 +. 1.0)) 1.0
       | _ ->
           (* a square corner *)
           let px = (2. *. x) -. 1. and nx = 1. -. (2. *. x) and py = (2. *. y) -. 1. and ny = 1. -. (2. *. y) in
           let right = corner = 1 || corner = 4 and top = corner = 1 || corner = 2 in
-          fmax (fmax (if right then px else nx) (if top then ny else py)) (fmin (if right then nx else px) (if top then py else ny))
+          fmax
+            (fmax (if right then px else nx) (if top then ny else py))
+            (fmin (if right then nx else px) (if top then py else ny))
     else begin
       let rv = ref 0. in
       if how land 0x01 <> 0 then rv := fmax !rv ((2. *. y) -. 1.);
@@ -2069,14 +2101,88 @@ module Pavement = struct
        1: the left edge, 2: the right edge, 4: the base;
      the bits 0x10…0x400 mark corners whose tile is rounded (form), and 0x1000…0x4000 (hexagons)
      the vertices where a tile's interior corner is *)
-  let triangle_cell (p : Vec.t) (xv : int ref) (zv : int ref) =
-    let x = ref p.x and z = ref p.z in
-    xv := int_of_float (floor !x);
-    zv := int_of_float (floor (!z /. sqrt3));
-    x := !x -. float_of_int !xv;
-    z := !z -. (sqrt3 *. float_of_int !zv);
-    zv := !zv * 2;
-    xv := !xv * 2;
+  (* the edges and corners of the triangle in column [xv] and row [zv] of a 3-sided pavement *)
+  let trigonal_how tile number xv zv =
+    match tile with
+    | 6 ->
+        let xv, zv, lng =
+          match number - 1 with
+          | 0 | 1 | 9 -> (pmod (xv + (5 * zv)) 6, 0, 0)
+          | 2 | 10 | 11 -> (pmod (xv + (3 * (zv land 1))) 6, zv land 1, 0)
+          | 3 -> (pmod (xv + (14 * (pmod zv 6 / 2))) 6, zv land 1, 6)
+          | 4 | 8 -> (pmod (xv + (8 * (pmod zv 6 / 2))) 6, zv land 1, 6)
+          | 5 -> (pmod xv 6, zv land 1, 6)
+          | 6 | 7 -> ((xv - (pmod zv 12 / 3)) land 3, pmod zv 3, 4)
+          | _ -> (xv, zv, 0)
+        in
+        entry trihexagon number (xv + (zv * lng))
+    | 5 ->
+        let xv =
+          match number - 1 with
+          | 0 | 1 | 2 -> pmod (xv + (5 * (zv land 1))) 10
+          | 3 -> pmod (xv + (3 * pmod zv 10)) 10
+          | _ -> xv
+        in
+        entry tripentagon number xv
+    | 4 ->
+        let zv = zv land 3 in
+        entry tritetragon number (((xv + zv) land 3) + ((zv land 1) * 4))
+    | 3 -> entry tritrigon number (pmod (xv + (3 * (zv land 1))) 6)
+    | 2 -> 0x166
+    | _ -> 0x07
+
+  (* the cell of 60 triangles (or fewer) of a 6-sided pavement: [rows] rows of 6 columns, the
+     rows shifted by [shift] per 6 of [period] columns *)
+  let[@inline] sixty period shift rows xv zv = pmod xv 6 + (6 * pmod (zv + (shift * (pmod xv period / 6))) rows)
+
+  (* the edges and corners of the triangle in column [xv] and row [zv] of a 6-sided pavement *)
+  let hexagonal_how tile number xv zv =
+    match tile with
+    | 5 ->
+        let i =
+          match number - 1 with
+          | 0 | 2 | 3 | 5 | 6 | 19 -> sixty 6 0 10 xv zv
+          | 1 | 4 | 9 -> sixty 30 (-2) 10 xv zv
+          | 7 -> pmod xv 3 + (3 * pmod (zv - (7 * (pmod xv 60 / 3))) 20)
+          | 8 | 10 | 13 | 14 | 15 | 17 | 20 | 21 -> sixty 30 2 10 xv zv
+          | 11 | 16 -> sixty 30 (-6) 10 xv zv
+          | 12 | 18 -> sixty 30 6 10 xv zv
+          | _ -> xv
+        in
+        entry hexpentagon number i
+    | 4 ->
+        let i =
+          match number - 1 with
+          | 0 -> pmod xv 6 + (6 * (zv land 0x07))
+          | 3 | 4 | 5 -> sixty 24 (-2) 8 xv zv
+          | 2 -> pmod xv 12 + (12 * (zv land 0x01))
+          | 1 -> sixty 12 2 8 xv zv
+          | 6 -> pmod xv 12 + (12 * pmod zv 4)
+          | _ -> xv
+        in
+        entry hextetragon number i
+    | 3 ->
+        let i =
+          match number - 1 with
+          | 0 -> sixty 6 0 6 xv zv
+          | 1 -> sixty 18 2 6 xv zv
+          | 2 -> pmod xv 18 + (18 * (zv land 0x01))
+          | _ -> xv
+        in
+        entry hextrigon number i
+    | 2 -> entry hexdigon number (pmod xv 6 + (6 * (zv land 1)))
+    | _ -> entry hexmonogon number (pmod (xv + (3 * (zv land 1))) 6)
+
+  (* Triangles and hexagons. The point goes into an equilateral triangle of side 1 with its base
+     on z = 0 (its column xv and row zv counted in half-triangles), whose edges and corners are
+       1: the left edge, 2: the right edge, 4: the base;
+     the bits 0x10…0x400 mark corners whose tile is rounded (form), and 0x1000…0x4000 (hexagons)
+     the vertices where a tile's interior corner is. [how_of] gives the triangle's edges and
+     corners from its column and row. *)
+  let triangles how_of tile number form interior exterior (p : Vec.t) =
+    let xv = int_of_float (floor p.x) and zv = int_of_float (floor (p.z /. sqrt3)) in
+    let x = ref (p.x -. float_of_int xv) and z = ref (p.z -. (sqrt3 *. float_of_int zv)) in
+    let xv = ref (xv * 2) and zv = ref (zv * 2) in
     if !z > sqrt3_2 then begin
       z := !z -. sqrt3_2;
       if !x > 0.5 then begin
@@ -2099,10 +2205,8 @@ module Pavement = struct
       x := 1.5 -. !x;
       incr xv
     end;
-    { px = !x; pz = !z }
-
-  (* the value in the triangle at (x, z) whose edges and corners are [how] *)
-  let triangle_value how x z form interior exterior =
+    let how = how_of tile number !xv !zv and x = !x and z = !z in
+    (* the value in the triangle at (x, z) whose edges and corners are [how] *)
     let rv = ref 0. in
     if how land 0x01 <> 0 then rv := fmax !rv (1.0 -. (Float.abs ((sqrt3 *. x) -. z) *. sqrt3));
     if how land 0x02 <> 0 then rv := fmax !rv (1.0 -. (Float.abs ((sqrt3 *. (1.0 -. x)) -. z) *. sqrt3));
@@ -2120,7 +2224,9 @@ module Pavement = struct
         if apex && dist1 < 0. && dist2 < 0. then
           rv :=
             fmax !rv
-              (fmin ((3.0 /. 2.0 *. Float.abs ((sqrt3 *. z) +. x)) -. 2.0) ((3.0 /. 2.0 *. Float.abs ((sqrt3 *. z) -. x +. 1.0)) -. 2.0));
+              (fmin
+                 ((3.0 /. 2.0 *. Float.abs ((sqrt3 *. z) +. x)) -. 2.0)
+                 ((3.0 /. 2.0 *. Float.abs ((sqrt3 *. z) -. x +. 1.0)) -. 2.0));
         if left && dist1 > 0. && dist3 > 0. then
           rv := fmax !rv (fmin (1.0 -. (3.0 /. 2.0 *. Float.abs ((sqrt3 *. z) +. x))) (1.0 -. (x *. 3.0)));
         if right && dist3 < 0. && dist2 > 0. then
@@ -2153,8 +2259,10 @@ module Pavement = struct
         and dist3 = 1.0 -. (z *. 2.0 *. sqrt3) in
         let v1 = x -. 0.5 and v2 = z -. (sqrt3_2 /. 3.0) in
         if how land 0x03 = 0x03 && dist1 >= 0.0 && dist2 >= 0.0 then rv := fmin 1.0 (Float.abs (v2 *. 2.0 *. sqrt3));
-        if how land 0x06 = 0x06 && dist2 >= 0.0 && dist3 >= 0.0 then rv := fmin 1.0 (Float.abs ((sqrt3 *. v1) -. v2) *. sqrt3);
-        if how land 0x05 = 0x05 && dist1 >= 0.0 && dist3 >= 0.0 then rv := fmin 1.0 (Float.abs ((sqrt3 *. v1) +. v2) *. sqrt3)
+        if how land 0x06 = 0x06 && dist2 >= 0.0 && dist3 >= 0.0 then
+          rv := fmin 1.0 (Float.abs ((sqrt3 *. v1) -. v2) *. sqrt3);
+        if how land 0x05 = 0x05 && dist1 >= 0.0 && dist3 >= 0.0 then
+          rv := fmin 1.0 (Float.abs ((sqrt3 *. v1) +. v2) *. sqrt3)
     | _ -> ());
     let dist1 = 1.0 -. Float.abs ((sqrt3 *. z) +. x)
     and dist2 = 1.0 -. Float.abs ((sqrt3 *. z) -. x +. 1.0)
@@ -2180,130 +2288,11 @@ module Pavement = struct
         else !rv
     | _ -> !rv
 
-  let trigonal tile number form interior exterior (p : Vec.t) =
-    let xv = ref 0 and zv = ref 0 in
-    let c = triangle_cell p xv zv in
-    let how =
-      match tile with
-      | 6 ->
-          let lng =
-            match number - 1 with
-            | 0 | 1 | 9 ->
-                xv := pmod (!xv + (5 * !zv)) 6;
-                zv := 0;
-                0
-            | 2 | 10 | 11 ->
-                zv := !zv land 1;
-                xv := pmod (!xv + (3 * !zv)) 6;
-                0
-            | 3 ->
-                xv := pmod (!xv + (14 * (pmod !zv 6 / 2))) 6;
-                zv := !zv land 1;
-                6
-            | 4 | 8 ->
-                xv := pmod (!xv + (8 * (pmod !zv 6 / 2))) 6;
-                zv := !zv land 1;
-                6
-            | 5 ->
-                xv := pmod !xv 6;
-                zv := !zv land 1;
-                6
-            | 6 | 7 ->
-                xv := (!xv - (pmod !zv 12 / 3)) land 3;
-                zv := pmod !zv 3;
-                4
-            | _ -> 0
-          in
-          entry trihexagon number (!xv + (!zv * lng))
-      | 5 ->
-          (match number - 1 with
-          | 0 | 1 | 2 ->
-              zv := !zv land 1;
-              xv := pmod (!xv + (5 * !zv)) 10
-          | 3 ->
-              zv := pmod !zv 10;
-              xv := pmod (!xv + (3 * !zv)) 10
-          | _ -> ());
-          entry tripentagon number !xv
-      | 4 ->
-          zv := !zv land 3;
-          xv := (!xv + !zv) land 3;
-          zv := !zv land 1;
-          entry tritetragon number (!xv + (!zv * 4))
-      | 3 ->
-          zv := !zv land 1;
-          entry tritrigon number (pmod (!xv + (3 * !zv)) 6)
-      | 2 -> 0x166
-      | _ -> 0x07
-    in
-    triangle_value how c.px c.pz form interior exterior
-
-  (* Hexagons: each is six of the triangles above *)
-  let hexagonal tile number form interior (p : Vec.t) =
-    let xv = ref 0 and zv = ref 0 in
-    let c = triangle_cell p xv zv in
-    (* a period of [rows] rows of half-triangles, shifted along x by [shift] rows per 6 columns
-       per [per] columns *)
-    let sixty per shift rows =
-      zv := !zv + (shift * (pmod !xv per / 6));
-      zv := pmod !zv rows;
-      xv := pmod !xv 6;
-      xv := !xv + (6 * !zv)
-    in
-    let how =
-      match tile with
-      | 5 ->
-          (match number - 1 with
-          | 0 | 2 | 3 | 5 | 6 | 19 -> sixty 6 0 10
-          | 1 | 4 | 9 -> sixty 30 (-2) 10
-          | 7 ->
-              zv := !zv - (7 * (pmod !xv 60 / 3));
-              zv := pmod !zv 20;
-              xv := pmod !xv 3;
-              xv := !xv + (3 * !zv)
-          | 8 | 10 | 13 | 14 | 15 | 17 | 20 | 21 -> sixty 30 2 10
-          | 11 | 16 -> sixty 30 (-6) 10
-          | 12 | 18 -> sixty 30 6 10
-          | _ -> ());
-          entry hexpentagon number !xv
-      | 4 ->
-          (match number - 1 with
-          | 0 ->
-              zv := !zv land 0x07;
-              xv := pmod !xv 6;
-              xv := !xv + (6 * !zv)
-          | 3 | 4 | 5 -> sixty 24 (-2) 8
-          | 2 ->
-              zv := !zv land 0x01;
-              xv := pmod !xv 12;
-              xv := !xv + (12 * !zv)
-          | 1 -> sixty 12 2 8
-          | 6 ->
-              zv := pmod !zv 4;
-              xv := pmod !xv 12;
-              xv := !xv + (12 * !zv)
-          | _ -> ());
-          entry hextetragon number !xv
-      | 3 ->
-          (match number - 1 with
-          | 0 -> sixty 6 0 6
-          | 1 -> sixty 18 2 6
-          | 2 ->
-              zv := !zv land 0x01;
-              xv := pmod !xv 18;
-              xv := !xv + (18 * !zv)
-          | _ -> ());
-          entry hextrigon number !xv
-      | 2 -> entry hexdigon number (pmod !xv 6 + (6 * (!zv land 1)))
-      | _ -> entry hexmonogon number (pmod (!xv + (3 * (!zv land 1))) 6)
-    in
-    triangle_value how c.px c.pz form interior 0
-
   let value side tile number form interior exterior p =
     match side with
-    | 6 -> hexagonal tile number form interior p
+    | 6 -> triangles hexagonal_how tile number form interior 0 p (* hexagons have no exterior *)
     | 4 -> tetragonal tile number form interior exterior p
-    | _ -> trigonal tile number form interior exterior p
+    | _ -> triangles trigonal_how tile number form interior exterior p
 end
 
 (* ---------------------------------------------------------------------------------------------- *)
@@ -2341,7 +2330,8 @@ let value_with ~frequency ~phase (p : Scene.pattern) (warps : Scene.warp list) g
   | Spherical -> spherical q
   | Cylindrical -> cylindrical q
   | Fractal f -> fractal f q
-  | Pavement { side; tile; number; exterior; interior; form } -> Pavement.value side tile number form interior exterior q
+  | Pavement { side; tile; number; exterior; interior; form } ->
+      Pavement.value side tile number form interior exterior q
   | Tiling n -> Tiling.value n q
   | Aoi -> aoi hit
   | Slope s -> slope s hit q

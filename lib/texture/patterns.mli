@@ -1,9 +1,12 @@
 (** The value of every pattern at a point of pattern space (pattern.cpp), before the frequency,
     phase and wave of §17.1 are applied. *)
 
-(** What a few patterns need to know about the surface: aoi and slope. *)
+(** What a few patterns need to know about the surface: aoi and slope. (Slope's [point_at] also
+    uses the intersection point in POV-Ray; the pattern-space point stands for it here.) *)
 type hit = {
-  normal : Vec.t;  (** the surface normal at the point, world space, unit length *)
+  normal : Vec.t;
+      (** the surface normal at the point, world space, unit length, turned to face the ray and not
+          perturbed (POV-Ray's PNormal: aoi is 1 where the ray meets the surface head on) *)
   dir : Vec.t;  (** the ray's direction, unit length *)
 }
 

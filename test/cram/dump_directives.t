@@ -568,7 +568,7 @@ and after inner braces, and with a comma after the closing brace (Parse_Initaliz
 reads an element, then an optional comma; textures/patterns/tiling.pov, advanced/grenadine/lemon.inc),
 a comma before the '>' of a vector (Parse_Num_Factor in express.cpp; animations/float4/float4.pov),
 and a '#' with no directive name after it, which POV-Ray ignores without a message (Parse_Directive
-in tokenize.cpp; language/image_size.pov) and povml ignores with a warning:
+in tokenize.cpp; language/image_size.pov), and so does povml:
 
   $ cat > found.pov <<'POV'
   > #version 3.7;
@@ -595,6 +595,3 @@ in tokenize.cpp; language/image_size.pov) and povml ignores with a warning:
     texture { pigment { rgb <0.2, 0.1, 0.5> } }
   } // found.pov:12:1
   // 1 objects, 0 lights
-  found.pov:10:33: warning: '#' is not followed by a directive name; it is ignored, as POV-Ray does
-     10 | camera { location -5*z look_at 0#
-        |                                 ^

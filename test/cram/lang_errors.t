@@ -146,7 +146,7 @@ Macro calls with too few or too many arguments point at the definition:
   > M(Undefined)
   > POV
   $ povml --dump macroundef.pov
-  macroundef.pov:2:3: error: unknown identifier 'Undefined'
+  macroundef.pov:2:3: error: unknown identifier 'Undefined'; did you mean 'defined'?
       2 | M(Undefined)
         |   ^
   [1]

@@ -26,6 +26,8 @@ let loc_of (t : Token.t) = (t.loc.line, t.loc.col)
 let check_locs msg expected text =
   Alcotest.(check (list (pair int int))) msg expected (Array.to_list (Array.map loc_of (toks text)))
 
+let lex_error msg text ~line ~col ~sub = expect_error msg (fun () -> toks text) ~line ~col ~sub
+
 let test_numbers () =
   check_kinds "1 1. .5 1e-3 2.5E+2"
     [ Num 1.; Num 1.; Num 0.5; Num 0.001; Num 250.; Eof ]
@@ -61,6 +63,22 @@ let test_strings () =
   check_kinds "unknown escape" [ Str "\\q"; Eof ] {|"\q"|};
   check_kinds "empty" [ Str ""; Ident "x"; Eof ] "\"\" x"
 
+(* POV-Ray's Parse_String_Literal (tokenize.cpp) reads to the closing quote, line breaks included,
+   and its text stream (base/textstream.cpp, ITextStream::getchar) turns CR LF, LF CR and a lone CR
+   into one '\n': shapes3.inc's #warning at line 881 is a string over three lines. Checked with
+   POV-Ray: strlen of "a", CR LF, "b" is 3, and so with LF, CR, or LF CR. *)
+let test_multiline_strings () =
+  check_kinds "LF" [ Str "a\nb"; Eof ] "\"a\nb\"";
+  check_kinds "CR LF" [ Str "a\nb"; Eof ] "\"a\r\nb\"";
+  check_kinds "CR" [ Str "a\nb"; Eof ] "\"a\rb\"";
+  check_kinds "LF CR" [ Str "a\nb"; Eof ] "\"a\n\rb\"";
+  check_kinds "escapes still read" [ Str "a\n\n b"; Eof ] "\"a\\n\n b\"";
+  (* the lines inside the string are counted: x is on line 3 *)
+  check_locs "lines counted" [ (1, 1); (3, 8); (3, 9) ] "\"one\ntwo\r\nthree\" x";
+  (* the length limit counts a line end once *)
+  check_kinds "255 characters" [ Str (String.make 254 'a' ^ "\n"); Eof ] ("\"" ^ String.make 254 'a' ^ "\r\n\"");
+  lex_error "256 characters" ("\"" ^ String.make 255 'a' ^ "\n\"") ~line:1 ~col:1 ~sub:"256 characters long"
+
 let test_directives () =
   check_kinds "#declare"
     [ Directive "declare"; Ident "X"; Eq; Num 1.; Semi; Eof ]
@@ -73,7 +91,15 @@ let test_directives () =
      POV-Ray does (image_size.pov: "look_at <0,2,0>#" then "}" on the next line) *)
   check_kinds "lone #" [ Hash; LBrace; Eof ] "# {";
   check_kinds "# at the end of a line" [ Num 0.; Hash; RBrace; Eof ] "0#\n}";
-  check_locs "lone # located" [ (1, 1); (1, 2); (2, 1); (2, 2) ] "0#\n}"
+  check_locs "lone # located" [ (1, 1); (1, 2); (2, 1); (2, 2) ] "0#\n}";
+  (* POV-Ray reads the token after '#' wherever it is: a directive name on the next line or after
+     a comment is the directive, located at the '#' (checked with POV-Ray) *)
+  check_kinds "name on the next line" [ Directive "declare"; Ident "X"; Eof ] "#\n  declare X";
+  check_kinds "name after comments" [ Directive "local"; Ident "Y"; Eof ] "# /* a */ // b\n local Y";
+  check_locs "located at the '#', lines counted" [ (1, 2); (3, 10); (3, 11) ] " #\n\n declare X";
+  (* a word that is no directive name is a token of its own after the '#', on its own line *)
+  check_kinds "not a directive" [ Hash; Ident "pigment"; LBrace; Eof ] "# pigment {";
+  check_locs "not a directive, located" [ (1, 1); (2, 2); (2, 8) ] "#\n sphere"
 
 let test_operators () =
   check_kinds "relational"
@@ -113,15 +139,16 @@ let test_locations () =
   (* tabs count as one column (columns are bytes) *)
   check_locs "tab" [ (1, 2); (1, 3) ] "\tx"
 
-let lex_error msg text ~line ~col ~sub = expect_error msg (fun () -> toks text) ~line ~col ~sub
-
 let test_errors () =
   (* the outer comment opened at column 3 is never closed *)
   lex_error "unterminated comment" "a /* b /* c */" ~line:1 ~col:3 ~sub:"unterminated comment";
   lex_error "unterminated comment on line 2" "x\n  /* never closed\n" ~line:2 ~col:3 ~sub:"unterminated comment";
   (* the string opens at column 5 *)
   lex_error "unterminated string" "x = \"abc" ~line:1 ~col:5 ~sub:"unterminated string";
-  lex_error "string ends at newline" "x\n\"abc\ndef\"" ~line:2 ~col:1 ~sub:"unterminated string";
+  (* a line break inside the quotes is part of the string; the end of the file is not *)
+  lex_error "string open at the end" "x\n\"abc\ndef" ~line:2 ~col:1 ~sub:"unterminated string";
+  (* a '\' just before a line break: POV-Ray's "Unterminated string literal." *)
+  lex_error "backslash before a line break" "x\n\"ab\\\ncd\"" ~line:2 ~col:4 ~sub:"a '\\' ends the line";
   (* '$' at column 8 *)
   lex_error "bad character" "sphere $" ~line:1 ~col:8 ~sub:"unexpected character '$'";
   lex_error "bad byte" "a\n  \xC3\xA9" ~line:2 ~col:3 ~sub:"byte 0xC3"
@@ -178,6 +205,7 @@ let tests =
     Alcotest.test_case "nested comments" `Quick test_nested_comments;
     Alcotest.test_case "line comments" `Quick test_line_comments;
     Alcotest.test_case "strings" `Quick test_strings;
+    Alcotest.test_case "strings over several lines" `Quick test_multiline_strings;
     Alcotest.test_case "directives" `Quick test_directives;
     Alcotest.test_case "operators" `Quick test_operators;
     Alcotest.test_case "UTF-8 BOM" `Quick test_bom;

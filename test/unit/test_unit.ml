@@ -7,6 +7,7 @@ let () =
     ([
       ("Vec", Test_vec.tests);
       ("Lexer", Test_lexer.tests);
+      ("Syntax (POV-Ray 3.7 forms)", Test_syntax.tests);
       ("Interp", Test_interp.tests);
       ("Value", Test_misc.tests_value);
       ("Suggest", Test_misc.tests_suggest);
