@@ -87,7 +87,7 @@ let coloured ~legacy ~ambient_light (f : Scene.finish) base (c : Colour.t) =
     transparent = c.filter <> 0. || c.transmit <> 0.;
   }
 
-let surface ~legacy ~noise ~facets ~ambient_light (t : Scene.texture) =
+let surface ~legacy ~noise ~ambient_light (t : Scene.texture) =
   let f0 = t.finish in
   (* finish scalars are single precision too *)
   let f =
@@ -126,7 +126,7 @@ let surface ~legacy ~noise ~facets ~ambient_light (t : Scene.texture) =
       conserve = f.conserve_energy;
       paint = Fixed;
       (* the normal, if any, is perturbed at each hit; without one the tracer never looks *)
-      bump = (match t.normal with None -> Smooth | Some normal -> Bumpy { normal; facets });
+      bump = (match t.normal with None -> Smooth | Some nm -> Bumpy nm);
     }
   in
   match t.pigment with
@@ -157,13 +157,12 @@ end)
 let scene (s : Scene.t) : Compiled.t =
   let legacy = s.version < 370 in
   let memo = Texture_memo.create 16 in
-  let facets = Normals.facets_cache () in
   let surface ~legacy ~ambient_light t =
     let noise = s.noise_generator in
     match Texture_memo.find_opt memo t with
     | Some sf -> sf
     | None ->
-        let sf = surface ~legacy ~noise ~facets ~ambient_light t in
+        let sf = surface ~legacy ~noise ~ambient_light t in
         Texture_memo.add memo t sf;
         sf
   in
@@ -320,4 +319,5 @@ let scene (s : Scene.t) : Compiled.t =
     start_interiors;
     screen_holders = screen_holders s.camera tops;
     bounding;
+    facets = Normals.facets_cache ();
   }

@@ -35,11 +35,10 @@ and paint =
 (** Whether a surface's normal is bent by a normal pattern (normal.cpp). *)
 and bump =
   | Smooth  (** no normal: the surface is shaded with the shape's normal *)
-  | Bumpy of { normal : Scene.normal; facets : Normals.facets_cache }
+  | Bumpy of Scene.normal
       (** the texture's normal: at each hit it bends the shape's normal ({!Normals.perturb}), which
           then serves diffuse, highlights, the reflectivity's angle, the reflected and the
-          transmitted rays. [facets] is POV-Ray's per-thread facets cache, one for the whole
-          scene, emptied at the start of each block as a render thread's would be at its start. *)
+          transmitted rays *)
 
 (** The shapes as the tracer meets them; everything about each is in its module (lib/shapes/),
     and [Shape] dispatches to it. *)
@@ -168,4 +167,9 @@ type t = {
       (** POV-Ray builds its bounding hierarchy: the scene has at least 3 top-level objects, light
           sources and degenerate triangles included (Bounding_Threshold). Without it objects are
           tested in scene order, which decides exact depth ties. *)
+  facets : Normals.facets_cache;
+      (** POV-Ray's facets cache, which a render thread keeps for every facets normal it meets:
+          one for the scene, emptied at the start of each block ([Trace.make_ctx]) as a fresh
+          thread's would be. The only mutable part of the compiled scene; each render worker
+          process has its own. *)
 }

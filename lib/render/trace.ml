@@ -19,9 +19,9 @@ type nonrec ctx = Context.t
 (* A context for one block. POV-Ray's facets cache belongs to a render thread, and a block is
    rendered as by a fresh thread: the scene's cache is emptied first. *)
 let make_ctx ?robust (sc : Compiled.t) stats =
-  let reset (s : surface) = match s.bump with Smooth -> () | Bumpy { facets; _ } -> Normals.reset_facets facets in
-  Array.iter (fun (o : obj) -> reset o.surf; Array.iter reset o.face_surfs) sc.objects;
+  Normals.reset_facets sc.facets;
   Context.make ?robust sc stats
+
 let black = Traced.black
 
 (* ComputeReflection's direction off a bent normal [n]: the mirror direction, unless it points
@@ -73,9 +73,9 @@ and shade ctx ~reflected obj part depth ~level ~weight ~interiors (o : Vec.t) (d
     (* normal.cpp: a texture's normal bends N before the pigment is evaluated, whose slope and
        aoi patterns see the bent normal [pn]; [sn], the bent normal made unit, shades, reflects
        and refracts, and the raw N keeps the reflected ray on the surface's side (trace.cpp) *)
-    let pn = match s.bump with Smooth -> n | Bumpy b -> Normals.perturb ~facets:b.facets sc.noise_generator b.normal p { Patterns.normal = n; dir = d } n in
+    let pn = match s.bump with Smooth -> n | Bumpy nm -> Normals.perturb ~facets:sc.facets sc.noise_generator nm p { Patterns.normal = n; dir = d } n in
     let s = match s.paint with Fixed -> s | Varying at -> at { Patterns.normal = pn; dir = d } p in
-    let sn = match s.bump with Smooth -> n | Bumpy b -> Normals.layer_normal b.normal pn in
+    let sn = match s.bump with Smooth -> n | Bumpy nm -> Normals.layer_normal nm pn in
     let e = if ctx.robust then Robust.error_bound o p obj.mag else 0. in
     (* k_r, the reflection colour at the cosine of incidence N·E (E = −d, the way to the eye) *)
     let ci = -.Vec.dot d sn in
