@@ -73,8 +73,8 @@ let pattern_name (p : pattern) =
       Printf.sprintf "crackle form %s metric %s offset %s%s" (vec form) (num metric) (num offset) (if solid then " solid" else "")
   | Wrinkles -> "wrinkles"
   | Dents -> "dents"
-  | Waves -> "waves"
-  | Ripples -> "ripples"
+  | Waves n -> if n = 10 then "waves" else Printf.sprintf "waves (number_of_waves %d)" n
+  | Ripples n -> if n = 10 then "ripples" else Printf.sprintf "ripples (number_of_waves %d)" n
   | Quilted { control0; control1 } -> Printf.sprintf "quilted control0 %s control1 %s" (num control0) (num control1)
   | Facets { fsize; coords; fmetric } ->
       Printf.sprintf "facets%s size %s metric %s" (if coords then " coords" else "") (num fsize) (num fmetric)

@@ -27,8 +27,8 @@ type pattern =
       (** defaults: form <-1,1,0>, metric 2, offset 0, not solid *)
   | Wrinkles
   | Dents
-  | Waves
-  | Ripples
+  | Waves of int  (** with the number_of_waves of global_settings read before it (10 by default) *)
+  | Ripples of int
   | Quilted of { control0 : float; control1 : float }  (** single precision, 1 and 1 by default *)
   | Facets of { fsize : float; coords : bool; fmetric : float }  (** normal only: size 0.1, metric 2 *)
   | Spiral1 of int  (** the number of arms *)

@@ -131,7 +131,7 @@ let load_string opts ~file text =
       macro_calls = 0; iterations = 0; nesting = 0; braces = 0; object_count = 0;
       version = 370; version_set = false; charset = Ascii; warnings = [];
       objects = []; lights = []; camera = None; background = None; sky = None;
-      assumed_gamma = None; max_trace_level = 5; adc_bailout = 1. /. 255.; noise_generator = 2; ambient_light = Rgb.white;
+      assumed_gamma = None; max_trace_level = 5; adc_bailout = 1. /. 255.; noise_generator = 2; number_of_waves = 10; ambient_light = Rgb.white;
       default_texture = Defaults.texture;
       directive = (fun _ _ _ -> ()); invoke = (fun _ _ _ -> ()); index = (fun _ _ -> 0); files = [];
     }

@@ -201,8 +201,8 @@ let rec pattern_keyword st kind (h : header) : header option =
   | Ident "crackle" -> advance st; set (Crackle { form = Vec.make (-1.) 1. 0.; metric = 2.; offset = 0.; solid = false })
   | Ident "wrinkles" -> advance st; set Wrinkles
   | Ident "dents" -> advance st; set Dents
-  | Ident "waves" -> advance st; set Waves
-  | Ident "ripples" -> advance st; set Ripples
+  | Ident "waves" -> advance st; set (Waves st.number_of_waves)
+  | Ident "ripples" -> advance st; set (Ripples st.number_of_waves)
   | Ident "quilted" -> advance st; set ~frequency:0. (Quilted { control0 = 1.; control1 = 1. })
   | Ident "facets" ->
       if kind = Pigment_pattern then Error.raise_at loc "'facets' can only be used in a normal";

@@ -91,6 +91,7 @@ type st = {
   mutable max_trace_level : int;
   mutable adc_bailout : float;
   mutable noise_generator : int;
+  mutable number_of_waves : int;
   mutable ambient_light : Rgb.t;
   mutable default_texture : Scene.texture;
   mutable directive : st -> string -> Loc.t -> unit;  (* the directive reader, tied below *)

@@ -179,10 +179,15 @@ let parse_global_settings st =
     | Ident "adc_bailout" -> advance st; st.adc_bailout <- parse_float st; loop ()
     | Ident "ambient_light" -> advance st; st.ambient_light <- parse_rgb st "ambient_light"; loop ()
     | Ident "number_of_waves" ->
-        (* read and checked as POV-Ray does; povml has no waves or ripples pattern to use it *)
+        (* read and checked as POV-Ray does; waves and ripples read after it use it *)
         advance st;
         let l = peek_loc st in
-        if c_int (parse_float st) <= 0. then warn st l "Illegal Value: number_of_waves must be greater than 0. Changed to 1.";
+        let n = c_int (parse_float st) in
+        if n <= 0. then begin
+          warn st l "Illegal Value: number_of_waves must be greater than 0. Changed to 1.";
+          st.number_of_waves <- 1
+        end
+        else st.number_of_waves <- int_of_float n;
         loop ()
     | Ident "noise_generator" ->
         (* parse.cpp: 1, 2 or 3; anything else is an error *)

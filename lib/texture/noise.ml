@@ -360,6 +360,14 @@ let wave_frequency i =
   let next = draw (-560851967 land 0xFFFFFFFF) (i + 1) in
   (float (lcg_bits next) *. 0.000030518509476) +. 0.01
 
+(* source i does not depend on how many there are: the first 64 are tabled, more are made when
+   asked for *)
+let tabled_waves = 64
+let source_table = Array.init tabled_waves wave_source
+let frequency_table = Array.init tabled_waves wave_frequency
+let wave_sources n = if n <= tabled_waves then source_table else Array.init n wave_source
+let wave_frequencies n = if n <= tabled_waves then frequency_table else Array.init n wave_frequency
+
 (* ---------------------------------------------------------------------------------------------- *)
 (* The two waveforms of texture.cpp that patterns and normals use. cycloidal is sin(2π·frac v),
    the fraction taken by way of 50000ths; below 0 it is computed from −v, as −cycloidal(−v), which

@@ -49,6 +49,12 @@ val wave_source : int -> Vec.t
 val wave_frequency : int -> float
 (** [wave_frequency i] is the frequency of the [i]th wave, in [0.01, 1.01) (Initialize_Waves). *)
 
+val wave_sources : int -> Vec.t array
+(** [wave_sources n] holds at least [n] wave sources: [wave_source i] at index [i]. *)
+
+val wave_frequencies : int -> float array
+(** [wave_frequencies n] holds at least [n] wave frequencies: [wave_frequency i] at index [i]. *)
+
 val cycloidal : float -> float
 (** [cycloidal v] is POV-Ray's cycloidal: sin(2π·frac v) for [v] ≥ 0, −cycloidal(−v) below. *)
 

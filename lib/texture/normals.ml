@@ -66,15 +66,10 @@ let cycloidal v =
    integers) *)
 let pov_floor x = if x >= 0. then floor x else 0. -. floor (0. -. x) -. 1.
 
-(* POV-Ray's default number_of_waves; Scene.t has no global_settings { number_of_waves } *)
-let number_of_waves = 10
-
-(* Initialize_Waves: the sources and frequencies of the waves, built once *)
-let wave_sources = Array.init number_of_waves Noise.wave_source
-let wave_frequencies = Array.init number_of_waves Noise.wave_frequency
 
 (* ripples: each source adds the vector from it to the point, scaled by the sine of its distance *)
-let ripples (nm : Scene.normal) amount (q : Vec.t) (n : Vec.t) =
+let ripples number_of_waves (nm : Scene.normal) amount (q : Vec.t) (n : Vec.t) =
+  let wave_sources = Noise.wave_sources number_of_waves in
   let count = float_of_int number_of_waves in
   let n = ref n in
   for i = 0 to number_of_waves - 1 do
@@ -88,7 +83,8 @@ let ripples (nm : Scene.normal) amount (q : Vec.t) (n : Vec.t) =
   !n
 
 (* waves: as ripples, each source with its own frequency, its amplitude divided by it *)
-let waves_normal (nm : Scene.normal) amount (q : Vec.t) (n : Vec.t) =
+let waves_normal number_of_waves (nm : Scene.normal) amount (q : Vec.t) (n : Vec.t) =
+  let wave_sources = Noise.wave_sources number_of_waves and wave_frequencies = Noise.wave_frequencies number_of_waves in
   let count = float_of_int number_of_waves in
   let n = ref n in
   for i = 0 to number_of_waves - 1 do
@@ -284,8 +280,8 @@ let rec perturb_in cache gen ~keep_scale (nm : Scene.normal) (p : Vec.t) (hit : 
               let g = if nm.nnoise_generator = 0 then gen else nm.nnoise_generator in
               let v = Noise.noise g q in
               Vec.madd n (v *. v *. v *. amount) (Noise.dnoise q))
-      | Ripples -> own (ripples nm amount)
-      | Waves -> own (waves_normal nm amount)
+      | Ripples k -> own (ripples k nm amount)
+      | Waves k -> own (waves_normal k nm amount)
       | Wrinkles -> own (wrinkles amount)
       | Quilted { control0; control1 } -> own (quilted amount control0 control1)
       | Facets { fsize; coords; fmetric } -> own (facets cache ~size:fsize ~coords ~metric:fmetric)

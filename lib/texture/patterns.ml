@@ -270,13 +270,7 @@ let spiral2 arms warps gen (q : Vec.t) =
   triangle_wave rad +. turb_val
 
 (* ---------------------------------------------------------------------------------------------- *)
-(* waves and ripples: ten wave sources (Initialize_Waves, texture.cpp, number_of_waves 10) *)
-
-let number_of_waves = 10
-
-(* the sources and frequencies of Initialize_Waves, tabled once *)
-let wave_sources = Array.init number_of_waves Noise.wave_source
-let wave_frequencies = Array.init number_of_waves Noise.wave_frequency
+(* waves and ripples: number_of_waves wave sources (Initialize_Waves, texture.cpp; 10 by default) *)
 
 (* the distance to a source, 1 at the source itself *)
 let[@inline] source_distance (q : Vec.t) (s : Vec.t) =
@@ -284,8 +278,8 @@ let[@inline] source_distance (q : Vec.t) (s : Vec.t) =
   let l = sqrt ((dx *. dx) +. (dy *. dy) +. (dz *. dz)) in
   if l = 0.0 then 1.0 else l
 
-let waves frequency phase q =
-  let sources = wave_sources and freqs = wave_frequencies in
+let waves number_of_waves frequency phase q =
+  let sources = Noise.wave_sources number_of_waves and freqs = Noise.wave_frequencies number_of_waves in
   let scalar = ref 0.0 in
   for i = 0 to number_of_waves - 1 do
     let index = (source_distance q sources.(i) *. frequency *. freqs.(i)) +. phase in
@@ -293,8 +287,8 @@ let waves frequency phase q =
   done;
   0.2 *. (2.5 +. (!scalar /. float_of_int number_of_waves))
 
-let ripples frequency phase q =
-  let sources = wave_sources in
+let ripples number_of_waves frequency phase q =
+  let sources = Noise.wave_sources number_of_waves in
   let scalar = ref 0.0 in
   for i = 0 to number_of_waves - 1 do
     scalar := !scalar +. cycloidal ((source_distance q sources.(i) *. frequency) +. phase)
@@ -2319,8 +2313,8 @@ let value_with ~frequency ~phase (p : Scene.pattern) (warps : Scene.warp list) g
   | Crackle { form; metric; offset; solid } -> crackle form metric offset solid gen q
   | Wrinkles -> wrinkles gen q
   | Dents -> dents gen q
-  | Waves -> waves (Precision.f32 frequency) (Precision.f32 phase) q
-  | Ripples -> ripples (Precision.f32 frequency) (Precision.f32 phase) q
+  | Waves n -> waves n (Precision.f32 frequency) (Precision.f32 phase) q
+  | Ripples n -> ripples n (Precision.f32 frequency) (Precision.f32 phase) q
   | Quilted { control0; control1 } -> quilted control0 control1 q
   | Facets _ -> invalid_arg "Patterns.value: facets is a normal pattern only and has no value"
   | Spiral1 arms -> spiral1 arms warps gen q

@@ -7552,7 +7552,7 @@ let noise : case list =
       };
       {
         label = "waves";
-        pattern = Waves;
+        pattern = Waves 10;
         warps = [];
         gen = 2;
         route = Wrapped (f32 1.0, f32 0.0);
@@ -7565,7 +7565,7 @@ let noise : case list =
       };
       {
         label = "ripples";
-        pattern = Ripples;
+        pattern = Ripples 10;
         warps = [];
         gen = 2;
         route = Wrapped (f32 1.0, f32 0.0);
@@ -7578,7 +7578,7 @@ let noise : case list =
       };
       {
         label = "waves, frequency 2.5, phase 0.3";
-        pattern = Waves;
+        pattern = Waves 10;
         warps = [];
         gen = 2;
         route = Wrapped (f32 2.5, f32 0.3);
@@ -7591,7 +7591,7 @@ let noise : case list =
       };
       {
         label = "ripples, frequency 0.7, phase -0.45";
-        pattern = Ripples;
+        pattern = Ripples 10;
         warps = [];
         gen = 2;
         route = Wrapped (f32 0.7, f32 (-0.45));
