@@ -66,7 +66,6 @@ let cycloidal v =
    integers) *)
 let pov_floor x = if x >= 0. then floor x else 0. -. floor (0. -. x) -. 1.
 
-
 (* ripples: each source adds the vector from it to the point, scaled by the sine of its distance *)
 let ripples number_of_waves (nm : Scene.normal) amount (q : Vec.t) (n : Vec.t) =
   let wave_sources = Noise.wave_sources number_of_waves in
