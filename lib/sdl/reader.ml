@@ -98,6 +98,7 @@ type st = {
   mutable invoke : st -> V.macro -> Loc.t -> unit;  (* the macro caller, tied below *)
   mutable index : st -> V.array_v -> int;  (* reads the subscripts of an array element, tied below *)
   mutable files : V.user_file list;  (* the files #fopen opened, closed when the scene ends *)
+  mutable read_object : st -> V.obj option;  (* Objects' parser, for object patterns (Materials) *)
 }
 
 (* ---------------------------------------------------------------------------------------------- *)
