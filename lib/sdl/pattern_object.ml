@@ -41,8 +41,13 @@ let parse st loc : Scene.object_test =
         moves (List.map (Object_value.move_obj op) objs)
     | _ -> objs
   in
-  match moves objs with
+  let objs = moves objs in
+  (* Parse_Bound_Clip: the transforms are read before it checks that an object came *)
+  if objs = [] then unexpected st "an object or object identifier in the object pattern";
+  match objs with
   | [ o ] ->
       let obj = scene_obj st o in
-      { inside = Inside_test.of_object obj; shown = String.concat " " (List.map String.trim (String.split_on_char '\n' (Dump.obj obj))) }
-  | [] | _ :: _ :: _ -> Error.raise_at (peek_loc st) "object or object identifier expected in an object pattern"
+      { inside = Inside_test.of_object obj; shown = String.concat " " (List.filter (( <> ) "") (List.map String.trim (String.split_on_char '\n' (Dump.obj obj)))) }
+  | [] | _ :: _ :: _ ->
+      (* parstxtr.cpp: the pattern has room for one object *)
+      Error.raise_at (peek_loc st) "object or object identifier expected: an object pattern takes exactly one object, %d were written" (List.length objs)
