@@ -101,6 +101,7 @@ let pattern_name (p : pattern) =
   | Aoi -> "aoi"
   | Slope s -> "slope " ^ vec s.slope_vector
   | Average -> "average"
+  | Object_pattern t -> "object { " ^ t.shown ^ " }"
 
 let turb (t : turb) =
   Printf.sprintf "turbulence %s octaves %d omega %s lambda %s" (vec t.turbulence) t.octaves (num t.omega) (num t.lambda)

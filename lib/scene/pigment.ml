@@ -140,7 +140,7 @@ let brick_map = entries [ (0., 0.5, 0.5, 0.5); (1., 0.6, 0.15, 0.15) ]
 
 let default_map (p : Scene.pattern) =
   match p with
-  | Checker -> Array.sub hex_entries 0 2
+  | Checker | Object_pattern _ -> Array.sub hex_entries 0 2 (* pigment.cpp: the object pattern has checker's map *)
   | Hexagon -> hex_entries
   | Brick _ -> brick_map
   | Square -> Array.sub cubic_entries 0 4

@@ -44,6 +44,22 @@ type pattern =
   | Aoi  (** the angle between the ray and the surface normal *)
   | Slope of slope
   | Average  (** a normal's [average] of the entries of its normal_map *)
+  | Object_pattern of object_test
+      (** pattern.cpp object_pattern: 1 where the point is inside the object, 0 outside; a block
+          pattern with two entries (checker's default map), frequency 0 *)
+
+(** The object of an [object] pattern, reduced to what the pattern needs: [pattern] comes before
+    [obj] in this file (and one recursive group would clash labels), so the object itself is kept
+    as its Inside test and its [--dump] text, both made once when it was parsed. The object is the
+    one parsed, moved by the transforms written inside the pattern's block, never by the
+    pattern's own (those move the point instead). *)
+and object_test = {
+  inside : Vec.t -> bool;
+      (** POV-Ray's Inside_Object of the object at a pattern-space point; it owns its traversal
+          room, so it must not be called from two threads at once (povml's workers are
+          processes, lib/render/pool.mli) *)
+  shown : string;  (** the object as [--dump] prints it *)
+}
 
 (** mandel, julia and magnet patterns (pattern.cpp's fractal fields). *)
 and fractal = {

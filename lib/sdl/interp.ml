@@ -134,11 +134,13 @@ let load_string opts ~file text =
       assumed_gamma = None; max_trace_level = 5; adc_bailout = 1. /. 255.; noise_generator = 2; number_of_waves = 10; ambient_light = Rgb.white;
       default_texture = Defaults.texture;
       directive = (fun _ _ _ -> ()); invoke = (fun _ _ _ -> ()); index = (fun _ _ -> 0); files = [];
+      read_object = (fun _ -> None);
     }
   in
   st.directive <- directive;
   st.invoke <- invoke;
   st.index <- parse_index;
+  st.read_object <- (fun st -> if object_follows st then Some (parse_object st) else None);
   (* the scene's files are closed when its text has been read, or at its first error *)
   Fun.protect ~finally:(fun () -> User_files.close_all st) (fun () ->
       try parse_statements st with

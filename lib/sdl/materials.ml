@@ -105,7 +105,7 @@ let block_pattern st (current : Scene.pattern option) =
   | _ -> None
 
 let is_block (p : Scene.pattern option) =
-  match p with Some (Checker | Hexagon | Brick _ | Square | Triangular | Cubic) -> true | _ -> false
+  match p with Some (Checker | Hexagon | Brick _ | Square | Triangular | Cubic | Object_pattern _) -> true | _ -> false
 
 let is_pattern_start st =
   match peek st with
@@ -185,6 +185,13 @@ let rec parse_pigment_body st ~close (base : Scene.pigment) : Scene.pigment =
         let pattern, n = Option.get (block_pattern st g.h.pat) in
         advance st;
         loop (listed g pattern n)
+    | Ident "object" ->
+        (* object { OBJECT [transforms] [two colours or pigments] }: the list inside the block *)
+        advance st;
+        open_block st "object";
+        let g = listed g (Object_pattern (Pattern_object.parse st loc)) 2 in
+        close_block st "object";
+        loop g
     | Ident (("color_map" | "colour_map") as kw) ->
         advance st;
         if is_block g.h.pat then Error.raise_at loc "cannot use %s with this pattern type" kw;
@@ -295,22 +302,31 @@ let rec parse_normal_body st ~close (base : Scene.normal option) : Scene.normal 
     | None -> ( match base with Some n -> nrm_of n | None -> default_normal st)
   in
   (* the pattern (once), then an optional amount, then modifiers *)
+  let listed (n : nrm) pattern count =
+    let h = { n.nh with pat = Some pattern; frequency = 0. } in
+    let rec go i acc =
+      if i < count && (i = 0 || (ignore (accept st Comma); is_ident st "normal")) && is_ident st "normal" then begin
+        advance st;
+        let nm = parse_normal st None in
+        go (i + 1) ({ Scene.nvalue = float_of_int i; nnormal = nm } :: acc)
+      end
+      else List.rev acc
+    in
+    let given = go 0 [] in
+    (* no normals listed: no map, the pattern's slope *)
+    { n with nh = h; nmap = (if given = [] then No_map else Normal_map (Array.of_list given)) }
+  in
   let n =
     match block_pattern st n.nh.pat with
-    | Some (pattern, count) ->
+    | Some (pattern, count) -> advance st; listed n pattern count
+    | None when is_ident st "object" ->
+        (* as in a pigment: the object, then up to two normals, inside the block *)
+        let loc = peek_loc st in
         advance st;
-        let h = { n.nh with pat = Some pattern; frequency = 0. } in
-        let rec go i acc =
-          if i < count && (i = 0 || (ignore (accept st Comma); is_ident st "normal")) && is_ident st "normal" then begin
-            advance st;
-            let nm = parse_normal st None in
-            go (i + 1) ({ Scene.nvalue = float_of_int i; nnormal = nm } :: acc)
-          end
-          else List.rev acc
-        in
-        let given = go 0 [] in
-        (* no normals listed: no map, the pattern's slope *)
-        { n with nh = h; nmap = (if given = [] then No_map else Normal_map (Array.of_list given)) }
+        open_block st "object";
+        let n = listed n (Object_pattern (Pattern_object.parse st loc)) 2 in
+        close_block st "object";
+        n
     | None -> (
         match Pattern_reader.pattern_keyword st Normal_pattern { n.nh with pat = None } with
         | Some h -> { n with nh = h }

@@ -98,6 +98,7 @@ type st = {
   mutable invoke : st -> V.macro -> Loc.t -> unit;  (* the macro caller, tied below *)
   mutable index : st -> V.array_v -> int;  (* reads the subscripts of an array element, tied below *)
   mutable files : V.user_file list;  (* the files #fopen opened, closed when the scene ends *)
+  mutable read_object : st -> V.obj option;  (* Objects' parser, for object patterns (Materials) *)
 }
 
 (* ---------------------------------------------------------------------------------------------- *)
@@ -156,7 +157,7 @@ let unsupported =
     "interior_texture"; "light_group"; "cutaway_textures"; "sturm";
     "phong_albedo"; "metallic_albedo"; "translucency" ]
   (* patterns and pattern modifiers not read yet (POVRAY-3.7 §17) *)
-  @ [ "pigment_pattern"; "image_pattern"; "density_file"; "object_pattern"; "color_list" ]
+  @ [ "pigment_pattern"; "image_pattern"; "density_file"; "color_list" ]
   (* more of POV-Ray 3.7's reserved words that start something povml does not read, each found
      where POV-Ray reads it in an object, a light_source, a texture or an expression (checked word
      by word with POV-Ray: parser/reswords.cpp) *)

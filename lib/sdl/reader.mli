@@ -94,6 +94,10 @@ type st = {
   mutable invoke : st -> V.macro -> Loc.t -> unit;
   mutable index : st -> V.array_v -> int;
   mutable files : V.user_file list;
+  mutable read_object : st -> V.obj option;
+      (** the object parser (Objects), for the object pattern inside a pigment or normal, which
+          Materials reads but cannot name (Objects uses Materials): the object written next,
+          else None *)
 }
 
 val keywords : string list

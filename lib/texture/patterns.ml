@@ -50,6 +50,10 @@ let checker (q : Vec.t) =
   let s = Precision.(floor (q.x +. epsilon) +. floor (q.y +. epsilon) +. floor (q.z +. epsilon)) in
   if c_int s land 1 = 1 then 1. else 0.
 
+(* pattern.cpp object_pattern: 1 inside the object (Inside_Object: inside every clip object, then
+   the object's own Inside test), else 0 *)
+let object_pattern (t : Scene.object_test) (q : Vec.t) = if t.inside q then 1. else 0.
+
 (* §17.5: values up to 1 (negatives included) pass unchanged; the wrap of §17.1 does the rest *)
 let gradient (v : Vec.t) (q : Vec.t) =
   let r = (q.x *. v.x) +. (q.y *. v.y) +. (q.z *. v.z) in
@@ -2330,5 +2334,6 @@ let value_with ~frequency ~phase (p : Scene.pattern) (warps : Scene.warp list) g
   | Aoi -> aoi hit
   | Slope s -> slope s hit q
   | Average -> invalid_arg "Patterns.value: average has no value (it averages the entries of its map)"
+  | Object_pattern t -> object_pattern t q
 
 let value p warps gen hit q = value_with ~frequency:1. ~phase:0. p warps gen hit q

@@ -1,0 +1,67 @@
+(* An object's Inside test for an object pattern: the object compiled as Compile compiles a scene
+   object, keeping only what the Inside tests read (shapes, CSG kinds, inversion); surfaces,
+   interiors and ids are never read by [Shape.inside] and get neutral values. *)
+
+open Compiled
+
+(* what the Inside tests never read, in the fields a compiled object must have *)
+let no_surface =
+  {
+    colour = Rgb.black;
+    att = 1.;
+    emitted = Rgb.black;
+    lit = false;
+    diffuse = 0.;
+    brilliance = 0.;
+    phong = 0.;
+    phong_size = 0.;
+    specular = 0.;
+    spec_exp = 0.;
+    metallic = 0.;
+    refl = Defaults.reflection;
+    reflects = false;
+    filcol = Rgb.black;
+    transparent = false;
+    conserve = false;
+    paint = Fixed;
+    bump = Smooth;
+  }
+
+let member ~inverted shape =
+  {
+    id = 0;
+    iid = 0;
+    top = 0;
+    inverted;
+    shape;
+    surf = no_surface;
+    face_surfs = [||];
+    ior = 1.;
+    fade_distance = 0.;
+    fade_power = 0.;
+    fade_colour = Rgb.black;
+    old_refract = 1.;
+    opaque = true;
+    mag = 0.;
+    pbox = [||];
+    double_illuminate = false;
+  }
+
+(* the compiled shape of [s], its members compiled the same way (Compile.scene's [build]) *)
+let rec shape (s : Scene.shape) : Compiled.shape option =
+  match s with
+  | Csg { kind; members } ->
+      let members =
+        List.filter_map (fun (m : Scene.member) -> Option.map (member ~inverted:m.inverted) (shape m.mobj.shape)) members
+      in
+      Some (Csg { kind; members = Array.of_list members; cbox = [||] })
+  | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Polygon _ | Quadric _ | Glyph _ ->
+      Shape.compile s
+
+let of_object (o : Scene.obj) =
+  match shape o.shape with
+  | None -> fun _ -> false
+  | Some compiled ->
+      (* the traversal room of mesh Inside tests, as Compile gives the camera's test *)
+      let stack = Array.make 512 0. in
+      fun p -> Shape.inside stack compiled p
