@@ -103,7 +103,10 @@ let ellipsoid_hits (w : Scratch.t) { sp = s; etr = t } id (o : Vec.t) (d : Vec.t
       if n > n0 then stats.sphere_hits <- stats.sphere_hits + 1;
       n
 
-let normal s (p : Vec.t) = Vec.make ((p.x -. s.cx) /. s.radius) ((p.y -. s.cy) /. s.radius) ((p.z -. s.cz) /. s.radius)
+(* VInverseScaleEq: times the reciprocal of the radius, not a division *)
+let normal s (p : Vec.t) =
+  let k = 1. /. s.radius in
+  Vec.make ((p.x -. s.cx) *. k) ((p.y -. s.cy) *. k) ((p.z -. s.cz) *. k)
 
 let ellipsoid_normal { sp = s; etr } p =
   let q = Transform.inv_point etr p in
