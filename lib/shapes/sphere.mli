@@ -1,7 +1,7 @@
 (** The sphere (POVRAY-3.7 §2.2), and the ellipsoid: a sphere mapped by a transform (§14.5 (b)). *)
 
 type t = { cx : float; cy : float; cz : float; radius : float; r2 : float }
-(** Centre, radius as written (the normal is divided by it), radius². *)
+(** Centre, radius as written (the normal is scaled by its reciprocal), radius². *)
 
 type ellipsoid = { sp : t; etr : Transform.t }
 (** The object-space sphere [sp] mapped by [etr]. *)
@@ -31,7 +31,9 @@ val ellipsoid_hits : Scratch.t -> ellipsoid -> int -> Vec.t -> Vec.t -> float ->
 (** [ellipsoid_hits] is [hits] for an ellipsoid; the hit points are the object-space points mapped back. *)
 
 val normal : t -> Vec.t -> Vec.t
-(** [normal s p] is (P − C)/radius. *)
+(** [normal s p] is (P − C)·(1/radius): Sphere::Normal's VInverseScaleEq multiplies by the
+    reciprocal, which can differ from a division in the last bit — enough, on a hit point that
+    lands on a quilted or other cell boundary a few bounces later, to change a pixel. *)
 
 val ellipsoid_normal : ellipsoid -> Vec.t -> Vec.t
 (** [ellipsoid_normal e p] is P′ − C in object space, by the inverse transpose, normalised (§14.6). *)
