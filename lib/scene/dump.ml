@@ -77,7 +77,7 @@ let pattern_name (p : pattern) =
   | Ripples n -> if n = 10 then "ripples" else Printf.sprintf "ripples (number_of_waves %d)" n
   | Quilted { control0; control1 } -> Printf.sprintf "quilted control0 %s control1 %s" (num control0) (num control1)
   | Facets { fsize; coords; fmetric } ->
-      Printf.sprintf "facets%s size %s metric %s" (if coords then " coords" else "") (num fsize) (num fmetric)
+      Printf.sprintf "facets%s size %s metric %s" (if coords <> 0. then " coords " ^ num coords else "") (num fsize) (num fmetric)
   | Spiral1 n -> Printf.sprintf "spiral1 %d" n
   | Spiral2 n -> Printf.sprintf "spiral2 %d" n
   | Planar -> "planar"

@@ -30,7 +30,8 @@ type pattern =
   | Waves of int  (** with the number_of_waves of global_settings read before it (10 by default) *)
   | Ripples of int
   | Quilted of { control0 : float; control1 : float }  (** single precision, 1 and 1 by default *)
-  | Facets of { fsize : float; coords : bool; fmetric : float }  (** normal only: size 0.1, metric 2 *)
+  | Facets of { fsize : float; coords : float; fmetric : float }
+      (** normal only: size 0.1, metric 2; [coords] as written (0: off), which also scales the bend *)
   | Spiral1 of int  (** the number of arms *)
   | Spiral2 of int
   | Planar

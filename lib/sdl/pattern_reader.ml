@@ -207,7 +207,7 @@ let rec pattern_keyword st kind (h : header) : header option =
   | Ident "facets" ->
       if kind = Pigment_pattern then Error.raise_at loc "'facets' can only be used in a normal";
       advance st;
-      set (Facets { fsize = 0.1; coords = false; fmetric = 2. })
+      set (Facets { fsize = 0.1; coords = 0.; fmetric = 2. })
   | Ident ("spiral1" | "spiral2" as kw) ->
       advance st;
       let arms = int_of_float (parse_float st) in
@@ -402,7 +402,7 @@ let modifier st (h : header) : header option =
   | Ident "coords" -> (
       advance st;
       let c = parse_float st in
-      match h.pat with Some (Facets f) -> Some { h with pat = Some (Facets { f with coords = c <> 0. }) } | _ -> only_in loc "coords" "facets")
+      match h.pat with Some (Facets f) -> Some { h with pat = Some (Facets { f with coords = c }) } | _ -> only_in loc "coords" "facets")
   | Ident "size" -> (
       advance st;
       let s = parse_float st in

@@ -168,7 +168,7 @@ let cube_seed (tv : Vec.t) =
    the cube's hash is the cache's, else the 81 around [tv] (stored in the cache when there is one). *)
 let facets cache ~size ~coords ~metric (q : Vec.t) (n : Vec.t) =
   let n = Transform.normalize n in
-  let tv = if coords then q else n in
+  let tv = if coords <> 0. then q else n in
   let scale = if size < 1e-6 then 1e6 else 1. /. size in
   let tv = Vec.make (tv.x *. scale) (tv.y *. scale) (tv.z *. scale) in
   let points =
@@ -197,12 +197,12 @@ let facets cache ~size ~coords ~metric (q : Vec.t) (n : Vec.t) =
       best := points.(i)
     end
   done;
-  if coords then
+  if coords <> 0. then
     let pert = Noise.dnoise !best in
     let along = Vec.dot pert n in
     let pert = Vec.sub pert (Vec.make (n.x *. along) (n.y *. along) (n.z *. along)) in
-    (* the coords value scales the perturbation; Scene keeps only whether it is non-zero *)
-    Vec.madd n 1. pert
+    (* the coords value scales the perturbation *)
+    Vec.madd n coords pert
   else !best
 
 (* Search_Blend_Map over [count] entries whose values [value_of] gives: the entries before and at

@@ -153,7 +153,7 @@ let tests =
 (* facets with coords 1, size 1: the cube points nearest the point itself. POV-Ray's cache holds
    the points around the last cube and is reused for a later cube of the same hash. *)
 let test_facets_cache () =
-  let nm = normal (Facets { fsize = 1.; coords = true; fmetric = 2. }) 0.5 in
+  let nm = normal (Facets { fsize = 1.; coords = 1.; fmetric = 2. }) 0.5 in
   let at p = Normals.perturb 2 nm p hit up in
   (* a cube other than <0,0,0>'s with the same hash *)
   let h0 = Noise.hash3d 0 0 0 in
@@ -169,7 +169,7 @@ let test_facets_cache () =
   Normals.reset_facets cache;
   vec_eq ~eps:0. "after a reset" (at b) (cached b);
   (* the normal without coords: the nearest cube point to 10·N, unit after the unwarp *)
-  let plain = normal (Facets { fsize = 0.1; coords = false; fmetric = 2. }) 0.5 in
+  let plain = normal (Facets { fsize = 0.1; coords = 0.; fmetric = 2. }) 0.5 in
   float_eq ~eps:1e-15 "facets: unit" 1. (Vec.length (Normals.perturb 2 plain (v 0.3 0. 0.2) hit up));
   Alcotest.(check bool) "facets: the same normal within a facet" true
     (Normals.perturb 2 plain (v 0.3 0. 0.2) hit up = Normals.perturb 2 plain (v 5. 0. (-3.)) hit up)

@@ -117,7 +117,7 @@ let test_no_value () =
     | exception Invalid_argument _ -> ()
     | _ -> Alcotest.fail "expected Invalid_argument"
   in
-  raises (Scene.Facets { fsize = 0.1; coords = false; fmetric = 2. });
+  raises (Scene.Facets { fsize = 0.1; coords = 0.; fmetric = 2. });
   raises Scene.Average
 
 let tests = List.map test_case D.plain
