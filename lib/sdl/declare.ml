@@ -39,7 +39,7 @@ let rec parse_rvalue ?(store = ignore) st : V.t * bool =
   | Ident s -> (
       match cur_value st s with
       | Some (V.Object o) -> advance st; (V.Object { o with oloc = loc }, false)
-      | Some ((V.Pigment _ | V.Finish _ | V.Texture _ | V.Interior _ | V.Light _ | V.Camera _ | V.Transform _ | V.Unsupported _ | V.Colour_map _ | V.Pigment_map _) as v) ->
+      | Some ((V.Pigment _ | V.Normal _ | V.Sky _ | V.Finish _ | V.Texture _ | V.Interior _ | V.Light _ | V.Camera _ | V.Transform _ | V.Unsupported _ | V.Colour_map _ | V.Pigment_map _) as v) ->
           advance st; (v, false)
       | Some (V.Array a) -> advance st; (V.Array { a with cells = Array.copy a.cells }, false)
       | Some (V.String _) -> (parse_string st, false)

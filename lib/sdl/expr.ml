@@ -28,10 +28,10 @@ let function_names =
   [ "abs"; "sqrt"; "sin"; "cos"; "tan"; "asin"; "acos"; "atan"; "atan2"; "pow"; "exp"; "ln"; "log"; "min";
     "max"; "int"; "floor"; "ceil"; "mod"; "div"; "radians"; "degrees"; "vlength"; "vnormalize"; "vdot"; "vcross";
     "select"; "sinh"; "cosh"; "tanh"; "asinh"; "acosh"; "atanh"; "defined"; "dimensions"; "dimension_size";
-    "seed"; "rand"; "bitwise_and"; "bitwise_or"; "bitwise_xor"; "vrotate"; "vaxis_rotate"; "str"; "vstr";
+    "seed"; "rand"; "bitwise_and"; "bitwise_or"; "bitwise_xor"; "vturbulence"; "vrotate"; "vaxis_rotate"; "str"; "vstr";
     "concat"; "substr"; "chr"; "asc"; "strlen"; "strupr"; "strlwr"; "val"; "strcmp"; "file_exists" ]
 
-let unsupported_functions = [ "inside"; "trace"; "min_extent"; "max_extent"; "vturbulence"; "datetime"; "function" ]
+let unsupported_functions = [ "inside"; "trace"; "min_extent"; "max_extent"; "datetime"; "function" ]
 
 let function_set = set_of function_names
 let object_set =
@@ -383,6 +383,13 @@ and parse_function st loc name =
       else of_vec (Vec.normalize a)
   | "vdot" -> arity 2; V.Float (Vec.dot (vec_arg (arg 0)) (vec_arg (arg 1)))
   | "vcross" -> arity 2; of_vec (Vec.cross (vec_arg (arg 0)) (vec_arg (arg 1)))
+  | "vturbulence" ->
+      (* express.cpp: DTurbulence at the vector, with lambda and omega stored in single precision
+         and the octaves clipped to 1…10 *)
+      arity 4;
+      let octaves = max 1 (min 10 (int_of_float (float_arg (arg 2)))) in
+      let turb = { Scene.turbulence = Vec.zero; octaves; omega = Precision.f32 (float_arg (arg 1)); lambda = Precision.f32 (float_arg (arg 0)) } in
+      of_vec (Noise.dturbulence turb (vec_arg (arg 3)))
   | "vrotate" -> arity 2; of_vec (Transform.point (Transform.rotate (vec_arg (arg 1))) (vec_arg (arg 0)))
   | "vaxis_rotate" ->
       arity 3;

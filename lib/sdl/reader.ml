@@ -163,7 +163,7 @@ let unsupported =
      by word with POV-Ray: parser/reswords.cpp) *)
   @ [ "sphere_sweep"; "polynomial"; "composite"; "mesh_camera"; "adaptive"; "area_illumination"; "circular"; "jitter";
       "orient"; "media_attenuation"; "media_interaction"; "tiles"; "material_map"; "bump_map"; "density"; "density_map"; "spline"; "inside"; "trace"; "max_extent"; "min_extent";
-      "vturbulence"; "datetime"; "function" ]
+      "datetime"; "function" ]
 
 (* The rest of POV-Ray 3.7's reserved words (parser/reswords.cpp), none of which povml reads: words
    inside blocks povml does not read yet (a fog's fog_type, an isosurface's accuracy, the sums and

@@ -269,3 +269,16 @@ inf, vnormalize(0) gives 0 with a warning, #undef of an unknown identifier warns
   edge.pov:7:1: warning: attempt to #undef the unknown identifier 'Unknown'
       7 | #undef Unknown
         | ^
+
+vturbulence(lambda, omega, octaves, V) is POV-Ray's vector turbulence at V (DTurbulence, lambda and
+omega in single precision); the values are the 16 digits POV-Ray 3.7.0.10 prints for these calls:
+
+  $ cat > vturb.pov <<'POV'
+  > #declare V = vturbulence(2, 0.5, 6, <0.3, 1.7, -2.2>);
+  > #debug concat(vstr(3, V, ",", 0, 16), "\n")
+  > #declare W = vturbulence(2.5, 0.7, 3, <10.3, -1.7, 5.5>);
+  > #debug concat(vstr(3, W, ",", 0, 16), "\n")
+  > POV
+  $ povml --dump vturb.pov 2>&1 | grep '^[0-9]'
+  0.0896179709975022,0.2552221963012811,0.1233993333602959
+  0.3482972450677285,0.1612313326432965,0.1910911143504361

@@ -106,10 +106,15 @@ source, in a union, in an expression:
   [1]
   $ printf '#version 3.7;\nsphere { 0, 1 translate vturbulence(2, 0.5, 6, <1, 2, 3>) }\n' > vturb.pov
   $ povml --dump vturb.pov
-  vturb.pov:2:25: error: not supported yet: the function 'vturbulence'
-      2 | sphere { 0, 1 translate vturbulence(2, 0.5, 6, <1, 2, 3>) }
-        |                         ^
-  [1]
+  // version 3.7, working gamma 1
+  global_settings { max_trace_level 5 adc_bailout 0.003921568627 ambient_light rgb <1, 1, 1> }
+  camera { location <0, 0, 0> direction <0, 0, 1> up <0, 1, 0> right <1.33, 0, 0> }
+  background { rgb <0, 0, 0> }
+  sphere { <-0.3805104063, -0.5382429719, 0.4217386875>, 1
+    texture { pigment { rgb <0, 0, 0> } }
+  } // vturb.pov:2:1
+  // 1 objects, 0 lights
+  warning: assumed_gamma not specified in this POV-Ray 3.7 or later scene; the working gamma is 1.0 (add 'assumed_gamma 1.0' to global_settings)
 
 The others belong inside blocks povml does not read; they are reserved, as in POV-Ray, and out of
 place they are the scene's error ("No matching } in 'sphere', width found instead"; "Expected
