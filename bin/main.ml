@@ -358,8 +358,8 @@ let cmd =
     let lim = "LIMITS" in
     let n names default doc = Arg.(value & opt int default & info names ~docv:"N" ~docs:lim ~doc) in
     let d = Scene_limits.default in
-    let make include_depth macro_depth macro_calls iterations objects nesting memory_mb pixels =
-      { Scene_limits.include_depth; macro_depth; macro_calls; iterations; objects; nesting; memory_mb; pixels }
+    let make include_depth macro_depth macro_calls iterations objects nesting memory_mb pixels pattern_steps =
+      { Scene_limits.include_depth; macro_depth; macro_calls; iterations; objects; nesting; memory_mb; pixels; pattern_steps }
     in
     Term.(
       const make
@@ -374,7 +374,10 @@ let cmd =
           "Parentheses, vectors, signs and unions nested deeper than N are an error (default 10,000; POV-Ray warns about \
            blocks nested deeper than 200 and povml gives the same warning)."
       $ n [ "max-memory" ] d.memory_mb "Reading a scene that needs more than N MiB of memory is an error (default 4,096, or half of $(b,ulimit -v) when that is less)."
-      $ n [ "max-pixels" ] d.pixels "An image of more than N pixels (width × height) is an error (default 67,108,864 = 8192²).")
+      $ n [ "max-pixels" ] d.pixels "An image of more than N pixels (width × height) is an error (default 67,108,864 = 8192²)."
+      $ n [ "max-pattern-steps" ] d.pattern_steps
+          "A pattern that does more than N steps at each point is an error (default 100,000): a fractal's iterations, \
+           $(b,number_of_waves).")
   in
   let term =
     let options =

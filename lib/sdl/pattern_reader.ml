@@ -177,6 +177,16 @@ let parse_warp st (ws : Scene.warp list) : Scene.warp list =
   close_block st "warp";
   w :: ws
 
+(* a fractal's iterations run at every point: bounded by povml's limit *)
+let iterations_of st loc f =
+  (* stored unsigned, as POV-Ray's (int) cast into an unsigned int: a negative count is huge *)
+  let n = int_of_float (Float.max (-1e18) (Float.min f 1e18)) in
+  let n = if n < 0 then n + 4294967296 else n in
+  if n > st.opts.limits.pattern_steps then
+    Error.limit_at loc "%s iterations at every point are beyond povml's limit of %s pattern steps (raise it with --max-pattern-steps N)"
+      (commas n) (commas st.opts.limits.pattern_steps);
+  n
+
 let fractal_defaults fkind iterations exponent : Scene.fractal =
   { fkind; iterations; exponent; interior_type = 0; exterior_type = 1; ifactor = 1.; efactor = 1. }
 
@@ -220,13 +230,15 @@ let rec pattern_keyword st kind (h : header) : header option =
   | Ident "average" -> advance st; set Average
   | Ident "mandel" ->
       advance st;
-      let n = int_of_float (parse_float st) in
+      let nl = peek_loc st in
+      let n = iterations_of st nl (parse_float st) in
       set (Fractal (fractal_defaults Mandel n 2))
   | Ident "julia" ->
       advance st;
       let c = uv st "julia" in
       ignore (accept st Comma);
-      let n = int_of_float (parse_float st) in
+      let nl = peek_loc st in
+      let n = iterations_of st nl (parse_float st) in
       set (Fractal (fractal_defaults (Julia (fst c, snd c)) n 2))
   | Ident "magnet" ->
       advance st;
@@ -246,7 +258,8 @@ let rec pattern_keyword st kind (h : header) : header option =
             Magnet_julia (t, (fst c, snd c))
         | _ -> unexpected st "'mandel' or 'julia' after the magnet type"
       in
-      let n = int_of_float (parse_float st) in
+      let nl = peek_loc st in
+      let n = iterations_of st nl (parse_float st) in
       set (Fractal (fractal_defaults kind n 0))
   | Ident "pavement" -> advance st; set (Pavement { side = 3; tile = 1; number = 1; exterior = 0; interior = 0; form = 0 })
   | Ident "tiling" ->

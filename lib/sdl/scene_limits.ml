@@ -9,6 +9,7 @@ type t = {
   nesting : int;
   memory_mb : int;
   pixels : int;
+  pattern_steps : int;
 }
 
 (* Half the address space the process may use (ulimit -v), read from /proc/self/limits on Linux;
@@ -42,4 +43,5 @@ let default =
     nesting = 10_000;
     memory_mb = default_memory_mb;
     pixels = 8192 * 8192;
+    pattern_steps = 100_000;
   }

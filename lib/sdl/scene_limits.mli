@@ -10,9 +10,10 @@ type t = {
   nesting : int;  (** nested parentheses, braces, vectors and unions *)
   memory_mb : int;  (** the interpreter's heap, in MiB *)
   pixels : int;  (** width × height of the image *)
+  pattern_steps : int;  (** the work of one pattern at one point: a fractal's iterations, the wave sources of waves and ripples *)
 }
 
 val default : t
 (** [default]: include depth 64, macro depth 10,000, 3,000,000 macro calls, 10,000,000 loop
     iterations, 10,000,000 objects, nesting 10,000, memory 4,096 MiB (or half the address space
-    the process may use, [ulimit -v], when that is less), 67,108,864 pixels (8192²). *)
+    the process may use, [ulimit -v], when that is less), 67,108,864 pixels (8192²), 100,000 pattern steps. *)

@@ -187,6 +187,9 @@ let parse_global_settings st =
           warn st l "Illegal Value: number_of_waves must be greater than 0. Changed to 1.";
           st.number_of_waves <- 1
         end
+        else if n > float_of_int st.opts.limits.pattern_steps then
+          Error.limit_at l "%s waves at every point are beyond povml's limit of %s pattern steps (raise it with --max-pattern-steps N)"
+            (commas (int_of_float n)) (commas st.opts.limits.pattern_steps)
         else st.number_of_waves <- int_of_float n;
         loop ()
     | Ident "noise_generator" ->

@@ -366,7 +366,17 @@ let tabled_waves = 64
 let source_table = Array.init tabled_waves wave_source
 let frequency_table = Array.init tabled_waves wave_frequency
 let wave_sources n = if n <= tabled_waves then source_table else Array.init n wave_source
-let wave_frequencies n = if n <= tabled_waves then frequency_table else Array.init n wave_frequency
+(* the frequencies in one pass of the LCG *)
+let frequencies_upto n =
+  let t = Array.make n 0. in
+  let next = ref (-560851967 land 0xFFFFFFFF) in
+  for i = 0 to n - 1 do
+    next := lcg_step !next;
+    t.(i) <- (float (lcg_bits !next) *. 0.000030518509476) +. 0.01
+  done;
+  t
+
+let wave_frequencies n = if n <= tabled_waves then frequency_table else frequencies_upto n
 
 (* ---------------------------------------------------------------------------------------------- *)
 (* The two waveforms of texture.cpp that patterns and normals use. cycloidal is sin(2π·frac v),

@@ -126,3 +126,20 @@ second rgb… keyword starts a new colour, so two colours in a pigment are an er
       1 | plane { y, 0 pigment { rgb <1,0,0> rgb <0,1,0> } }
         |                                    ^
   [1]
+
+A pattern's work at every point is bounded: a fractal's iterations and number_of_waves above
+povml's limit of pattern steps are a located limit error (exit 3), raised with --max-pattern-steps:
+
+  $ printf '#version 3.7;\ncamera { location -3*z look_at 0 }\nsphere { 0, 1 pigment { mandel 300000 } }\n' > mandel.pov
+  $ povml mandel.pov +W8 +H8 -D
+  mandel.pov:3:32: error: 300,000 iterations at every point are beyond povml's limit of 100,000 pattern steps (raise it with --max-pattern-steps N)
+      3 | sphere { 0, 1 pigment { mandel 300000 } }
+        |                                ^
+  [3]
+  $ povml mandel.pov +W8 +H8 -D --max-pattern-steps 400000 2>&1 | tail -1
+  Wrote mandel.png (8x8)
+  $ printf '#version 3.7;\nglobal_settings { number_of_waves -2 }\n' > waves.pov
+  $ povml waves.pov --dump 2>&1 | grep warning
+  waves.pov:2:35: warning: Illegal Value: number_of_waves must be greater than 0. Changed to 1.
+  warning: no objects in scene
+  warning: assumed_gamma not specified in this POV-Ray 3.7 or later scene; the working gamma is 1.0 (add 'assumed_gamma 1.0' to global_settings)
