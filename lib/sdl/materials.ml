@@ -57,6 +57,26 @@ let parse_colour_map st what : Scene.map_entry array =
       if List.length es > 256 then Error.raise_at loc "a %s has at most 256 entries" what;
       Array.of_list es
 
+(* The entries of a map block after its '{': "[" VALUE [,] ENTRY "]" … "}" in the order written, at
+   most 256, at least one (Parse_Blend_Map); [entry] reads what follows the value, its ']' included.
+   [value] reads the value (an average's may be left out); an empty map is an error at [loc]. *)
+let map_entries st what ~loc ~value (entry : float -> 'a) : 'a array =
+  let rec entries acc n =
+    match peek st with
+    | RBrace -> advance st; List.rev acc
+    | LBracket ->
+        let el = peek_loc st in
+        if n >= 256 then Error.raise_at el "a %s has at most 256 entries" what;
+        advance st;
+        let v = value () in
+        ignore (accept st Comma);
+        entries (entry (Precision.f32 v) :: acc) (n + 1)
+    | _ -> unexpected st (Printf.sprintf "'[' starting a %s entry, or '}'" what)
+  in
+  let es = entries [] 0 in
+  if es = [] then Error.raise_at loc "a %s needs at least one entry" what;
+  Array.of_list es
+
 (* A pigment while it is read: what POV-Ray edits in place (§17.9). [h.pat] is None for a plain
    colour; [map] is None until colours or a color_map are given; [pigments] is not empty for a
    pigment_map or a list of pigments. *)
@@ -227,22 +247,8 @@ and parse_pigment_map st : Scene.pigment_entry array =
   match ident_of_kind st (function V.Pigment_map m -> Some m | _ -> None) with
   | Some m -> close_block st "pigment_map"; m
   | None ->
-      let rec entries acc n =
-        match peek st with
-        | RBrace -> advance st; List.rev acc
-        | LBracket ->
-            let el = peek_loc st in
-            if n >= 256 then Error.raise_at el "a pigment_map has at most 256 entries";
-            advance st;
-            let v = parse_float st in
-            ignore (accept st Comma);
-            let pg = parse_pigment_body st ~close:RBracket st.default_texture.pigment in
-            entries ({ Scene.pvalue = Precision.f32 v; pigment = pg } :: acc) (n + 1)
-        | _ -> unexpected st "'[' starting a pigment_map entry, or '}'"
-      in
-      let es = entries [] 0 in
-      if es = [] then Error.raise_at loc "a pigment_map needs at least one entry";
-      Array.of_list es
+      map_entries st "pigment_map" ~loc ~value:(fun () -> parse_float st) (fun v ->
+          { Scene.pvalue = v; pigment = parse_pigment_body st ~close:RBracket st.default_texture.pigment })
 
 and parse_pigment st (base : Scene.pigment) : Scene.pigment =
   open_block st "pigment";
@@ -371,44 +377,17 @@ let rec parse_normal_body st ~close (base : Scene.normal option) : Scene.normal 
 and parse_normal_map st (pat : Scene.pattern option) : Scene.normal_entry array =
   let loc = peek_loc st in
   open_block st "normal_map";
-  let rec entries acc n =
-    match peek st with
-    | RBrace -> advance st; List.rev acc
-    | LBracket ->
-        let el = peek_loc st in
-        if n >= 256 then Error.raise_at el "a normal_map has at most 256 entries";
-        advance st;
-        let v = match pat with Some Average -> if float_follows st then parse_float st else 1. | _ -> parse_float st in
-        ignore (accept st Comma);
-        let nm = parse_normal_body st ~close:RBracket st.default_texture.normal in
-        entries ({ Scene.nvalue = Precision.f32 v; nnormal = nm } :: acc) (n + 1)
-    | _ -> unexpected st "'[' starting a normal_map entry, or '}'"
-  in
-  let es = entries [] 0 in
-  if es = [] then Error.raise_at loc "a normal_map needs at least one entry";
-  Array.of_list es
+  let value () = match pat with Some Average -> if float_follows st then parse_float st else 1. | _ -> parse_float st in
+  map_entries st "normal_map" ~loc ~value (fun v -> { Scene.nvalue = v; nnormal = parse_normal_body st ~close:RBracket st.default_texture.normal })
 
 (* slope_map { [v <height, slope>] … } *)
 and parse_slope_map st : Scene.slope_entry array =
   let loc = peek_loc st in
   open_block st "slope_map";
-  let rec entries acc n =
-    match peek st with
-    | RBrace -> advance st; List.rev acc
-    | LBracket ->
-        let el = peek_loc st in
-        if n >= 256 then Error.raise_at el "a slope_map has at most 256 entries";
-        advance st;
-        let v = parse_float st in
-        ignore (accept st Comma);
-        let height, slope = Pattern_reader.uv st "a slope_map entry" in
-        expect st RBracket "']' closing a slope_map entry";
-        entries ({ Scene.svalue = Precision.f32 v; height; slope } :: acc) (n + 1)
-    | _ -> unexpected st "'[' starting a slope_map entry, or '}'"
-  in
-  let es = entries [] 0 in
-  if es = [] then Error.raise_at loc "a slope_map needs at least one entry";
-  Array.of_list es
+  map_entries st "slope_map" ~loc ~value:(fun () -> parse_float st) (fun v ->
+      let height, slope = Pattern_reader.uv st "a slope_map entry" in
+      expect st RBracket "']' closing a slope_map entry";
+      { Scene.svalue = v; height; slope })
 
 and parse_normal st (base : Scene.normal option) : Scene.normal =
   open_block st "normal";
