@@ -1,0 +1,27 @@
+(** C's arithmetic as POV-Ray's pattern code uses it (pattern.cpp), and the constants it writes
+    out, so that the patterns' values are the doubles POV-Ray computes. *)
+
+val c_int : float -> int
+(** [c_int x] is C's [(int)] cast: truncation toward zero; NaN and values out of the 32-bit range
+    give INT_MIN (−2³¹), as the x86 conversion does. *)
+
+val fmax : float -> float -> float
+(** [fmax a b] is [std::max(a, b)]: [b] when [a < b], else [a] (which decides NaNs and zeros). *)
+
+val fmin : float -> float -> float
+(** [fmin a b] is [std::min(a, b)]: [b] when [b < a], else [a]. *)
+
+val max3 : float -> float -> float -> float
+(** [max3 a b c] is [fmax a (fmax b c)]. *)
+
+val sqrt3_2 : float
+(** [sqrt3_2] is √3/2 as pattern.cpp writes it. *)
+
+val sqrt3 : float
+(** [sqrt3] is √3 as pattern.cpp writes it. *)
+
+val sqrt2 : float
+(** [sqrt2] is √2 as pattern.cpp writes it. *)
+
+val sqrt2_2 : float
+(** [sqrt2_2] is √2/2 as pattern.cpp writes it. *)
