@@ -20,7 +20,7 @@ type header = {
 let plain = { pat = None; frequency = 1.; phase = 0.; wave = Ramp; warps = []; noise = 0 }
 let f32 = Precision.f32
 
-let default_turb = { Scene.turbulence = Vec.zero; octaves = 6; omega = 0.5; lambda = 2. }
+let default_turb = Warp.default_turb
 
 (* Check_Turb: the classic turbulence is the list's last element, added there when missing *)
 let with_classic_turb (ws : Scene.warp list) (edit : Scene.turb -> Scene.turb) =

@@ -2,7 +2,7 @@
 
 (* C's (int) cast of a double: truncation; NaN and values out of range give INT_MIN, as the x86
    conversion instruction does *)
-let c_int x = if Float.is_nan x || Float.abs x >= 2147483648. then -2147483648 else int_of_float x
+let[@inline] c_int (x : float) = if x >= -2147483648. && x < 2147483648. then truncate x else -2147483648
 
 (* std::max and std::min as POV-Ray calls them: the first argument unless the comparison says
    otherwise, which decides NaNs and signed zeros *)

@@ -18,7 +18,7 @@ let[@inline] lcg_bits n = (n lsr 16) land 0x7FFF
 
 (* C's (int) cast of a double on x86-64 (cvttsd2si): truncation toward zero, and the "integer
    indefinite" 0x80000000 for NaN and for anything outside the 32-bit range. *)
-let[@inline] c_int (x : float) = if x >= -2147483648. && x < 2147483648. then truncate x else -2147483648
+let c_int = C_float.c_int
 
 (* ---------------------------------------------------------------------------------------------- *)
 (* The hash table: a permutation of 0…4095 by 4096 LCG swaps from 0, then repeated once, so that

@@ -32,7 +32,7 @@ let triangle_wave v =
   if offset >= 0.5 then 2. *. (1. -. offset) else 2. *. offset
 
 (* The turbulence Check_Turb creates for agate when none is written: amount 0, 6 octaves *)
-let default_turb = { Scene.turbulence = Vec.zero; octaves = 6; omega = 0.5; lambda = 2. }
+let default_turb = Warp.default_turb
 
 (* ---------------------------------------------------------------------------------------------- *)
 (* §17.4–§17.7 *)

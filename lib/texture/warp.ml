@@ -6,7 +6,10 @@ let two_pi = 2. *. Float.pi
 let coordinate_limit = 1.0e17
 
 (* C's (int) cast of a double on x86-64: truncation, and 0x80000000 outside the 32-bit range. *)
-let[@inline] c_int (x : float) = if x >= -2147483648. && x < 2147483648. then truncate x else -2147483648
+let c_int = C_float.c_int
+
+(* Create_Warp's turbulence: no amount, 6 octaves, omega 0.5, lambda 2 *)
+let default_turb = { Scene.turbulence = Vec.zero; octaves = 6; omega = 0.5; lambda = 2. }
 
 let classic_turb (ws : Scene.warp list) =
   let rec last = function [] -> None | [ Scene.Classic_turb t ] -> Some t | _ :: rest -> last rest in

@@ -13,3 +13,7 @@ val point : Scene.warp list -> Scene.pattern -> Vec.t -> Vec.t
 val classic_turb : Scene.warp list -> Scene.turb option
 (** [classic_turb ws] is the [turbulence] written directly in the pattern (Search_For_Turb: the
     list's last element when it is a [Classic_turb]). *)
+
+val default_turb : Scene.turb
+(** [default_turb] is a new turbulence as POV-Ray creates it (Create_Warp): amount 0, 6 octaves,
+    omega 0.5, lambda 2. *)
