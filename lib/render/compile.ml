@@ -87,7 +87,7 @@ let coloured ~legacy ~ambient_light (f : Scene.finish) base (c : Colour.t) =
     transparent = c.filter <> 0. || c.transmit <> 0.;
   }
 
-let surface ~legacy ~noise ~ambient_light (t : Scene.texture) =
+let surface ~legacy ~noise ~ambient_light (t : Scene.layer) =
   let f0 = t.finish in
   (* finish scalars are single precision too *)
   let f =
@@ -146,27 +146,56 @@ let pigment_opaque (p : Scene.pigment) =
       c.filter = 0. && c.transmit = 0.
   | Pattern _ -> Pigment.opaque p
 
-(* Objects that share a texture (a declared one) share its compiled surface. *)
-module Texture_memo = Hashtbl.Make (struct
-  type t = Scene.texture
+(* Test_Opacity: a texture stops light when one of its layers is opaque; a patterned texture is
+   never taken as opaque *)
+let texture_opaque (t : Scene.texture) =
+  match t with Layers ls -> List.exists (fun (l : Scene.layer) -> pigment_opaque l.pigment) ls | Texture_pattern _ -> false
+
+(* the top layer's finish, which holds the legacy refraction and ior (§2.7) *)
+let top_finish (t : Scene.texture) = match t with Layers (l :: _) -> Some l.finish | Layers [] | Texture_pattern _ -> None
+
+(* Objects that share a layer (a declared texture) share its compiled surface. *)
+module Layer_memo = Hashtbl.Make (struct
+  type t = Scene.layer
 
   let equal = ( == )
   let hash = Hashtbl.hash
 end)
 
+(* A patterned texture's pattern, its value taken as a pigment's is (§17.1) *)
+let blended ~noise (tpat : Scene.patterned) values entries : blended =
+  let g = if tpat.noise_generator = 0 then noise else tpat.noise_generator in
+  let { Scene.pattern; frequency; phase; wave; warps; _ } = tpat in
+  {
+    warp = (fun q -> Warp.point warps pattern q);
+    value = (fun hit q -> Pigment.shape_value ~frequency ~phase wave (Patterns.value_with ~frequency ~phase pattern warps g hit q));
+    values;
+    entries;
+    average = (match pattern with Average -> true | _ -> false);
+    nwarps = warps;
+  }
+
 let scene (s : Scene.t) : Compiled.t =
   let legacy = s.version < 370 in
-  let memo = Texture_memo.create 16 in
-  let surface ~legacy ~ambient_light t =
-    let noise = s.noise_generator in
-    match Texture_memo.find_opt memo t with
+  let memo = Layer_memo.create 16 in
+  let noise = s.noise_generator in
+  let surface_of (l : Scene.layer) =
+    match Layer_memo.find_opt memo l with
     | Some sf -> sf
     | None ->
-        let sf = surface ~legacy ~noise ~ambient_light t in
-        Texture_memo.add memo t sf;
+        let sf = surface ~legacy ~noise ~ambient_light:s.ambient_light l in
+        Layer_memo.add memo l sf;
         sf
   in
-  let surface_of (t : Scene.texture) = surface ~legacy ~ambient_light:s.ambient_light t in
+  let rec texture_of (t : Scene.texture) : texture =
+    match t with
+    | Layers [ l ] -> Plain (surface_of l)
+    | Layers ls -> Layered (Array.of_list (List.map surface_of ls))
+    | Texture_pattern { tpat; tmap } ->
+        Blended
+          (blended ~noise tpat (Array.map (fun (e : Scene.texture_entry) -> f32 e.tvalue) tmap)
+             (Array.map (fun (e : Scene.texture_entry) -> texture_of e.ttexture) tmap))
+  in
   (* Objects are numbered in scene order, each CSG before its members (the numbering keeps the
      scene order of top-level objects, which decides ties without a bounding hierarchy). *)
   let next = ref 0 and built = ref [] in
@@ -193,17 +222,20 @@ let scene (s : Scene.t) : Compiled.t =
     match shape with
     | None -> None
     | Some shape ->
-        let surf = surface_of o.texture in
+        let tex = texture_of o.texture in
         (* a mesh's faces may carry textures of their own; no other shape has any *)
         let face_textures = match o.shape with Mesh m -> m.textures | _ -> [||] in
-        let face_surfs = Array.map surface_of face_textures in
+        let face_texs = Array.map texture_of face_textures in
         let opaque =
           match shape with
           | Csg { members; _ } -> Array.for_all (fun m -> m.opaque) members
           | _ ->
-              (* §17.8: opaque only if no colour the pigment can give is transparent *)
-              pigment_opaque o.texture.pigment && Array.for_all (fun (t : Scene.texture) -> pigment_opaque t.pigment) face_textures
+              (* §17.8: opaque only if no colour the pigments can give is transparent *)
+              texture_opaque o.texture
+              && Option.fold ~none:true ~some:texture_opaque o.interior_texture
+              && Array.for_all texture_opaque face_textures
         in
+        let clear = match tex with Plain sf -> sf.transparent | Layered _ | Blended _ -> not (texture_opaque o.texture) in
         let ob =
           {
             id;
@@ -211,13 +243,15 @@ let scene (s : Scene.t) : Compiled.t =
             top;
             inverted;
             shape;
-            surf;
-            face_surfs;
+            tex;
+            inner_tex = Option.map texture_of o.interior_texture;
+            face_texs;
+            clear;
             ior = f32 o.interior.ior;
             fade_distance = f32 o.interior.fade_distance;
             fade_power = f32 o.interior.fade_power;
             fade_colour = rgb32 o.interior.fade_colour;
-            old_refract = f32 o.texture.finish.refraction;
+            old_refract = f32 (match top_finish o.texture with Some f -> f.refraction | None -> 1.);
             opaque;
             mag = Shape.magnitude shape;
             pbox = Shape.pov_box shape;

@@ -40,6 +40,26 @@ and bump =
           then serves diffuse, highlights, the reflectivity's angle, the reflected and the
           transmitted rays *)
 
+(** A texture as the tracer shades it (trace.cpp's ComputeOneTextureColour). *)
+and texture =
+  | Plain of surface  (** one layer: the common case, shaded without the layer loop *)
+  | Layered of surface array
+      (** two or more layers, the top first: each lit on its own and seen through the filter
+          and transmit of those above it (ComputeLightedTexture) *)
+  | Blended of blended  (** a patterned texture: entries picked or blended by a pattern *)
+
+(** A patterned texture: the pattern's value at a point picks the entries around it, each shaded
+    in full at the point the pattern saw (its warps applied) and blended by the value. *)
+and blended = {
+  warp : Vec.t -> Vec.t;  (** the pattern's warps (Warp_EPoint) *)
+  value : Patterns.hit -> Vec.t -> float;  (** the pattern's value at a warped point, wave and all *)
+  values : float array;  (** the entries' values, single precision, in the order written *)
+  entries : texture array;
+  average : bool;  (** [average]: every entry weighed by its value, none picked *)
+  nwarps : Scene.warp list;
+      (** the pattern's warps, through which the normals of its entries are bent (Warp_Normal) *)
+}
+
 (** The shapes as the tracer meets them; everything about each is in its module (lib/shapes/),
     and [Shape] dispatches to it. *)
 type shape =
@@ -79,8 +99,12 @@ and obj = {
   top : int;  (** the id of the top-level object it belongs to (its own id at top level) *)
   inverted : bool;  (** a CSG member whose Inside is negated (§16.3) *)
   shape : shape;
-  surf : surface;  (** the object's own surface *)
-  face_surfs : surface array;  (** meshes: the surfaces of the per-face textures *)
+  tex : texture;  (** the object's own texture *)
+  inner_tex : texture option;  (** its interior_texture: seen where a ray meets the surface from inside *)
+  face_texs : texture array;  (** meshes: the per-face textures *)
+  clear : bool;
+      (** its own texture may let light through (not POV-Ray's Test_Opacity): a CSG whose texture
+          is clear is not kept in the shadow cache *)
   ior : float;
   fade_distance : float;
   fade_power : float;

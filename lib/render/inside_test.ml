@@ -34,8 +34,10 @@ let member ~inverted shape =
     top = 0;
     inverted;
     shape;
-    surf = no_surface;
-    face_surfs = [||];
+    tex = Plain no_surface;
+    inner_tex = None;
+    face_texs = [||];
+    clear = false;
     ior = 1.;
     fade_distance = 0.;
     fade_power = 0.;

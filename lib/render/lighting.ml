@@ -48,7 +48,11 @@ let attenuation (lt : light) (p : Vec.t) (l : Vec.t) dist =
 let parallel_depth (lt : light) (l : Vec.t) dist = dist *. -.((lt.dx *. l.x) +. (lt.dy *. l.y) +. (lt.dz *. l.z))
 
 (* One light's diffuse, phong and specular terms. *)
-let light_terms ctx ~slot ~di (s : surface) (p : Vec.t) (n : Vec.t) ng e (d : Vec.t) interiors (lt : light) : Rgb.t =
+type memo = { tested : bool array; seen : Rgb.t array }
+
+let memo (sc : Compiled.t) = { tested = Array.make (Array.length sc.lights) false; seen = Array.make (Array.length sc.lights) Rgb.black }
+
+let light_terms ctx ?memo ~light ~slot ~di (s : surface) (p : Vec.t) (n : Vec.t) ng e (d : Vec.t) interiors (lt : light) : Rgb.t =
   let acc = Rgb.black in
   let lvx = lt.lx -. p.x and lvy = lt.ly -. p.y and lvz = lt.lz -. p.z in
   let dist = sqrt ((lvx *. lvx) +. (lvy *. lvy) +. (lvz *. lvz)) in
@@ -71,7 +75,22 @@ let light_terms ctx ~slot ~di (s : surface) (p : Vec.t) (n : Vec.t) ng e (d : Ve
     if (not di) && nl < epsilon then Rgb.black
     else
       (* the shadow feeler; a point behind a parallel light's plane is never shadowed (§18.3) *)
-      let lc = if lt.shadowless || dist <= 0. then lc else Shadow.feeler ctx ~slot p ng e l dist interiors lc in
+      let lc =
+        if lt.shadowless || dist <= 0. then lc
+        else
+          match memo with
+          | None -> Shadow.feeler ctx ~slot p ng e l dist interiors lc
+          | Some m ->
+              (* the light colour cache of ComputeOneDiffuseLight: one feeler per light for every
+                 layer and entry of the texture shaded at this point *)
+              if m.tested.(light) then m.seen.(light)
+              else begin
+                let c = Shadow.feeler ctx ~slot p ng e l dist interiors lc in
+                m.tested.(light) <- true;
+                m.seen.(light) <- c;
+                c
+              end
+      in
       if Float.abs lc.r <= epsilon && Float.abs lc.g <= epsilon && Float.abs lc.b <= epsilon then Rgb.black
       else
         let acc =
@@ -113,12 +132,12 @@ let light_terms ctx ~slot ~di (s : surface) (p : Vec.t) (n : Vec.t) ng e (d : Ve
             else acc
           else acc
 
-let add_lights ctx ~level ~di s p n ng e d interiors (acc : Rgb.t) =
+let add_lights ctx ?memo ~level ~di s p n ng e d interiors (acc : Rgb.t) =
   let lights = ctx.Context.scene.lights in
   let acc = ref acc in
   for k = 0 to Array.length lights - 1 do
     let slot = Context.cache_slot ~level k in
-    let t = light_terms ctx ~slot ~di s p n ng e d interiors lights.(k) in
+    let t = light_terms ctx ?memo ~light:k ~slot ~di s p n ng e d interiors lights.(k) in
     let a = !acc in
     acc := Rgb.make (f32 (a.r +. t.r)) (f32 (a.g +. t.g)) (f32 (a.b +. t.b))
   done;

@@ -2,14 +2,35 @@
     surface point, each through its shadow feeler — diffuse (N·L, brilliance), Phong and specular
     highlights (metallic tint) — and how a light's colour is attenuated on the way. *)
 
+type memo
+(** The light colour cache of one shaded point (trace.cpp's lightColorCache): each light's colour
+    after its shadow feeler, once it has been tested. *)
+
+val memo : Compiled.t -> memo
+(** [memo sc] is an empty cache for the lights of [sc]. *)
+
 val add_lights :
-  Context.t -> level:int -> di:bool -> Compiled.surface -> Vec.t -> Vec.t -> Vec.t -> float -> Vec.t -> int list -> Rgb.t -> Rgb.t
+  Context.t ->
+  ?memo:memo ->
+  level:int ->
+  di:bool ->
+  Compiled.surface ->
+  Vec.t ->
+  Vec.t ->
+  Vec.t ->
+  float ->
+  Vec.t ->
+  int list ->
+  Rgb.t ->
+  Rgb.t
 (** [add_lights ctx ~level ~di s p n ng e d interiors acc] is [acc] plus every light's diffuse,
     phong and specular terms at the point [p] with the normal [n] (turned toward the ray), seen
     along [d] by a ray at trace [level] inside [interiors], summed in single precision the way
     POV-Ray sums them: per light first, then into the colour. [di]: the object is
     double_illuminate (§16.6, lit from behind too); [ng] and [e] place the shadow feelers' origins
-    in the robust mode. *)
+    in the robust mode. With [memo], a light's shadow feeler is sent only the first time the
+    light is tested at this point (the layers and entries of one texture share it); later tests
+    take its colour from [memo]. *)
 
 val metallic_factor : float -> float -> Rgb.t -> Rgb.t -> Rgb.t
 (** [metallic_factor metallic cos_angle c lc] is [lc] tinted by the surface colour [c] with

@@ -5,6 +5,8 @@ open Context
 
 let f32 = Precision.f32
 
+type filtered = { r : float; g : float; b : float; filter : float }
+
 (* The robust mode's shadow segment from [o] to the light at [lp]: its direction and length. *)
 let aim (lp : Vec.t) (o : Vec.t) =
   let v = Vec.sub lp o in
@@ -14,6 +16,54 @@ let aim (lp : Vec.t) (o : Vec.t) =
 (* How far short of the light at [lp] a robust shadow segment of length [remaining] from near [p]
    stops counting hits. *)
 let robust_margin (p : Vec.t) (lp : Vec.t) remaining = (1e-9 *. remaining) +. Robust.error_bound p lp remaining
+
+(* ComputeShadowTexture for a texture at the point [q] of a shadow ray's crossing: the product of
+   its layers' filter colours, then the interior's fade over the [t] travelled inside (with
+   [fades]), as an rgb with filter 1; a patterned texture's entries blended in all four channels
+   (ComputeOneTextureColour). *)
+let rec filter obj ~fades t (tex : texture) (q : Vec.t) : filtered =
+  match tex with
+  | Plain s -> filter_layers obj ~fades t [| s |] q
+  | Layered ls -> filter_layers obj ~fades t ls q
+  | Blended b ->
+      let tq = b.warp q in
+      if b.average then begin
+        let r = ref 0. and g = ref 0. and bl = ref 0. and fl = ref 0. and total = ref 0. in
+        Array.iteri
+          (fun i e ->
+            let c = filter obj ~fades t e tq in
+            let v = b.values.(i) in
+            r := f32 (!r +. f32 (c.r *. v));
+            g := f32 (!g +. f32 (c.g *. v));
+            bl := f32 (!bl +. f32 (c.b *. v));
+            fl := f32 (!fl +. f32 (c.filter *. v));
+            total := f32 (!total +. v))
+          b.entries;
+        let k = !total in
+        { r = f32 (!r /. k); g = f32 (!g /. k); b = f32 (!bl /. k); filter = f32 (!fl /. k) }
+      end
+      else
+        let v = b.value Patterns.no_hit tq in
+        let prev, cur = Surfaces.around b.values v in
+        let c1 = filter obj ~fades t b.entries.(cur) tq in
+        if prev = cur then c1
+        else
+          let c2 = filter obj ~fades t b.entries.(prev) tq in
+          let v1 = (v -. b.values.(prev)) /. (b.values.(cur) -. b.values.(prev)) in
+          let v2 = 1. -. v1 in
+          let mix x y = f32 (f32 (v1 *. x) +. f32 (v2 *. y)) in
+          { r = mix c1.r c2.r; g = mix c1.g c2.g; b = mix c1.b c2.b; filter = mix c1.filter c2.filter }
+
+and filter_layers obj ~fades t ls q =
+  let c =
+    Array.fold_left
+      (fun (c : Rgb.t) (s : surface) ->
+        let f = match s.paint with Fixed -> s.filcol | Varying at -> (at Patterns.no_hit q).filcol in
+        Rgb.make (f32 (c.r *. f.r)) (f32 (c.g *. f.g)) (f32 (c.b *. f.b)))
+      Rgb.white ls
+  in
+  let c = if fades then Optics.fade obj t c else c in
+  { r = c.r; g = c.g; b = c.b; filter = 1. }
 
 (* The walk of a shadow ray from [o] along [l] towards the light at [lp], [remaining] from it,
    through non-opaque occluders; [first] on the first segment, whose opaque blocker is cached. *)
@@ -27,15 +77,30 @@ let rec walk ctx ~slot (p : Vec.t) (lp : Vec.t) lo first (o : Vec.t) (l : Vec.t)
     if obj.opaque then begin
       (* the cache holds the top-level object (a CSG, not its member), and a CSG only when
          its own texture is opaque: POV-Ray tests the OPAQUE flag of Intersection.Csg *)
-      if first && not sc.objects.(obj.top).surf.transparent then ctx.shadow_cache.(slot) <- obj.top;
+      if first && not sc.objects.(obj.top).clear then ctx.shadow_cache.(slot) <- obj.top;
       Rgb.black
     end
     else
       let part = ctx.found.part in
-      let sf = Surfaces.at obj part in
-      (* §4, §17.8: a patterned pigment is evaluated where the shadow ray crosses it *)
-      let f = match sf.paint with Fixed -> sf.filcol | Varying at -> (at Patterns.no_hit (Vec.madd o t l)).filcol in
-      let f = if List.mem obj.iid interiors && obj.fade_power > 0. && Optics.fades obj then Optics.fade obj t f else f in
+      let q = Vec.madd o t l in
+      let tex =
+        if obj.inner_tex = None then Surfaces.at obj part
+        else
+          let dn = Vec.dot (Shape.normal obj part q) l in
+          Surfaces.seen obj part ~inside:(if obj.inverted then dn < 0. else dn > 0.)
+      in
+      let fades = List.mem obj.iid interiors && obj.fade_power > 0. && Optics.fades obj in
+      let f =
+        match tex with
+        | Plain sf ->
+            (* §4, §17.8: a patterned pigment is evaluated where the shadow ray crosses it *)
+            let f = match sf.paint with Fixed -> sf.filcol | Varying at -> (at Patterns.no_hit q).filcol in
+            if fades then Optics.fade obj t f else f
+        | Layered _ | Blended _ ->
+            (* ComputeShadowColour: the filter colour, weighed in by its filter channel *)
+            let c = filter obj ~fades t tex q in
+            Rgb.make (f32 (c.r *. c.filter)) (f32 (c.g *. c.filter)) (f32 (c.b *. c.filter))
+      in
       let lc = Rgb.make (f32 (lc.r *. f.r)) (f32 (lc.g *. f.g)) (f32 (lc.b *. f.b)) in
       let interiors = if List.mem obj.iid interiors then Optics.remove obj.iid interiors else obj.iid :: interiors in
       let q = Vec.madd o t l in

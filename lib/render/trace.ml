@@ -24,6 +24,34 @@ let make_ctx ?robust (sc : Compiled.t) stats =
 
 let black = Traced.black
 
+(* What every layer and entry of a texture shaded at one hit shares: the object, the hit point P
+   (where lights and secondary rays are taken from), the shape's normal N turned toward the ray,
+   the ray, and the perturbed normal the slope and aoi patterns see, which each normal pattern
+   shaded replaces (POV-Ray's Intersection.PNormal). *)
+type hit = {
+  hobj : obj;
+  hp : Vec.t;
+  hn : Vec.t;
+  hng : Vec.t;  (** where secondary rays leave from in the robust mode *)
+  he : float;
+  hd : Vec.t;
+  hdepth : float;
+  hlevel : int;
+  hweight : float;
+  hinteriors : int list;
+  hreflected : bool;
+  memo : Lighting.memo;
+  mutable pnormal : Vec.t;
+}
+
+(* a reflected colour [c] added to [acc], weighed by [refl] and through the reflection exponent [e] *)
+let add_reflection e (refl : Rgb.t) (c : result) (acc : result) =
+  if e <> 1. then
+    let ie = 1. /. e in
+    let ie = f32 ie in
+    { r = f32 (acc.r +. (refl.r *. Float.pow c.r ie)); g = f32 (acc.g +. (refl.g *. Float.pow c.g ie)); b = f32 (acc.b +. (refl.b *. Float.pow c.b ie)); tr = acc.tr }
+  else { r = f32 (acc.r +. f32 (refl.r *. c.r)); g = f32 (acc.g +. f32 (refl.g *. c.g)); b = f32 (acc.b +. f32 (refl.b *. c.b)); tr = acc.tr }
+
 (* ComputeReflection's direction off a bent normal [n]: the mirror direction, unless it points
    below the surface by the raw normal [raw] (the "reflection bugfix" of trace.cpp): then the
    mirror direction off [raw] when it is below the bent normal's plane too, else the mirror
@@ -61,69 +89,195 @@ and shade ctx ~reflected obj part depth ~level ~weight ~interiors (o : Vec.t) (d
   (* §3.2: the layer loop runs while the remaining translucency (1 at the start) exceeds adc_bailout *)
   if not (1. > sc.adc_bailout) then black
   else
-    (* the hit point P, its surface (a pattern is evaluated there, §17.1) and its normal N, turned
-       toward the ray (§3.1) *)
+    (* the hit point P and its normal N, turned toward the ray (§3.1) *)
     let p = Vec.madd o depth d in
     let p = if ctx.robust then Shape.refine obj p else p in
-    let s = Surfaces.at obj part in
     let n = Shape.normal obj part p in
-    let n = if Vec.dot n d > 0. then Vec.neg n else n in
+    let dn = Vec.dot n d in
+    let tex = if obj.inner_tex = None then Surfaces.at obj part else Surfaces.seen obj part ~inside:(if obj.inverted then dn < 0. else dn > 0.) in
+    let n = if dn > 0. then Vec.neg n else n in
     (* where secondary rays leave from in the robust mode *)
     let ng = if ctx.robust then Shape.geometric_normal obj part p else n in
-    (* normal.cpp: a texture's normal bends N before the pigment is evaluated, whose slope and
-       aoi patterns see the bent normal [pn]; [sn], the bent normal made unit, shades, reflects
-       and refracts, and the raw N keeps the reflected ray on the surface's side (trace.cpp) *)
-    let pn = match s.bump with Smooth -> n | Bumpy nm -> Normals.perturb ~facets:sc.facets sc.noise_generator nm p { Patterns.normal = n; dir = d } n in
-    let s = match s.paint with Fixed -> s | Varying at -> at { Patterns.normal = pn; dir = d } p in
-    let sn = match s.bump with Smooth -> n | Bumpy nm -> Normals.layer_normal nm pn in
     let e = if ctx.robust then Robust.error_bound o p obj.mag else 0. in
-    (* k_r, the reflection colour at the cosine of incidence N·E (E = −d, the way to the eye) *)
-    let ci = -.Vec.dot d sn in
-    let refl = if s.reflects then Optics.reflectivity sc s obj interiors ci else Rgb.black in
-    (* §5.2: the reflected ray's weight, taken before the metallic tint *)
-    let w_refl =
-      f32 (if s.refl.fresnel then weight *. Rgb.max3 refl else weight *. Float.max (Rgb.max3 s.refl.rmax) (Rgb.max3 s.refl.rmin))
-    in
-    let refl = if s.reflects && s.refl.refl_metallic <> 0. then Lighting.metallic_factor s.refl.refl_metallic ci s.colour refl else refl in
-    (* local illumination: ambient and emission, then each light through its shadow feeler *)
-    let local = if s.lit then Lighting.add_lights ctx ~level ~di:obj.double_illuminate s p sn ng e d interiors s.emitted else s.emitted in
-    (* the transmitted ray, weighted by k_t, the filter colour (§6). POV-Ray traces it before the
-       reflected ray, and the order shows: both rays' shadow feelers share the shadow cache *)
-    let local, tr, tir =
-      if not s.transparent then (local, 0., false)
-      else
-        let filcol = Optics.conserved s refl in
-        let trans = Float.min 1. (Float.abs (Rgb.intensity filcol)) in
-        (* a ray too weak to matter (below adc_bailout) is not traced *)
-        if not (trans > sc.adc_bailout) then (local, 0., false)
-        else
-          let w = f32 (weight *. Float.max (Float.abs filcol.r) (Float.max (Float.abs filcol.g) (Float.abs filcol.b))) in
-          let ct, tir = refract ctx ~reflected obj ~level ~weight:w ~interiors p ng e d sn ~raw:n ~bump:s.bump in
-          (* the interior's fade when the ray travelled inside [obj] *)
-          let att = Rgb.grey obj.old_refract in
-          let att = if Optics.fades obj && List.mem obj.iid interiors then Optics.fade obj depth att else att in
-          if tir then (Rgb.make (f32 (local.r +. f32 (att.r *. ct.r))) (f32 (local.g +. f32 (att.g *. ct.g))) (f32 (local.b +. f32 (att.b *. ct.b))), 0., true)
-          else
-            ( Rgb.make
-                (f32 (local.r +. f32 (f32 (att.r *. ct.r) *. filcol.r)))
-                (f32 (local.g +. f32 (f32 (att.g *. ct.g) *. filcol.g)))
-                (f32 (local.b +. f32 (f32 (att.b *. ct.b) *. filcol.b))),
-              f32 (Rgb.intensity att *. ct.tr *. trans),
-              false )
-    in
-    (* the reflected ray R = −E + 2(N·E)N, weighted by k_r (§5.3); none after total internal
-       reflection, which was the reflected ray already *)
-    if tir || Rgb.is_zero refl then { r = local.r; g = local.g; b = local.b; tr }
+    match tex with
+    | Plain s -> plain ctx ~reflected obj s p n ng e depth ~level ~weight ~interiors d
+    | Layered _ | Blended _ ->
+        let at = { hobj = obj; hp = p; hn = n; hng = ng; he = e; hd = d; hdepth = depth; hlevel = level; hweight = weight; hinteriors = interiors; hreflected = reflected; memo = Lighting.memo sc; pnormal = n } in
+        texture_colour ctx at tex p []
+
+(* A plain texture, one layer (the common case): the layer loop of ComputeLightedTexture run once. *)
+and plain ctx ~reflected obj s p n ng e depth ~level ~weight ~interiors d =
+  let sc = ctx.scene in
+  (* normal.cpp: a texture's normal bends N before the pigment is evaluated, whose slope and aoi
+     patterns see the bent normal [pn]; [sn], the bent normal made unit, shades, reflects and
+     refracts, and the raw N keeps the reflected ray on the surface's side (trace.cpp) *)
+  let pn = match s.bump with Smooth -> n | Bumpy nm -> Normals.perturb ~facets:sc.facets sc.noise_generator nm p { Patterns.normal = n; dir = d } n in
+  let s = match s.paint with Fixed -> s | Varying at -> at { Patterns.normal = pn; dir = d } p in
+  let sn = match s.bump with Smooth -> n | Bumpy nm -> Normals.layer_normal nm pn in
+  (* k_r, the reflection colour at the cosine of incidence N·E (E = −d, the way to the eye) *)
+  let ci = -.Vec.dot d sn in
+  let refl = if s.reflects then Optics.reflectivity sc s obj interiors ci else Rgb.black in
+  (* §5.2: the reflected ray's weight, taken before the metallic tint *)
+  let w_refl =
+    f32 (if s.refl.fresnel then weight *. Rgb.max3 refl else weight *. Float.max (Rgb.max3 s.refl.rmax) (Rgb.max3 s.refl.rmin))
+  in
+  let refl = if s.reflects && s.refl.refl_metallic <> 0. then Lighting.metallic_factor s.refl.refl_metallic ci s.colour refl else refl in
+  (* local illumination: ambient and emission, then each light through its shadow feeler *)
+  let local = if s.lit then Lighting.add_lights ctx ~level ~di:obj.double_illuminate s p sn ng e d interiors s.emitted else s.emitted in
+  (* the transmitted ray, weighted by k_t, the filter colour (§6). POV-Ray traces it before the
+     reflected ray, and the order shows: both rays' shadow feelers share the shadow cache *)
+  let local, tr, tir =
+    if not s.transparent then (local, 0., false)
     else
-      let rd = match s.bump with Smooth -> Vec.normalize (Vec.madd d (-2. *. Vec.dot d n) n) | Bumpy _ -> bent_reflection d sn n in
-      ctx.stats.reflected_rays <- ctx.stats.reflected_rays + 1;
-      let c = trace_ray ctx ~reflected:true ~level ~weight:w_refl ~interiors ~continued:false (Robust.origin ctx p ng e rd) rd in
-      let e = s.refl.exponent in
-      if e <> 1. then
-        let ie = 1. /. e in
-        let ie = f32 ie in
-        { r = f32 (local.r +. (refl.r *. Float.pow c.r ie)); g = f32 (local.g +. (refl.g *. Float.pow c.g ie)); b = f32 (local.b +. (refl.b *. Float.pow c.b ie)); tr }
-      else { r = f32 (local.r +. f32 (refl.r *. c.r)); g = f32 (local.g +. f32 (refl.g *. c.g)); b = f32 (local.b +. f32 (refl.b *. c.b)); tr }
+      let filcol = Optics.conserved s refl in
+      let trans = Float.min 1. (Float.abs (Rgb.intensity filcol)) in
+      (* a ray too weak to matter (below adc_bailout) is not traced *)
+      if not (trans > sc.adc_bailout) then (local, 0., false)
+      else
+        let w = f32 (weight *. Float.max (Float.abs filcol.r) (Float.max (Float.abs filcol.g) (Float.abs filcol.b))) in
+        let ct, tir = refract ctx ~reflected obj ~level ~weight:w ~interiors p ng e d sn ~raw:n ~bump:s.bump in
+        (* the interior's fade when the ray travelled inside [obj] *)
+        let att = Rgb.grey obj.old_refract in
+        let att = if Optics.fades obj && List.mem obj.iid interiors then Optics.fade obj depth att else att in
+        if tir then (Rgb.make (f32 (local.r +. f32 (att.r *. ct.r))) (f32 (local.g +. f32 (att.g *. ct.g))) (f32 (local.b +. f32 (att.b *. ct.b))), 0., true)
+        else
+          ( Rgb.make
+              (f32 (local.r +. f32 (f32 (att.r *. ct.r) *. filcol.r)))
+              (f32 (local.g +. f32 (f32 (att.g *. ct.g) *. filcol.g)))
+              (f32 (local.b +. f32 (f32 (att.b *. ct.b) *. filcol.b))),
+            f32 (Rgb.intensity att *. ct.tr *. trans),
+            false )
+  in
+  (* the reflected ray R = −E + 2(N·E)N, weighted by k_r (§5.3); none after total internal
+     reflection, which was the reflected ray already *)
+  if tir || Rgb.is_zero refl then { r = local.r; g = local.g; b = local.b; tr }
+  else
+    let c = reflect ctx ~level ~weight:w_refl ~interiors p ng e d sn ~raw:n ~bump:s.bump in
+    add_reflection s.refl.exponent refl c { r = local.r; g = local.g; b = local.b; tr }
+
+(* The reflected ray off the normal [n] ([raw], the shape's own, keeps it on the surface's side
+   when [n] is bent) and what it brings back. *)
+and reflect ctx ~level ~weight ~interiors p ng e d n ~raw ~bump =
+  let rd = match bump with Smooth -> Vec.normalize (Vec.madd d (-2. *. Vec.dot d n) n) | Bumpy _ -> bent_reflection d n raw in
+  ctx.stats.reflected_rays <- ctx.stats.reflected_rays + 1;
+  trace_ray ctx ~reflected:true ~level ~weight ~interiors ~continued:false (Robust.origin ctx p ng e rd) rd
+
+(* ComputeOneTextureColour: a texture's colour at the point [q] where its pigments and normals are
+   evaluated ([warps]: the patterned textures it lies in, the outermost first). *)
+and texture_colour ctx at tex q warps : result =
+  match tex with
+  | Plain s -> lighted ctx at [| s |] q warps
+  | Layered ls -> lighted ctx at ls q warps
+  | Blended b ->
+      let warps = warps @ [ b ] in
+      let tq = b.warp q in
+      if b.average then
+        (* ComputeAverageTextureColours: the entries weighed by their values, summed in single
+           precision, over the sum of the weights *)
+        let acc = ref black and total = ref 0. in
+        Array.iteri
+          (fun i t ->
+            let c = texture_colour ctx at t tq warps in
+            let v = b.values.(i) in
+            let a = !acc in
+            acc := { r = f32 (a.r +. f32 (c.r *. v)); g = f32 (a.g +. f32 (c.g *. v)); b = f32 (a.b +. f32 (c.b *. v)); tr = f32 (a.tr +. f32 (c.tr *. v)) };
+            total := f32 (!total +. v))
+          b.entries;
+        let a = !acc and t = !total in
+        { r = f32 (a.r /. t); g = f32 (a.g /. t); b = f32 (a.b /. t); tr = f32 (a.tr /. t) }
+      else
+        let v = b.value { Patterns.normal = at.pnormal; dir = at.hd } tq in
+        let prev, cur = Surfaces.around b.values v in
+        let c1 = texture_colour ctx at b.entries.(cur) tq warps in
+        if prev = cur then c1
+        else
+          let c2 = texture_colour ctx at b.entries.(prev) tq warps in
+          let v1 = (v -. b.values.(prev)) /. (b.values.(cur) -. b.values.(prev)) in
+          let v2 = 1. -. v1 in
+          let mix x y = f32 (f32 (v1 *. x) +. f32 (v2 *. y)) in
+          { r = mix c1.r c2.r; g = mix c1.g c2.g; b = mix c1.b c2.b; tr = mix c1.tr c2.tr }
+
+(* ComputeLightedTexture: the layers [ls] (the top first) at the point [q], each lit and seen
+   through the filter and transmit of the layers above it; then the transmitted ray, filtered by
+   every layer, and each layer's reflected ray. *)
+and lighted ctx at (ls : surface array) q warps : result =
+  let sc = ctx.scene in
+  let obj = at.hobj and d = at.hd and n = at.hn in
+  let count = Array.length ls in
+  (* per layer: the shading normal, the reflection colour and the reflected ray's weight *)
+  let normals = Array.make count n and refls = Array.make count Rgb.black and weights = Array.make count 0. in
+  let exponents = Array.make count 1. in
+  let res = ref Rgb.black and filcol = ref Rgb.white and trans = ref 1. and layers = ref 0 in
+  while !layers < count && !trans > sc.adc_bailout do
+    let i = !layers in
+    let s = ls.(i) in
+    (* the layer's normal: bent by its normal pattern, in the space of the patterned textures
+       around it *)
+    let ln =
+      match s.bump with
+      | Smooth -> n
+      | Bumpy nm ->
+          let wn = List.fold_left (fun v (b : blended) -> Normals.warp_normal b.nwarps ~keep_scale:false v) n warps in
+          let pn = Normals.perturb ~facets:sc.facets sc.noise_generator nm q { Patterns.normal = at.pnormal; dir = d } wn in
+          at.pnormal <- pn;
+          List.fold_right (fun (b : blended) v -> Normals.unwarp_normal b.nwarps ~keep_scale:false v) warps (Normals.layer_normal nm pn)
+    in
+    let s = match s.paint with Fixed -> s | Varying f -> f { Patterns.normal = at.pnormal; dir = d } q in
+    let new_weight = at.hweight *. !trans in
+    let ci = -.Vec.dot d ln in
+    let refl = if s.reflects then Optics.reflectivity sc s obj at.hinteriors ci else Rgb.black in
+    weights.(i) <- f32 (if s.refl.fresnel then new_weight *. Rgb.max3 refl else new_weight *. Float.max (Rgb.max3 s.refl.rmax) (Rgb.max3 s.refl.rmin));
+    let refl = if s.reflects && s.refl.refl_metallic <> 0. then Lighting.metallic_factor s.refl.refl_metallic ci s.colour refl else refl in
+    normals.(i) <- ln;
+    refls.(i) <- refl;
+    exponents.(i) <- s.refl.exponent;
+    let local =
+      if s.lit then Lighting.add_lights ctx ~memo:at.memo ~level:at.hlevel ~di:obj.double_illuminate s at.hp ln at.hng at.he d at.hinteriors s.emitted
+      else s.emitted
+    in
+    let f = !filcol and r = !res in
+    res := Rgb.make (f32 (r.r +. f32 (local.r *. f.r))) (f32 (r.g +. f32 (local.g *. f.g))) (f32 (r.b +. f32 (local.b *. f.b)));
+    (* the filter colour left for the layers below and what lies behind *)
+    let t = s.filcol in
+    let fc = Rgb.make (f32 (f.r *. t.r)) (f32 (f.g *. t.g)) (f32 (f.b *. t.b)) in
+    let k x = f32 (Float.min 1. (1. -. x)) in
+    filcol := if s.conserve then Rgb.make (f32 (fc.r *. k refl.r)) (f32 (fc.g *. k refl.g)) (f32 (fc.b *. k refl.b)) else fc;
+    trans := Float.min 1. (Float.abs (f32 (Rgb.intensity !filcol)));
+    incr layers
+  done;
+  let top = ls.(0) in
+  let top_normal = normals.(0) in
+  let f = !filcol in
+  let local = !res in
+  (* the transmitted ray, filtered by every layer *)
+  let local, tr, tir =
+    if not (!trans > sc.adc_bailout) then (local, 0., false)
+    else
+      let w = f32 (at.hweight *. Float.max (Float.abs f.r) (Float.max (Float.abs f.g) (Float.abs f.b))) in
+      let ct, tir = refract ctx ~reflected:at.hreflected obj ~level:at.hlevel ~weight:w ~interiors:at.hinteriors at.hp at.hng at.he d top_normal ~raw:n ~bump:top.bump in
+      let att = Rgb.grey obj.old_refract in
+      let att = if Optics.fades obj && List.mem obj.iid at.hinteriors then Optics.fade obj at.hdepth att else att in
+      if tir then (Rgb.make (f32 (local.r +. f32 (att.r *. ct.r))) (f32 (local.g +. f32 (att.g *. ct.g))) (f32 (local.b +. f32 (att.b *. ct.b))), 0., true)
+      else
+        ( Rgb.make
+            (f32 (local.r +. f32 (f32 (att.r *. ct.r) *. f.r)))
+            (f32 (local.g +. f32 (f32 (att.g *. ct.g) *. f.g)))
+            (f32 (local.b +. f32 (f32 (att.b *. ct.b) *. f.b))),
+          f32 (Rgb.intensity att *. ct.tr *. !trans),
+          false )
+  in
+  (* each layer's reflected ray; after total internal reflection, only those whose normal is not
+     the top layer's *)
+  let acc = ref { r = local.r; g = local.g; b = local.b; tr } in
+  for i = 0 to !layers - 1 do
+    let ni = normals.(i) in
+    let differs = Float.abs (top_normal.x -. ni.x) > Precision.epsilon || Float.abs (top_normal.y -. ni.y) > Precision.epsilon || Float.abs (top_normal.z -. ni.z) > Precision.epsilon in
+    if ((not tir) || differs) && not (Rgb.is_zero refls.(i)) then begin
+      let c = reflect ctx ~level:at.hlevel ~weight:weights.(i) ~interiors:at.hinteriors at.hp at.hng at.he d ni ~raw:n ~bump:ls.(i).bump in
+      acc := add_reflection exponents.(i) refls.(i) c !acc
+    end
+  done;
+  !acc
 
 (* §6.2: the transmitted ray by Snell's law, n₁ sin θ₁ = n₂ sin θ₂, with the ratio of the indices
    of the interiors the ray leaves and enters; its colour, and whether total internal reflection

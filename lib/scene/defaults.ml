@@ -22,5 +22,6 @@ let finish =
     legacy_ior = None;
   }
 
-let texture = { pigment = Solid Colour.black; normal = None; finish }
+let layer = { pigment = Solid Colour.black; normal = None; finish }
+let texture = Layers [ layer ]
 let interior = { ior = 1.; fade_distance = 0.; fade_power = 0.; fade_colour = Rgb.black }

@@ -6,8 +6,11 @@ val reflection : Scene.reflection
 val finish : Scene.finish
 (** [finish] is the default finish (§10.1). *)
 
+val layer : Scene.layer
+(** [layer] is black pigment with the default finish. *)
+
 val texture : Scene.texture
-(** [texture] is black pigment with the default finish. *)
+(** [texture] is the plain texture of {!layer}. *)
 
 val interior : Scene.interior
 (** [interior] is ior 1, no fade. *)

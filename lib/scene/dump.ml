@@ -179,11 +179,21 @@ let rec normal (n : normal) =
     map
     (String.concat "" (List.rev_map (fun w -> " " ^ warp w) n.nwarps))
 
-let texture (t : texture) =
+let layer (t : layer) =
   let f = finish t.finish in
   Printf.sprintf "texture { pigment { %s }%s%s }" (pigment t.pigment)
     (match t.normal with None -> "" | Some n -> Printf.sprintf " normal { %s }" (normal n))
     (if f = "" then "" else Printf.sprintf " finish { %s }" f)
+
+(* layers as written (the bottom first); a patterned texture as its pattern (shown as a pigment's,
+   without the unused colour map) and its entries *)
+let rec texture (t : texture) =
+  match t with
+  | Layers ls -> String.concat " " (List.rev_map layer ls)
+  | Texture_pattern { tpat; tmap } ->
+      let pat = pigment (Pattern { tpat with map = [| { value = 0.; colour = Colour.black } |]; pigments = [||] }) in
+      let entries = Array.to_list (Array.map (fun e -> Printf.sprintf "[%s %s]" (num e.tvalue) (texture e.ttexture)) tmap) in
+      Printf.sprintf "texture { %s texture_map { %s } }" pat (String.concat " " entries)
 
 let interior (i : interior) =
   if i = Defaults.interior then ""
@@ -243,7 +253,9 @@ let rec shape = function
         (String.concat "\n  " (List.map member members))
 
 and obj (o : obj) =
-  Printf.sprintf "%s\n  %s%s%s\n} // %s\n" (shape o.shape) (texture o.texture) (interior o.interior)
+  Printf.sprintf "%s\n  %s%s%s%s\n} // %s\n" (shape o.shape) (texture o.texture)
+    (match o.interior_texture with None -> "" | Some t -> "\n  interior_" ^ texture t)
+    (interior o.interior)
     (String.concat ""
        (List.map
           (fun (on, flag) -> if on then "\n  " ^ flag else "")

@@ -45,10 +45,19 @@ let move_point op (p : Vec.t) =
   | Rotate _ | Transform _ -> Transform.point (op_transform op) p
 
 (* §14.7: a texture attached before a transform moves with the object *)
-let texture (t : Scene.texture) op =
-  let m = op_transform op in
+let transform_layer (t : Scene.layer) m =
   let normal = match t.normal with None -> None | Some n -> Some { n with nwarps = Pigment.transform_warps n.nwarps m } in
   { t with pigment = Pigment.transform t.pigment m; normal }
+
+(* Transform_Textures: every layer's pigment and normal; a patterned texture's own pattern only,
+   its entries living in the space the pattern sees *)
+let transform_texture (t : Scene.texture) m : Scene.texture =
+  match t with
+  | Layers ls -> Layers (List.map (fun l -> transform_layer l m) ls)
+  | Texture_pattern p -> Texture_pattern { p with tpat = { p.tpat with warps = Pigment.transform_warps p.tpat.warps m } }
+
+let layer t op = transform_layer t (op_transform op)
+let texture t op = transform_texture t (op_transform op)
 
 let rec shape (s : Scene.shape) op : Scene.shape =
   match s with

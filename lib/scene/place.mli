@@ -10,9 +10,14 @@ type op = Translate of Vec.t | Rotate of Vec.t | Scale of Vec.t | Transform of T
 val op_transform : op -> Transform.t
 (** [op_transform op] is the transform [op] stands for (rotations in degrees, §14.2). *)
 
+val layer : Scene.layer -> op -> Scene.layer
+(** [layer l op] is the layer [l] moved by [op]: its pattern pigment's transform gets [op] composed
+    after it (§14.7, §17.1), and so does its normal's; a plain colour records the transform. *)
+
 val texture : Scene.texture -> op -> Scene.texture
-(** [texture t op] is [t] moved by [op]: its pattern pigment's transform gets [op] composed after it
-    (§14.7); a plain colour is unchanged. *)
+(** [texture t op] is [t] moved by [op] as POV-Ray's Transform_Textures moves it: every layer (as
+    {!layer}), or a patterned texture's own pattern, whose entries live in the space that pattern
+    sees. *)
 
 val shape : Scene.shape -> op -> Scene.shape
 (** [shape s op] is [s] after [op]: baked into a sphere, plane or triangle while it has no

@@ -208,8 +208,23 @@ and slope_entry = { svalue : float; height : float; slope : float }
 (** One entry of a normal_map: its value and normal. *)
 and normal_entry = { nvalue : float; nnormal : normal }
 
-(** A plain texture: one pigment, an optional normal and one finish. *)
-type texture = { pigment : pigment; normal : normal option; finish : finish }
+(** A plain texture, one layer of a texture: a pigment, an optional normal and a finish. *)
+type layer = { pigment : pigment; normal : normal option; finish : finish }
+
+(** A texture (trace.cpp's TEXTURE): plain layers, or a pattern choosing or blending whole
+    textures. *)
+type texture =
+  | Layers of layer list
+      (** a plain or layered texture: the top layer (the last written) first, never empty. Each
+          layer is lit on its own and seen through the filter and transmit of those above it *)
+  | Texture_pattern of { tpat : patterned; tmap : texture_entry array }
+      (** [texture_map], [checker texture {…} texture {…}], [tiles], [average]: [tpat]'s pattern,
+          value modifiers and warps (its colour map is unused) pick the entries, which are
+          evaluated at the point the pattern saw (its warps applied); [Average] weighs every
+          entry by its value *)
+
+(** One entry of a texture map: its value (single precision) and texture. *)
+and texture_entry = { tvalue : float; ttexture : texture }
 
 (** An interior (§6, §10.1). *)
 type interior = { ior : float; fade_distance : float; fade_power : float; fade_colour : Rgb.t }
@@ -291,6 +306,7 @@ and member = {
 and obj = {
   shape : shape;
   texture : texture;
+  interior_texture : texture option;  (** the texture seen where a ray meets the surface from inside *)
   interior : interior;
   no_shadow : bool;
   loc : Loc.t;  (** where the object was written *)

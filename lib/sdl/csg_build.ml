@@ -24,18 +24,31 @@ let rec invert (o : V.obj) : V.obj =
       (* the CSG keeps an inverted flag too: an enclosing intersection leaves it out of its box *)
       { o with shape = Csg { kind; members; split }; inverted = not o.inverted }
 
-(* §2.7: every object gets a texture and an interior; a legacy finish ior goes into the interior. *)
+(* §2.7: every object gets a texture and an interior; a legacy finish ior (its top layer's) goes
+   into the interior. *)
 let resolved st (o : V.obj) =
-  let texture = match o.texture with Some t -> t | None -> st.default_texture in
+  let texture = match o.texture with Some t -> t | None -> Scene.Layers [ st.default_texture ] in
   let interior = match o.interior with Some i -> i | None -> Defaults.interior in
-  let interior = match texture.finish.legacy_ior with Some ior -> { interior with ior } | None -> interior in
+  let legacy_ior = match texture with Layers (l :: _) -> l.finish.legacy_ior | Layers [] | Texture_pattern _ -> None in
+  let interior = match legacy_ior with Some ior -> { interior with ior } | None -> interior in
   let interior = if interior.ior = 0. then { interior with ior = 1. } else interior in
   (texture, interior)
 
-(* The scene object of [o] with [shape], [texture], [interior] and [no_shadow]; its other flags and
-   place are [o]'s. *)
-let scene_obj (o : V.obj) ?(no_shadow = o.no_shadow) shape texture interior : Scene.obj =
-  { Scene.shape; texture; interior; no_shadow; loc = o.oloc; no_image = o.no_image; no_reflection = o.no_reflection; double_illuminate = o.double_illuminate; looks_like = o.looks_like }
+(* The scene object of [o] with [shape], [texture], [interior_texture], [interior] and
+   [no_shadow]; its other flags and place are [o]'s. *)
+let scene_obj (o : V.obj) ?(no_shadow = o.no_shadow) ?(interior_texture = o.interior_texture) shape texture interior : Scene.obj =
+  {
+    Scene.shape;
+    texture;
+    interior_texture;
+    interior;
+    no_shadow;
+    loc = o.oloc;
+    no_image = o.no_image;
+    no_reflection = o.no_reflection;
+    double_illuminate = o.double_illuminate;
+    looks_like = o.looks_like;
+  }
 
 let finish_prim st (o : V.obj) shape : Scene.obj =
   let texture, interior = resolved st o in
@@ -50,9 +63,10 @@ let member_interior (c : V.obj) parent =
 (* A CSG kept whole (§16.4, §16.5, §19.1): every member gets the parent's texture unless it has its
    own and shares the parent's interior unless it has its own; the parent's no_shadow goes to every
    member (only the top level's is ever tested); lights join the scene's lights. *)
-let rec kept_obj st ~texture ~interior (o : V.obj) : Scene.obj =
+let rec kept_obj st ~texture ?interior_texture ~interior (o : V.obj) : Scene.obj =
+  let interior_texture = match o.interior_texture with Some _ -> o.interior_texture | None -> interior_texture in
   match o.shape with
-  | Prim shape -> scene_obj o shape texture interior
+  | Prim shape -> scene_obj o ~interior_texture shape texture interior
   | Csg { kind; members; split = _ } ->
       let members =
         List.filter_map
@@ -70,7 +84,7 @@ let rec kept_obj st ~texture ~interior (o : V.obj) : Scene.obj =
                     no_reflection = c.no_reflection || o.no_reflection;
                   }
                 in
-                Some { Scene.mobj = kept_obj st ~texture ~interior c; inverted = c.inverted; own_interior })
+                Some { Scene.mobj = kept_obj st ~texture ?interior_texture ~interior c; inverted = c.inverted; own_interior })
           members
       in
       (* §16.4: a union whose members all have no_shadow has it too *)
@@ -78,7 +92,7 @@ let rec kept_obj st ~texture ~interior (o : V.obj) : Scene.obj =
         o.no_shadow
         || (match kind with Union -> members <> [] && List.for_all (fun (m : Scene.member) -> m.mobj.no_shadow) members | Merge | Intersection | Clipped -> false)
       in
-      scene_obj o ~no_shadow (Csg { kind; members }) texture interior
+      scene_obj o ~no_shadow ~interior_texture (Csg { kind; members }) texture interior
 
 (* An object entering the scene (§16.4, §16.5): a union that may be split is dissolved, its members
    without a texture or interior take the union's, and its no_shadow goes to every member; its
@@ -92,7 +106,7 @@ let rec add_object st (o : V.obj) =
   | Prim _ ->
       (* an inverted primitive: the intersection holds its texture and interior, so the camera's
          interior list and the hits name the same interior, as for POV-Ray's one object *)
-      let m = V.Member_obj { o with texture = None; interior = None } in
+      let m = V.Member_obj { o with texture = None; interior_texture = None; interior = None } in
       add_object st { o with shape = Csg { kind = Intersection; members = [ m ]; split = false }; inverted = false }
   | Csg { kind = Union; members = ms; split = true } ->
       List.iter
@@ -103,6 +117,7 @@ let rec add_object st (o : V.obj) =
                 {
                   c with
                   texture = (match c.texture with Some _ -> c.texture | None -> o.texture);
+                  interior_texture = (match c.interior_texture with Some _ -> c.interior_texture | None -> o.interior_texture);
                   interior = (match c.interior with Some _ -> c.interior | None -> o.interior);
                   no_shadow = c.no_shadow || o.no_shadow;
                   no_image = c.no_image || o.no_image;

@@ -23,10 +23,21 @@ let rec parse_rvalue ?(store = ignore) st : V.t * bool =
   | Ident (("color_map" | "colour_map") as kw) -> advance st; (V.Colour_map (parse_colour_map st kw), false)
   | Ident "pigment_map" -> advance st; (V.Pigment_map (parse_pigment_map st), false)
   | Ident "texture" ->
+      (* texture {…} texture {…} …: layers, the last written on top *)
+      let l0 = peek_loc st in
       advance st;
-      let t = parse_texture st st.default_texture in
-      if (match peek_follow st with Ident "texture" -> true | _ -> false) then not_supported (peek_loc st) "layered textures";
-      (V.Texture t, false)
+      let t = Texture_reader.link st l0 None (Texture_reader.parse st) in
+      let rec more t =
+        if (match peek_follow st with Ident "texture" -> true | _ -> false) then begin
+          let l = peek_loc st in
+          advance st;
+          more (Texture_reader.link st l (Some t) (Texture_reader.parse st))
+        end
+        else t
+      in
+      (V.Texture (more t), false)
+  | Ident "texture_map" -> advance st; (V.Texture_map (Texture_reader.parse_texture_map st false), false)
+  | Ident "material" -> advance st; (V.Material (Texture_reader.parse_material st Texture_reader.no_material), false)
   | Ident "interior" -> advance st; (V.Interior (parse_interior st Defaults.interior), false)
   | Ident "camera" -> advance st; (V.Camera (parse_camera st), false)
   | Ident "transform" -> advance st; (V.Transform (parse_transform st), false)
@@ -39,7 +50,7 @@ let rec parse_rvalue ?(store = ignore) st : V.t * bool =
   | Ident s -> (
       match cur_value st s with
       | Some (V.Object o) -> advance st; (V.Object { o with oloc = loc }, false)
-      | Some ((V.Pigment _ | V.Normal _ | V.Sky _ | V.Finish _ | V.Texture _ | V.Interior _ | V.Light _ | V.Camera _ | V.Transform _ | V.Unsupported _ | V.Colour_map _ | V.Pigment_map _) as v) ->
+      | Some ((V.Pigment _ | V.Normal _ | V.Sky _ | V.Finish _ | V.Texture _ | V.Interior _ | V.Light _ | V.Camera _ | V.Transform _ | V.Unsupported _ | V.Colour_map _ | V.Pigment_map _ | V.Texture_map _ | V.Material _) as v) ->
           advance st; (v, false)
       | Some (V.Array a) -> advance st; (V.Array { a with cells = Array.copy a.cells }, false)
       | Some (V.String _) -> (parse_string st, false)

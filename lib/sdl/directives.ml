@@ -234,7 +234,14 @@ let directive st d loc =
         let l = peek_loc st in
         match peek st with
         | RBrace -> advance st
-        | Ident "texture" -> advance st; st.default_texture <- parse_texture st st.default_texture; loop ()
+        | Ident "texture" ->
+            advance st;
+            (* Parse_Default: the default texture is one plain layer *)
+            (match Texture_reader.parse st with
+            | Layers [ l ] -> st.default_texture <- l
+            | Layers _ -> Error.raise_at l "the default texture cannot be layered"
+            | Texture_pattern _ -> Error.raise_at l "the default texture cannot be a patterned texture, a material map or tiles");
+            loop ()
         | Ident "pigment" -> advance st; st.default_texture <- { st.default_texture with pigment = parse_pigment st st.default_texture.pigment }; loop ()
         | Ident "finish" -> advance st; st.default_texture <- { st.default_texture with finish = parse_finish st st.default_texture.finish }; loop ()
         | Ident "normal" -> advance st; st.default_texture <- { st.default_texture with normal = Some (parse_normal st st.default_texture.normal) }; loop ()

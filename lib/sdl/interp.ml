@@ -132,7 +132,7 @@ let load_string opts ~file text =
       version = 370; version_set = false; charset = Ascii; warnings = [];
       objects = []; lights = []; camera = None; background = None; sky = None;
       assumed_gamma = None; max_trace_level = 5; adc_bailout = 1. /. 255.; noise_generator = 2; number_of_waves = 10; ambient_light = Rgb.white;
-      default_texture = Defaults.texture;
+      default_texture = Defaults.layer;
       directive = (fun _ _ _ -> ()); invoke = (fun _ _ _ -> ()); index = (fun _ _ -> 0); files = [];
       read_object = (fun _ -> None);
     }

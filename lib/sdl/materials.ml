@@ -483,33 +483,6 @@ let parse_finish st (base : Scene.finish) : Scene.finish =
   in
   f
 
-let parse_texture st (base : Scene.texture) : Scene.texture =
-  open_block st "texture";
-  let t = match ident_of_kind st (function V.Texture t -> Some t | _ -> None) with Some t -> t | None -> base in
-  (* Parse_Texture: pigment, normal and finish identifiers may stand for their blocks here, a
-     concession POV-Ray makes to old scenes ("texture { Jade }") *)
-  let rec ids (t : Scene.texture) =
-    match ident_of_kind st (function V.Pigment p -> Some (`P p) | V.Normal n -> Some (`N n) | V.Finish f -> Some (`F f) | _ -> None) with
-    | Some (`P p) -> ids { t with pigment = p }
-    | Some (`N n) -> ids { t with normal = Some n }
-    | Some (`F f) -> ids { t with finish = f }
-    | None -> t
-  in
-  let t = ids t in
-  let rec loop (t : Scene.texture) =
-    let loc = peek_loc st in
-    match peek st with
-    | RBrace -> advance st; t
-    | Ident "pigment" -> advance st; loop { t with pigment = parse_pigment st t.pigment }
-    | Ident "finish" -> advance st; loop { t with finish = parse_finish st t.finish }
-    | Ident "normal" -> advance st; loop { t with normal = Some (parse_normal st t.normal) }
-    | Ident s when is_pattern_start st -> not_supported loc (Printf.sprintf "patterned textures ('%s' in a texture)" s)
-    | Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") -> loop (Place.texture t (parse_op st))
-    | Ident s when is_unsupported s -> not_supported loc (Printf.sprintf "'%s' in a texture" s)
-    | _ -> unexpected st "'pigment', 'normal', 'finish' or '}' in a texture"
-  in
-  loop t
-
 let parse_interior st (base : Scene.interior) : Scene.interior =
   open_block st "interior";
   let i = match ident_of_kind st (function V.Interior i -> Some i | _ -> None) with Some i -> i | None -> base in

@@ -81,7 +81,7 @@ let f32_vec (v : Vec.t) = Vec.make (Precision.f32 v.x) (Precision.f32 v.y) (Prec
 let parse_texture_in_block st =
   (* texture { … } or a texture identifier inside a mesh triangle *)
   advance st;
-  parse_texture st st.default_texture
+  Texture_reader.parse st
 
 (* mesh { triangle {…} smooth_triangle {…} … [inside_vector V] modifiers } (§2.6), read up to the
    modifiers. Vertices are kept in single precision; each face is set up from the values as parsed. *)

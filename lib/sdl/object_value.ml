@@ -7,6 +7,7 @@ let new_obj_of shape loc =
   {
     V.shape;
     texture = None;
+    interior_texture = None;
     interior = None;
     no_shadow = false;
     oloc = loc;
@@ -30,9 +31,10 @@ let move_light op (l : Scene.light) =
 (* §14.7: an object's texture, if it has one yet, moves with it; members' textures with them *)
 let rec move_obj op (o : V.obj) =
   let texture = Option.map (fun t -> Place.texture t op) o.texture in
+  let interior_texture = Option.map (fun t -> Place.texture t op) o.interior_texture in
   match o.shape with
-  | Prim s -> { o with shape = Prim (move_shape op s); texture }
-  | Csg c -> { o with shape = Csg { c with members = List.map (move_member op) c.members }; texture }
+  | Prim s -> { o with shape = Prim (move_shape op s); texture; interior_texture }
+  | Csg c -> { o with shape = Csg { c with members = List.map (move_member op) c.members }; texture; interior_texture }
 
 and move_member op = function
   | V.Member_obj o -> V.Member_obj (move_obj op o)

@@ -18,7 +18,7 @@ let show_vec (v : Vec.t) = Printf.sprintf "<%g, %g, %g>" v.x v.y v.z
 
 (* Values povml cannot make yet; a declaration of one is kept as [V.Unsupported]. *)
 let unsupported_rvalues =
-  [ "material"; "normal_map"; "texture_map"; "slope_map";
+  [ "normal_map"; "slope_map";
     "function"; "spline"; "media"; "density"; "fog"; "rainbow"; "isosurface" ]
 
 let unsupported_rvalue_set = set_of (unsupported_objects @ unsupported_rvalues)
@@ -209,18 +209,34 @@ and parse_light_source st = Lights.parse st ~object_:parse_object ~mods:parse_ob
 
 (* The modifiers of an object, up to its closing brace. *)
 and parse_object_mods st (o : V.obj) what : V.obj =
-  let tex o = match o.V.texture with Some t -> t | None -> st.default_texture in
+  (* pigment, normal and finish edit the top layer of the object's texture (the default texture
+     when it has none); a patterned texture has no layer to edit *)
+  let edit loc (o : V.obj) f =
+    match o.V.texture with
+    | None -> { o with texture = Some (Scene.Layers [ f st.default_texture ]) }
+    | Some (Layers (top :: below)) -> { o with texture = Some (Layers (f top :: below)) }
+    | Some (Layers []) -> o
+    | Some (Texture_pattern _) -> Error.raise_at loc "cannot layer over a patterned texture"
+  in
   let rec loop (o : V.obj) =
     let loc = peek_loc st in
     match peek st with
-    | RBrace -> advance st; o
-    | Ident "pigment" -> advance st; let t = tex o in loop { o with texture = Some { t with pigment = parse_pigment st t.pigment } }
-    | Ident "finish" -> advance st; let t = tex o in loop { o with texture = Some { t with finish = parse_finish st t.finish } }
-    | Ident "normal" -> advance st; let t = tex o in loop { o with texture = Some { t with normal = Some (parse_normal st t.normal) } }
-    | Ident "texture" ->
+    | RBrace ->
+        if o.texture = None && o.interior_texture <> None then Error.raise_at loc "an interior texture requires an exterior texture";
         advance st;
-        if o.texture <> None then not_supported loc "layered textures (a texture added to an object that has one)";
-        loop { o with texture = Some (parse_texture st st.default_texture) }
+        o
+    | Ident "pigment" -> advance st; loop (edit loc o (fun t -> { t with pigment = parse_pigment st t.pigment }))
+    | Ident "finish" -> advance st; loop (edit loc o (fun t -> { t with finish = parse_finish st t.finish }))
+    | Ident "normal" -> advance st; loop (edit loc o (fun t -> { t with normal = Some (parse_normal st t.normal) }))
+    | Ident "texture" -> advance st; loop { o with texture = Some (Texture_reader.link st loc o.texture (Texture_reader.parse st)) }
+    | Ident "interior_texture" ->
+        advance st;
+        open_block st "interior_texture";
+        loop { o with interior_texture = Some (Texture_reader.link st loc o.interior_texture (Texture_reader.parse_body st ~close:RBrace)) }
+    | Ident "material" ->
+        advance st;
+        let m = Texture_reader.parse_material st { mtexture = o.texture; minterior_texture = o.interior_texture; minterior = o.interior } in
+        loop { o with texture = m.mtexture; interior_texture = m.minterior_texture; interior = m.minterior }
     | Ident "interior" ->
         advance st;
         let base = match o.interior with Some i -> i | None -> Defaults.interior in

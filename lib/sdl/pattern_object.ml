@@ -9,12 +9,13 @@ open Reader
    intersection of itself alone, whose Inside is the negated one (§16.3). Textures and interiors
    are those Csg_build would give; only the shapes matter to the Inside test. *)
 let rec scene_obj st (o : V.obj) : Scene.obj =
-  let texture = match o.texture with Some t -> t | None -> st.default_texture in
+  let texture = match o.texture with Some t -> t | None -> Scene.Layers [ st.default_texture ] in
   let interior = match o.interior with Some i -> i | None -> Defaults.interior in
   let made shape : Scene.obj =
     {
       shape;
       texture;
+      interior_texture = o.interior_texture;
       interior;
       no_shadow = o.no_shadow;
       loc = o.oloc;

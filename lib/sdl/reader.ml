@@ -93,7 +93,7 @@ type st = {
   mutable noise_generator : int;
   mutable number_of_waves : int;
   mutable ambient_light : Rgb.t;
-  mutable default_texture : Scene.texture;
+  mutable default_texture : Scene.layer;
   mutable directive : st -> string -> Loc.t -> unit;  (* the directive reader, tied below *)
   mutable invoke : st -> V.macro -> Loc.t -> unit;  (* the macro caller, tied below *)
   mutable index : st -> V.array_v -> int;  (* reads the subscripts of an array element, tied below *)
@@ -121,7 +121,8 @@ let keywords =
     "mesh2"; "vertex_vectors"; "normal_vectors"; "uv_vectors"; "texture_list"; "face_indices"; "normal_indices";
     "uv_indices"; "inside_vector"; "box"; "no_image"; "no_reflection"; "double_illuminate"; "spotlight";
     "parallel"; "point_at"; "radius"; "tightness"; "orthographic"; "looks_like"; "cylinder"; "cone"; "disc";
-    "open"; "torus"; "union"; "merge"; "intersection"; "difference"; "inverse"; "split_union"; "clipped_by"; "text"; "ttf"; "polygon"; "quadric" ]
+    "open"; "torus"; "union"; "merge"; "intersection"; "difference"; "inverse"; "split_union"; "clipped_by"; "text"; "ttf"; "polygon"; "quadric";
+    "material"; "texture_map"; "interior_texture"; "tiles" ]
   (* pigment patterns (POVRAY-3.7 §17) *)
   @ [ "checker"; "gradient"; "hexagon"; "brick"; "brick_size"; "mortar"; "color_map"; "colour_map"; "frequency";
       "phase"; "ramp_wave"; "triangle_wave"; "sine_wave"; "scallop_wave"; "cubic_wave"; "poly_wave"; "pigment_map" ]
@@ -148,13 +149,12 @@ let keywords =
 let unsupported =
   [ "prism"; "lathe"; "sor"; "blob"; "height_field"; "isosurface"; "superellipsoid"; "julia_fractal";
     "parametric"; "bicubic_patch"; "ovus"; "quartic"; "poly"; "rotate"; "scale"; "matrix"; "transform";
-    "material"; "image_map"; "bump_map";
-    "texture_map"; "area_light";
+    "image_map"; "bump_map"; "area_light";
     "projected_through"; "fisheye"; "panoramic"; "ultra_wide_angle"; "omnimax";
     "radiosity"; "photons";
     "media"; "fog"; "rainbow"; "irid"; "crand"; "dispersion"; "dispersion_samples"; "caustics";
     "bounded_by"; "uv_mapping"; "subsurface";
-    "interior_texture"; "light_group"; "cutaway_textures"; "sturm";
+    "light_group"; "cutaway_textures"; "sturm";
     "phong_albedo"; "metallic_albedo"; "translucency" ]
   (* patterns and pattern modifiers not read yet (POVRAY-3.7 §17) *)
   @ [ "pigment_pattern"; "image_pattern"; "density_file"; "color_list" ]
@@ -162,7 +162,7 @@ let unsupported =
      where POV-Ray reads it in an object, a light_source, a texture or an expression (checked word
      by word with POV-Ray: parser/reswords.cpp) *)
   @ [ "sphere_sweep"; "polynomial"; "composite"; "mesh_camera"; "adaptive"; "area_illumination"; "circular"; "jitter";
-      "orient"; "media_attenuation"; "media_interaction"; "tiles"; "material_map"; "bump_map"; "density"; "density_map"; "spline"; "inside"; "trace"; "max_extent"; "min_extent";
+      "orient"; "media_attenuation"; "media_interaction"; "material_map"; "bump_map"; "density"; "density_map"; "spline"; "inside"; "trace"; "max_extent"; "min_extent";
       "datetime"; "function" ]
 
 (* The rest of POV-Ray 3.7's reserved words (parser/reswords.cpp), none of which povml reads: words

@@ -89,7 +89,7 @@ type st = {
   mutable noise_generator : int;  (** global_settings: 1, 2 (default) or 3 *)
   mutable number_of_waves : int;  (** global_settings: the wave sources of waves and ripples, 10 by default *)
   mutable ambient_light : Rgb.t;
-  mutable default_texture : Scene.texture;
+  mutable default_texture : Scene.layer;
   mutable directive : st -> string -> Loc.t -> unit;
   mutable invoke : st -> V.macro -> Loc.t -> unit;
   mutable index : st -> V.array_v -> int;

@@ -3,6 +3,7 @@
 type obj = {
   shape : shape;
   texture : Scene.texture option;
+  interior_texture : Scene.texture option;
   interior : Scene.interior option;
   no_shadow : bool;
   oloc : Loc.t;
@@ -38,6 +39,10 @@ type macro = { mname : string; params : string list; source : Lexer.t; body : Le
 (** A random stream made by [seed(n)] (§11.2). *)
 type stream = { mutable state : int }
 
+(** A [material]: what an object takes from it (parstxtr.cpp's MATERIAL): textures layered over
+    the object's, and an interior. *)
+type material = { mtexture : Scene.texture option; minterior_texture : Scene.texture option; minterior : Scene.interior option }
+
 (** A file opened by [#fopen]: its path and what it is open for. Reading, the whole text is read
     at [#fopen] and tokens are taken from it; the file is [Closed] by [#fclose], at the end of the
     data, and when the scene ends. *)
@@ -67,6 +72,8 @@ type t =
   | File of user_file  (** the identifier [#fopen] declares *)
   | Colour_map of Scene.map_entry array  (** a declared [color_map] (POVRAY-3.7 §17.3) *)
   | Pigment_map of Scene.pigment_entry array  (** a declared [pigment_map] (§17.3) *)
+  | Texture_map of Scene.texture_entry array  (** a declared [texture_map] *)
+  | Material of material  (** a declared [material] *)
 
 (** An array: its dimensions and its elements in row-major order, [None] until assigned. *)
 and array_v = { dims : int array; cells : t option array }
@@ -92,18 +99,20 @@ let kind_name = function
   | File f -> Printf.sprintf "the file \"%s\" opened by #fopen" f.path
   | Colour_map _ -> "a color_map"
   | Pigment_map _ -> "a pigment_map"
+  | Texture_map _ -> "a texture_map"
+  | Material _ -> "a material"
 
 let terms = function
   | Float _ -> 1
   | Vector a | Colour a -> Array.length a
-  | String _ | Pigment _ | Normal _ | Sky _ | Finish _ | Texture _ | Interior _ | Object _ | Light _ | Camera _ | Array _ | Macro _ | Transform _ | Unsupported _ | File _ | Colour_map _ | Pigment_map _ -> 0
+  | String _ | Pigment _ | Normal _ | Sky _ | Finish _ | Texture _ | Interior _ | Object _ | Light _ | Camera _ | Array _ | Macro _ | Transform _ | Unsupported _ | File _ | Colour_map _ | Pigment_map _ | Texture_map _ | Material _ -> 0
 
 (* POVRAY-3.7 §11.2: a float is replicated into every term, a shorter vector is padded with zeros. *)
 let promote v n =
   match v with
   | Float f -> Array.make n f
   | Vector a | Colour a -> Array.init n (fun i -> if i < Array.length a then a.(i) else 0.)
-  | String _ | Pigment _ | Normal _ | Sky _ | Finish _ | Texture _ | Interior _ | Object _ | Light _ | Camera _ | Array _ | Macro _ | Transform _ | Unsupported _ | File _ | Colour_map _ | Pigment_map _ -> invalid_arg "Value.promote"
+  | String _ | Pigment _ | Normal _ | Sky _ | Finish _ | Texture _ | Interior _ | Object _ | Light _ | Camera _ | Array _ | Macro _ | Transform _ | Unsupported _ | File _ | Colour_map _ | Pigment_map _ | Texture_map _ | Material _ -> invalid_arg "Value.promote"
 
 let numeric v = terms v > 0
 
@@ -122,4 +131,4 @@ let map f = function
   | Float x -> Some (Float (f x))
   | Vector a -> Some (Vector (Array.map f a))
   | Colour a -> Some (Colour (Array.map f a))
-  | String _ | Pigment _ | Normal _ | Sky _ | Finish _ | Texture _ | Interior _ | Object _ | Light _ | Camera _ | Array _ | Macro _ | Transform _ | Unsupported _ | File _ | Colour_map _ | Pigment_map _ -> None
+  | String _ | Pigment _ | Normal _ | Sky _ | Finish _ | Texture _ | Interior _ | Object _ | Light _ | Camera _ | Array _ | Macro _ | Transform _ | Unsupported _ | File _ | Colour_map _ | Pigment_map _ | Texture_map _ | Material _ -> None

@@ -4,6 +4,7 @@
 type obj = {
   shape : shape;
   texture : Scene.texture option;
+  interior_texture : Scene.texture option;  (** [interior_texture]: seen from inside the surface *)
   interior : Scene.interior option;
   no_shadow : bool;
   oloc : Loc.t;
@@ -39,6 +40,10 @@ type macro = { mname : string; params : string list; source : Lexer.t; body : Le
 (** A random stream made by [seed(n)] (§11.2). *)
 type stream = { mutable state : int }
 
+(** A [material]: what an object takes from it (parstxtr.cpp's MATERIAL): textures layered over
+    the object's, and an interior. *)
+type material = { mtexture : Scene.texture option; minterior_texture : Scene.texture option; minterior : Scene.interior option }
+
 (** A file opened by [#fopen]: its path and what it is open for. Reading, the whole text is read
     at [#fopen] and tokens are taken from it; the file is [Closed] by [#fclose], at the end of the
     data, and when the scene ends. *)
@@ -68,6 +73,8 @@ type t =
   | File of user_file  (** the identifier [#fopen] declares *)
   | Colour_map of Scene.map_entry array  (** a declared [color_map] (POVRAY-3.7 §17.3) *)
   | Pigment_map of Scene.pigment_entry array  (** a declared [pigment_map] (§17.3) *)
+  | Texture_map of Scene.texture_entry array  (** a declared [texture_map] *)
+  | Material of material  (** a declared [material] *)
 
 (** An array: its dimensions and its elements in row-major order, [None] until assigned. *)
 and array_v = { dims : int array; cells : t option array }

@@ -27,6 +27,15 @@ val layer_normal : Scene.normal -> Vec.t -> Vec.t
 (** [layer_normal nm v] is the shading normal from the result [v] of [perturb]: [v] itself, or,
     with [no_bump_scale], [v] divided by its length (trace.cpp normalises it there). *)
 
+val warp_normal : Scene.warp list -> keep_scale:bool -> Vec.t -> Vec.t
+(** [warp_normal ws ~keep_scale n] is the world-space normal [n] taken into the space of the warps
+    [ws] (their transforms, the head first: POV-Ray's Warp_Normal), normalised before and after
+    unless [keep_scale] (no_bump_scale). *)
+
+val unwarp_normal : Scene.warp list -> keep_scale:bool -> Vec.t -> Vec.t
+(** [unwarp_normal ws ~keep_scale n] takes [n] back to world space (UnWarp_Normal), the inverse walk
+    of {!warp_normal}. *)
+
 val slope_value : Scene.slope_entry array -> float -> float
 (** [slope_value map v] is the height a slope_map gives the value [v] (Do_Slope_Map): the Hermite
     cubic through the heights and slopes of the entries around [v], or the entry's height beyond

@@ -95,7 +95,7 @@ let test_surface () =
   let c =
     compile (v37 ^ "sphere { 0, 1 pigment { rgbf <0.5,0.5,0.5,0.4> } finish { ambient 1 diffuse 0 } }")
   in
-  let s = c.objects.(0).surf in
+  let s = (surf_of c.objects.(0)) in
   (* att = 1 − 0.4 = 0.6; emitted = 0.5·1·1·0.6 = 0.3 *)
   float_eq ~eps:1e-6 "3.7 att" 0.6 s.att;
   rgb_eq ~eps:1e-6 "3.7 emitted" (Rgb.grey 0.3) s.emitted;
@@ -106,8 +106,8 @@ let test_surface () =
   (* legacy att = 1 − (f·max(r,g,b) + t) = 1 − 0.4·0.5 = 0.8; emitted = 0.5·0.8 = 0.4 *)
   let c = compile "sphere { 0, 1 pigment { rgbf <0.5,0.5,0.5,0.4> } finish { ambient 1 diffuse 0 } }" in
   Alcotest.(check bool) "legacy" true c.legacy;
-  float_eq ~eps:1e-6 "legacy att" 0.8 c.objects.(0).surf.att;
-  rgb_eq ~eps:1e-6 "legacy emitted" (Rgb.grey 0.4) c.objects.(0).surf.emitted;
+  float_eq ~eps:1e-6 "legacy att" 0.8 (surf_of c.objects.(0)).att;
+  rgb_eq ~eps:1e-6 "legacy emitted" (Rgb.grey 0.4) (surf_of c.objects.(0)).emitted;
   (* ambient 0.2 on rgb <1,0.5,0.25>, ambient_light <0.5,1,1>, emission 0.1:
      r = 1·0.2·0.5 + 1·0.1 = 0.2; g = 0.5·0.2 + 0.5·0.1 = 0.15; b = 0.25·0.2 + 0.25·0.1 = 0.075 *)
   let c =
@@ -116,14 +116,14 @@ let test_surface () =
      ^ "global_settings { ambient_light rgb <0.5,1,1> }\n\
         sphere { 0, 1 pigment { rgb <1,0.5,0.25> } finish { ambient 0.2 emission 0.1 } }")
   in
-  let s = c.objects.(0).surf in
+  let s = (surf_of c.objects.(0)) in
   rgb_eq ~eps:1e-6 "emitted with ambient_light and emission" (Rgb.make 0.2 0.15 0.075) s.emitted;
   Alcotest.(check bool) "lit (default diffuse 0.6)" true s.lit;
   (* spec exponent 1/roughness = 1/0.05 = 20 *)
   float_eq ~eps:1e-5 "spec_exp" 20. s.spec_exp;
   Alcotest.(check bool) "opaque" false s.transparent;
   Alcotest.(check bool) "no reflection" false s.reflects;
-  Alcotest.(check bool) "reflects" true (compile "sphere { 0, 1 finish { reflection 0.1 } }").objects.(0).surf.reflects
+  Alcotest.(check bool) "reflects" true (surf_of (compile "sphere { 0, 1 finish { reflection 0.1 } }").objects.(0)).reflects
 
 let test_lights () =
   let c = compile "light_source { <1,2,3>, rgb <1,0.5,0> fade_distance 2 fade_power 1 } light_source { 0, 1 fade_power 2 }" in

@@ -9,7 +9,7 @@ let v37 = "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"
 let centre text = fst (sphere_of (the_object (scene text)))
 let radius text = snd (sphere_of (the_object (scene text)))
 let pigment text = pigment_of (the_object (scene text))
-let finish text = (the_object (scene text)).texture.finish
+let finish text = (layer_of (the_object (scene text))).finish
 
 (* ---- expressions (§11.2) ---- *)
 
@@ -186,12 +186,12 @@ let test_declare_values () =
           sphere { 0, 1 pigment { P } finish { F phong 0.5 } }")
   in
   colour_eq "pigment id" (colour5 0.1 0.2 0.3 0. 0.) (pigment_of o);
-  rgb_eq "finish id ambient" (Rgb.grey 0.3) o.texture.finish.ambient;
-  float_eq "finish id diffuse" 0.4 o.texture.finish.diffuse;
-  float_eq "finish id modified" 0.5 o.texture.finish.phong;
+  rgb_eq "finish id ambient" (Rgb.grey 0.3) (layer_of o).finish.ambient;
+  float_eq "finish id diffuse" 0.4 (layer_of o).finish.diffuse;
+  float_eq "finish id modified" 0.5 (layer_of o).finish.phong;
   let o = the_object (scene "#declare T = texture { pigment { rgb 1 } finish { diffuse 0.9 } }\nsphere { 0, 1 texture { T } }") in
   colour_eq "texture id pigment" (colour5 1. 1. 1. 0. 0.) (pigment_of o);
-  float_eq "texture id finish" 0.9 o.texture.finish.diffuse;
+  float_eq "texture id finish" 0.9 (layer_of o).finish.diffuse;
   (* no_shadow *)
   Alcotest.(check bool) "no_shadow" true (the_object (scene "sphere { 0, 1 no_shadow }")).no_shadow;
   Alcotest.(check bool) "shadow by default" false (the_object (scene "sphere { 0, 1 }")).no_shadow

@@ -81,7 +81,7 @@ let test_defaults () =
   float_eq "roughness" 0.05 f.roughness;
   float_eq "refraction" 1. f.refraction;
   float_eq "interior ior" 1. Defaults.interior.ior;
-  colour_eq "texture pigment black" Colour.black (match Defaults.texture.pigment with Solid c | Solid_placed { colour = c; _ } -> c | Pattern _ -> Alcotest.fail "a pattern")
+  colour_eq "texture pigment black" Colour.black (match Defaults.layer.pigment with Solid c | Solid_placed { colour = c; _ } -> c | Pattern _ -> Alcotest.fail "a pattern")
 
 (* ---- Stats ---- *)
 

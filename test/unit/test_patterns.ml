@@ -8,7 +8,7 @@ open Helpers
 let v37 = "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"
 
 let pattern_of (o : Scene.obj) =
-  match o.texture.pigment with Pattern p -> p | Solid _ | Solid_placed _ -> Alcotest.fail "expected a pattern pigment"
+  match (layer_of o).pigment with Pattern p -> p | Solid _ | Solid_placed _ -> Alcotest.fail "expected a pattern pigment"
 
 let the_pattern text = pattern_of (the_object (scene (v37 ^ text)))
 
@@ -227,32 +227,32 @@ let test_pigment_maps () =
   (* world <0.5,0.5,0.5> is <0.25,0.25,0.25> for the outer checker (cell 0), <0.5,0.5,0.5> for the
      inner one (cell 0); world z = 1.5 is inner z = 1.5 (cell 1). An inner point computed from the
      world point instead (z = 3) would give cell 0. *)
-  colour_eq "outer 0, inner 0" (rgb 1. 1. 1.) (Pigment.colour_at 2 o.texture.pigment Patterns.no_hit (v 0.5 0.5 0.5));
-  colour_eq "outer 0, inner 1" Colour.black (Pigment.colour_at 2 o.texture.pigment Patterns.no_hit (v 0.5 0.5 1.5));
-  colour_eq "outer 1" red (Pigment.colour_at 2 o.texture.pigment Patterns.no_hit (v 2.5 0.5 0.5));
+  colour_eq "outer 0, inner 0" (rgb 1. 1. 1.) (Pigment.colour_at 2 (layer_of o).pigment Patterns.no_hit (v 0.5 0.5 0.5));
+  colour_eq "outer 0, inner 1" Colour.black (Pigment.colour_at 2 (layer_of o).pigment Patterns.no_hit (v 0.5 0.5 1.5));
+  colour_eq "outer 1" red (Pigment.colour_at 2 (layer_of o).pigment Patterns.no_hit (v 2.5 0.5 0.5));
   (* one pigment given: the second cell keeps the default green *)
   let o = the_object (scene (v37 ^ "plane { y, 0 pigment { checker pigment { rgb 1 } } }")) in
-  colour_eq "default second pigment" green (Pigment.colour_at 2 o.texture.pigment Patterns.no_hit (v 1.5 0.5 0.5));
+  colour_eq "default second pigment" green (Pigment.colour_at 2 (layer_of o).pigment Patterns.no_hit (v 1.5 0.5 0.5));
   (* pigment_map: blended like a colour map, all five channels *)
   let o =
     the_object (scene (v37 ^ "plane { y, 0 pigment { gradient x pigment_map { [0.25 rgb <1,0,0>] [0.75 rgbt <0,0,1,1>] } } }"))
   in
-  colour_eq ~eps:0. "pigment_map halfway" (colour5 0.5 0. 0.5 0. 0.5) (Pigment.colour_at 2 o.texture.pigment Patterns.no_hit (v 0.5 0. 0.));
-  colour_eq ~eps:0. "pigment_map below the first" red (Pigment.colour_at 2 o.texture.pigment Patterns.no_hit (v 0.1 0. 0.));
-  Alcotest.(check bool) "a transparent entry pigment: not opaque" false (Pigment.opaque o.texture.pigment);
+  colour_eq ~eps:0. "pigment_map halfway" (colour5 0.5 0. 0.5 0. 0.5) (Pigment.colour_at 2 (layer_of o).pigment Patterns.no_hit (v 0.5 0. 0.));
+  colour_eq ~eps:0. "pigment_map below the first" red (Pigment.colour_at 2 (layer_of o).pigment Patterns.no_hit (v 0.1 0. 0.));
+  Alcotest.(check bool) "a transparent entry pigment: not opaque" false (Pigment.opaque (layer_of o).pigment);
   (* a declared pigment_map *)
   let o =
     the_object
       (scene (v37 ^ "#declare PM = pigment_map { [0 rgb <1,0,0>] [1 rgb <0,0,1>] }\nplane { y, 0 pigment { gradient x pigment_map { PM } } }"))
   in
-  colour_eq ~eps:0. "declared pigment_map" (rgb 0.5 0. 0.5) (Pigment.colour_at 2 o.texture.pigment Patterns.no_hit (v 0.5 0. 0.));
+  colour_eq ~eps:0. "declared pigment_map" (rgb 0.5 0. 0.5) (Pigment.colour_at 2 (layer_of o).pigment Patterns.no_hit (v 0.5 0. 0.));
   expect_scene_error "pigment_map on checker" "plane { y, 0 pigment { checker pigment_map { [0 rgb 1] } } }" ~line:1 ~col:32
     ~sub:"cannot use pigment_map with this pattern type"
 
 (* ---------------------------------------------------------------------------------------------- *)
 (* Transforms (§14.7, §17.1, §17.9) *)
 
-let eval_at (o : Scene.obj) p = Pigment.colour_at 2 o.texture.pigment Patterns.no_hit p
+let eval_at (o : Scene.obj) p = Pigment.colour_at 2 (layer_of o).pigment Patterns.no_hit p
 
 let test_transforms () =
   (* the pattern is evaluated at the inverse of its transform: scale 2 doubles the cells *)
@@ -283,7 +283,7 @@ let test_transforms () =
   let o = the_object (scene (v37 ^ "sphere { 0, 1 finish { phong 1 } scale 2 pigment { checker rgb 1, rgb 0 } }")) in
   colour_eq "plain, scaled, then checker: scaled" (rgb 1. 1. 1.) (eval_at o (v 1.5 0.5 0.5));
   let o = the_object (scene (v37 ^ "sphere { 0, 1 pigment { rgb <1,0,0> } translate x }")) in
-  (match o.texture.pigment with
+  (match (layer_of o).pigment with
   | Solid_placed { colour; strans } ->
       colour_eq "placed colour" red colour;
       vec_eq "placed transform" (v 1. 0. 0.) (Transform.point strans Vec.zero)
@@ -295,7 +295,7 @@ let test_transforms () =
      ^ "#declare T = texture { pigment { checker rgb 1, rgb 0 } }\nmesh { triangle { 0, x, y texture { T } } translate x }")
   in
   match (the_object s).shape with
-  | Mesh { textures; _ } -> colour_eq "mesh face texture moved" Colour.black (Pigment.colour_at 2 textures.(0).pigment Patterns.no_hit (v 0.5 0.5 0.5))
+  | Mesh { textures; _ } -> colour_eq "mesh face texture moved" Colour.black (Pigment.colour_at 2 (match textures.(0) with Layers (l :: _) -> l.pigment | Layers [] | Texture_pattern _ -> Alcotest.fail "not plain") Patterns.no_hit (v 0.5 0.5 0.5))
   | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Box _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Csg _ -> Alcotest.fail "a mesh expected"
 
 (* ---------------------------------------------------------------------------------------------- *)
@@ -303,9 +303,9 @@ let test_transforms () =
 
 let test_compile () =
   let c = compile (v37 ^ "plane { y, 0 pigment { rgb 1 } }") in
-  Alcotest.(check bool) "a plain colour is Fixed" true (c.objects.(0).surf.paint = Fixed);
+  Alcotest.(check bool) "a plain colour is Fixed" true ((surf_of c.objects.(0)).paint = Fixed);
   let c = compile (v37 ^ "plane { y, 0 pigment { checker rgb 1, rgb 0 } }") in
-  (match c.objects.(0).surf.paint with
+  (match (surf_of c.objects.(0)).paint with
   | Fixed -> Alcotest.fail "a pattern is Varying"
   | Varying at -> rgb_eq "surface at a point" Rgb.black (at Patterns.no_hit (v 1.5 0. 0.5)).colour);
   Alcotest.(check bool) "opaque map: opaque object" true c.objects.(0).opaque;
