@@ -374,18 +374,19 @@ Mathematical and string errors:
         |                ^
   [1]
 
-Declared values that povml cannot render yet are an error only where they are used: DMFWood6 in
-textures.inc is a layered texture; in the main file the declaration also warns.
+Declared values that povml cannot render yet are an error only where they are used: T_Grnt19 in
+stones1.inc has a finish with crand; in the main file the declaration also warns.
 
   $ cat > jade.pov <<'POV'
-  > #include "textures.inc"
-  > sphere { 0, 1 texture { DMFWood6 } }
+  > #include "colors.inc"
+  > #include "stones1.inc"
+  > sphere { 0, 1 texture { T_Grnt19 } }
   > POV
   $ povml --dump jade.pov
-  jade.pov:2:25: error: not supported yet: layered textures (used through 'DMFWood6')
-      2 | sphere { 0, 1 texture { DMFWood6 } }
+  jade.pov:3:25: error: not supported yet: 'crand' in a finish (used through 'T_Grnt19')
+      3 | sphere { 0, 1 texture { T_Grnt19 } }
         |                         ^
-  /usr/share/povray-3.7/include/textures.inc:518:1: note: 'DMFWood6' was declared here
+  /usr/share/povray-3.7/include/stones1.inc:584:3: note: 'T_Grnt19' was declared here
   [1]
   $ cat > unsup3.pov <<'POV'
   > #version 3.7;
