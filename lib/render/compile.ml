@@ -124,6 +124,9 @@ let surface ~legacy ~noise ~ambient_light (t : Scene.layer) =
       filcol = Rgb.black;
       transparent = false;
       conserve = f.conserve_energy;
+      irid = f32 f.irid;
+      irid_thickness = f32 f.irid_thickness;
+      irid_turb = f32 f.irid_turb;
       paint = Fixed;
       (* the normal, if any, is perturbed at each hit; without one the tracer never looks *)
       bump = (match t.normal with None -> Smooth | Some nm -> Bumpy nm);
@@ -348,6 +351,7 @@ let scene (s : Scene.t) : Compiled.t =
     max_trace_level = s.max_trace_level;
     adc_bailout = s.adc_bailout;
     noise_generator = s.noise_generator;
+    irid_wavelength = s.irid_wavelength;
     legacy;
     camera = s.camera;
     start_interiors;

@@ -21,6 +21,9 @@ type surface = {
   filcol : Rgb.t;  (** rgb·filter + transmit (§3.5) *)
   transparent : bool;  (** filter or transmit non-zero: a transmitted ray may be traced *)
   conserve : bool;
+  irid : float;  (** the iridescence amount (0: none), single precision *)
+  irid_thickness : float;
+  irid_turb : float;
   paint : paint;
   bump : bump;
 }
@@ -181,6 +184,7 @@ type t = {
   max_trace_level : int;
   adc_bailout : float;
   noise_generator : int;  (** the scene's, for patterns that name none *)
+  irid_wavelength : Rgb.t;  (** the wavelengths of iridescence *)
   legacy : bool;  (** effective version < 3.70 *)
   camera : Scene.camera;
   start_interiors : int list;  (** interiors containing the camera, last entered first (§6.4) *)

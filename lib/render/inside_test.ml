@@ -23,6 +23,9 @@ let no_surface =
     filcol = Rgb.black;
     transparent = false;
     conserve = false;
+    irid = 0.;
+    irid_thickness = 0.;
+    irid_turb = 0.;
     paint = Fixed;
     bump = Smooth;
   }

@@ -48,6 +48,23 @@ let attenuation (lt : light) (p : Vec.t) (l : Vec.t) dist =
 let parallel_depth (lt : light) (l : Vec.t) dist = dist *. -.((lt.dx *. l.x) +. (lt.dy *. l.y) +. (lt.dz *. l.z))
 
 (* One light's diffuse, phong and specular terms. *)
+(* ComputeIridColour: the thin film's interference on [c], light arriving along [l] and seen along
+   [d] at the point [p] with the normal [n]; the film's thickness varied by turbulence *)
+let irid_turb = { Scene.turbulence = Vec.zero; octaves = 5; omega = 0.5; lambda = 2.0 }
+
+let iridescence (sc : Compiled.t) (s : surface) (l : Vec.t) (d : Vec.t) (n : Vec.t) (p : Vec.t) (c : Rgb.t) =
+  let thickness =
+    if s.irid_turb <> 0. then
+      let noise = (2.0 *. Noise.turbulence irid_turb sc.noise_generator p) -. 1.0 in
+      s.irid_thickness *. (1.0 +. (noise *. s.irid_turb))
+    else s.irid_thickness
+  in
+  let w = sc.irid_wavelength in
+  let cl = Float.abs (Vec.dot n l) and ce = Float.abs (Vec.dot n d) in
+  let interference = 2.0 *. Float.pi *. thickness *. (cl +. ce) in
+  let k wl = f32 (1.0 +. (s.irid *. cos (interference /. wl))) in
+  Rgb.make (f32 (c.r *. k w.r)) (f32 (c.g *. k w.g)) (f32 (c.b *. k w.b))
+
 type memo = { tested : bool array; seen : Rgb.t array }
 
 let memo (sc : Compiled.t) = { tested = Array.make (Array.length sc.lights) false; seen = Array.make (Array.length sc.lights) Rgb.black }
@@ -104,33 +121,37 @@ let light_terms ctx ?memo ~light ~slot ~di (s : surface) (p : Vec.t) (n : Vec.t)
               (f32 (acc.b +. f32 (f32 (s.colour.b *. i) *. lc.b)))
           else acc
         in
-        if lt.shadowless then acc (* §3.3: fill lights give no highlights *)
-        else
-          let hl = if s.metallic <> 0. then metallic_factor s.metallic nl s.colour lc else lc in
-          let acc =
-            (* Phong: the mirror direction's cosine with L, to the phong_size *)
-            if s.phong > 0. then
-              let dn = Vec.dot d n in
-              let r = Vec.madd d (-2. *. dn) n in
-              let c = Vec.dot r l in
-              if c > 0. && (s.phong_size < 60. || c > 0.0008) then
-                let i = s.phong *. Float.pow c s.phong_size in
-                Rgb.make (f32 (acc.r +. f32 (i *. hl.r))) (f32 (acc.g +. f32 (i *. hl.g))) (f32 (acc.b +. f32 (i *. hl.b)))
+        let acc =
+          if lt.shadowless then acc (* §3.3: fill lights give no highlights *)
+          else
+            let hl = if s.metallic <> 0. then metallic_factor s.metallic nl s.colour lc else lc in
+            let acc =
+              (* Phong: the mirror direction's cosine with L, to the phong_size *)
+              if s.phong > 0. then
+                let dn = Vec.dot d n in
+                let r = Vec.madd d (-2. *. dn) n in
+                let c = Vec.dot r l in
+                if c > 0. && (s.phong_size < 60. || c > 0.0008) then
+                  let i = s.phong *. Float.pow c s.phong_size in
+                  Rgb.make (f32 (acc.r +. f32 (i *. hl.r))) (f32 (acc.g +. f32 (i *. hl.g))) (f32 (acc.b +. f32 (i *. hl.b)))
+                else acc
+              else acc
+            in
+            (* specular: the halfway vector's cosine with N, to 1/roughness *)
+            if s.specular > 0. then
+              let h = Vec.scale 0.5 (Vec.sub l d) in
+              let hlen = Vec.length h in
+              if hlen > 0. then
+                let c = Vec.dot h n /. hlen in
+                if c > 0. then
+                  let i = s.specular *. Float.pow c s.spec_exp in
+                  Rgb.make (f32 (acc.r +. f32 (i *. hl.r))) (f32 (acc.g +. f32 (i *. hl.g))) (f32 (acc.b +. f32 (i *. hl.b)))
+                else acc
               else acc
             else acc
-          in
-          (* specular: the halfway vector's cosine with N, to 1/roughness *)
-          if s.specular > 0. then
-            let h = Vec.scale 0.5 (Vec.sub l d) in
-            let hlen = Vec.length h in
-            if hlen > 0. then
-              let c = Vec.dot h n /. hlen in
-              if c > 0. then
-                let i = s.specular *. Float.pow c s.spec_exp in
-                Rgb.make (f32 (acc.r +. f32 (i *. hl.r))) (f32 (acc.g +. f32 (i *. hl.g))) (f32 (acc.b +. f32 (i *. hl.b)))
-              else acc
-            else acc
-          else acc
+        in
+        (* the film's interference tints what this light gave *)
+        if s.irid > 0. then iridescence ctx.Context.scene s l d n p acc else acc
 
 let add_lights ctx ?memo ~level ~di s p n ng e d interiors (acc : Rgb.t) =
   let lights = ctx.Context.scene.lights in

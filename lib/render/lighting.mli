@@ -32,6 +32,12 @@ val add_lights :
     light is tested at this point (the layers and entries of one texture share it); later tests
     take its colour from [memo]. *)
 
+val iridescence : Compiled.t -> Compiled.surface -> Vec.t -> Vec.t -> Vec.t -> Vec.t -> Rgb.t -> Rgb.t
+(** [iridescence sc s l d n p c] is [c] tinted by the thin film of [s] (POV-Ray's
+    ComputeIridColour): light arriving along [l], seen along [d], at the point [p] with the normal
+    [n]; the phase 2π·thickness·(|n·l| + |n·d|) over each of the scene's irid wavelengths, the
+    thickness varied by 5 octaves of turbulence when [s] has an irid turbulence. *)
+
 val metallic_factor : float -> float -> Rgb.t -> Rgb.t -> Rgb.t
 (** [metallic_factor metallic cos_angle c lc] is [lc] tinted by the surface colour [c] with
     POV-Ray's empirical metallic Fresnel term (§3.3), for highlights and metallic reflection. *)

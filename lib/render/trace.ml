@@ -152,15 +152,20 @@ and plain ctx ~reflected obj s p n ng e depth ~level ~weight ~interiors d =
      reflection, which was the reflected ray already *)
   if tir || Rgb.is_zero refl then { r = local.r; g = local.g; b = local.b; tr }
   else
-    let c = reflect ctx ~level ~weight:w_refl ~interiors p ng e d sn ~raw:n ~bump:s.bump in
+    let c = reflect ctx ~level ~weight:w_refl ~interiors s p ng e d sn ~raw:n in
     add_reflection s.refl.exponent refl c { r = local.r; g = local.g; b = local.b; tr }
 
 (* The reflected ray off the normal [n] ([raw], the shape's own, keeps it on the surface's side
    when [n] is bent) and what it brings back. *)
-and reflect ctx ~level ~weight ~interiors p ng e d n ~raw ~bump =
-  let rd = match bump with Smooth -> Vec.normalize (Vec.madd d (-2. *. Vec.dot d n) n) | Bumpy _ -> bent_reflection d n raw in
+and reflect ctx ~level ~weight ~interiors (s : surface) p ng e d n ~raw =
+  let rd = match s.bump with Smooth -> Vec.normalize (Vec.madd d (-2. *. Vec.dot d n) n) | Bumpy _ -> bent_reflection d n raw in
   ctx.stats.reflected_rays <- ctx.stats.reflected_rays + 1;
-  trace_ray ctx ~reflected:true ~level ~weight ~interiors ~continued:false (Robust.origin ctx p ng e rd) rd
+  let c = trace_ray ctx ~reflected:true ~level ~weight ~interiors ~continued:false (Robust.origin ctx p ng e rd) rd in
+  if s.irid > 0. then
+    (* the film's interference tints the reflection too (ComputeReflection) *)
+    let k = Lighting.iridescence ctx.scene s rd d n p (Rgb.make c.r c.g c.b) in
+    { r = k.r; g = k.g; b = k.b; tr = 0. }
+  else c
 
 (* ComputeOneTextureColour: a texture's colour at the point [q] where its pigments and normals are
    evaluated ([warps]: the patterned textures it lies in, the outermost first). *)
@@ -207,6 +212,7 @@ and lighted ctx at (ls : surface array) q warps : result =
   (* per layer: the shading normal, the reflection colour and the reflected ray's weight *)
   let normals = Array.make count n and refls = Array.make count Rgb.black and weights = Array.make count 0. in
   let exponents = Array.make count 1. in
+  let surfs = Array.copy ls in
   let res = ref Rgb.black and filcol = ref Rgb.white and trans = ref 1. and layers = ref 0 in
   while !layers < count && !trans > sc.adc_bailout do
     let i = !layers in
@@ -231,6 +237,7 @@ and lighted ctx at (ls : surface array) q warps : result =
     normals.(i) <- ln;
     refls.(i) <- refl;
     exponents.(i) <- s.refl.exponent;
+    surfs.(i) <- s;
     let local =
       if s.lit then Lighting.add_lights ctx ~memo:at.memo ~level:at.hlevel ~di:obj.double_illuminate s at.hp ln at.hng at.he d at.hinteriors s.emitted
       else s.emitted
@@ -273,7 +280,7 @@ and lighted ctx at (ls : surface array) q warps : result =
     let ni = normals.(i) in
     let differs = Float.abs (top_normal.x -. ni.x) > Precision.epsilon || Float.abs (top_normal.y -. ni.y) > Precision.epsilon || Float.abs (top_normal.z -. ni.z) > Precision.epsilon in
     if ((not tir) || differs) && not (Rgb.is_zero refls.(i)) then begin
-      let c = reflect ctx ~level:at.hlevel ~weight:weights.(i) ~interiors:at.hinteriors at.hp at.hng at.he d ni ~raw:n ~bump:ls.(i).bump in
+      let c = reflect ctx ~level:at.hlevel ~weight:weights.(i) ~interiors:at.hinteriors surfs.(i) at.hp at.hng at.he d ni ~raw:n in
       acc := add_reflection exponents.(i) refls.(i) c !acc
     end
   done;

@@ -20,6 +20,9 @@ let finish =
     conserve_energy = false;
     refraction = 1.;
     legacy_ior = None;
+    irid = 0.;
+    irid_thickness = 0.;
+    irid_turb = 0.;
   }
 
 let layer = { pigment = Solid Colour.black; normal = None; finish }

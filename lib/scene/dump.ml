@@ -46,6 +46,7 @@ let finish (f : finish) =
   add f.conserve_energy "conserve_energy";
   add (f.refraction <> d.refraction) ("refraction " ^ num f.refraction);
   (match f.legacy_ior with Some i -> add true ("ior " ^ num i) | None -> ());
+  add (f.irid <> 0.) (Printf.sprintf "irid { %s thickness %s turbulence %s }" (num f.irid) (num f.irid_thickness) (num f.irid_turb));
   String.concat " " (List.rev !items)
 
 (* The other patterns by their keyword and main values. *)

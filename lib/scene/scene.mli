@@ -180,6 +180,9 @@ type finish = {
   conserve_energy : bool;
   refraction : float;  (** legacy [refraction]: the transmitted-colour factor, 1 by default (§2.7) *)
   legacy_ior : float option;  (** legacy [finish { ior }], copied into the interior (§2.7) *)
+  irid : float;  (** [irid { amount … }]: the thin-film interference's amount, 0 without *)
+  irid_thickness : float;  (** the film's thickness *)
+  irid_turb : float;  (** the film thickness's turbulence (the x of the vector written) *)
 }
 
 (** A normal: a pattern perturbing the surface normal (normal.cpp). *)
@@ -367,5 +370,6 @@ type t = {
   adc_bailout : float;
   version : int;  (** effective language version × 100 (§8.1): 362 without #version *)
   noise_generator : int;  (** [global_settings { noise_generator }]: 1, 2 (the default) or 3 *)
+  irid_wavelength : Rgb.t;  (** [global_settings { irid_wavelength }]: <0.70, 0.52, 0.48> by default *)
   gamma : gamma;
 }

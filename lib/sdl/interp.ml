@@ -94,6 +94,7 @@ let finish_scene st : Scene.t =
     max_trace_level = st.max_trace_level;
     adc_bailout = st.adc_bailout;
     noise_generator = st.noise_generator;
+    irid_wavelength = st.irid_wavelength;
     version;
     gamma;
   }
@@ -131,7 +132,7 @@ let load_string opts ~file text =
       macro_calls = 0; iterations = 0; nesting = 0; braces = 0; object_count = 0;
       version = 370; version_set = false; charset = Ascii; warnings = [];
       objects = []; lights = []; camera = None; background = None; sky = None;
-      assumed_gamma = None; max_trace_level = 5; adc_bailout = 1. /. 255.; noise_generator = 2; number_of_waves = 10; ambient_light = Rgb.white;
+      assumed_gamma = None; max_trace_level = 5; adc_bailout = 1. /. 255.; noise_generator = 2; irid_wavelength = Rgb.make (Precision.f32 0.70) (Precision.f32 0.52) (Precision.f32 0.48); number_of_waves = 10; ambient_light = Rgb.white;
       default_texture = Defaults.layer;
       directive = (fun _ _ _ -> ()); invoke = (fun _ _ _ -> ()); index = (fun _ _ -> 0); files = [];
       read_object = (fun _ -> None);

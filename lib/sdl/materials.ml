@@ -460,6 +460,20 @@ let parse_finish st (base : Scene.finish) : Scene.finish =
           loop { f with reflection = { f.reflection with rmin = c; rmax = c; falloff = 1.; fresnel = false } }
     | Ident "reflection_exponent" -> advance st; loop { f with reflection = { f.reflection with exponent = parse_float st } }
     | Ident "conserve_energy" -> advance st; loop { f with conserve_energy = parse_bool_opt st }
+    | Ident "irid" ->
+        (* irid { amount [thickness T] [turbulence V] } *)
+        advance st;
+        open_block st "irid";
+        let irid = parse_float st in
+        let rec fields (f : Scene.finish) =
+          match peek st with
+          | Ident "thickness" -> advance st; fields { f with irid_thickness = parse_float st }
+          | Ident "turbulence" -> advance st; fields { f with irid_turb = (parse_vector st).x }
+          | _ -> f
+        in
+        let f = fields { f with irid } in
+        close_block st "irid";
+        loop f
     | Ident "refraction" ->
         advance st;
         warn st loc "refraction value unnecessary to turn on refraction; to attenuate, the fade_power and fade_distance keywords should be specified in 'interior{...}'";

@@ -87,6 +87,7 @@ type st = {
   mutable max_trace_level : int;
   mutable adc_bailout : float;
   mutable noise_generator : int;  (** global_settings: 1, 2 (default) or 3 *)
+  mutable irid_wavelength : Rgb.t;  (** global_settings: the wavelengths iridescence uses *)
   mutable number_of_waves : int;  (** global_settings: the wave sources of waves and ripples, 10 by default *)
   mutable ambient_light : Rgb.t;
   mutable default_texture : Scene.layer;

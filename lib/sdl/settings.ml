@@ -215,7 +215,11 @@ let parse_global_settings st =
     | Ident "mm_per_unit" ->
         (* the scale of subsurface scattering only, which povml does not have *)
         advance st; ignore (parse_float st); loop ()
-    | Ident "irid_wavelength" -> advance st; ignore (parse_rgb st "irid_wavelength"); loop ()
+    | Ident "irid_wavelength" ->
+        advance st;
+        let c = parse_rgb st "irid_wavelength" in
+        st.irid_wavelength <- Rgb.make (Precision.f32 c.r) (Precision.f32 c.g) (Precision.f32 c.b);
+        loop ()
     | Ident "charset" ->
         (* §15.9: ascii (the default), utf8 or sys *)
         advance st;
