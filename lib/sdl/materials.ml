@@ -160,13 +160,13 @@ let rec parse_pigment_body st ~close (base : Scene.pigment) : Scene.pigment =
         else List.rev acc
       in
       let given = go 0 [] in
-      (* missing pigments are the default colours *)
+      (* missing pigments are the default texture's (Parse_Blend_List) *)
       let defaults = Pigment.default_map pattern in
       let pigments =
         Array.init (Array.length defaults) (fun i ->
             match List.nth_opt given i with
             | Some e -> e
-            | None -> { Scene.pvalue = defaults.(i).value; pigment = Solid defaults.(i).colour })
+            | None -> { Scene.pvalue = defaults.(i).value; pigment = st.default_texture.pigment })
       in
       { g with map = None; pigments }
     end

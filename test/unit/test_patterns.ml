@@ -230,9 +230,13 @@ let test_pigment_maps () =
   colour_eq "outer 0, inner 0" (rgb 1. 1. 1.) (Pigment.colour_at 2 (layer_of o).pigment Patterns.no_hit (v 0.5 0.5 0.5));
   colour_eq "outer 0, inner 1" Colour.black (Pigment.colour_at 2 (layer_of o).pigment Patterns.no_hit (v 0.5 0.5 1.5));
   colour_eq "outer 1" red (Pigment.colour_at 2 (layer_of o).pigment Patterns.no_hit (v 2.5 0.5 0.5));
-  (* one pigment given: the second cell keeps the default green *)
+  (* one pigment given: the second cell is the default texture's pigment (POV-Ray prints 0, 0, 0
+     for F(1.5, 0.5, 0.5) with F = function { pigment { checker pigment { rgb 1 } } }, and 1, 0, 0
+     after #default { pigment { rgb <1,0,0> } }) *)
   let o = the_object (scene (v37 ^ "plane { y, 0 pigment { checker pigment { rgb 1 } } }")) in
-  colour_eq "default second pigment" green (Pigment.colour_at 2 (layer_of o).pigment Patterns.no_hit (v 1.5 0.5 0.5));
+  colour_eq "default second pigment" Colour.black (Pigment.colour_at 2 (layer_of o).pigment Patterns.no_hit (v 1.5 0.5 0.5));
+  let o = the_object (scene (v37 ^ "#default { pigment { rgb <1,0,0> } } plane { y, 0 pigment { checker pigment { rgb 1 } } }")) in
+  colour_eq "the default texture's pigment" red (Pigment.colour_at 2 (layer_of o).pigment Patterns.no_hit (v 1.5 0.5 0.5));
   (* pigment_map: blended like a colour map, all five channels *)
   let o =
     the_object (scene (v37 ^ "plane { y, 0 pigment { gradient x pigment_map { [0.25 rgb <1,0,0>] [0.75 rgbt <0,0,1,1>] } } }"))

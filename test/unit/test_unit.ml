@@ -30,6 +30,7 @@ let () =
       ("Text", Test_text.tests);
       ("CSG", Test_csg.tests);
       ("Patterns", Test_patterns.tests);
+      ("Textures (layers, maps, materials)", Test_textures.tests);
       ("pattern values", Test_pattern_values.tests);
       ("pattern values (surface)", Test_pattern_values.surface_tests);
       ("pattern values (noise)", Test_pattern_values.noise_tests);
