@@ -23,6 +23,9 @@ type surface = {
   conserve : bool;
   paint : paint;
   bump : bump;
+  needs_uv : bool;
+      (** the pigment or the normal is uv-mapped: the tracer gives it the hit's UV coordinates
+          ({!Shape.uv}); never computed for other surfaces *)
 }
 
 (** Whether a surface's colour depends on the point. *)
@@ -44,6 +47,8 @@ and bump =
     and [Shape] dispatches to it. *)
 type shape =
   | Sphere of Sphere.t
+  | Sphere_placed of Sphere.placed
+      (** a sphere moved by modifiers baked into it, traced as [Sphere], its UV frame kept *)
   | Ellipsoid of Sphere.ellipsoid  (** §2.2, §14.5 (b): a sphere mapped by a transform *)
   | Plane of Plane.t
   | Plane_trans of Plane.moved  (** §2.3, §14.5 (a): a plane mapped by a transform *)

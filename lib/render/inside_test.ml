@@ -25,6 +25,7 @@ let no_surface =
     conserve = false;
     paint = Fixed;
     bump = Smooth;
+    needs_uv = false;
   }
 
 let member ~inverted shape =

@@ -34,7 +34,14 @@ let rec walk ctx ~slot (p : Vec.t) (lp : Vec.t) lo first (o : Vec.t) (l : Vec.t)
       let part = ctx.found.part in
       let sf = Surfaces.at obj part in
       (* §4, §17.8: a patterned pigment is evaluated where the shadow ray crosses it *)
-      let f = match sf.paint with Fixed -> sf.filcol | Varying at -> (at Patterns.no_hit (Vec.madd o t l)).filcol in
+      let f =
+        match sf.paint with
+        | Fixed -> sf.filcol
+        | Varying at ->
+            let q = Vec.madd o t l in
+            (* ComputeShadowColour: a uv-mapped pigment is evaluated at the crossing's UV coordinates *)
+            (at (if sf.needs_uv then { Patterns.no_hit with uv = Shape.uv obj part q } else Patterns.no_hit) q).filcol
+      in
       let f = if List.mem obj.iid interiors && obj.fade_power > 0. && Optics.fades obj then Optics.fade obj t f else f in
       let lc = Rgb.make (f32 (lc.r *. f.r)) (f32 (lc.g *. f.g)) (f32 (lc.b *. f.b)) in
       let interiors = if List.mem obj.iid interiors then Optics.remove obj.iid interiors else obj.iid :: interiors in

@@ -73,8 +73,9 @@ and shade ctx ~reflected obj part depth ~level ~weight ~interiors (o : Vec.t) (d
     (* normal.cpp: a texture's normal bends N before the pigment is evaluated, whose slope and
        aoi patterns see the bent normal [pn]; [sn], the bent normal made unit, shades, reflects
        and refracts, and the raw N keeps the reflected ray on the surface's side (trace.cpp) *)
-    let pn = match s.bump with Smooth -> n | Bumpy nm -> Normals.perturb ~facets:sc.facets sc.noise_generator nm p { Patterns.normal = n; dir = d } n in
-    let s = match s.paint with Fixed -> s | Varying at -> at { Patterns.normal = pn; dir = d } p in
+    let uv = if s.needs_uv then Shape.uv obj part p else Vec.zero in
+    let pn = match s.bump with Smooth -> n | Bumpy nm -> Normals.perturb ~facets:sc.facets sc.noise_generator nm p { Patterns.normal = n; dir = d; uv } n in
+    let s = match s.paint with Fixed -> s | Varying at -> at { Patterns.normal = pn; dir = d; uv } p in
     let sn = match s.bump with Smooth -> n | Bumpy nm -> Normals.layer_normal nm pn in
     let e = if ctx.robust then Robust.error_bound o p obj.mag else 0. in
     (* k_r, the reflection colour at the cosine of incidence N·E (E = −d, the way to the eye) *)

@@ -196,7 +196,7 @@ let interior (i : interior) =
 let trans = function None -> "" | Some t -> "\n  " ^ matrix t
 
 let rec shape = function
-  | Sphere { centre; radius; trans = t } -> Printf.sprintf "sphere { %s, %s%s" (vec centre) (num radius) (trans t)
+  | Sphere { centre; radius; trans = t; _ } -> Printf.sprintf "sphere { %s, %s%s" (vec centre) (num radius) (trans t)
   | Plane { normal; offset; trans = t } -> Printf.sprintf "plane { %s, %s%s" (vec normal) (num offset) (trans t)
   | Triangle { p1; p2; p3 } -> Printf.sprintf "triangle { %s, %s, %s" (vec p1) (vec p2) (vec p3)
   | Smooth_triangle { p1; n1; p2; n2; p3; n3 } ->
