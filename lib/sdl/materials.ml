@@ -520,8 +520,25 @@ let parse_finish st (base : Scene.finish) : Scene.finish =
   in
   f
 
-let parse_texture st (base : Scene.texture) : Scene.texture =
+let rec parse_texture st (base : Scene.texture) : Scene.texture =
   open_block st "texture";
+  if is_ident st "uv_mapping" then begin
+    (* texture { uv_mapping … }: the rest of the block is a texture of its own, read from the
+       default one, evaluated at the hit's (u, v, 0) (ComputeOneTextureColour's UV_MAP_PATTERN).
+       Its pigment is then exactly a uv-mapped pigment; its normal is not a uv-mapped normal (no
+       normalisation, and the wrapper's later transforms warp the normal), which needs a node of
+       the texture itself *)
+    let loc = peek_loc st in
+    advance st;
+    let t = texture_body st st.default_texture in
+    match t.normal with
+    | None -> { t with pigment = uv_mapped t.pigment }
+    | Some _ -> not_supported loc "'uv_mapping' in a texture with a normal (uv_mapping it in the normal itself is supported)"
+  end
+  else texture_body st base
+
+(* Parse_Texture after the '{', up to its '}' *)
+and texture_body st (base : Scene.texture) : Scene.texture =
   let t = match ident_of_kind st (function V.Texture t -> Some t | _ -> None) with Some t -> t | None -> base in
   (* Parse_Texture: pigment, normal and finish identifiers may stand for their blocks here, a
      concession POV-Ray makes to old scenes ("texture { Jade }") *)

@@ -21,7 +21,7 @@ val parse_finish : Reader.st -> Scene.finish -> Scene.finish
 (** [parse_finish st base] reads a finish block that modifies [base]. *)
 
 val parse_texture : Reader.st -> Scene.texture -> Scene.texture
-(** [parse_texture st base] reads a texture block that modifies [base]. *)
+(** [parse_texture st base] reads a texture block that modifies [base]; [texture { uv_mapping … }] is the texture read after the keyword with its pigment uv-mapped (not supported yet when it has a normal). *)
 
 val parse_interior : Reader.st -> Scene.interior -> Scene.interior
 (** [parse_interior st base] reads an interior block that modifies [base]. *)
