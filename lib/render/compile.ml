@@ -130,6 +130,8 @@ let surface ~legacy ~noise ~ambient_light (t : Scene.layer) =
       paint = Fixed;
       (* the normal, if any, is perturbed at each hit; without one the tracer never looks *)
       bump = (match t.normal with None -> Smooth | Some nm -> Bumpy nm);
+      (* UV coordinates are computed only for a surface that reads them *)
+      needs_uv = Pigment.uses_uv t.pigment || (match t.normal with None -> false | Some nm -> Pigment.normal_uses_uv nm);
     }
   in
   match t.pigment with

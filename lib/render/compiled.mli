@@ -26,6 +26,9 @@ type surface = {
   irid_turb : float;
   paint : paint;
   bump : bump;
+  needs_uv : bool;
+      (** the pigment or the normal is uv-mapped: the tracer gives it the hit's UV coordinates
+          ({!Shape.uv}); never computed for other surfaces *)
 }
 
 (** Whether a surface's colour depends on the point. *)
@@ -67,6 +70,8 @@ and blended = {
     and [Shape] dispatches to it. *)
 type shape =
   | Sphere of Sphere.t
+  | Sphere_placed of Sphere.placed
+      (** a sphere moved by modifiers baked into it, traced as [Sphere], its UV frame kept *)
   | Ellipsoid of Sphere.ellipsoid  (** §2.2, §14.5 (b): a sphere mapped by a transform *)
   | Plane of Plane.t
   | Plane_trans of Plane.moved  (** §2.3, §14.5 (a): a plane mapped by a transform *)

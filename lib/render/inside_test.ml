@@ -28,6 +28,7 @@ let no_surface =
     irid_turb = 0.;
     paint = Fixed;
     bump = Smooth;
+    needs_uv = false;
   }
 
 let member ~inverted shape =

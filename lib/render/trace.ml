@@ -30,6 +30,7 @@ let black = Traced.black
    shaded replaces (POV-Ray's Intersection.PNormal). *)
 type hit = {
   hobj : obj;
+  hpart : int;  (** the part of it hit (a mesh face …) *)
   hp : Vec.t;
   hn : Vec.t;
   hng : Vec.t;  (** where secondary rays leave from in the robust mode *)
@@ -100,19 +101,20 @@ and shade ctx ~reflected obj part depth ~level ~weight ~interiors (o : Vec.t) (d
     let ng = if ctx.robust then Shape.geometric_normal obj part p else n in
     let e = if ctx.robust then Robust.error_bound o p obj.mag else 0. in
     match tex with
-    | Plain s -> plain ctx ~reflected obj s p n ng e depth ~level ~weight ~interiors d
+    | Plain s -> plain ctx ~reflected obj part s p n ng e depth ~level ~weight ~interiors d
     | Layered _ | Blended _ ->
-        let at = { hobj = obj; hp = p; hn = n; hng = ng; he = e; hd = d; hdepth = depth; hlevel = level; hweight = weight; hinteriors = interiors; hreflected = reflected; memo = Lighting.memo sc; pnormal = n } in
+        let at = { hobj = obj; hpart = part; hp = p; hn = n; hng = ng; he = e; hd = d; hdepth = depth; hlevel = level; hweight = weight; hinteriors = interiors; hreflected = reflected; memo = Lighting.memo sc; pnormal = n } in
         texture_colour ctx at tex p []
 
 (* A plain texture, one layer (the common case): the layer loop of ComputeLightedTexture run once. *)
-and plain ctx ~reflected obj s p n ng e depth ~level ~weight ~interiors d =
+and plain ctx ~reflected obj part s p n ng e depth ~level ~weight ~interiors d =
   let sc = ctx.scene in
   (* normal.cpp: a texture's normal bends N before the pigment is evaluated, whose slope and aoi
      patterns see the bent normal [pn]; [sn], the bent normal made unit, shades, reflects and
      refracts, and the raw N keeps the reflected ray on the surface's side (trace.cpp) *)
-  let pn = match s.bump with Smooth -> n | Bumpy nm -> Normals.perturb ~facets:sc.facets sc.noise_generator nm p { Patterns.normal = n; dir = d } n in
-  let s = match s.paint with Fixed -> s | Varying at -> at { Patterns.normal = pn; dir = d } p in
+  let uv = if s.needs_uv then Shape.uv obj part p else Vec.zero in
+  let pn = match s.bump with Smooth -> n | Bumpy nm -> Normals.perturb ~facets:sc.facets sc.noise_generator nm p { Patterns.normal = n; dir = d; uv } n in
+  let s = match s.paint with Fixed -> s | Varying at -> at { Patterns.normal = pn; dir = d; uv } p in
   let sn = match s.bump with Smooth -> n | Bumpy nm -> Normals.layer_normal nm pn in
   (* k_r, the reflection colour at the cosine of incidence N·E (E = −d, the way to the eye) *)
   let ci = -.Vec.dot d sn in
@@ -191,7 +193,7 @@ and texture_colour ctx at tex q warps : result =
         let a = !acc and t = !total in
         { r = f32 (a.r /. t); g = f32 (a.g /. t); b = f32 (a.b /. t); tr = f32 (a.tr /. t) }
       else
-        let v = b.value { Patterns.normal = at.pnormal; dir = at.hd } tq in
+        let v = b.value { Patterns.normal = at.pnormal; dir = at.hd; uv = Vec.zero } tq in
         let prev, cur = Surfaces.around b.values v in
         let c1 = texture_colour ctx at b.entries.(cur) tq warps in
         if prev = cur then c1
@@ -217,6 +219,7 @@ and lighted ctx at (ls : surface array) q warps : result =
   while !layers < count && !trans > sc.adc_bailout do
     let i = !layers in
     let s = ls.(i) in
+    let uv = if s.needs_uv then Shape.uv obj at.hpart at.hp else Vec.zero in
     (* the layer's normal: bent by its normal pattern, in the space of the patterned textures
        around it *)
     let ln =
@@ -224,11 +227,11 @@ and lighted ctx at (ls : surface array) q warps : result =
       | Smooth -> n
       | Bumpy nm ->
           let wn = List.fold_left (fun v (b : blended) -> Normals.warp_normal b.nwarps ~keep_scale:false v) n warps in
-          let pn = Normals.perturb ~facets:sc.facets sc.noise_generator nm q { Patterns.normal = at.pnormal; dir = d } wn in
+          let pn = Normals.perturb ~facets:sc.facets sc.noise_generator nm q { Patterns.normal = at.pnormal; dir = d; uv } wn in
           at.pnormal <- pn;
           List.fold_right (fun (b : blended) v -> Normals.unwarp_normal b.nwarps ~keep_scale:false v) warps (Normals.layer_normal nm pn)
     in
-    let s = match s.paint with Fixed -> s | Varying f -> f { Patterns.normal = at.pnormal; dir = d } q in
+    let s = match s.paint with Fixed -> s | Varying f -> f { Patterns.normal = at.pnormal; dir = d; uv } q in
     let new_weight = at.hweight *. !trans in
     let ci = -.Vec.dot d ln in
     let refl = if s.reflects then Optics.reflectivity sc s obj at.hinteriors ci else Rgb.black in

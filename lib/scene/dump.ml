@@ -150,7 +150,7 @@ let rec pigment = function
           let entries = Array.to_list (Array.map (fun (e : pigment_entry) -> Printf.sprintf "[%s %s]" (num e.pvalue) (pigment e.pigment)) p.pigments) in
           Printf.sprintf "pigment_map { %s }" (String.concat " " entries)
       in
-      Printf.sprintf "%s frequency %s phase %s%s %s%s" pat (num p.frequency) (num p.phase) wave map
+      Printf.sprintf "%s%s frequency %s phase %s%s %s%s" (if p.uv_mapping then "uv_mapping " else "") pat (num p.frequency) (num p.phase) wave map
         (String.concat "" (List.rev_map (fun w -> " " ^ warp w) p.warps))
 
 let wave_name (w : wave) =
@@ -174,7 +174,7 @@ let rec normal (n : normal) =
         Printf.sprintf " normal_map { %s }"
           (String.concat " " (Array.to_list (Array.map (fun (e : normal_entry) -> Printf.sprintf "[%s %s]" (num e.nvalue) (normal e.nnormal)) es)))
   in
-  Printf.sprintf "%s %s accuracy %s frequency %s phase %s%s%s%s%s" (pattern_name n.npattern) (num n.amount) (num n.accuracy)
+  Printf.sprintf "%s%s %s accuracy %s frequency %s phase %s%s%s%s%s" (if n.nuv_mapping then "uv_mapping " else "") (pattern_name n.npattern) (num n.amount) (num n.accuracy)
     (num n.nfrequency) (num n.nphase) (wave_name n.nwave)
     (if n.no_bump_scale then " no_bump_scale" else "")
     map
@@ -207,7 +207,7 @@ let interior (i : interior) =
 let trans = function None -> "" | Some t -> "\n  " ^ matrix t
 
 let rec shape = function
-  | Sphere { centre; radius; trans = t } -> Printf.sprintf "sphere { %s, %s%s" (vec centre) (num radius) (trans t)
+  | Sphere { centre; radius; trans = t; _ } -> Printf.sprintf "sphere { %s, %s%s" (vec centre) (num radius) (trans t)
   | Plane { normal; offset; trans = t } -> Printf.sprintf "plane { %s, %s%s" (vec normal) (num offset) (trans t)
   | Triangle { p1; p2; p3 } -> Printf.sprintf "triangle { %s, %s, %s" (vec p1) (vec p2) (vec p3)
   | Smooth_triangle { p1; n1; p2; n2; p3; n3 } ->

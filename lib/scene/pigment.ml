@@ -85,12 +85,14 @@ let rec at_pattern_point gen (p : Scene.patterned) hit q =
 and inner gen (pg : Scene.pigment) hit q =
   match pg with
   | Solid c | Solid_placed { colour = c; _ } -> f32_colour c
-  | Pattern p -> at_pattern_point gen p hit (warped p q)
+  | Pattern p -> at_pattern_point gen p hit (warped p hit q)
 
-(* Warp_EPoint: the warps, then the clamp of every coordinate to ±1e17, even without warps *)
-and warped (p : Scene.patterned) q = Warp.point p.warps p.pattern q
+(* Warp_EPoint: the warps, then the clamp of every coordinate to ±1e17, even without warps. A
+   uv-mapped pigment starts from the hit's (u, v, 0) instead of the point it is given (pigment.cpp's
+   UV_MAP_PATTERN case: the point is not used) *)
+and warped (p : Scene.patterned) (hit : Patterns.hit) q = Warp.point p.warps p.pattern (if p.uv_mapping then hit.uv else q)
 
-let eval gen (p : Scene.patterned) hit (x : Vec.t) = at_pattern_point gen p hit (warped p x)
+let eval gen (p : Scene.patterned) hit (x : Vec.t) = at_pattern_point gen p hit (warped p hit x)
 
 let colour_at gen (p : Scene.pigment) hit x = match p with Solid c | Solid_placed { colour = c; _ } -> c | Pattern pp -> eval gen pp hit x
 
@@ -102,6 +104,15 @@ let rec opaque (p : Scene.pigment) =
   | Pattern pp ->
       if Array.length pp.pigments = 0 then Array.for_all (fun (e : Scene.map_entry) -> clear e.colour) pp.map
       else Array.for_all (fun (e : Scene.pigment_entry) -> opaque e.pigment) pp.pigments
+
+let rec uses_uv (p : Scene.pigment) =
+  match p with
+  | Solid _ | Solid_placed _ -> false
+  | Pattern pp -> pp.uv_mapping || Array.exists (fun (e : Scene.pigment_entry) -> uses_uv e.pigment) pp.pigments
+
+let rec normal_uses_uv (n : Scene.normal) =
+  n.nuv_mapping
+  || match n.nmap with Normal_map es -> Array.exists (fun (e : Scene.normal_entry) -> normal_uses_uv e.nnormal) es | No_map | Slope_map _ -> false
 
 let f32_entry v (c : Colour.t) : Scene.map_entry =
   {
@@ -162,8 +173,15 @@ let transform_warps (ws : Scene.warp list) t : Scene.warp list =
 
 let transform (p : Scene.pigment) t : Scene.pigment =
   (* Transform_Tpattern: composed into the head transform, created on the identity first; a plain
-     colour keeps its transform too, for an edit that gives it a pattern (§17.9) *)
+     colour keeps its transform too, for an edit that gives it a pattern (§17.9). A uv-mapped
+     pigment is unchanged: POV-Ray composes the transform into the UV_MAP_PATTERN wrapper, whose
+     warps its evaluation never applies *)
   match p with
   | Solid colour -> Solid_placed { colour; strans = Transform.compose Transform.identity t }
   | Solid_placed { colour; strans } -> Solid_placed { colour; strans = Transform.compose strans t }
+  | Pattern { uv_mapping = true; _ } -> p
   | Pattern pp -> Pattern { pp with warps = transform_warps pp.warps t }
+
+let transform_normal (n : Scene.normal) t : Scene.normal =
+  (* as [transform]: a uv-mapped normal's wrapper takes the transform and never uses it *)
+  if n.nuv_mapping then n else { n with nwarps = transform_warps n.nwarps t }

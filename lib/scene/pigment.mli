@@ -24,13 +24,21 @@ val lookup : Scene.map_entry array -> float -> Colour.t
 val eval : int -> Scene.patterned -> Patterns.hit -> Vec.t -> Colour.t
 (** [eval gen p hit x] is the colour of the pattern pigment [p] at the world point [x]: [x]
     through the pigment's warps (its transforms among them), the pattern, the wrap and wave, the
-    map (§17.1); [gen] is the scene's noise generator, used where [p] names none. *)
+    map (§17.1); [gen] is the scene's noise generator, used where [p] names none. A uv-mapped
+    pigment (and a uv-mapped entry of its pigment map) starts from [hit.uv] instead of [x]. *)
 
 val colour_at : int -> Scene.pigment -> Patterns.hit -> Vec.t -> Colour.t
 (** [colour_at gen p hit x] is the colour of any pigment at the world point [x]. *)
 
 val opaque : Scene.pigment -> bool
 (** [opaque p] holds when no colour of [p] has a filter or transmit above 1e-10 in magnitude (§17.8). *)
+
+val uses_uv : Scene.pigment -> bool
+(** [uses_uv p] holds when [p] or a pigment of its pigment map (at any depth) is uv-mapped: its
+    colour needs the hit's UV coordinates. *)
+
+val normal_uses_uv : Scene.normal -> bool
+(** [normal_uses_uv n] is [uses_uv] for a normal and the normals of its normal_map. *)
 
 val f32_entry : float -> Colour.t -> Scene.map_entry
 (** [f32_entry v c] is a map entry with the value and colour rounded to single precision, as POV-Ray
@@ -48,4 +56,9 @@ val transform_warps : Scene.warp list -> Transform.t -> Scene.warp list
 
 val transform : Scene.pigment -> Transform.t -> Scene.pigment
 (** [transform p t] is [p] with [t] composed after its transform (§14.7, §17.1); a plain colour
-    keeps the same colour and records the transform ([Solid_placed]). *)
+    keeps the same colour and records the transform ([Solid_placed]); a uv-mapped pigment is
+    unchanged (POV-Ray moves only the wrapper it never warps). *)
+
+val transform_normal : Scene.normal -> Transform.t -> Scene.normal
+(** [transform_normal n t] is [n] with [t] composed into its warps ([transform_warps]), or [n]
+    itself when it is uv-mapped, as [transform] for a pigment. *)

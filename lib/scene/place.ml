@@ -46,7 +46,7 @@ let move_point op (p : Vec.t) =
 
 (* §14.7: a texture attached before a transform moves with the object *)
 let transform_layer (t : Scene.layer) m =
-  let normal = match t.normal with None -> None | Some n -> Some { n with nwarps = Pigment.transform_warps n.nwarps m } in
+  let normal = match t.normal with None -> None | Some n -> Some (Pigment.transform_normal n m) in
   { t with pigment = Pigment.transform t.pigment m; normal }
 
 (* Transform_Textures: every layer's pigment and normal; a patterned texture's own pattern only,
@@ -61,17 +61,20 @@ let texture t op = transform_texture t (op_transform op)
 
 let rec shape (s : Scene.shape) op : Scene.shape =
   match s with
-  | Sphere { centre; radius; trans = None } -> (
-      (* §2.2, Sphere::Translate/Rotate/Scale/Transform *)
+  | Sphere { centre; radius; trans = None; uv_trans } -> (
+      (* §2.2, Sphere::Translate/Rotate/Scale/Transform; Translate_Object and the others compose
+         every modifier into UV_Trans as well *)
+      let uv_trans = Some (attach uv_trans op) in
       match op with
-      | Translate v -> Sphere { centre = Vec.add centre v; radius; trans = None }
-      | Rotate _ -> Sphere { centre = Transform.point (op_transform op) centre; radius; trans = None }
+      | Translate v -> Sphere { centre = Vec.add centre v; radius; trans = None; uv_trans }
+      | Rotate _ -> Sphere { centre = Transform.point (op_transform op) centre; radius; trans = None; uv_trans }
       | Scale v when v.x = v.y && v.x = v.z ->
-          Sphere { centre = Vec.scale v.x centre; radius = radius *. Float.abs v.x; trans = None }
+          Sphere { centre = Vec.scale v.x centre; radius = radius *. Float.abs v.x; trans = None; uv_trans }
       | Scale _ | Transform _ ->
           (* an ellipsoid: the sphere as it stands, in object space, mapped by a new transform *)
-          Sphere { centre; radius; trans = Some (attach None op) })
-  | Sphere { centre; radius; trans = Some _ as trans } -> Sphere { centre; radius; trans = Some (attach trans op) }
+          Sphere { centre; radius; trans = Some (attach None op); uv_trans })
+  | Sphere { centre; radius; trans = Some _ as trans; uv_trans } ->
+      Sphere { centre; radius; trans = Some (attach trans op); uv_trans = Some (attach uv_trans op) }
   | Plane { normal; offset; trans = None } -> (
       (* §2.3, Plane::Translate/Rotate/Scale; offset is −Distance *)
       match op with

@@ -142,6 +142,12 @@ type patterned = {
       (** a [pigment_map] or [checker pigment {…}, pigment {…}] (§17.3): when not empty, these
           entries are looked up instead of [map], their pigments evaluated at the same
           pattern-space point and blended *)
+  uv_mapping : bool;
+      (** [pigment { uv_mapping … }] (POV-Ray's UV_MAP_PATTERN around the pigment read after the
+          keyword): the pattern is evaluated at the hit's (u, v, 0) taken through [warps] (the
+          transforms written after the keyword), and transforms applied to the pigment later (the
+          object's, the texture's) are dropped, as POV-Ray puts them on the wrapper it never
+          warps *)
 }
 
 (** One entry of a pigment map: its value (single precision) and pigment. *)
@@ -197,6 +203,9 @@ type normal = {
   accuracy : float;  (** the finite-difference step, 0.02 by default, single precision *)
   no_bump_scale : bool;
   nmap : normal_map;
+  nuv_mapping : bool;
+      (** [normal { uv_mapping … }]: as a pigment's [uv_mapping], the normal is perturbed at the
+          hit's (u, v, 0), and the result normalised (Perturb_Normal's UV_MAP_PATTERN case) *)
 }
 
 (** What a normal's pattern value is turned into. *)
@@ -237,8 +246,11 @@ type interior = { ior : float; fade_distance : float; fade_power : float; fade_c
     got one (an ellipsoid, a plane under a matrix, any moved mesh) is the object-space shape mapped
     by it. Build moved shapes with [Place.shape], not by hand. *)
 type shape =
-  | Sphere of { centre : Vec.t; radius : float; trans : Transform.t option }
-      (** §2.2: with [trans], an ellipsoid: the object-space sphere mapped by it *)
+  | Sphere of { centre : Vec.t; radius : float; trans : Transform.t option; uv_trans : Transform.t option }
+      (** §2.2: with [trans], an ellipsoid: the object-space sphere mapped by it. [uv_trans] is
+          every modifier applied since the sphere was written, composed (POV-Ray's UV_Trans, which
+          Translate_Object and the others keep for every object, besides the centre and radius
+          they bake): its UV coordinates are taken in that frame (Sphere::UVCoord) *)
   | Plane of { normal : Vec.t; offset : float; trans : Transform.t option }
       (** §2.3: with [trans], the object-space plane mapped by it (§14.5) *)
   | Triangle of { p1 : Vec.t; p2 : Vec.t; p3 : Vec.t }

@@ -80,19 +80,28 @@ let map_entries st what ~loc ~value (entry : float -> 'a) : 'a array =
 (* A pigment while it is read: what POV-Ray edits in place (§17.9). [h.pat] is None for a plain
    colour; [map] is None until colours or a color_map are given; [pigments] is not empty for a
    pigment_map or a list of pigments. *)
-type pig = { solid : Colour.t; h : Pattern_reader.header; map : Scene.map_entry array option; pigments : Scene.pigment_entry array }
+type pig = {
+  solid : Colour.t;
+  h : Pattern_reader.header;
+  map : Scene.map_entry array option;
+  pigments : Scene.pigment_entry array;
+  uv : Scene.warp list option;
+      (* a uv-mapped pigment being edited: its warps, which stay as they are (POV-Ray's edit goes
+         to the UV_MAP_PATTERN wrapper, whose warps are never used) *)
+}
 
 let pig_of (p : Scene.pigment) =
   let plain = Pattern_reader.plain in
   match p with
-  | Solid c -> { solid = c; h = plain; map = None; pigments = [||] }
-  | Solid_placed { colour; strans } -> { solid = colour; h = { plain with warps = [ Transform_warp strans ] }; map = None; pigments = [||] }
+  | Solid c -> { solid = c; h = plain; map = None; pigments = [||]; uv = None }
+  | Solid_placed { colour; strans } -> { solid = colour; h = { plain with warps = [ Transform_warp strans ] }; map = None; pigments = [||]; uv = None }
   | Pattern pp ->
       {
         solid = Colour.black;
         h = { pat = Some pp.pattern; frequency = pp.frequency; phase = pp.phase; wave = pp.wave; warps = pp.warps; noise = pp.noise_generator };
         map = Some pp.map;
         pigments = pp.pigments;
+        uv = (if pp.uv_mapping then Some pp.warps else None);
       }
 
 let pigment_of (g : pig) : Scene.pigment =
@@ -105,8 +114,13 @@ let pigment_of (g : pig) : Scene.pigment =
       | Some strans -> Solid_placed { colour = g.solid; strans })
   | Some pattern ->
       let map = match g.map with Some m -> m | None -> Pigment.default_map pattern in
-      Pattern
-        { pattern; frequency = h.frequency; phase = h.phase; wave = h.wave; map; warps = h.warps; noise_generator = h.noise; pigments = g.pigments }
+      let warps, uv_mapping = match g.uv with Some w -> (w, true) | None -> (h.warps, false) in
+      Pattern { pattern; frequency = h.frequency; phase = h.phase; wave = h.wave; map; warps; noise_generator = h.noise; pigments = g.pigments; uv_mapping }
+
+(* UV_MAP_PATTERN around a pigment: a pattern is evaluated at the hit's UV coordinates; a plain
+   colour is the same everywhere *)
+let uv_mapped (p : Scene.pigment) : Scene.pigment =
+  match p with Pattern pp -> Pattern { pp with uv_mapping = true } | Solid _ | Solid_placed _ -> p
 
 let default_brick = Scene.Brick { size = Vec.make 8. 3. 4.5; mortar = Precision.f32 (0.5 -. 2e-10) }
 
@@ -187,6 +201,13 @@ let rec parse_pigment_body st ~close (base : Scene.pigment) : Scene.pigment =
   in
   (* POV-Ray reads the colour or pattern first (after an identifier), then only modifiers: a
      colour or pattern keyword after anything else ends the pigment, an error (checked) *)
+  if is_ident st "uv_mapping" then begin
+    (* Parse_Pattern's UV_MAPPING_TOKEN: the rest of the block is a pigment of its own, read from
+       the default one, which the wrapper evaluates at the hit's (u, v, 0) *)
+    advance st;
+    uv_mapped (parse_pigment_body st ~close st.default_texture.pigment)
+  end
+  else
   let first = ref true in
   let rec loop (g : pig) =
     let loc = peek_loc st in
@@ -200,7 +221,7 @@ let rec parse_pigment_body st ~close (base : Scene.pigment) : Scene.pigment =
           (if close == RBrace then "'}' closing the pigment" else "']' closing the pigment_map entry")
           s
           (if close == RBrace then "pigment" else "pigment_map entry")
-    | Ident _ when is_colour_start st -> loop { solid = parse_colour st; h = { g.h with pat = None }; map = None; pigments = [||] }
+    | Ident _ when is_colour_start st -> loop { solid = parse_colour st; h = { g.h with pat = None }; map = None; pigments = [||]; uv = None }
     | Ident _ when block_pattern st g.h.pat <> None ->
         let pattern, n = Option.get (block_pattern st g.h.pat) in
         advance st;
@@ -255,9 +276,16 @@ and parse_pigment st (base : Scene.pigment) : Scene.pigment =
   parse_pigment_body st ~close:RBrace base
 
 (* A normal while it is read (normal.cpp's Tnormal: a pattern with an amount). *)
-type nrm = { nh : Pattern_reader.header; amount : float; accuracy : float; no_bump_scale : bool; nmap : Scene.normal_map }
+type nrm = {
+  nh : Pattern_reader.header;
+  amount : float;
+  accuracy : float;
+  no_bump_scale : bool;
+  nmap : Scene.normal_map;
+  nuv : Scene.warp list option;  (* a uv-mapped normal being edited: its warps, kept (as a pigment's) *)
+}
 
-let fresh_normal = { nh = Pattern_reader.plain; amount = 0.5; accuracy = Precision.f32 0.02; no_bump_scale = false; nmap = No_map }
+let fresh_normal = { nh = Pattern_reader.plain; amount = 0.5; accuracy = Precision.f32 0.02; no_bump_scale = false; nmap = No_map; nuv = None }
 
 let nrm_of (n : Scene.normal) =
   {
@@ -266,6 +294,7 @@ let nrm_of (n : Scene.normal) =
     accuracy = n.accuracy;
     no_bump_scale = n.no_bump_scale;
     nmap = n.nmap;
+    nuv = (if n.nuv_mapping then Some n.nwarps else None);
   }
 
 (* Post_Tnormal: no_bump_scale is passed down to the normals of a normal_map *)
@@ -288,12 +317,13 @@ let normal_of loc (n : nrm) : Scene.normal =
           nfrequency = n.nh.frequency;
           nphase = n.nh.phase;
           nwave = n.nh.wave;
-          nwarps = n.nh.warps;
+          nwarps = (match n.nuv with Some w -> w | None -> n.nh.warps);
           nnoise_generator = n.nh.noise;
           amount = n.amount;
           accuracy = n.accuracy;
           no_bump_scale = n.no_bump_scale;
           nmap = n.nmap;
+          nuv_mapping = n.nuv <> None;
         }
 
 let default_normal st = match st.default_texture.normal with Some n -> nrm_of n | None -> fresh_normal
@@ -307,6 +337,13 @@ let rec parse_normal_body st ~close (base : Scene.normal option) : Scene.normal 
     | Some n -> nrm_of n
     | None -> ( match base with Some n -> nrm_of n | None -> default_normal st)
   in
+  if is_ident st "uv_mapping" then begin
+    (* as in a pigment: the rest of the block is a normal of its own, read from the default one,
+       perturbed at the hit's (u, v, 0) *)
+    advance st;
+    { (parse_normal_body st ~close st.default_texture.normal) with nuv_mapping = true }
+  end
+  else
   (* the pattern (once), then an optional amount, then modifiers *)
   let listed (n : nrm) pattern count =
     let h = { n.nh with pat = Some pattern; frequency = 0. } in

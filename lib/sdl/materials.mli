@@ -24,6 +24,9 @@ val parse_pigment_map : Reader.st -> Scene.pigment_entry array
 (** [parse_pigment_map st] reads the block of a [pigment_map] after the keyword: entries, or a
     declared map's identifier. *)
 
+val uv_mapped : Scene.pigment -> Scene.pigment
+(** [uv_mapped p] is [p] evaluated at the hit's (u, v, 0) ([uv_mapping]). *)
+
 val parse_pigment : Reader.st -> Scene.pigment -> Scene.pigment
 (** [parse_pigment st base] reads a pigment block that modifies [base]. *)
 

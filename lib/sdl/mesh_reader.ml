@@ -51,6 +51,43 @@ let triangle_corners st ~smooth =
     (p1, p2, p3, None)
   end
 
+(* A UV vector <u, v> (Parse_UV_Vect: a float stands for both; more than two terms is an error). *)
+let uv_vector st =
+  let loc = peek_loc st in
+  match parse_expr st with
+  | V.Float f -> (f, f)
+  | V.Vector [| u; v |] -> (u, v)
+  | v -> Error.raise_at loc "expected a UV vector <u, v> but found %s" (V.kind_name v)
+
+(* The UV coordinates of a mesh { } as POV-Ray's Mesh_Hash_UV keeps them: a pair within EPSILON
+   (1e-10) in each term of one already in its hash bucket is that one; the values stay in double
+   precision. *)
+type uv_table = { buckets : (int, (float * float * int) list) Hashtbl.t; values : float Growable.t; mutable count : int }
+
+let uv_table () = { buckets = Hashtbl.create 256; values = Growable.create 0.; count = 0 }
+
+let uv_index t (u, v) =
+  let bucket = (C_float.c_int (326.0 *. u) lxor C_float.c_int (694.7 *. v)) land 0xFFFFFFFF mod 1000 in
+  let entries = Option.value (Hashtbl.find_opt t.buckets bucket) ~default:[] in
+  match List.find_opt (fun (pu, pv, _) -> Float.abs (pu -. u) < Precision.epsilon && Float.abs (pv -. v) < Precision.epsilon) entries with
+  | Some (_, _, i) -> i
+  | None ->
+      let i = t.count in
+      Hashtbl.replace t.buckets bucket (entries @ [ (u, v, i) ]);
+      Growable.push t.values u;
+      Growable.push t.values v;
+      t.count <- i + 1;
+      i
+
+(* uv_vectors UV1, UV2, UV3 after a mesh triangle's corners (Parse_Three_UVCoords) *)
+let three_uvs st =
+  let a = uv_vector st in
+  skip_comma st;
+  let b = uv_vector st in
+  skip_comma st;
+  let c = uv_vector st in
+  (a, b, c)
+
 (* A block "{ n, item, item … }" of a mesh2: [item] is called for each entry (with its location),
    and the number of entries must be n. *)
 let parse_counted_block ?(start = fun (_ : int) -> ()) st what item =
@@ -91,6 +128,9 @@ let mesh st loc =
   let fv = Growable.create 0 and fn = Growable.create 0 and ftex = Growable.create 0 in
   let textures = ref [] and ntex = ref 0 in
   let inside = ref None in
+  (* UV coordinates are stored from the first triangle that has uv_vectors on; the triangles
+     before it get (0, 0) at every corner then, as POV-Ray gives every triangle without them *)
+  let uvs = uv_table () and fuv = ref None and ntri = ref 0 in
   let push3 g (v : Vec.t) = Growable.push g v.x; Growable.push g v.y; Growable.push g v.z in
   let add_vertex (v : Vec.t) = Growable.push fv (Vertex_table.insert verts (Precision.f32 v.x) (Precision.f32 v.y) (Precision.f32 v.z)) in
   let add_normal (n : Vec.t) = Growable.push fn (Vertex_table.insert norms (Precision.f32 n.x) (Precision.f32 n.y) (Precision.f32 n.z)) in
@@ -100,6 +140,26 @@ let mesh st loc =
         advance st;
         open_block st kw;
         let p1, p2, p3, ns = triangle_corners st ~smooth:(kw = "smooth_triangle") in
+        let zero = (0., 0.) in
+        let corner_uvs = if accept_ident st "uv_vectors" then Some (three_uvs st) else None in
+        (match (corner_uvs, !fuv) with
+        | None, None -> ()
+        | Some _, None ->
+            let g = Growable.create ~capacity:(3 * (!ntri + 1)) 0 in
+            if !ntri > 0 then begin
+              let z = uv_index uvs zero in
+              for _ = 1 to 3 * !ntri do Growable.push g z done
+            end;
+            fuv := Some g
+        | (Some _ | None), Some _ -> ());
+        (match !fuv with
+        | None -> ()
+        | Some g ->
+            let a, b, c = Option.value corner_uvs ~default:(zero, zero, zero) in
+            Growable.push g (uv_index uvs a);
+            Growable.push g (uv_index uvs b);
+            Growable.push g (uv_index uvs c));
+        incr ntri;
         let tex =
           if is_ident st "texture" then begin
             (* POV-Ray takes only a texture identifier here: texture { T } *)
@@ -130,9 +190,11 @@ let mesh st loc =
     | _ -> ()
   in
   items ();
+  let uvs, fuv = match !fuv with None -> ([||], [||]) | Some g -> (Growable.to_array uvs.values, Growable.to_array g) in
   let mesh =
-    Mesh.build ~vertices:(Vertex_table.to_array verts) ~vertex_normals:(Vertex_table.to_array norms) ~fv:(Growable.to_array fv)
-      ~fn:(Growable.to_array fn) ~ftex:(Growable.to_array ftex) ~corners:(Some (Growable.to_array corners)) ~inside_vector:!inside
+    Mesh.build_uv ~uvs ~fuv ~vertices:(Vertex_table.to_array verts) ~vertex_normals:(Vertex_table.to_array norms)
+      ~fv:(Growable.to_array fv) ~fn:(Growable.to_array fn) ~ftex:(Growable.to_array ftex) ~corners:(Some (Growable.to_array corners))
+      ~inside_vector:!inside
   in
   if mesh.faces = 0 then warn st loc "the mesh has no triangles with an area";
   Scene.Mesh { mesh; trans = None; textures = Array.of_list (List.rev !textures) }
@@ -143,6 +205,7 @@ let mesh2 st loc =
   open_block st "mesh2";
   let vertices = ref None and normals = ref None and textures = ref [||] in
   let faces = ref None and nidx = ref None and inside = ref None in
+  let uvs = ref None and uvidx = ref None in
   let vectors what ~unit =
     let g = ref (Growable.create 0.) in
     let n =
@@ -168,7 +231,18 @@ let mesh2 st loc =
     match peek st with
     | Ident "vertex_vectors" -> advance st; vertices := Some (vectors "vertex_vectors" ~unit:false); sections ()
     | Ident "normal_vectors" -> advance st; normals := Some (vectors "normal_vectors" ~unit:true); sections ()
-    | Ident "uv_vectors" -> not_supported l "'uv_vectors'"
+    | Ident "uv_vectors" ->
+        advance st;
+        if !uvs <> None then warn st l "duplicate uv_vectors block; ignoring previous block";
+        let g = ref (Growable.create 0.) in
+        let n =
+          parse_counted_block st "uv_vectors" ~start:(fun n -> g := Growable.create ~capacity:(2 * n) 0.) (fun _ ->
+              let u, v = uv_vector st in
+              Growable.push !g u;
+              Growable.push !g v)
+        in
+        uvs := Some (n, Growable.to_array !g);
+        sections ()
     | Ident "texture_list" ->
         advance st;
         let g = ref [] in
@@ -219,7 +293,18 @@ let mesh2 st loc =
         in
         nidx := Some (l, n, Growable.to_array !g);
         sections ()
-    | Ident "uv_indices" -> not_supported l "'uv_indices'"
+    | Ident "uv_indices" ->
+        advance st;
+        if !uvidx <> None then Error.raise_at l "only one uv_indices section is allowed in mesh2";
+        (* without uv_vectors there is one UV coordinate, (0, 0) *)
+        let nu = match !uvs with Some (n, _) when n > 0 -> n | Some _ | None -> 1 in
+        let g = ref (Growable.create 0) in
+        let n =
+          parse_counted_block st "uv_indices" ~start:(fun n -> g := Growable.create ~capacity:(3 * n) 0) (fun l ->
+              indices st l nu "UV" !g)
+        in
+        uvidx := Some (l, n, Growable.to_array !g);
+        sections ()
     | Ident "inside_vector" -> advance st; inside := Some (parse_vector st); sections ()
     | _ -> ()
   in
@@ -240,5 +325,19 @@ let mesh2 st loc =
         else
           Error.raise_at fl "normal_vectors has %d entries and vertex_vectors %d: without normal_indices they must be as many" nn nv
   in
-  let mesh = Mesh.build ~vertices:vs ~vertex_normals:ns ~fv ~fn ~ftex ~corners:None ~inside_vector:!inside in
+  (* Parse_Mesh2: the faces' UV indices are uv_indices, else the face indices when there are as
+     many UV vectors as vertices, else every corner has the only UV coordinate (or (0, 0)) *)
+  let uvs, fuv =
+    let uvs = match !uvs with Some (n, u) when n > 0 -> u | Some _ | None -> [||] in
+    let nu = Array.length uvs / 2 in
+    match !uvidx with
+    | Some (ul, n, ui) ->
+        if n <> nf then Error.raise_at ul "uv_indices has %d entries but there are %d faces: they must be as many" n nf;
+        (uvs, ui)
+    | None ->
+        if nu = nv then (uvs, fv)
+        else if nu <= 1 then (uvs, [||])
+        else Error.raise_at fl "uv_vectors has %d entries and vertex_vectors %d: without uv_indices they must be as many" nu nv
+  in
+  let mesh = Mesh.build_uv ~uvs ~fuv ~vertices:vs ~vertex_normals:ns ~fv ~fn ~ftex ~corners:None ~inside_vector:!inside in
   Scene.Mesh { mesh; trans = None; textures = !textures }

@@ -64,7 +64,7 @@ let rec parse_object st : V.obj =
       let rloc = peek_loc st in
       let radius = parse_float st in
       if radius <= 0. then warn st rloc "sphere radius %g is not positive" radius;
-      parse_object_mods st (new_obj (Sphere { centre; radius; trans = None }) loc) "sphere"
+      parse_object_mods st (new_obj (Sphere { centre; radius; trans = None; uv_trans = None }) loc) "sphere"
   | Ident "box" ->
       (* §15.1: the corners are sorted per axis; a flat or empty box is accepted silently *)
       advance st;

@@ -274,7 +274,7 @@ let rec pattern_keyword st kind (h : header) : header option =
       (* §17.5: the direction is normalised when parsed *)
       if Vec.length v = 0. then Error.raise_at vl "the gradient vector is <0,0,0>";
       set (Gradient (Vec.normalize v))
-  | Ident (("image_map" | "bump_map" | "image_pattern" | "function" | "pigment_pattern" | "density_file" | "uv_mapping") as s) ->
+  | Ident (("image_map" | "bump_map" | "image_pattern" | "function" | "pigment_pattern" | "density_file") as s) ->
       not_supported loc (Printf.sprintf "'%s' as a pattern" s)
   | _ -> None
 

@@ -95,10 +95,21 @@ and plain st ~close (ls : Scene.layer list) modified =
         (if close == RBrace then "'pigment', 'normal', 'finish', a transform or '}' in a texture"
          else "'pigment', 'normal', 'finish', a transform or ']' in a texture_map entry")
 
-(* texture { … } after the keyword *)
+(* texture { … } after the keyword. texture { uv_mapping … }: the rest of the block is a texture
+   of its own, read from the default one, evaluated at the hit's (u, v, 0) (ComputeOneTextureColour's
+   UV_MAP_PATTERN); its pigment is then exactly a uv-mapped pigment, but its normal is not a
+   uv-mapped normal (no normalisation, the wrapper's later transforms warp the normal), which would
+   need a node of the texture itself *)
 and parse st : Scene.texture =
   open_block st "texture";
-  parse_body st ~close:RBrace
+  if is_ident st "uv_mapping" then begin
+    let loc = peek_loc st in
+    advance st;
+    match plain st ~close:RBrace [ st.default_texture ] false with
+    | Layers [ ({ normal = None; _ } as l) ] -> Layers [ { l with pigment = Materials.uv_mapped l.pigment } ]
+    | Layers _ | Texture_pattern _ -> not_supported loc "'uv_mapping' in a texture with a normal, layers or a pattern (uv_mapping in the pigment or normal itself is supported)"
+  end
+  else parse_body st ~close:RBrace
 
 (* [texture {…}] blocks one after the other, layered *)
 and layers st : Scene.texture option =
@@ -134,6 +145,7 @@ and block_header pattern : Scene.patterned =
     warps = [];
     noise_generator = 0;
     pigments = [||];
+    uv_mapping = false;
   }
 
 (* Parse_Pattern for a texture: the pattern (a block pattern with up to its number of listed

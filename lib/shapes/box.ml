@@ -134,3 +134,20 @@ let moved_pov_box { bx; btr } = Pov_box.mapped btr (pov_box bx)
 
 let stats_rows (s : Stats.t) =
   [ { Stats.name = "Box"; tests = s.box_tests; hits = s.box_hits } ]
+
+(* Box::UVCoord: the object-space point made relative to the box (0 to 1 along each axis), then
+   placed on the cross of a cube map: each side a quarter of the width and a third of the height,
+   none mirrored when seen from outside *)
+let uv_in b (p : Vec.t) side =
+  let dx = b.x1 -. b.x0 and dy = b.y1 -. b.y0 and dz = b.z1 -. b.z0 in
+  let px = (p.x -. b.x0) /. dx and py = (p.y -. b.y0) /. dy and pz = (p.z -. b.z0) /. dz in
+  match side with
+  | 1 -> Vec.make (pz /. 4.0) ((1.0 /. 3.0) +. (py /. 3.0)) 0.
+  | 2 -> Vec.make ((3.0 /. 4.0) -. (pz /. 4.0)) ((1.0 /. 3.0) +. (py /. 3.0)) 0.
+  | 3 -> Vec.make ((1.0 /. 4.0) +. (px /. 4.0)) (pz /. 3.0) 0.
+  | 4 -> Vec.make ((1.0 /. 4.0) +. (px /. 4.0)) ((3.0 /. 3.0) -. (pz /. 3.0)) 0.
+  | 5 -> Vec.make (1.0 -. (px /. 4.0)) ((1.0 /. 3.0) +. (py /. 3.0)) 0.
+  | _ -> Vec.make ((1.0 /. 4.0) +. (px /. 4.0)) ((1.0 /. 3.0) +. (py /. 3.0)) 0.
+
+let uv b side p = uv_in b p side
+let moved_uv { bx; btr } side p = uv_in bx (Transform.inv_point btr p) side

@@ -48,5 +48,14 @@ val pov_box : t -> float array
 val moved_pov_box : moved -> float array
 (** [moved_pov_box m] is that box mapped by the transform. *)
 
+val uv : t -> int -> Vec.t -> Vec.t
+(** [uv b side p] is Box::UVCoord of the point [p] on [side] (1–6): the point relative to the box,
+    each coordinate from 0 to 1, placed on a cube map's cross, (u, v, 0): X− at u = z/4, v =
+    1/3 + y/3; X+ at u = 3/4 − z/4; Y− at u = 1/4 + x/4, v = z/3; Y+ at v = 1 − z/3; Z− at u =
+    1 − x/4; Z+ at u = 1/4 + x/4, v = 1/3 + y/3. *)
+
+val moved_uv : moved -> int -> Vec.t -> Vec.t
+(** [moved_uv m side p] is [uv] of the object-space point. *)
+
 val stats_rows : Stats.t -> Stats.row list
 (** [stats_rows s] is the statistics rows of boxes, as POV-Ray names them. *)

@@ -18,6 +18,8 @@ type t = {
   faces : int;
   bvh : Bvh.t;
   inside_vector : Vec.t option;  (* normalised; None: the mesh has no inside *)
+  uvs : float array;  (* u v per UV coordinate, in double precision (UV_VECT); empty: every corner's is (0, 0) *)
+  fuv : i32s;  (* 3 per face: the corners' UV indices, swapped with the vertices; empty: every corner's is UV 0 *)
 }
 
 let f32 = Precision.f32
@@ -30,9 +32,11 @@ let f32s_of_array a =
   Array.iteri (fun i x -> Array1.unsafe_set b i x) a;
   b
 
-let build ~(vertices : float array) ~(vertex_normals : float array) ~(fv : int array) ~(fn : int array) ~(ftex : int array)
-    ~(corners : float array option) ~inside_vector =
+let build_uv ~uvs ~(fuv : int array) ~(vertices : float array) ~(vertex_normals : float array) ~(fv : int array) ~(fn : int array)
+    ~(ftex : int array) ~(corners : float array option) ~inside_vector =
   let nf = Array.length fv / 3 in
+  let with_uv = Array.length fuv > 0 in
+  let fuvb = Array1.create int32 c_layout (if with_uv then 3 * nf else 0) in
   let tex f = if Array.length ftex = 0 then -1 else ftex.(f) in
   let vn i = Vec.make vertex_normals.(3 * i) vertex_normals.((3 * i) + 1) vertex_normals.((3 * i) + 2) in
   let vx i = Vec.make vertices.(3 * i) vertices.((3 * i) + 1) vertices.((3 * i) + 2) in
@@ -89,6 +93,14 @@ let build ~(vertices : float array) ~(vertex_normals : float array) ~(fv : int a
       seti (o + 4) (if smooth then nb else -1);
       seti (o + 5) (if smooth then nc else -1);
       seti (o + 6) (axis + (4 * vaxis) + (16 * (tex f + 1)));
+      if with_uv then begin
+        (* Compute_Mesh_Triangle swaps UV1 and UV2 with P1 and P2 *)
+        let ua = fuv.(3 * f) and ub = fuv.((3 * f) + 1) in
+        let ua, ub = if swap then (ub, ua) else (ua, ub) in
+        Array1.unsafe_set fuvb (3 * k) (Int32.of_int ua);
+        Array1.unsafe_set fuvb ((3 * k) + 1) (Int32.of_int ub);
+        Array1.unsafe_set fuvb ((3 * k) + 2) (Int32.of_int fuv.((3 * f) + 2))
+      end;
       incr n
     end
   done;
@@ -96,6 +108,7 @@ let build ~(vertices : float array) ~(vertex_normals : float array) ~(fv : int a
   let fgeom = if faces = nf then fgeom else Array1.sub fgeom 0 (6 * faces) in
   let fidx = if faces = nf then fidx else Array1.sub fidx 0 (7 * faces) in
   let fdist = if faces = nf then fdist else Array.sub fdist 0 faces in
+  let fuv = if faces = nf || not with_uv then fuvb else Array1.sub fuvb 0 (3 * faces) in
   let boxes = Bvh.create_boxes faces in
   for k = 0 to faces - 1 do
     let v j a = vertices.((3 * iget fidx ((7 * k) + j)) + a) in
@@ -112,7 +125,11 @@ let build ~(vertices : float array) ~(vertex_normals : float array) ~(fv : int a
     faces;
     bvh;
     inside_vector = Option.map Vec.normalize inside_vector;
+    uvs;
+    fuv;
   }
+
+let build = build_uv ~uvs:[||] ~fuv:[||]
 
 (* intersect_mesh_triangle: the depth of face [k], or infinity. *)
 let face_depth (lim : Limits.t) m k ox oy oz dx dy dz =
@@ -213,6 +230,33 @@ let normal m k (p : Vec.t) = if is_smooth m k then Vec.normalize (raw_normal m k
 
 let texture m k = (iget m.fidx ((7 * k) + 6) lsr 4) - 1
 
+(* The UV coordinate of corner [j] (0, 1, 2) of face [k]: u is [uv_part 0], v [uv_part 1]. *)
+let corner_uv m k j part =
+  if Array1.dim m.fuv > 0 then Array.unsafe_get m.uvs ((2 * iget m.fuv ((3 * k) + j)) + part)
+  else if Array.length m.uvs > 0 then m.uvs.(part)
+  else 0.
+
+(* Mesh::UVCoord at the mesh-space point [p]: each corner's weight is 1 + t1/t2, from the
+   projection of the point onto the height of the triangle over the opposite side, and the
+   corners' UV coordinates are blended by the weights. The vertices are the single-precision
+   ones. *)
+let uv m k (p : Vec.t) =
+  let v = m.vertices and o = 7 * k in
+  let vx i = let j = 3 * iget m.fidx (o + i) in Vec.make (fget v j) (fget v (j + 1)) (fget v (j + 2)) in
+  let p1 = vx 0 and p2 = vx 1 and p3 = vx 2 in
+  (* the weight of the corner [a] with the side [b]–[c] opposite: Side1 = c − b, Side2 = c − a *)
+  let weight (a : Vec.t) (b : Vec.t) (c : Vec.t) =
+    let side1 = Vec.sub c b and side2 = Vec.sub c a in
+    let va = Vec.sub p a in
+    let t1 = Vec.dot side2 side1 and t2 = Vec.dot side1 side1 in
+    let vb = Vec.sub (Vec.scale (t1 /. t2) side1) side2 in
+    let t1 = Vec.dot va vb and t2 = Vec.dot vb vb in
+    1. +. (t1 /. t2)
+  in
+  let w1 = weight p1 p2 p3 and w2 = weight p2 p1 p3 and w3 = weight p3 p1 p2 in
+  let blend part = (w1 *. corner_uv m k 0 part) +. (w2 *. corner_uv m k 1 part) +. (w3 *. corner_uv m k 2 part) in
+  Vec.make (blend 0) (blend 1) 0.
+
 (* Compute_Mesh_BBox: the extent of the (single-precision) corners of the faces. *)
 let extent m =
   let lo = [| infinity; infinity; infinity |] and hi = [| neg_infinity; neg_infinity; neg_infinity |] in
@@ -291,6 +335,9 @@ let placed_inside stack m p =
     match m.mesh.inside_vector with
     | None -> false
     | Some d -> inside_along m.mesh stack (Transform.inv_point m.tr p) (Transform.normalize (Transform.inv_direction m.tr d))
+
+(* Mesh::UVCoord: the world point brought into mesh space when the mesh is moved *)
+let placed_uv m face p = uv m.mesh face (if m.moved then Transform.inv_point m.tr p else p)
 
 let placed_bounds m = if m.moved then Transform.bounds m.tr (bounds m.mesh) else bounds m.mesh
 

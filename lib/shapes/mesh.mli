@@ -13,6 +13,8 @@ type t = private {
   faces : int;
   bvh : Bvh.t;
   inside_vector : Vec.t option;
+  uvs : float array;  (** u v per UV coordinate, double precision; empty: every corner's is (0, 0) *)
+  fuv : i32s;  (** 3 per face: its corners' indices into [uvs], swapped with the vertices; empty: every corner's is the first *)
 }
 
 val build :
@@ -31,6 +33,23 @@ val build :
     are the positions the set-up is computed from when they differ from the stored vertices (the
     parsed values of a [mesh]). Faces without area are dropped, smooth faces whose three normals are
     equal become flat. Vertices and normals must be single-precision values, normals unit length. *)
+
+val build_uv :
+  uvs:float array ->
+  fuv:int array ->
+  vertices:float array ->
+  vertex_normals:float array ->
+  fv:int array ->
+  fn:int array ->
+  ftex:int array ->
+  corners:float array option ->
+  inside_vector:Vec.t option ->
+  t
+(** [build_uv ~uvs ~fuv …] is [build …] with UV coordinates: [uvs] holds u v for each (empty:
+    every corner at (0, 0)), [fuv] three indices into them per face in the corners' order as
+    written (empty: every corner uses the first). A face whose first two corners its set-up swaps
+    has its first two UV indices swapped too (Compute_Mesh_Triangle). Nothing is stored for a
+    mesh without them. *)
 
 val nearest : t -> float array -> Vec.t -> Vec.t -> float -> float array -> int
 (** [nearest m stack o d lo hit] is the nearest face hit at depth ≥ [lo] along the unit direction
@@ -66,6 +85,11 @@ val normal : t -> int -> Vec.t -> Vec.t
 val texture : t -> int -> int
 (** [texture m k] is face [k]'s texture index, −1 for the mesh's own. *)
 
+val uv : t -> int -> Vec.t -> Vec.t
+(** [uv m k p] is Mesh::UVCoord of face [k] at the mesh-space point [p], (u, v, 0): the corners'
+    UV coordinates blended by weights 1 + t1/t2 from the projection of [p] onto each corner's
+    height over the opposite side, computed on the single-precision vertices. *)
+
 val extent : t -> float array
 (** [extent m] is the exact extent of the faces' corners (min x, y, z, max x, y, z), as POV-Ray
     computes a mesh's bounding box. *)
@@ -99,6 +123,10 @@ val placed_face_normal : placed -> int -> Vec.t
 val placed_inside : float array -> placed -> Vec.t -> bool
 (** [placed_inside stack m p] is Mesh::Inside along the inside vector, both brought into mesh
     space, the direction renormalised; [stack] is traversal room (512 floats). *)
+
+val placed_uv : placed -> int -> Vec.t -> Vec.t
+(** [placed_uv m face p] is [uv] of [face] at the world point [p], brought into mesh space when
+    the mesh is moved. *)
 
 val placed_bounds : placed -> float array
 (** [placed_bounds m] is the mesh's box, its corners mapped when it is moved. *)

@@ -9,8 +9,9 @@ let finite (t : Transform.t) =
 
 let compile (s : Scene.shape) =
   match s with
-  | Sphere { centre; radius; trans = None } -> Some (Sphere (Sphere.make centre radius))
-  | Sphere { centre; radius; trans = Some etr } -> Some (Ellipsoid { sp = Sphere.make centre radius; etr })
+  | Sphere { centre; radius; trans = None; uv_trans = None } -> Some (Sphere (Sphere.make centre radius))
+  | Sphere { centre; radius; trans = None; uv_trans = Some u } -> Some (Sphere_placed (Sphere.placed (Sphere.make centre radius) u))
+  | Sphere { centre; radius; trans = Some etr; uv_trans } -> Some (Ellipsoid (Sphere.ellipsoid (Sphere.make centre radius) etr uv_trans))
   | Plane { normal; offset; trans = None } -> Some (Plane (Plane.make normal offset))
   | Plane { normal; offset; trans = Some ptr } -> Some (Plane_trans (Plane.moved normal offset ptr))
   | Triangle { p1; p2; p3 } -> Option.map (fun t -> Triangle t) (Triangle.flat p1 p2 p3)
@@ -36,7 +37,7 @@ let[@inline] one_hit w t id o d lo n = if t < infinity then Scratch.push_ray w n
 let rec depth w shape o d lo =
   match shape with
   | Csg c -> Csg.depth ~all_hits ~inside:inside_member w c o d lo
-  | Sphere s -> Sphere.depth w s o d lo
+  | Sphere s | Sphere_placed { ps = s; _ } -> Sphere.depth w s o d lo
   | Ellipsoid e -> Sphere.ellipsoid_depth w e o d lo
   | Plane p -> Plane.depth w p o d lo
   | Plane_trans p -> Plane.moved_depth w p o d lo
@@ -55,7 +56,7 @@ and all_hits w ob o d lo n =
   let id = ob.id in
   match ob.shape with
   | Csg c -> Csg.hits ~all_hits ~inside:inside_member w c o d lo n
-  | Sphere s -> Sphere.hits w s id o d lo n
+  | Sphere s | Sphere_placed { ps = s; _ } -> Sphere.hits w s id o d lo n
   | Ellipsoid e -> Sphere.ellipsoid_hits w e id o d lo n
   | Plane p -> one_hit w (Plane.depth w p o d lo) id o d lo n
   | Plane_trans p -> one_hit w (Plane.moved_depth w p o d lo) id o d lo n
@@ -79,7 +80,7 @@ and inside stack shape p =
   | Box_trans b -> Box.moved_inside b p
   | Torus t -> Torus.inside t p
   | Glyph g -> Glyph.inside g p
-  | Sphere s -> Sphere.inside s p
+  | Sphere s | Sphere_placed { ps = s; _ } -> Sphere.inside s p
   | Ellipsoid e -> Sphere.ellipsoid_inside e p
   | Plane pl -> Plane.inside pl p
   | Plane_trans pl -> Plane.moved_inside pl p
@@ -97,7 +98,7 @@ and inside_member stack (m : obj) p =
       (* Quadric::Invert negated the coefficients, and its Inside is then asked as it is: an
          inverted quadric holds its surface too *)
       inside stack m.shape p
-  | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _
+  | Sphere _ | Sphere_placed _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _
   | Disc _ | Torus _ | Glyph _ | Polygon _ ->
       inside stack m.shape p <> m.inverted
 
@@ -112,7 +113,7 @@ let normal obj part p =
   | Box_trans b -> Box.moved_normal b part
   | Torus t -> Torus.normal t p
   | Glyph g -> Glyph.normal g part
-  | Sphere s -> Sphere.normal s p
+  | Sphere s | Sphere_placed { ps = s; _ } -> Sphere.normal s p
   | Ellipsoid e -> Sphere.ellipsoid_normal e p
   | Plane pl -> Vec.make pl.nx pl.ny pl.nz
   | Plane_trans { pnormal; _ } -> pnormal
@@ -126,21 +127,35 @@ let geometric_normal obj part p =
   match obj.shape with
   | Smooth_triangle t -> Triangle.flat_normal t
   | Mesh m -> Mesh.placed_face_normal m part
-  | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _
-  | Csg _ ->
+  | Sphere _ | Sphere_placed _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _
+  | Quadric _ | Csg _ ->
       normal obj part p
 
 let refine obj p =
   match obj.shape with
-  | Sphere s -> Sphere.refine s p
+  | Sphere s | Sphere_placed { ps = s; _ } -> Sphere.refine s p
   | Ellipsoid e -> Sphere.ellipsoid_refine e p
   | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _
   | Csg _ ->
       p
 
+(* Every shape's UVCoord in POV-Ray 3.7: spheres, boxes, tori and meshes have their own; every
+   other shape (planes, triangles, cones and cylinders, discs, polygons, quadrics, letters) the
+   default ObjectBase::UVCoord, the world point's x and y as they are *)
+let uv obj part (p : Vec.t) =
+  match obj.shape with
+  | Sphere s -> Sphere.uv s p
+  | Sphere_placed s -> Sphere.placed_uv s p
+  | Ellipsoid e -> Sphere.ellipsoid_uv e p
+  | Box b -> Box.uv b part p
+  | Box_trans b -> Box.moved_uv b part p
+  | Torus t -> Torus.uv t p
+  | Mesh m -> Mesh.placed_uv m part p
+  | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Cone _ | Disc _ | Glyph _ | Polygon _ | Quadric _ | Csg _ -> Vec.make p.x p.y 0.
+
 let rec bounds = function
   | Csg c -> Csg.bounds ~bounds c
-  | Sphere s -> Some (Sphere.bounds s)
+  | Sphere s | Sphere_placed { ps = s; _ } -> Some (Sphere.bounds s)
   | Ellipsoid e -> Some (Sphere.ellipsoid_bounds e)
   | Plane _ | Plane_trans _ -> None
   | Triangle t | Smooth_triangle t -> Some (Triangle.bounds t)
@@ -163,11 +178,11 @@ let magnitude shape =
   | None, Csg c -> Csg.magnitude c
   | _, Polygon p -> Polygon.magnitude p
   | _, Quadric q -> Quadric.magnitude q
-  | None, (Sphere _ | Ellipsoid _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _) -> 0.
+  | None, (Sphere _ | Sphere_placed _ | Ellipsoid _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _) -> 0.
 
 let rec pov_box shape =
   match shape with
-  | Sphere s -> Sphere.pov_box s
+  | Sphere s | Sphere_placed { ps = s; _ } -> Sphere.pov_box s
   | Ellipsoid e -> Sphere.ellipsoid_pov_box e
   | Plane _ | Plane_trans _ -> [||]
   | Triangle t | Smooth_triangle t -> Triangle.pov_box t
@@ -184,10 +199,10 @@ let rec pov_box shape =
 
 let costly = function
   | Ellipsoid _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ -> true
-  | Sphere _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Csg _ -> false
+  | Sphere _ | Sphere_placed _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Csg _ -> false
 
 let as_sphere = function
-  | Sphere s -> Some s
+  | Sphere s | Sphere_placed { ps = s; _ } -> Some s
   | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _
   | Quadric _ | Csg _ ->
       None
@@ -195,8 +210,8 @@ let as_sphere = function
 let face_texture obj part =
   match obj.shape with
   | Mesh m when part >= 0 -> Mesh.texture m.mesh part
-  | Sphere _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _
-  | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Csg _ ->
+  | Sphere _ | Sphere_placed _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _
+  | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Csg _ ->
       -1
 
 let stats_rows s =

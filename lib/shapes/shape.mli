@@ -32,6 +32,13 @@ val geometric_normal : Compiled.obj -> int -> Vec.t -> Vec.t
 (** [geometric_normal obj part p] is the flat normal of the surface at [p]: a smooth triangle's or
     face's own plane, else [normal]. The robust mode lifts secondary rays along it. *)
 
+val uv : Compiled.obj -> int -> Vec.t -> Vec.t
+(** [uv obj part p] is the UV coordinates (u, v, 0) of [obj] at its world surface point [p]
+    ([part] as [depth] left it: the box side, the mesh face), as POV-Ray 3.7's UVCoord methods
+    compute them, in the shape's own space: spheres (in the frame of every modifier they got),
+    boxes, tori and meshes (their uv_vectors blended); every other shape has POV-Ray's default,
+    the world point's x and y. *)
+
 val refine : Compiled.obj -> Vec.t -> Vec.t
 (** [refine obj p] is the hit point [p] put back onto the surface where the shape allows it
     (spheres and ellipsoids), else [p]: the robust mode's hit points. *)

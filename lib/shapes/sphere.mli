@@ -3,11 +3,28 @@
 type t = { cx : float; cy : float; cz : float; radius : float; r2 : float }
 (** Centre, radius as written (the normal is scaled by its reciprocal), radius². *)
 
-type ellipsoid = { sp : t; etr : Transform.t }
-(** The object-space sphere [sp] mapped by [etr]. *)
+type uv_frame = { uv_trans : Transform.t; uv_centre : Vec.t }
+(** Where a moved sphere takes its UV coordinates (Sphere::UVCoord): the world point brought back
+    by the inverse of [uv_trans], every modifier the sphere got (POV-Ray's UV_Trans), and the
+    centre as POV-Ray brings it back the same way, computed once. *)
+
+type ellipsoid = { sp : t; etr : Transform.t; euv : uv_frame option }
+(** The object-space sphere [sp] mapped by [etr], and its UV frame. *)
+
+type placed = { ps : t; puv : uv_frame }
+(** A sphere whose modifiers were baked into its centre and radius ([ps], traced as a plain
+    sphere), with the frame its UV coordinates are taken in. *)
 
 val make : Vec.t -> float -> t
 (** [make centre radius] is the sphere. *)
+
+val ellipsoid : t -> Transform.t -> Transform.t option -> ellipsoid
+(** [ellipsoid sp etr uv_trans] is [sp] mapped by [etr], its UV coordinates taken in the frame of
+    [uv_trans] (its centre mapped by [etr], then back by [uv_trans]'s inverse), or in object
+    space without one. *)
+
+val placed : t -> Transform.t -> placed
+(** [placed s uv_trans] is [s] with the UV frame of [uv_trans]. *)
 
 val depth_at : Stats.t -> Limits.t -> float -> float -> float -> float -> Vec.t -> Vec.t -> float -> float
 (** [depth_at stats lim cx cy cz r2 o d lo] is the nearer root within [lim] and at least [lo] of the
@@ -63,6 +80,22 @@ val refine : t -> Vec.t -> Vec.t
 
 val ellipsoid_refine : ellipsoid -> Vec.t -> Vec.t
 (** [ellipsoid_refine e p] is [refine] in object space. *)
+
+val uv_of : Vec.t -> Vec.t -> Vec.t
+(** [uv_of q c] is Sphere::UVCoord of the point [q] of a sphere of centre [c], both in the UV
+    frame: (u, v, 0) with u = θ/2π, θ the angle about the y axis from +x towards +z (0 at a pole,
+    π when z = 0 and x ≤ 0), and v = 0.5 + asin(y)/π, from the direction divided by its length;
+    (0, 0, 0) at the centre (where POV-Ray leaves its result unset). *)
+
+val uv : t -> Vec.t -> Vec.t
+(** [uv s p] is the UV coordinates of an unmoved sphere at the world point [p]. *)
+
+val placed_uv : placed -> Vec.t -> Vec.t
+(** [placed_uv s p] is those of a moved sphere, in its UV frame. *)
+
+val ellipsoid_uv : ellipsoid -> Vec.t -> Vec.t
+(** [ellipsoid_uv e p] is those of an ellipsoid, in its UV frame (else [p] and the object-space
+    centre as they are, as POV-Ray without a UV_Trans). *)
 
 val stats_rows : Stats.t -> Stats.row list
 (** [stats_rows s] is the statistics rows of spheres and ellipsoids, as POV-Ray names them. *)

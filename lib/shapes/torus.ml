@@ -182,3 +182,14 @@ let stats_rows (s : Stats.t) =
     { Stats.name = "Torus"; tests = s.torus_tests; hits = s.torus_hits };
     { Stats.name = "Torus Bound"; tests = s.torus_tests; hits = s.torus_bound_hits };
   ]
+
+(* Torus::CalcUV: in torus space, u from the angle about the y axis (1 at −x going round from
+   there, decreasing towards +z), v from the angle about the tube's core circle *)
+let uv t p =
+  let q = Transform.inv_point t.tr p in
+  let x = q.x and y = q.y and z = q.z in
+  let u = 1.0 -. ((Float.atan2 z x +. Float.pi) /. (2. *. Float.pi)) in
+  let len = sqrt ((x *. x) +. (z *. z)) in
+  let x = len -. t.major in
+  let v = (Float.atan2 y x +. Float.pi) /. (2. *. Float.pi) in
+  Vec.make u v 0.

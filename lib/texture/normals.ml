@@ -247,6 +247,11 @@ let warp_point (nm : Scene.normal) p = Warp.point nm.nwarps nm.npattern p
    map's second entry and an average's later entries see the one before. [keep_scale] is
    no_bump_scale, passed down from a normal to the normals of its map (Post_Tnormal). *)
 let rec perturb_in cache gen ~keep_scale (nm : Scene.normal) (p : Vec.t) (hit : Patterns.hit) (n : Vec.t) : Vec.t =
+  (* UV_MAP_PATTERN: the normal inside the wrapper perturbs at the hit's (u, v, 0), and the result
+     is normalised *)
+  if nm.nuv_mapping then Vec.normalize (perturb_at cache gen ~keep_scale nm hit.uv hit n) else perturb_at cache gen ~keep_scale nm p hit n
+
+and perturb_at cache gen ~keep_scale (nm : Scene.normal) (p : Vec.t) (hit : Patterns.hit) (n : Vec.t) : Vec.t =
   let keep_scale = keep_scale || nm.no_bump_scale in
   match (nm.nmap, nm.npattern) with
   | Normal_map entries, pat when (match pat with Average -> false | _ -> true) ->
@@ -324,7 +329,8 @@ let perturb ?facets gen nm p hit n = perturb_in facets gen ~keep_scale:false nm 
 
 (* trace.cpp: after a no_bump_scale normal, Vector3d::normalize (a division by the length) *)
 let layer_normal (nm : Scene.normal) (v : Vec.t) =
-  if nm.no_bump_scale then
+  (* the flag trace.cpp tests is the uv_mapping wrapper's own, which is never set *)
+  if nm.no_bump_scale && not nm.nuv_mapping then
     let l = sqrt ((v.x *. v.x) +. (v.y *. v.y) +. (v.z *. v.z)) in
     if l <> 0. then Vec.make (v.x /. l) (v.y /. l) (v.z /. l) else v
   else v

@@ -21,11 +21,13 @@ val perturb : ?facets:facets_cache -> int -> Scene.normal -> Vec.t -> Patterns.h
     generator, used where the normal names none. The result is the vector POV-Ray leaves as the
     intersection's perturbed normal: unit length unless [no_bump_scale] (see {!layer_normal}).
     facets searches the cube points in [facets] when its hash is the cache's (and updates it), as
-    POV-Ray does; without [facets], the points around the point itself. *)
+    POV-Ray does; without [facets], the points around the point itself. A uv-mapped normal (and a
+    uv-mapped entry of a map) is evaluated at [hit.uv] instead of its point, its result normalised. *)
 
 val layer_normal : Scene.normal -> Vec.t -> Vec.t
 (** [layer_normal nm v] is the shading normal from the result [v] of [perturb]: [v] itself, or,
-    with [no_bump_scale], [v] divided by its length (trace.cpp normalises it there). *)
+    with [no_bump_scale] (not uv-mapped: trace.cpp tests the wrapper's flag), [v] divided by its
+    length (trace.cpp normalises it there). *)
 
 val warp_normal : Scene.warp list -> keep_scale:bool -> Vec.t -> Vec.t
 (** [warp_normal ws ~keep_scale n] is the world-space normal [n] taken into the space of the warps

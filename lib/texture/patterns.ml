@@ -3,9 +3,13 @@
    floating-point operations, its constants as written and its C conversions, so that a value here
    is the double POV-Ray computes. *)
 
-type hit = { normal : Vec.t; dir : Vec.t }
+type hit = { normal : Vec.t; dir : Vec.t; uv : Vec.t }
 
-let no_hit = { normal = Vec.make 0. 1. 0.; dir = Vec.make 0. 0. 1. }
+let no_hit = { normal = Vec.make 0. 1. 0.; dir = Vec.make 0. 0. 1.; uv = Vec.zero }
+
+(* No surface: [no_hit], or a hit made from it to carry UV coordinates alone (a shadow ray's
+   crossing), which shares its normal *)
+let no_surface hit = hit.normal == no_hit.normal
 
 (* ---------------------------------------------------------------------------------------------- *)
 (* C's arithmetic *)
@@ -572,7 +576,7 @@ let[@inline] component (v : Vec.t) axis = match axis with 0 -> v.x | 1 -> v.y | 
    intersection point itself, which [hit] does not carry, and this takes the pattern-space point
    [q] (the same when the pattern is not transformed or warped). *)
 let slope (s : Scene.slope) (hit : hit) (q : Vec.t) =
-  if hit == no_hit then 0.0
+  if no_surface hit then 0.0
   else
     let value1 =
       if s.point_at then Vec.dot hit.normal (Vec.normalize (Vec.sub s.slope_vector q))
@@ -604,7 +608,7 @@ let slope (s : Scene.slope) (hit : hit) (q : Vec.t) =
 
 (* the angle between the surface normal and the ray, over π *)
 let aoi (hit : hit) =
-  if hit == no_hit then 0.0
+  if no_surface hit then 0.0
   else
     let c = Vec.dot (Vec.normalize hit.normal) (Vec.normalize hit.dir) in
     let c = if c < -1.0 then -1.0 else if c > 1.0 then 1.0 else c in

@@ -8,10 +8,16 @@ type hit = {
       (** the surface normal at the point, world space, unit length, turned to face the ray and not
           perturbed (POV-Ray's PNormal: aoi is 1 where the ray meets the surface head on) *)
   dir : Vec.t;  (** the ray's direction, unit length *)
+  uv : Vec.t;
+      (** the hit's UV coordinates (u, v, 0) (the shape's UVCoord, {!Shape.uv}), which uv-mapped
+          pigments and normals use instead of the point; zero where the surface has none of
+          them (the tracer computes them only for a surface that uses them) *)
 }
 
 val no_hit : hit
-(** [no_hit] is the hit given where there is no surface (a sky_sphere): normal <0,1,0>, dir <0,0,1>. *)
+(** [no_hit] is the hit given where there is no surface (a sky_sphere): normal <0,1,0>, dir
+    <0,0,1>, uv zero. A hit [{ no_hit with uv }] is still no surface for aoi and slope (a shadow
+    ray's crossing of a uv-mapped surface). *)
 
 val checker : Vec.t -> float
 (** [checker q] is 0 or 1: the parity of [floor(c + 1e-10)] summed over the three coordinates (§17.4). *)

@@ -8,7 +8,7 @@ open Povml
 open Helpers
 
 let up = v 0. 1. 0.
-let hit = { Patterns.normal = up; dir = v 0. (-1.) 0. }
+let hit = { Patterns.normal = up; dir = v 0. (-1.) 0.; uv = Vec.zero }
 
 let normal ?(warps = []) ?(accuracy = 0.02) ?(no_bump_scale = false) ?(nmap = Scene.No_map) pattern amount : Scene.normal =
   {
@@ -22,6 +22,7 @@ let normal ?(warps = []) ?(accuracy = 0.02) ?(no_bump_scale = false) ?(nmap = Sc
     accuracy = Precision.f32 accuracy;
     no_bump_scale;
     nmap;
+    nuv_mapping = false;
   }
 
 let grad_x = Scene.Gradient (v 1. 0. 0.)

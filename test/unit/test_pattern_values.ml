@@ -37,7 +37,7 @@ let test_case (c : D.case) =
 (* aoi and slope *)
 
 let v = Vec.make
-let hit normal dir = { Patterns.normal; dir }
+let hit normal dir = { Patterns.normal; dir; uv = Vec.zero }
 let value p h q = Patterns.value p [] 2 h q
 let close msg expected actual = Alcotest.(check (float 0.)) msg expected actual
 

@@ -77,12 +77,12 @@ let hit c o d =
 let test_place_sphere () =
   let shape ops = List.fold_left Place.shape (the_object (scene "sphere { <1,2,3>, 0.5 }")).shape ops in
   (match shape [ Place.Scale (v (-2.) (-2.) (-2.)) ] with
-  | Sphere { centre; radius; trans = None } ->
+  | Sphere { centre; radius; trans = None; _ } ->
       vec_eq ~eps:0. "uniform scale moves the centre" (v (-2.) (-4.) (-6.)) centre;
       float_eq ~eps:0. "radius times |s|" 1. radius
   | _ -> Alcotest.fail "a uniform scale keeps a sphere");
   (match shape [ Place.Scale (v 2. 1. 1.); Place.Translate (v 1. 0. 0.) ] with
-  | Sphere { centre; radius; trans = Some t } ->
+  | Sphere { centre; radius; trans = Some t; _ } ->
       vec_eq ~eps:0. "object-space centre kept" (v 1. 2. 3.) centre;
       float_eq ~eps:0. "object-space radius kept" 0.5 radius;
       vec_eq ~eps:0. "later modifiers compose into the transform" (v 3. 2. 3.) (Transform.point t centre)
