@@ -127,6 +127,7 @@ let surface ~legacy ~noise ~ambient_light (t : Scene.layer) =
       irid = f32 f.irid;
       irid_thickness = f32 f.irid_thickness;
       irid_turb = f32 f.irid_turb;
+      crand = f32 f.crand;
       paint = Fixed;
       (* the normal, if any, is perturbed at each hit; without one the tracer never looks *)
       bump = (match t.normal with None -> Smooth | Some nm -> Bumpy nm);
@@ -154,10 +155,10 @@ let pigment_opaque (p : Scene.pigment) =
 (* Test_Opacity: a texture stops light when one of its layers is opaque; a patterned texture is
    never taken as opaque *)
 let texture_opaque (t : Scene.texture) =
-  match t with Layers ls -> List.exists (fun (l : Scene.layer) -> pigment_opaque l.pigment) ls | Texture_pattern _ -> false
+  match t with Layers ls -> List.exists (fun (l : Scene.layer) -> pigment_opaque l.pigment) ls | Texture_pattern _ | Uv_mapped _ -> false
 
 (* the top layer's finish, which holds the legacy refraction and ior (§2.7) *)
-let top_finish (t : Scene.texture) = match t with Layers (l :: _) -> Some l.finish | Layers [] | Texture_pattern _ -> None
+let top_finish (t : Scene.texture) = match t with Layers (l :: _) -> Some l.finish | Layers [] | Texture_pattern _ | Uv_mapped _ -> None
 
 (* Objects that share a layer (a declared texture) share its compiled surface. *)
 module Layer_memo = Hashtbl.Make (struct
@@ -200,6 +201,7 @@ let scene (s : Scene.t) : Compiled.t =
         Blended
           (blended ~noise tpat (Array.map (fun (e : Scene.texture_entry) -> f32 e.tvalue) tmap)
              (Array.map (fun (e : Scene.texture_entry) -> texture_of e.ttexture) tmap))
+    | Uv_mapped { uwarps; inner } -> Uv_mapped { uinner = texture_of inner; uwarps }
   in
   (* Objects are numbered in scene order, each CSG before its members (the numbering keeps the
      scene order of top-level objects, which decides ties without a bounding hierarchy). *)
@@ -240,7 +242,7 @@ let scene (s : Scene.t) : Compiled.t =
               && Option.fold ~none:true ~some:texture_opaque o.interior_texture
               && Array.for_all texture_opaque face_textures
         in
-        let clear = match tex with Plain sf -> sf.transparent | Layered _ | Blended _ -> not (texture_opaque o.texture) in
+        let clear = match tex with Plain sf -> sf.transparent | Layered _ | Blended _ | Uv_mapped _ -> not (texture_opaque o.texture) in
         let ob =
           {
             id;
@@ -252,6 +254,7 @@ let scene (s : Scene.t) : Compiled.t =
             inner_tex = Option.map texture_of o.interior_texture;
             face_texs;
             clear;
+            uv_mapped = o.uv_mapped;
             ior = f32 o.interior.ior;
             fade_distance = f32 o.interior.fade_distance;
             fade_power = f32 o.interior.fade_power;
@@ -360,4 +363,6 @@ let scene (s : Scene.t) : Compiled.t =
     screen_holders = screen_holders s.camera tops;
     bounding;
     facets = Normals.facets_cache ();
+    crand = [| 0 |];
+    uses_crand = Layer_memo.fold (fun (l : Scene.layer) _ acc -> acc || l.finish.crand > 0.) memo false;
   }

@@ -24,6 +24,7 @@ type surface = {
   irid : float;  (** the iridescence amount (0: none), single precision *)
   irid_thickness : float;
   irid_turb : float;
+  crand : float;  (** the random amount taken off each light's diffuse intensity (0: none) *)
   paint : paint;
   bump : bump;
   needs_uv : bool;
@@ -53,6 +54,8 @@ and texture =
       (** two or more layers, the top first: each lit on its own and seen through the filter
           and transmit of those above it (ComputeLightedTexture) *)
   | Blended of blended  (** a patterned texture: entries picked or blended by a pattern *)
+  | Uv_mapped of { uinner : texture; uwarps : Scene.warp list }
+      (** [uinner] evaluated at the hit's (u, v, 0), its normals bent in the space of [uwarps] *)
 
 (** A patterned texture: the pattern's value at a point picks the entries around it, each shaded
     in full at the point the pattern saw (its warps applied) and blended by the value. *)
@@ -113,6 +116,7 @@ and obj = {
   clear : bool;
       (** its own texture may let light through (not POV-Ray's Test_Opacity): a CSG whose texture
           is clear is not kept in the shadow cache *)
+  uv_mapped : bool;  (** [uv_mapping] on the object: its textures are evaluated at the hit's (u, v, 0) *)
   ior : float;
   fade_distance : float;
   fade_power : float;
@@ -190,6 +194,12 @@ type t = {
   adc_bailout : float;
   noise_generator : int;  (** the scene's, for patterns that name none *)
   irid_wavelength : Rgb.t;  (** the wavelengths of iridescence *)
+  crand : int array;
+      (** crand's random stream (POV-Ray's POV_rand, one per render thread, never reset): its one
+          cell holds the state, 0 when the render starts, and goes on from block to block in
+          render order; with [uses_crand] the render runs in one worker so that order is POV-Ray's
+          one-thread order. A mutable part of the compiled scene, like [facets] *)
+  uses_crand : bool;  (** some surface has a crand *)
   legacy : bool;  (** effective version < 3.70 *)
   camera : Scene.camera;
   start_interiors : int list;  (** interiors containing the camera, last entered first (§6.4) *)

@@ -65,6 +65,12 @@ let iridescence (sc : Compiled.t) (s : surface) (l : Vec.t) (d : Vec.t) (n : Vec
   let k wl = f32 (1.0 +. (s.irid *. cos (interference /. wl))) in
   Rgb.make (f32 (c.r *. k w.r)) (f32 (c.g *. k w.g)) (f32 (c.b *. k w.b))
 
+(* POV_rand: the next value of crand's stream, in [0, 1] *)
+let random (state : int array) =
+  let next = ((state.(0) * 1812433253) + 12345) land 0xFFFFFFFF in
+  state.(0) <- next;
+  float_of_int next /. 4294967295.
+
 type memo = { tested : bool array; seen : Rgb.t array }
 
 let memo (sc : Compiled.t) = { tested = Array.make (Array.length sc.lights) false; seen = Array.make (Array.length sc.lights) Rgb.black }
@@ -115,6 +121,7 @@ let light_terms ctx ?memo ~light ~slot ~di (s : surface) (p : Vec.t) (n : Vec.t)
           if s.diffuse > 0. then
             let anl = Float.abs nl in
             let i = (if s.brilliance = 1. then anl else Float.pow anl s.brilliance) *. (s.diffuse *. s.att) in
+            let i = if s.crand > 0. then i -. (random ctx.Context.scene.crand *. s.crand) else i in
             Rgb.make
               (f32 (acc.r +. f32 (f32 (s.colour.r *. i) *. lc.r)))
               (f32 (acc.g +. f32 (f32 (s.colour.g *. i) *. lc.g)))

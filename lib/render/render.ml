@@ -284,7 +284,8 @@ let render opts (sc : Compiled.t) (gamma : Scene.gamma) : Image.t * Stats.t =
   Gc.set { gc with space_overhead = 10_000 };
   let results =
     Fun.protect ~finally:(fun () -> Gc.set gc) (fun () ->
-        Pool.map ~workers:opts.workers work bl)
+        (* crand's stream runs through the blocks in order: one worker, as one POV-Ray thread *)
+        Pool.map ~workers:(if sc.uses_crand then 1 else opts.workers) work bl)
   in
   if opts.progress then prerr_string "\r\027[K";
   let img = Image.create opts.width opts.height in

@@ -21,8 +21,9 @@ let robust_margin (p : Vec.t) (lp : Vec.t) remaining = (1e-9 *. remaining) +. Ro
    its layers' filter colours, then the interior's fade over the [t] travelled inside (with
    [fades]), as an rgb with filter 1; a patterned texture's entries blended in all four channels
    (ComputeOneTextureColour). *)
-let rec filter obj ~hit ~fades t (tex : texture) (q : Vec.t) : filtered =
+let rec filter obj ~hit ~uv ~fades t (tex : texture) (q : Vec.t) : filtered =
   match tex with
+  | Uv_mapped u -> filter obj ~hit ~uv ~fades t u.uinner (uv ())
   | Plain s -> filter_layers obj ~hit ~fades t [| s |] q
   | Layered ls -> filter_layers obj ~hit ~fades t ls q
   | Blended b ->
@@ -31,7 +32,7 @@ let rec filter obj ~hit ~fades t (tex : texture) (q : Vec.t) : filtered =
         let r = ref 0. and g = ref 0. and bl = ref 0. and fl = ref 0. and total = ref 0. in
         Array.iteri
           (fun i e ->
-            let c = filter obj ~hit ~fades t e tq in
+            let c = filter obj ~hit ~uv ~fades t e tq in
             let v = b.values.(i) in
             r := f32 (!r +. f32 (c.r *. v));
             g := f32 (!g +. f32 (c.g *. v));
@@ -45,10 +46,10 @@ let rec filter obj ~hit ~fades t (tex : texture) (q : Vec.t) : filtered =
       else
         let v = b.value Patterns.no_hit tq in
         let prev, cur = Surfaces.around b.values v in
-        let c1 = filter obj ~hit ~fades t b.entries.(cur) tq in
+        let c1 = filter obj ~hit ~uv ~fades t b.entries.(cur) tq in
         if prev = cur then c1
         else
-          let c2 = filter obj ~hit ~fades t b.entries.(prev) tq in
+          let c2 = filter obj ~hit ~uv ~fades t b.entries.(prev) tq in
           let v1 = (v -. b.values.(prev)) /. (b.values.(cur) -. b.values.(prev)) in
           let v2 = 1. -. v1 in
           let mix x y = f32 (f32 (v1 *. x) +. f32 (v2 *. y)) in
@@ -94,13 +95,15 @@ let rec walk ctx ~slot (p : Vec.t) (lp : Vec.t) lo first (o : Vec.t) (l : Vec.t)
       let hit (s : surface) = if s.needs_uv then { Patterns.no_hit with uv = Shape.uv obj part q } else Patterns.no_hit in
       let f =
         match tex with
-        | Plain sf ->
+        | Plain sf when not obj.uv_mapped ->
             (* §4, §17.8: a patterned pigment is evaluated where the shadow ray crosses it *)
             let f = match sf.paint with Fixed -> sf.filcol | Varying at -> (at (hit sf) q).filcol in
             if fades then Optics.fade obj t f else f
-        | Layered _ | Blended _ ->
-            (* ComputeShadowColour: the filter colour, weighed in by its filter channel *)
-            let c = filter obj ~hit ~fades t tex q in
+        | Plain _ | Layered _ | Blended _ | Uv_mapped _ ->
+            (* ComputeShadowColour: the filter colour, weighed in by its filter channel; an
+               object's uv_mapping evaluates its textures at the crossing's (u, v, 0) *)
+            let uv () = Shape.uv obj part q in
+            let c = filter obj ~hit ~uv ~fades t tex (if obj.uv_mapped then uv () else q) in
             Rgb.make (f32 (c.r *. c.filter)) (f32 (c.g *. c.filter)) (f32 (c.b *. c.filter))
       in
       let lc = Rgb.make (f32 (lc.r *. f.r)) (f32 (lc.g *. f.g)) (f32 (lc.b *. f.b)) in

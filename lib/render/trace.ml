@@ -101,10 +101,11 @@ and shade ctx ~reflected obj part depth ~level ~weight ~interiors (o : Vec.t) (d
     let ng = if ctx.robust then Shape.geometric_normal obj part p else n in
     let e = if ctx.robust then Robust.error_bound o p obj.mag else 0. in
     match tex with
-    | Plain s -> plain ctx ~reflected obj part s p n ng e depth ~level ~weight ~interiors d
-    | Layered _ | Blended _ ->
+    | Plain s when not obj.uv_mapped -> plain ctx ~reflected obj part s p n ng e depth ~level ~weight ~interiors d
+    | Plain _ | Layered _ | Blended _ | Uv_mapped _ ->
         let at = { hobj = obj; hpart = part; hp = p; hn = n; hng = ng; he = e; hd = d; hdepth = depth; hlevel = level; hweight = weight; hinteriors = interiors; hreflected = reflected; memo = Lighting.memo sc; pnormal = n } in
-        texture_colour ctx at tex p []
+        (* an object's uv_mapping: every texture is evaluated at the hit's (u, v, 0) *)
+        texture_colour ctx at tex (if obj.uv_mapped then Shape.uv obj part p else p) []
 
 (* A plain texture, one layer (the common case): the layer loop of ComputeLightedTexture run once. *)
 and plain ctx ~reflected obj part s p n ng e depth ~level ~weight ~interiors d =
@@ -175,8 +176,9 @@ and texture_colour ctx at tex q warps : result =
   match tex with
   | Plain s -> lighted ctx at [| s |] q warps
   | Layered ls -> lighted ctx at ls q warps
+  | Uv_mapped { uinner; uwarps } -> texture_colour ctx at uinner (Shape.uv at.hobj at.hpart at.hp) (warps @ [ uwarps ])
   | Blended b ->
-      let warps = warps @ [ b ] in
+      let warps = warps @ [ b.nwarps ] in
       let tq = b.warp q in
       if b.average then
         (* ComputeAverageTextureColours: the entries weighed by their values, summed in single
@@ -226,10 +228,10 @@ and lighted ctx at (ls : surface array) q warps : result =
       match s.bump with
       | Smooth -> n
       | Bumpy nm ->
-          let wn = List.fold_left (fun v (b : blended) -> Normals.warp_normal b.nwarps ~keep_scale:false v) n warps in
+          let wn = List.fold_left (fun v ws -> Normals.warp_normal ws ~keep_scale:false v) n warps in
           let pn = Normals.perturb ~facets:sc.facets sc.noise_generator nm q { Patterns.normal = at.pnormal; dir = d; uv } wn in
           at.pnormal <- pn;
-          List.fold_right (fun (b : blended) v -> Normals.unwarp_normal b.nwarps ~keep_scale:false v) warps (Normals.layer_normal nm pn)
+          List.fold_right (fun ws v -> Normals.unwarp_normal ws ~keep_scale:false v) warps (Normals.layer_normal nm pn)
     in
     let s = match s.paint with Fixed -> s | Varying f -> f { Patterns.normal = at.pnormal; dir = d; uv } q in
     let new_weight = at.hweight *. !trans in

@@ -23,6 +23,7 @@ let finish =
     irid = 0.;
     irid_thickness = 0.;
     irid_turb = 0.;
+    crand = 0.;
   }
 
 let layer = { pigment = Solid Colour.black; normal = None; finish }

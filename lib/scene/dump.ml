@@ -46,6 +46,7 @@ let finish (f : finish) =
   add f.conserve_energy "conserve_energy";
   add (f.refraction <> d.refraction) ("refraction " ^ num f.refraction);
   (match f.legacy_ior with Some i -> add true ("ior " ^ num i) | None -> ());
+  add (f.crand <> 0.) ("crand " ^ num f.crand);
   add (f.irid <> 0.) (Printf.sprintf "irid { %s thickness %s turbulence %s }" (num f.irid) (num f.irid_thickness) (num f.irid_turb));
   String.concat " " (List.rev !items)
 
@@ -195,6 +196,8 @@ let rec texture (t : texture) =
       let pat = pigment (Pattern { tpat with map = [| { value = 0.; colour = Colour.black } |]; pigments = [||] }) in
       let entries = Array.to_list (Array.map (fun e -> Printf.sprintf "[%s %s]" (num e.tvalue) (texture e.ttexture)) tmap) in
       Printf.sprintf "texture { %s texture_map { %s } }" pat (String.concat " " entries)
+  | Uv_mapped { uwarps; inner } ->
+      Printf.sprintf "texture { uv_mapping %s%s }" (texture inner) (String.concat "" (List.rev_map (fun w -> " " ^ warp w) uwarps))
 
 let interior (i : interior) =
   if i = Defaults.interior then ""
@@ -255,7 +258,7 @@ let rec shape = function
 
 and obj (o : obj) =
   Printf.sprintf "%s\n  %s%s%s%s\n} // %s\n" (shape o.shape) (texture o.texture)
-    (match o.interior_texture with None -> "" | Some t -> "\n  interior_" ^ texture t)
+    ((match o.interior_texture with None -> "" | Some t -> "\n  interior_" ^ texture t) ^ if o.uv_mapped then "\n  uv_mapping" else "")
     (interior o.interior)
     (String.concat ""
        (List.map

@@ -189,6 +189,7 @@ type finish = {
   irid : float;  (** [irid { amount … }]: the thin-film interference's amount, 0 without *)
   irid_thickness : float;  (** the film's thickness *)
   irid_turb : float;  (** the film thickness's turbulence (the x of the vector written) *)
+  crand : float;  (** [crand]: a random amount taken off each light's diffuse intensity, 0 without *)
 }
 
 (** A normal: a pattern perturbing the surface normal (normal.cpp). *)
@@ -234,6 +235,11 @@ type texture =
           value modifiers and warps (its colour map is unused) pick the entries, which are
           evaluated at the point the pattern saw (its warps applied); [Average] weighs every
           entry by its value *)
+
+  | Uv_mapped of { uwarps : warp list; inner : texture }
+      (** [texture { uv_mapping … }]: [inner] evaluated at the hit's (u, v, 0); the transforms
+          applied to it since ([uwarps]) move no point, they only bend the normals of [inner] (as
+          every texture pattern around a normal does) *)
 
 (** One entry of a texture map: its value (single precision) and texture. *)
 and texture_entry = { tvalue : float; ttexture : texture }
@@ -322,6 +328,8 @@ and obj = {
   shape : shape;
   texture : texture;
   interior_texture : texture option;  (** the texture seen where a ray meets the surface from inside *)
+  uv_mapped : bool;
+      (** the object's [uv_mapping]: all its textures are evaluated at the hit's (u, v, 0) *)
   interior : interior;
   no_shadow : bool;
   loc : Loc.t;  (** where the object was written *)

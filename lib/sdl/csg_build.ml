@@ -29,7 +29,7 @@ let rec invert (o : V.obj) : V.obj =
 let resolved st (o : V.obj) =
   let texture = match o.texture with Some t -> t | None -> Scene.Layers [ st.default_texture ] in
   let interior = match o.interior with Some i -> i | None -> Defaults.interior in
-  let legacy_ior = match texture with Layers (l :: _) -> l.finish.legacy_ior | Layers [] | Texture_pattern _ -> None in
+  let legacy_ior = match texture with Layers (l :: _) -> l.finish.legacy_ior | Layers [] | Texture_pattern _ | Uv_mapped _ -> None in
   let interior = match legacy_ior with Some ior -> { interior with ior } | None -> interior in
   let interior = if interior.ior = 0. then { interior with ior = 1. } else interior in
   (texture, interior)
@@ -48,6 +48,7 @@ let scene_obj (o : V.obj) ?(no_shadow = o.no_shadow) ?(interior_texture = o.inte
     no_reflection = o.no_reflection;
     double_illuminate = o.double_illuminate;
     looks_like = o.looks_like;
+    uv_mapped = o.uv_mapped;
   }
 
 let finish_prim st (o : V.obj) shape : Scene.obj =
@@ -74,6 +75,7 @@ let rec kept_obj st ~texture ?interior_texture ~interior (o : V.obj) : Scene.obj
             | V.Member_light l -> count_object st o.oloc; st.lights <- l :: st.lights; None
             | V.Member_obj c ->
                 let texture = match c.texture with Some t -> t | None -> texture in
+                let c = match c.texture with Some _ -> c | None -> { c with uv_mapped = c.uv_mapped || o.uv_mapped } in
                 let interior, own_interior = member_interior c interior in
                 (* §16.5: the flags pass down to every member *)
                 let c =
@@ -117,6 +119,8 @@ let rec add_object st (o : V.obj) =
                 {
                   c with
                   texture = (match c.texture with Some _ -> c.texture | None -> o.texture);
+                  (* Post_Process: a member that takes the parent's texture takes its uv_mapping *)
+                  uv_mapped = (match c.texture with Some _ -> c.uv_mapped | None -> c.uv_mapped || o.uv_mapped);
                   interior_texture = (match c.interior_texture with Some _ -> c.interior_texture | None -> o.interior_texture);
                   interior = (match c.interior with Some _ -> c.interior | None -> o.interior);
                   no_shadow = c.no_shadow || o.no_shadow;

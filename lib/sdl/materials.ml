@@ -497,6 +497,7 @@ let parse_finish st (base : Scene.finish) : Scene.finish =
           loop { f with reflection = { f.reflection with rmin = c; rmax = c; falloff = 1.; fresnel = false } }
     | Ident "reflection_exponent" -> advance st; loop { f with reflection = { f.reflection with exponent = parse_float st } }
     | Ident "conserve_energy" -> advance st; loop { f with conserve_energy = parse_bool_opt st }
+    | Ident "crand" -> advance st; loop { f with crand = parse_float st }
     | Ident "irid" ->
         (* irid { amount [thickness T] [turbulence V] } *)
         advance st;

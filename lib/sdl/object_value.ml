@@ -8,6 +8,7 @@ let new_obj_of shape loc =
     V.shape;
     texture = None;
     interior_texture = None;
+    uv_mapped = false;
     interior = None;
     no_shadow = false;
     oloc = loc;
@@ -30,8 +31,9 @@ let move_light op (l : Scene.light) =
 
 (* §14.7: an object's texture, if it has one yet, moves with it; members' textures with them *)
 let rec move_obj op (o : V.obj) =
-  let texture = Option.map (fun t -> Place.texture t op) o.texture in
-  let interior_texture = Option.map (fun t -> Place.texture t op) o.interior_texture in
+  (* an object's uv_mapping keeps its textures where they are (the members' move) *)
+  let moved t = if o.uv_mapped then t else Option.map (fun t -> Place.texture t op) t in
+  let texture = moved o.texture and interior_texture = moved o.interior_texture in
   match o.shape with
   | Prim s -> { o with shape = Prim (move_shape op s); texture; interior_texture }
   | Csg c -> { o with shape = Csg { c with members = List.map (move_member op) c.members }; texture; interior_texture }

@@ -216,7 +216,7 @@ and parse_object_mods st (o : V.obj) what : V.obj =
     | None -> { o with texture = Some (Scene.Layers [ f st.default_texture ]) }
     | Some (Layers (top :: below)) -> { o with texture = Some (Layers (f top :: below)) }
     | Some (Layers []) -> o
-    | Some (Texture_pattern _) -> Error.raise_at loc "cannot layer over a patterned texture"
+    | Some (Texture_pattern _ | Uv_mapped _) -> Error.raise_at loc "cannot layer over a patterned texture"
   in
   let rec loop (o : V.obj) =
     let loc = peek_loc st in
@@ -229,6 +229,10 @@ and parse_object_mods st (o : V.obj) what : V.obj =
     | Ident "finish" -> advance st; loop (edit loc o (fun t -> { t with finish = parse_finish st t.finish }))
     | Ident "normal" -> advance st; loop (edit loc o (fun t -> { t with normal = Some (parse_normal st t.normal) }))
     | Ident "texture" -> advance st; loop { o with texture = Some (Texture_reader.link st loc o.texture (Texture_reader.parse st)) }
+    | Ident "uv_mapping" ->
+        advance st;
+        if o.texture <> None then Error.raise_at loc "uv_mapping must be specified before texture";
+        loop { o with uv_mapped = true }
     | Ident "interior_texture" ->
         advance st;
         open_block st "interior_texture";

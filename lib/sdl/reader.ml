@@ -123,7 +123,7 @@ let keywords =
     "uv_indices"; "inside_vector"; "box"; "no_image"; "no_reflection"; "double_illuminate"; "spotlight";
     "parallel"; "point_at"; "radius"; "tightness"; "orthographic"; "looks_like"; "cylinder"; "cone"; "disc";
     "open"; "torus"; "union"; "merge"; "intersection"; "difference"; "inverse"; "split_union"; "clipped_by"; "text"; "ttf"; "polygon"; "quadric";
-    "material"; "texture_map"; "interior_texture"; "tiles"; "irid" ]
+    "material"; "texture_map"; "interior_texture"; "tiles"; "irid"; "uv_mapping"; "crand" ]
   (* pigment patterns (POVRAY-3.7 §17) *)
   @ [ "checker"; "gradient"; "hexagon"; "brick"; "brick_size"; "mortar"; "color_map"; "colour_map"; "frequency";
       "phase"; "ramp_wave"; "triangle_wave"; "sine_wave"; "scallop_wave"; "cubic_wave"; "poly_wave"; "pigment_map" ]
@@ -153,8 +153,8 @@ let unsupported =
     "image_map"; "bump_map"; "area_light";
     "projected_through"; "fisheye"; "panoramic"; "ultra_wide_angle"; "omnimax";
     "radiosity"; "photons";
-    "media"; "fog"; "rainbow"; "crand"; "dispersion"; "dispersion_samples"; "caustics";
-    "bounded_by"; "uv_mapping"; "subsurface";
+    "media"; "fog"; "rainbow"; "dispersion"; "dispersion_samples"; "caustics";
+    "bounded_by"; "subsurface";
     "light_group"; "cutaway_textures"; "sturm";
     "phong_albedo"; "metallic_albedo"; "translucency" ]
   (* patterns and pattern modifiers not read yet (POVRAY-3.7 §17) *)

@@ -24,14 +24,14 @@ let convert_layer (l : Scene.layer) = { l with pigment = filter_to_transmit l.pi
 let link st loc (old : Scene.texture option) (nw : Scene.texture) : Scene.texture =
   let legacy = st.version <= 310 in
   match (old, nw) with
-  | Some (Texture_pattern _), _ -> Error.raise_at loc "cannot layer over a patterned texture"
+  | Some (Texture_pattern _ | Uv_mapped _), _ -> Error.raise_at loc "cannot layer over a patterned texture"
   | None, Layers ls when legacy ->
       (* every layer with one below it *)
       let n = List.length ls in
       Layers (List.mapi (fun i l -> if i < n - 1 then convert_layer l else l) ls)
   | None, _ -> nw
   | Some (Layers below), Layers ls -> Layers ((if legacy then List.map convert_layer ls else ls) @ below)
-  | Some (Layers _), Texture_pattern _ -> Error.raise_at loc "cannot layer a patterned texture over another"
+  | Some (Layers _), (Texture_pattern _ | Uv_mapped _) -> Error.raise_at loc "cannot layer a patterned texture over another"
 
 let default_texture st : Scene.texture = Layers [ st.default_texture ]
 let transform_keyword = function Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") -> true | _ -> false
@@ -49,7 +49,7 @@ let rec transforms st ~close (t : Scene.texture) =
    or a patterned texture. *)
 let rec parse_body st ~close : Scene.texture =
   match Materials.ident_of_kind st (function V.Texture t -> Some t | _ -> None) with
-  | Some (Texture_pattern _ as t) -> transforms st ~close t
+  | Some ((Texture_pattern _ | Uv_mapped _) as t) -> transforms st ~close t
   | Some (Layers ls) -> plain st ~close ls true
   | None -> plain st ~close [ st.default_texture ] false
 
@@ -88,6 +88,11 @@ and plain st ~close (ls : Scene.layer list) modified =
   | k when k == close -> advance st; t
   | Ident "tiles" when not modified -> advance st; transforms st ~close (parse_tiles st loc)
   | Ident "material_map" when not modified -> not_supported loc "'material_map'"
+  | Ident "uv_mapping" when not modified ->
+      (* UV_MAP_PATTERN: the rest of the block is a texture of its own, evaluated at the hit's
+         (u, v, 0) *)
+      advance st;
+      Uv_mapped { uwarps = []; inner = parse_body st ~close }
   | Ident _ when (not modified) && Materials.is_pattern_start st -> patterned st ~close
   | Ident s when is_unsupported s -> not_supported loc (Printf.sprintf "'%s' in a texture" s)
   | _ ->
@@ -95,21 +100,10 @@ and plain st ~close (ls : Scene.layer list) modified =
         (if close == RBrace then "'pigment', 'normal', 'finish', a transform or '}' in a texture"
          else "'pigment', 'normal', 'finish', a transform or ']' in a texture_map entry")
 
-(* texture { … } after the keyword. texture { uv_mapping … }: the rest of the block is a texture
-   of its own, read from the default one, evaluated at the hit's (u, v, 0) (ComputeOneTextureColour's
-   UV_MAP_PATTERN); its pigment is then exactly a uv-mapped pigment, but its normal is not a
-   uv-mapped normal (no normalisation, the wrapper's later transforms warp the normal), which would
-   need a node of the texture itself *)
+(* texture { … } after the keyword *)
 and parse st : Scene.texture =
   open_block st "texture";
-  if is_ident st "uv_mapping" then begin
-    let loc = peek_loc st in
-    advance st;
-    match plain st ~close:RBrace [ st.default_texture ] false with
-    | Layers [ ({ normal = None; _ } as l) ] -> Layers [ { l with pigment = Materials.uv_mapped l.pigment } ]
-    | Layers _ | Texture_pattern _ -> not_supported loc "'uv_mapping' in a texture with a normal, layers or a pattern (uv_mapping in the pigment or normal itself is supported)"
-  end
-  else parse_body st ~close:RBrace
+  parse_body st ~close:RBrace
 
 (* [texture {…}] blocks one after the other, layered *)
 and layers st : Scene.texture option =

@@ -5,6 +5,7 @@ type obj = {
   shape : shape;
   texture : Scene.texture option;
   interior_texture : Scene.texture option;  (** [interior_texture]: seen from inside the surface *)
+  uv_mapped : bool;  (** [uv_mapping]: its textures are evaluated at the hit's (u, v, 0), and transforms leave them *)
   interior : Scene.interior option;
   no_shadow : bool;
   oloc : Loc.t;
