@@ -43,18 +43,22 @@ let parse_file st =
       | None when not (String.contains name '.') -> (Image_file.Png, name)
       | None -> Error.raise_at loc "could not determine valid image file type from extension")
 
-(* The scene's gamma mode when the image is read: POV-Ray decodes image files only once
-   assumed_gamma has been read (before it, the raw values are used); a pre-3.7 scene assumes its
-   working gamma for files that say nothing. *)
+(* The scene's gamma mode when the image is read (sceneData->gammaMode, which #version and
+   assumed_gamma set as they are read): below an effective version 3.7 (3.62 without #version)
+   and without assumed_gamma, image files are not decoded (their raw values are used); with
+   assumed_gamma, such a scene assumes its working gamma for files that say nothing; from 3.7 on,
+   files are decoded to the working gamma (neutral until assumed_gamma is read). *)
 let read_options st block ~gamma ~premultiply : Image_file.options =
   let correct = block = Image_map in
+  let version = if st.version_set then st.version else 362 in
   let working = match st.assumed_gamma with Some g -> Gamma_curve.by_decoding_gamma g | None -> Gamma_curve.Neutral in
+  let off : Image_file.options = { gamma_correct = false; default_gamma = None; working_gamma = Neutral; gamma_override = false; premultiply } in
   let base : Image_file.options =
     match st.assumed_gamma with
-    | Some _ when correct && st.version < 370 ->
-        { gamma_correct = true; default_gamma = Some working; working_gamma = working; gamma_override = false; premultiply }
-    | Some _ when correct -> { gamma_correct = true; default_gamma = None; working_gamma = working; gamma_override = false; premultiply }
-    | Some _ | None -> { gamma_correct = false; default_gamma = None; working_gamma = Gamma_curve.Neutral; gamma_override = false; premultiply }
+    | _ when not correct -> off
+    | None when version < 370 -> off
+    | Some _ when version < 370 -> { off with gamma_correct = true; default_gamma = Some working; working_gamma = working }
+    | Some _ | None -> { off with gamma_correct = true; working_gamma = working }
   in
   match gamma with
   | None -> base
@@ -97,7 +101,7 @@ let parse st keyword =
   in
   let gamma, premultiply = file_options None None in
   let options = read_options st block ~gamma ~premultiply in
-  if options.gamma_correct && (not options.gamma_override) && fmt = Png && st.version < 370 then
+  if options.gamma_correct && (not options.gamma_override) && fmt = Png && ((not st.version_set) || st.version < 370) then
     warn st file_loc "PNG input image default gamma handling has changed for pre POV-Ray 3.7 scenes; results may differ from original intention";
   let path = locate st file_loc fmt name in
   let image =
