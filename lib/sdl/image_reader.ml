@@ -39,6 +39,7 @@ let parse_file st =
   | _ -> (
       let name = parse_name st in
       match Image_file.format_of_extension name with
+      | Some ((Iff | Tiff | Bmp | Exr | Hdr) as fmt) -> not_supported loc (Printf.sprintf "'%s' images" (Image_file.format_name fmt))
       | Some fmt -> (fmt, name)
       | None when not (String.contains name '.') -> (Image_file.Png, name)
       | None -> Error.raise_at loc "could not determine valid image file type from extension")
