@@ -51,6 +51,13 @@ let finish (f : finish) =
   String.concat " " (List.rev !items)
 
 (* The other patterns by their keyword and main values. *)
+(* An image's file and settings, as image_map, bump_map and image_pattern were written. *)
+let bitmap (b : bitmap) =
+  let use = match b.use with Use_none -> " use_index" | Use_colour -> "" | Use_index -> " use_index" | Use_alpha -> " use_alpha" in
+  Printf.sprintf "\"%s\" %dx%d map_type %d interpolate %d%s%s repeat <%s, %s> offset <%s, %s> filter all %s transmit all %s" b.file
+    b.image.width b.image.height b.map_type b.interpolate (if b.once then " once" else "") use (num b.width) (num b.height)
+    (num b.offset_u) (num b.offset_v) (num b.all_filter) (num b.all_transmit)
+
 let pattern_name (p : pattern) =
   match p with
   | Checker -> "checker"
@@ -104,6 +111,8 @@ let pattern_name (p : pattern) =
   | Slope s -> "slope " ^ vec s.slope_vector
   | Average -> "average"
   | Object_pattern t -> "object { " ^ t.shown ^ " }"
+  | Bitmap b -> "image_map { " ^ bitmap b ^ " }"
+  | Image_pattern b -> "image_pattern { " ^ bitmap b ^ " }"
 
 let turb (t : turb) =
   Printf.sprintf "turbulence %s octaves %d omega %s lambda %s" (vec t.turbulence) t.octaves (num t.omega) (num t.lambda)

@@ -53,11 +53,13 @@ let f32_colour (c : Colour.t) =
   Precision.{ Colour.red = f32 c.red; green = f32 c.green; blue = f32 c.blue; filter = f32 c.filter; transmit = f32 c.transmit }
 
 (* §17.2 for a pigment map: the same search; the entries' pigments are evaluated at the point the
-   outer pattern saw (its warps applied), each through its own warps, and their colours blended *)
+   outer pattern saw (its warps applied), each through its own warps, and their colours blended.
+   Each result carries Compute_Pigment's "colour found": false only for a point off a [once]
+   image_map, and for a blend of two entries neither of which found one. *)
 let rec at_pattern_point gen (p : Scene.patterned) hit q =
   let g = if p.noise_generator = 0 then gen else p.noise_generator in
   let v = shape_value ~frequency:p.frequency ~phase:p.phase p.wave (Patterns.value_with ~frequency:p.frequency ~phase:p.phase p.pattern p.warps g hit q) in
-  if Array.length p.pigments = 0 then lookup p.map v
+  if Array.length p.pigments = 0 then (lookup p.map v, true)
   else
     let map = p.pigments in
     let n = Array.length map in
@@ -73,18 +75,21 @@ let rec at_pattern_point gen (p : Scene.patterned) hit q =
       else
         let f = (v -. prev.pvalue) /. (cur.pvalue -. prev.pvalue) in
         let mix a b = Precision.(f32 (a +. f32 (f *. f32 (b -. a)))) in
-        let c = inner gen cur.pigment hit q and p = inner gen prev.pigment hit q in
-        {
-          Colour.red = mix p.red c.red;
-          green = mix p.green c.green;
-          blue = mix p.blue c.blue;
-          filter = mix p.filter c.filter;
-          transmit = mix p.transmit c.transmit;
-        }
+        let c, found_c = inner gen cur.pigment hit q in
+        let p, found_p = inner gen prev.pigment hit q in
+        ( {
+            Colour.red = mix p.red c.red;
+            green = mix p.green c.green;
+            blue = mix p.blue c.blue;
+            filter = mix p.filter c.filter;
+            transmit = mix p.transmit c.transmit;
+          },
+          found_c || found_p )
 
 and inner gen (pg : Scene.pigment) hit q =
   match pg with
-  | Solid c | Solid_placed { colour = c; _ } -> f32_colour c
+  | Solid c | Solid_placed { colour = c; _ } -> (f32_colour c, true)
+  | Pattern ({ pattern = Bitmap b; _ } as p) -> Image_map.colour b (warped p hit q)
   | Pattern p -> at_pattern_point gen p hit (warped p hit q)
 
 (* Warp_EPoint: the warps, then the clamp of every coordinate to ±1e17, even without warps. A
@@ -92,15 +97,30 @@ and inner gen (pg : Scene.pigment) hit q =
    UV_MAP_PATTERN case: the point is not used) *)
 and warped (p : Scene.patterned) (hit : Patterns.hit) q = Warp.point p.warps p.pattern (if p.uv_mapping then hit.uv else q)
 
-let eval gen (p : Scene.patterned) hit (x : Vec.t) = at_pattern_point gen p hit (warped p hit x)
+(* Compute_Pigment: an image_map's colour comes from the image at the warped point, a pattern's
+   from its map *)
+let found gen (p : Scene.patterned) hit (x : Vec.t) =
+  match p.pattern with Bitmap b -> Image_map.colour b (warped p hit x) | _ -> at_pattern_point gen p hit (warped p hit x)
+
+let eval gen (p : Scene.patterned) hit (x : Vec.t) = fst (found gen p hit x)
+
+let colour_found gen (p : Scene.pigment) hit x =
+  match p with Solid c | Solid_placed { colour = c; _ } -> (c, true) | Pattern pp -> found gen pp hit x
 
 let colour_at gen (p : Scene.pigment) hit x = match p with Solid c | Solid_placed { colour = c; _ } -> c | Pattern pp -> eval gen pp hit x
+
+let rec may_miss (p : Scene.pigment) =
+  match p with
+  | Solid _ | Solid_placed _ -> false
+  | Pattern { pattern = Bitmap b; _ } -> b.once
+  | Pattern pp -> Array.exists (fun (e : Scene.pigment_entry) -> may_miss e.pigment) pp.pigments
 
 let clear (c : Colour.t) = Float.abs c.filter <= Precision.epsilon && Float.abs c.transmit <= Precision.epsilon
 
 let rec opaque (p : Scene.pigment) =
   match p with
   | Solid c | Solid_placed { colour = c; _ } -> clear c
+  | Pattern { pattern = Bitmap b; _ } -> Image_map.opaque b
   | Pattern pp ->
       if Array.length pp.pigments = 0 then Array.for_all (fun (e : Scene.map_entry) -> clear e.colour) pp.map
       else Array.for_all (fun (e : Scene.pigment_entry) -> opaque e.pigment) pp.pigments

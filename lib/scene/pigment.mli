@@ -28,10 +28,23 @@ val eval : int -> Scene.patterned -> Patterns.hit -> Vec.t -> Colour.t
     pigment (and a uv-mapped entry of its pigment map) starts from [hit.uv] instead of [x]. *)
 
 val colour_at : int -> Scene.pigment -> Patterns.hit -> Vec.t -> Colour.t
-(** [colour_at gen p hit x] is the colour of any pigment at the world point [x]. *)
+(** [colour_at gen p hit x] is the colour of any pigment at the world point [x]: the colour part
+    of {!colour_found}. *)
+
+val colour_found : int -> Scene.pigment -> Patterns.hit -> Vec.t -> Colour.t * bool
+(** [colour_found gen p hit x] is the colour of [p] at the world point [x] and whether one was
+    found, as POV-Ray's Compute_Pigment returns them: not found off a [once] image_map (whose
+    colour is then the clear <1,1,1,0,1>), nor for a pigment_map blend of two entries that both
+    found none; found everywhere else. *)
+
+val may_miss : Scene.pigment -> bool
+(** [may_miss p] holds when [p] contains an image_map that can find no colour (one with [once]),
+    so that {!colour_found} can answer false. *)
 
 val opaque : Scene.pigment -> bool
-(** [opaque p] holds when no colour of [p] has a filter or transmit above 1e-10 in magnitude (§17.8). *)
+(** [opaque p] holds when no colour of [p] has a filter or transmit above 1e-10 in magnitude (§17.8),
+    and it contains no image_map that is [once], has transparent pixels or was given a filter or
+    transmit. *)
 
 val uses_uv : Scene.pigment -> bool
 (** [uses_uv p] holds when [p] or a pigment of its pigment map (at any depth) is uv-mapped: its

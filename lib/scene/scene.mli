@@ -1,6 +1,33 @@
 (** The immutable scene: what the interpreter produces and the compile step reads.
     Every value reachable from [t] is immutable. *)
 
+(** How an image's pixels are read (ImageData's Use): an image_map's or bump_map's [use_index]
+    is [Use_none], which takes the palette index where there is one. *)
+type image_use =
+  | Use_none  (** the palette index, where the image has a palette *)
+  | Use_colour  (** the colour (the default of all three) *)
+  | Use_index  (** image_pattern's [use_index]: stored, but POV-Ray still takes the grey *)
+  | Use_alpha  (** image_pattern's [use_alpha]: the transmit (1 − alpha), or red without alpha *)
+
+(** An image mapped onto pattern space, as image_map, bump_map and image_pattern hold it
+    (POV-Ray's ImageData, backend/support/imageutil.cpp). *)
+type bitmap = {
+  image : Image_file.t;  (** the decoded pixels, with the palette's per-index filter and transmit *)
+  file : string;  (** the file name as written, for [--dump] *)
+  map_type : int;  (** 0 planar, 1 spherical, 2 cylindrical, 5 torus; any other is planar *)
+  interpolate : int;  (** 0 none, 2 bilinear, 3 bicubic, 4 normalised distance; others as bilinear *)
+  once : bool;  (** no repetition: points off the image have no colour *)
+  use : image_use;
+  width : float;  (** the image's width times the repeat, single precision *)
+  height : float;
+  offset_u : float;  (** the offset times minus the image's width *)
+  offset_v : float;
+  all_filter : float;  (** [filter all]: added to every pixel's filter (non-palette images) *)
+  all_transmit : float;
+  has_filter : bool;  (** [filter] or [transmit] was written (POV-Ray's HAS_FILTER) *)
+  bump_size : float option;  (** bump_map's [bump_size], which the normal's amount takes *)
+}
+
 (** A pattern: a function from a point in pattern space to a value (POVRAY-3.7 §17.4–§17.7;
     the others as POV-Ray 3.7's pattern.cpp defines them). Values stored in single precision by
     POV-Ray ([SNGL]) are rounded when parsed. *)
@@ -48,6 +75,10 @@ type pattern =
   | Object_pattern of object_test
       (** pattern.cpp object_pattern: 1 where the point is inside the object, 0 outside; a block
           pattern with two entries (checker's default map), frequency 0 *)
+  | Bitmap of bitmap
+      (** POV-Ray's BITMAP_PATTERN: an image_map in a pigment (whose colour is the image's,
+          its map unused) or a bump_map in a normal (the image's slope); it has no value *)
+  | Image_pattern of bitmap  (** image_pattern: the image's grey, index or alpha as the value *)
 
 (** The object of an [object] pattern, reduced to what the pattern needs: [pattern] comes before
     [obj] in this file (and one recursive group would clash labels), so the object itself is kept

@@ -139,7 +139,7 @@ let block_pattern st (current : Scene.pattern option) =
   | _ -> None
 
 let is_block (p : Scene.pattern option) =
-  match p with Some (Checker | Hexagon | Brick _ | Square | Triangular | Cubic | Object_pattern _) -> true | _ -> false
+  match p with Some (Checker | Hexagon | Brick _ | Square | Triangular | Cubic | Object_pattern _ | Bitmap _) -> true | _ -> false
 
 let is_pattern_start st =
   match peek st with
@@ -372,6 +372,7 @@ let rec parse_normal_body st ~close (base : Scene.normal option) : Scene.normal 
         n
     | None -> (
         match Pattern_reader.pattern_keyword st Normal_pattern { n.nh with pat = None } with
+        | Some ({ pat = Some (Bitmap { bump_size = Some amount; _ }); _ } as h) -> { n with nh = h; amount }
         | Some h -> { n with nh = h }
         | None -> n)
   in

@@ -274,7 +274,15 @@ let rec pattern_keyword st kind (h : header) : header option =
       (* §17.5: the direction is normalised when parsed *)
       if Vec.length v = 0. then Error.raise_at vl "the gradient vector is <0,0,0>";
       set (Gradient (Vec.normalize v))
-  | Ident (("image_map" | "bump_map" | "image_pattern" | "function" | "pigment_pattern" | "density_file") as s) ->
+  | Ident (("image_map" | "bump_map" | "image_pattern") as kw) ->
+      (* image_map only in a pigment, bump_map only in a normal; all three take frequency 0 *)
+      (match (kw, kind) with
+      | "image_map", Normal_pattern -> Error.raise_at loc "'image_map' can only be used in a pigment"
+      | "bump_map", Pigment_pattern -> Error.raise_at loc "'bump_map' can only be used in a normal"
+      | _ -> ());
+      advance st;
+      set ~frequency:0. (Image_reader.parse st kw)
+  | Ident (("function" | "pigment_pattern" | "density_file") as s) ->
       not_supported loc (Printf.sprintf "'%s' as a pattern" s)
   | _ -> None
 

@@ -123,7 +123,7 @@ let keywords =
     "uv_indices"; "inside_vector"; "box"; "no_image"; "no_reflection"; "double_illuminate"; "spotlight";
     "parallel"; "point_at"; "radius"; "tightness"; "orthographic"; "looks_like"; "cylinder"; "cone"; "disc";
     "open"; "torus"; "union"; "merge"; "intersection"; "difference"; "inverse"; "split_union"; "clipped_by"; "text"; "ttf"; "polygon"; "quadric";
-    "material"; "texture_map"; "interior_texture"; "tiles"; "irid"; "uv_mapping"; "crand" ]
+    "material"; "texture_map"; "interior_texture"; "tiles"; "irid"; "uv_mapping"; "crand"; "image_map"; "bump_map"; "image_pattern" ]
   (* pigment patterns (POVRAY-3.7 §17) *)
   @ [ "checker"; "gradient"; "hexagon"; "brick"; "brick_size"; "mortar"; "color_map"; "colour_map"; "frequency";
       "phase"; "ramp_wave"; "triangle_wave"; "sine_wave"; "scallop_wave"; "cubic_wave"; "poly_wave"; "pigment_map" ]
@@ -150,7 +150,7 @@ let keywords =
 let unsupported =
   [ "prism"; "lathe"; "sor"; "blob"; "height_field"; "isosurface"; "superellipsoid"; "julia_fractal";
     "parametric"; "bicubic_patch"; "ovus"; "quartic"; "poly"; "rotate"; "scale"; "matrix"; "transform";
-    "image_map"; "bump_map"; "area_light";
+    "area_light";
     "projected_through"; "fisheye"; "panoramic"; "ultra_wide_angle"; "omnimax";
     "radiosity"; "photons";
     "media"; "fog"; "rainbow"; "dispersion"; "dispersion_samples"; "caustics";
@@ -158,12 +158,12 @@ let unsupported =
     "light_group"; "cutaway_textures"; "sturm";
     "phong_albedo"; "metallic_albedo"; "translucency" ]
   (* patterns and pattern modifiers not read yet (POVRAY-3.7 §17) *)
-  @ [ "pigment_pattern"; "image_pattern"; "density_file"; "color_list" ]
+  @ [ "pigment_pattern"; "density_file"; "color_list" ]
   (* more of POV-Ray 3.7's reserved words that start something povml does not read, each found
      where POV-Ray reads it in an object, a light_source, a texture or an expression (checked word
      by word with POV-Ray: parser/reswords.cpp) *)
   @ [ "sphere_sweep"; "polynomial"; "composite"; "mesh_camera"; "adaptive"; "area_illumination"; "circular"; "jitter";
-      "orient"; "media_attenuation"; "media_interaction"; "material_map"; "bump_map"; "density"; "density_map"; "spline"; "inside"; "trace"; "max_extent"; "min_extent";
+      "orient"; "media_attenuation"; "media_interaction"; "material_map"; "density"; "density_map"; "spline"; "inside"; "trace"; "max_extent"; "min_extent";
       "datetime"; "function" ]
 
 (* The rest of POV-Ray 3.7's reserved words (parser/reswords.cpp), none of which povml reads: words

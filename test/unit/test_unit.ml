@@ -54,4 +54,5 @@ let () =
       ("POV-Ray source rules (Interp)", Test_interp.source_rules);
       ("Interrupt", Test_interrupt.tests);
       ("Normals (perturbed normals)", Test_normals.tests);
+      ("Images (image_map, image_pattern, bump_map)", Test_images.tests);
     ])

@@ -1,0 +1,74 @@
+(** Image files decoded as POV-Ray 3.7 keeps them (base/image/image.cpp and the readers png.cpp,
+    jpeg.cpp, gif.cpp, ppm.cpp, pgm.cpp, targa.cpp): the container POV-Ray's reader picks
+    (palette, grey, grey and alpha, RGB, RGBA; 8 or 16 bits), the values as it stores them (raw
+    integers, with the file's gamma curve kept for decoding at evaluation, or a palette of decoded
+    single-precision colours), and whether the colour is premultiplied by alpha. The values are
+    immutable; the parser's per-index filter and transmit make new images. *)
+
+(** The file formats POV-Ray 3.7 names ([sys] is PNG on Unix). *)
+type format = Png | Jpeg | Gif | Ppm | Pgm | Tga | Iff | Tiff | Bmp | Exr | Hdr
+
+(** How the parser asks for the image to be decoded (Image::ReadOptions). *)
+type options = {
+  gamma_correct : bool;  (** decode to linear at all; otherwise the raw values are used *)
+  default_gamma : Gamma_curve.t option;  (** the curve assumed where the file says nothing *)
+  working_gamma : Gamma_curve.t;  (** the scene's working curve ([Neutral] for none) *)
+  gamma_override : bool;  (** [default_gamma] even where the file names its own *)
+  premultiply : bool option;  (** the [premultiplied] keyword, where the format has alpha *)
+}
+
+(** What a palette entry holds: POV-Ray's colour maps are RGB, RGBA (the filter field holding
+    alpha) or RGBFT. *)
+type map_kind = Rgb_map | Rgba_map | Rgbft_map
+
+(** One palette entry, single precision ([filter] is alpha in an [Rgba_map]). *)
+type entry = { red : float; green : float; blue : float; filter : float; transm : float }
+
+(** The stored pixels, row-major from the top row. *)
+type pixels =
+  | Indexed of { kind : map_kind; map : entry array; index : Bytes.t }  (** ColourMapImage *)
+  | Grey of { max : int; grey : int array; alpha : int array option; lut : float array option }
+      (** Gray/GrayA images of 8 ([max] 255) or 16 bits (65535); [lut]: the file's curve
+          (a Nonlinear image), else the values are linear *)
+  | Colour of { max : int; rgb : int array; alpha : int array option; lut : float array option }
+      (** RGB/RGBA images, three values per pixel in [rgb] *)
+
+(** A decoded image. *)
+type t = { width : int; height : int; pixels : pixels; premultiplied : bool }
+
+val format_of_extension : string -> format option
+(** [format_of_extension name] is the format POV-Ray infers from the extension of [name]
+    (InferFileTypeFromExt), None without a known one. *)
+
+val format_name : format -> string
+(** [format_name f] is the keyword of [f] ("png", "jpeg", …). *)
+
+val read : format -> options -> string -> (t, string) result
+(** [read fmt opts path] decodes the file [path] as [fmt] under [opts], or says why it cannot
+    (unreadable, malformed, or a format or variant povml does not read yet). *)
+
+val rgbft : t -> int -> int -> float * float * float * float * float
+(** [rgbft img x y] is POV-Ray's GetRGBFTValue of the pixel at column [x], row [y] (0 the top):
+    red, green, blue, filter and transmit in single precision, alpha turned into transmit
+    [1 − alpha]. *)
+
+val index : t -> int -> int
+(** [index img i] is the palette index of pixel [i] (x + y·width) of an indexed image, 0 for others. *)
+
+val is_indexed : t -> bool
+(** [is_indexed img] holds for a palette image. *)
+
+val has_transparency : t -> bool
+(** [has_transparency img] is HasTransparency: an alpha channel, an RGBA or an RGBFT palette. *)
+
+val is_opaque : t -> bool
+(** [is_opaque img] is IsOpaque: no pixel lets light through. *)
+
+val colour_map_size : t -> int
+(** [colour_map_size img] is the number of palette entries (0 without a palette). *)
+
+val with_filter_transmit : t -> ?entry:int -> filter:float option -> transmit:float option -> unit -> t
+(** [with_filter_transmit img ?entry ~filter ~transmit ()] is [img] with its palette made RGBFT
+    (alpha becoming transmit) and the filter or transmit of one entry, or of all without
+    [entry], replaced (single precision), as the image_map's [filter]/[transmit] do.
+    [img] is returned as it is when it has no palette. *)

@@ -1,0 +1,192 @@
+(* Parse_Image and the modifiers of image_map, bump_map and image_pattern (parstxtr.cpp). *)
+
+open Token
+open Reader
+open Expr
+
+type block = Image_map | Bump_map | Image_pattern
+
+(* Parse_UV_Vect: a float stands for both terms, a longer vector gives its first two *)
+let uv st what =
+  let loc = peek_loc st in
+  match parse_expr st with
+  | V.Float x -> (x, x)
+  | V.Vector a when Array.length a >= 2 -> (a.(0), a.(1))
+  | v -> Error.raise_at loc "expected a 2-term vector for %s but found %s" what (V.kind_name v)
+
+let parse_name st =
+  let loc = peek_loc st in
+  match parse_expr st with
+  | V.String s -> s
+  | v -> Error.raise_at loc "expected the image file's name (a string) but found %s" (V.kind_name v)
+
+(* The file type keyword or a name whose extension gives it; a name without one is the output
+   type's, PNG in povml *)
+let parse_file st =
+  let loc = peek_loc st in
+  let typed fmt =
+    advance st;
+    (fmt, parse_name st)
+  in
+  match peek st with
+  | Ident ("png" | "sys") -> typed Image_file.Png
+  | Ident "jpeg" -> typed Image_file.Jpeg
+  | Ident "gif" -> typed Image_file.Gif
+  | Ident "ppm" -> typed Image_file.Ppm
+  | Ident "pgm" -> typed Image_file.Pgm
+  | Ident "tga" -> typed Image_file.Tga
+  | Ident (("iff" | "tiff" | "bmp" | "exr" | "hdr" | "pot" | "function") as kw) -> not_supported loc (Printf.sprintf "'%s' images" kw)
+  | _ -> (
+      let name = parse_name st in
+      match Image_file.format_of_extension name with
+      | Some ((Iff | Tiff | Bmp | Exr | Hdr) as fmt) -> not_supported loc (Printf.sprintf "'%s' images" (Image_file.format_name fmt))
+      | Some fmt -> (fmt, name)
+      | None when not (String.contains name '.') -> (Image_file.Png, name)
+      | None -> Error.raise_at loc "could not determine valid image file type from extension")
+
+(* The scene's gamma mode when the image is read (sceneData->gammaMode, which #version and
+   assumed_gamma set as they are read): below an effective version 3.7 (3.62 without #version)
+   and without assumed_gamma, image files are not decoded (their raw values are used); with
+   assumed_gamma, such a scene assumes its working gamma for files that say nothing; from 3.7 on,
+   files are decoded to the working gamma (neutral until assumed_gamma is read). *)
+let read_options st block ~gamma ~premultiply : Image_file.options =
+  let correct = block = Image_map in
+  let version = if st.version_set then st.version else 362 in
+  let working = match st.assumed_gamma with Some g -> Gamma_curve.by_decoding_gamma g | None -> Gamma_curve.Neutral in
+  let off : Image_file.options = { gamma_correct = false; default_gamma = None; working_gamma = Neutral; gamma_override = false; premultiply } in
+  let base : Image_file.options =
+    match st.assumed_gamma with
+    | _ when not correct -> off
+    | None when version < 370 -> off
+    | Some _ when version < 370 -> { off with gamma_correct = true; default_gamma = Some working; working_gamma = working }
+    | Some _ | None -> { off with gamma_correct = true; working_gamma = working }
+  in
+  match gamma with
+  | None -> base
+  | Some g ->
+      { base with gamma_correct = true; gamma_override = true; default_gamma = Some g; working_gamma = (if correct then working else Neutral) }
+
+(* Parse_Gamma: srgb or a positive decoding gamma *)
+let parse_gamma st =
+  if accept_ident st "srgb" then Gamma_curve.Srgb
+  else
+    let loc = peek_loc st in
+    let v = parse_float st in
+    if v <= 0. then Error.raise_at loc "gamma value must be positive";
+    if v < 1. && st.assumed_gamma <> None then warn st loc "Suspicious value %g specified for gamma. Did you mean %g?" v (1. /. v);
+    Gamma_curve.by_decoding_gamma v
+
+(* the file searched like an include file, the format's extensions tried where the name has none *)
+let locate st loc fmt name =
+  let exts = match fmt with Image_file.Jpeg -> [ ".jpg"; ".JPG"; ".jpeg"; ".JPEG" ] | f -> let e = "." ^ Image_file.format_name f in [ e; String.uppercase_ascii e ] in
+  let names = if String.contains name '.' then [ name ] else name :: List.map (fun e -> name ^ e) exts in
+  match List.find_map (fun n -> find_file ~inc:false st n) names with
+  | Some path ->
+      Access.check_read st.opts.access loc path;
+      path
+  | None -> Error.raise_at loc "cannot find the image file \"%s\" (searched %s)" name (String.concat ", " (include_dirs st))
+
+let not_with loc what = Error.raise_at loc "'%s' cannot be used with a non color-mapped image" what
+
+let parse st keyword =
+  let block = match keyword with "image_map" -> Image_map | "bump_map" -> Bump_map | _ -> Image_pattern in
+  open_block st keyword;
+  let file_loc = peek_loc st in
+  let fmt, name = parse_file st in
+  (* gamma and premultiplied follow the name, in any order *)
+  let rec file_options gamma premultiply =
+    match peek st with
+    | Ident "gamma" -> advance st; file_options (Some (parse_gamma st)) premultiply
+    | Ident "premultiplied" -> advance st; file_options gamma (Some (Expr.c_int (parse_float st) <> 0.))
+    | _ -> (gamma, premultiply)
+  in
+  let gamma, premultiply = file_options None None in
+  let options = read_options st block ~gamma ~premultiply in
+  if options.gamma_correct && (not options.gamma_override) && fmt = Png && ((not st.version_set) || st.version < 370) then
+    warn st file_loc "PNG input image default gamma handling has changed for pre POV-Ray 3.7 scenes; results may differ from original intention";
+  let path = locate st file_loc fmt name in
+  let image =
+    match Image_file.read fmt options path with
+    | Ok img -> img
+    | Error msg -> Error.raise_at file_loc "cannot read the image file \"%s\": %s" name msg
+  in
+  let iw = float_of_int image.width and ih = float_of_int image.height in
+  let b =
+    {
+      Scene.image;
+      file = name;
+      map_type = 0;
+      interpolate = 0;
+      once = false;
+      use = Use_colour;
+      width = Precision.f32 iw;
+      height = Precision.f32 ih;
+      offset_u = 0.;
+      offset_v = 0.;
+      all_filter = 0.;
+      all_transmit = 0.;
+      has_filter = false;
+      bump_size = None;
+    }
+  in
+  (* filter/transmit all F, or filter/transmit N, F on one palette entry (image_map only) *)
+  let filter_transmit (b : Scene.bitmap) l ~is_filter =
+    let edit ?entry v =
+      let filter, transmit = if is_filter then (Some v, None) else (None, Some v) in
+      Image_file.with_filter_transmit b.image ?entry ~filter ~transmit ()
+    in
+    let b =
+      if accept_ident st "all" then begin
+        let v = parse_float st in
+        let b = if is_filter then { b with all_filter = v } else { b with all_transmit = v } in
+        if Image_file.is_indexed b.image then { b with image = edit v } else b
+      end
+      else begin
+        let rl = peek_loc st in
+        let reg = int_of_float (parse_float st +. 0.01) in
+        let what = if is_filter then "filter" else "transmit" in
+        if not (Image_file.is_indexed b.image) then not_with l what;
+        if reg < 0 || reg >= Image_file.colour_map_size b.image then
+          Error.raise_at rl "%s color register value out of range" (String.uppercase_ascii what);
+        ignore (accept st Comma);
+        let v = parse_float st in
+        { b with image = edit ~entry:reg v }
+      end
+    in
+    { b with has_filter = true }
+  in
+  let rec modifiers (b : Scene.bitmap) =
+    let l = peek_loc st in
+    match peek st with
+    | RBrace -> advance st; b
+    | Ident "once" -> advance st; modifiers { b with once = true }
+    | Ident "interpolate" ->
+        advance st;
+        let v = int_of_float (parse_float st) in
+        if block = Image_map && v <> 2 && v <> 3 && v <> 4 then Error.raise_at l "invalid interpolate value";
+        modifiers { b with interpolate = v }
+    | Ident "map_type" ->
+        advance st;
+        let v = int_of_float (parse_float st) in
+        if block = Image_map && v <> 0 && v <> 1 && v <> 2 && v <> 5 then Error.raise_at l "invalid map_type value";
+        modifiers { b with map_type = v }
+    | Ident ("use_colour" | "use_color") -> advance st; modifiers { b with use = Use_colour }
+    | Ident "use_index" -> advance st; modifiers { b with use = (if block = Image_pattern then Use_index else Use_none) }
+    | Ident "use_alpha" when block = Image_pattern -> advance st; modifiers { b with use = Use_alpha }
+    | Ident "bump_size" when block = Bump_map -> advance st; modifiers { b with bump_size = Some (Precision.f32 (parse_float st)) }
+    | Ident "repeat" ->
+        advance st;
+        let ru, rv = uv st "repeat" in
+        if ru <= 0. || rv <= 0. then Error.raise_at l "zero or negative image repeat vector";
+        modifiers { b with width = Precision.f32 (iw *. ru); height = Precision.f32 (ih *. rv) }
+    | Ident "offset" ->
+        advance st;
+        let ou, ov = uv st "offset" in
+        modifiers { b with offset_u = ou *. -.iw; offset_v = ov *. -.ih }
+    | Ident ("filter" | "transmit" as kw) when block = Image_map ->
+        advance st;
+        modifiers (filter_transmit b l ~is_filter:(kw = "filter"))
+    | _ -> unexpected st (Printf.sprintf "an %s modifier or '}'" keyword)
+  in
+  let b = modifiers b in
+  match block with Image_map | Bump_map -> Scene.Bitmap b | Image_pattern -> Image_pattern b

@@ -1,0 +1,11 @@
+(** The image blocks of POV-Ray 3.7's parser (parstxtr.cpp's Parse_Image, Parse_Image_Map,
+    Parse_Bump_Map and Parse_Image_Pattern): the file type and name, [gamma] and
+    [premultiplied], then each block's modifiers. The file is searched like an include file,
+    must be readable under the file-access policy, and is decoded as POV-Ray decodes it in the
+    scene's gamma mode at that point of the scene. *)
+
+val parse : Reader.st -> string -> Scene.pattern
+(** [parse st keyword] reads the block after [keyword] ("image_map", "bump_map" or
+    "image_pattern", already read), from its '{' to its '}': a [Bitmap] for the first two, an
+    [Image_pattern] for the third. A missing, unreadable or undecodable file is a located error
+    naming it; file types and options povml lacks are [not supported yet]. *)

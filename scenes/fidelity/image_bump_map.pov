@@ -1,0 +1,7 @@
+// povml fidelity scene: image_bump_map
+// Rule: bump_map with bump_size on a lit plane
+#version 3.7;
+global_settings { assumed_gamma 1 }
+camera { location <0.5, 0.5, -1.6> look_at <0.5, 0.5, 0> angle 50 }
+light_source { <-3, 5, -6> rgb 1 }
+plane { z, 0 pigment { rgb 0.8 } normal { bump_map { png "../images/rgb8.png" bump_size 3 } } }

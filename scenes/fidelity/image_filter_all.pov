@@ -1,0 +1,10 @@
+// povml fidelity scene: image_filter_all
+// Rule: filter all on an RGB image: added to every pixel
+#version 3.7;
+global_settings { assumed_gamma 1 }
+camera { location <0.5, 0.5, -1.6> look_at <0.5, 0.5, 0> angle 50 }
+plane { z, 0
+  pigment { image_map { png "../images/rgb8.png" filter all 0.6 } }
+  finish { ambient 1 diffuse 0 }
+}
+plane { z, 1 pigment { checker rgb <0.9,0.2,0.1>, rgb <0.1,0.3,0.8> scale 0.25 } finish { ambient 1 diffuse 0 } }

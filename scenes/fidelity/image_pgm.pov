@@ -1,0 +1,9 @@
+// povml fidelity scene: image_pgm
+// Rule: a binary PGM image_map: linear grey
+#version 3.7;
+global_settings { assumed_gamma 1 }
+camera { location <0.5, 0.5, -1.6> look_at <0.5, 0.5, 0> angle 50 }
+plane { z, 0
+  pigment { image_map { pgm "../images/img.pgm" } }
+  finish { ambient 1 diffuse 0 }
+}
