@@ -374,19 +374,18 @@ Mathematical and string errors:
         |                ^
   [1]
 
-Declared values that povml cannot render yet are an error only where they are used: T_Grnt19 in
-stones1.inc has a finish with crand; in the main file the declaration also warns.
+Declared values that povml cannot render yet are an error only where they are used: Bicorn in
+shapesq.inc is a quartic; in the main file the declaration also warns.
 
   $ cat > jade.pov <<'POV'
-  > #include "colors.inc"
-  > #include "stones1.inc"
-  > sphere { 0, 1 texture { T_Grnt19 } }
+  > #include "shapesq.inc"
+  > object { Bicorn }
   > POV
   $ povml --dump jade.pov
-  jade.pov:3:25: error: not supported yet: 'crand' in a finish (used through 'T_Grnt19')
-      3 | sphere { 0, 1 texture { T_Grnt19 } }
-        |                         ^
-  /usr/share/povray-3.7/include/stones1.inc:584:3: note: 'T_Grnt19' was declared here
+  jade.pov:2:10: error: not supported yet: 'quartic' (used through 'Bicorn')
+      2 | object { Bicorn }
+        |          ^
+  /usr/share/povray-3.7/include/shapesq.inc:30:2: note: 'Bicorn' was declared here
   [1]
   $ cat > unsup3.pov <<'POV'
   > #version 3.7;

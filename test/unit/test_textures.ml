@@ -52,6 +52,16 @@ let test_patterned () =
   float_eq "average default weight" 1. m.(0).tvalue;
   float_eq "average weight" 3. m.(1).tvalue
 
+let test_uv_object () =
+  (* an object's uv_mapping: transforms after it leave its texture *)
+  let o = obj "sphere { 0, 1 uv_mapping pigment { checker } scale 2 }" in
+  Alcotest.(check bool) "flagged" true o.uv_mapped;
+  let pp = match (List.hd (layers o)).pigment with Pattern p -> p | Solid _ | Solid_placed _ -> Alcotest.fail "a pattern" in
+  Alcotest.(check int) "the texture not moved" 0 (List.length pp.warps);
+  (* the members of a union that take its texture take its uv_mapping *)
+  let s = scene (v37 ^ "union { sphere { 0, 1 } sphere { x, 1 pigment { rgb 1 } } uv_mapping pigment { checker } }") in
+  Alcotest.(check (list bool)) "members" [ true; false ] (List.map (fun (o : Scene.obj) -> o.uv_mapped) s.objects)
+
 let test_material () =
   let o = obj "#declare M = material { texture { pigment { rgb 0.5 } } interior { ior 1.5 } }\nsphere { 0, 1 texture { pigment { rgb 0.1 } } material { M } }" in
   (match layers o with
@@ -73,6 +83,8 @@ let test_errors () =
     ~line:2 ~col:33 ~sub:"cannot use texture_map with this pattern type";
   expect_scene_error "interior texture alone" (v37 ^ "sphere { 0, 1 interior_texture { pigment { rgb 1 } } }") ~line:2 ~col:54
     ~sub:"requires an exterior texture";
+  expect_scene_error "uv_mapping after a texture" (v37 ^ "sphere { 0, 1 pigment { rgb 1 } uv_mapping }") ~line:2 ~col:33
+    ~sub:"uv_mapping must be specified before texture";
   expect_scene_error "layered default" (v37 ^ "#default { texture { checker texture { } texture { } } }") ~line:2 ~col:12
     ~sub:"default texture cannot be"
 
@@ -81,5 +93,6 @@ let tests =
     Alcotest.test_case "layers" `Quick test_layers;
     Alcotest.test_case "patterned textures" `Quick test_patterned;
     Alcotest.test_case "materials" `Quick test_material;
+    Alcotest.test_case "uv_mapping on objects" `Quick test_uv_object;
     Alcotest.test_case "errors" `Quick test_errors;
   ]

@@ -187,15 +187,17 @@ let test_parse () =
       float_eq "its amount" (Precision.f32 0.7) n.amount;
       Alcotest.(check int) "its own scale only" 1 (List.length n.nwarps)
   | None -> Alcotest.fail "a normal");
-  (* a texture without a normal: its pigment *)
-  let o = the_object (scene "sphere { 0, 1 texture { uv_mapping pigment { checker } scale 2 } rotate x*10 }") in
-  let pp = patterned (layer_of o).pigment in
-  Alcotest.(check bool) "texture: pigment flagged" true pp.uv_mapping;
-  Alcotest.(check int) "texture: its own scale only" 1 (List.length pp.warps);
+  (* texture { uv_mapping … }: the rest of the block is a texture of its own (its scale moves its
+     pigment), wrapped; the object's rotate goes to the wrapper, which only bends normals *)
+  let o = the_object (scene "sphere { 0, 1 texture { uv_mapping pigment { checker } normal { bumps } scale 2 } rotate x*10 }") in
+  (match o.texture with
+  | Uv_mapped { uwarps; inner = Layers [ l ] } ->
+      Alcotest.(check int) "texture: the wrapper's rotate" 1 (List.length uwarps);
+      Alcotest.(check int) "texture: its pigment's own scale only" 1 (List.length (patterned l.pigment).warps);
+      Alcotest.(check bool) "texture: its normal" true (l.normal <> None)
+  | _ -> Alcotest.fail "a uv-mapped texture");
   (* only first *)
-  expect_scene_error "after the pattern" "sphere { 0, 1 pigment { checker uv_mapping } }" ~line:1 ~col:33 ~sub:"comes first";
-  expect_scene_error "a texture with a normal" "sphere { 0, 1 texture { uv_mapping pigment { checker } normal { bumps } } }" ~line:1
-    ~col:25 ~sub:"not supported yet"
+  expect_scene_error "after the pattern" "sphere { 0, 1 pigment { checker uv_mapping } }" ~line:1 ~col:33 ~sub:"comes first"
 
 let test_eval () =
   (* the pattern sees the hit's (u, v, 0), not the point *)
