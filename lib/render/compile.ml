@@ -154,11 +154,14 @@ let pigment_opaque (p : Scene.pigment) =
 
 (* Test_Opacity: a texture stops light when one of its layers is opaque; a patterned texture is
    never taken as opaque *)
-let texture_opaque (t : Scene.texture) =
-  match t with Layers ls -> List.exists (fun (l : Scene.layer) -> pigment_opaque l.pigment) ls | Texture_pattern _ | Uv_mapped _ -> false
+let rec texture_opaque (t : Scene.texture) =
+  match t with
+  | Layers ls -> List.exists (fun (l : Scene.layer) -> pigment_opaque l.pigment) ls
+  | Material_map { mimage; materials; _ } -> (not mimage.once) && Array.for_all texture_opaque materials
+  | Texture_pattern _ | Uv_mapped _ -> false
 
 (* the top layer's finish, which holds the legacy refraction and ior (§2.7) *)
-let top_finish (t : Scene.texture) = match t with Layers (l :: _) -> Some l.finish | Layers [] | Texture_pattern _ | Uv_mapped _ -> None
+let top_finish (t : Scene.texture) = match t with Layers (l :: _) -> Some l.finish | Layers [] | Texture_pattern _ | Uv_mapped _ | Material_map _ -> None
 
 (* Objects that share a layer (a declared texture) share its compiled surface. *)
 module Layer_memo = Hashtbl.Make (struct
@@ -202,6 +205,15 @@ let scene (s : Scene.t) : Compiled.t =
           (blended ~noise tpat (Array.map (fun (e : Scene.texture_entry) -> f32 e.tvalue) tmap)
              (Array.map (fun (e : Scene.texture_entry) -> texture_of e.ttexture) tmap))
     | Uv_mapped { uwarps; inner } -> Uv_mapped { uinner = texture_of inner; uwarps }
+    | Material_map { mimage; mwarps; materials } ->
+        let count = Array.length materials in
+        Chosen
+          {
+            cwarp = (fun q -> Warp.point mwarps (Bitmap mimage) q);
+            choose = (fun q -> Image_map.material mimage q count);
+            textures = Array.map texture_of materials;
+            cwarps = mwarps;
+          }
   in
   (* Objects are numbered in scene order, each CSG before its members (the numbering keeps the
      scene order of top-level objects, which decides ties without a bounding hierarchy). *)
@@ -242,7 +254,7 @@ let scene (s : Scene.t) : Compiled.t =
               && Option.fold ~none:true ~some:texture_opaque o.interior_texture
               && Array.for_all texture_opaque face_textures
         in
-        let clear = match tex with Plain sf -> sf.transparent | Layered _ | Blended _ | Uv_mapped _ -> not (texture_opaque o.texture) in
+        let clear = match tex with Plain sf -> sf.transparent | Layered _ | Blended _ | Uv_mapped _ | Chosen _ -> not (texture_opaque o.texture) in
         let ob =
           {
             id;

@@ -54,6 +54,9 @@ and texture =
       (** two or more layers, the top first: each lit on its own and seen through the filter
           and transmit of those above it (ComputeLightedTexture) *)
   | Blended of blended  (** a patterned texture: entries picked or blended by a pattern *)
+  | Chosen of { cwarp : Vec.t -> Vec.t; choose : Vec.t -> int; textures : texture array; cwarps : Scene.warp list }
+      (** a material_map: at the point warped by [cwarp], [choose] picks one of [textures],
+          evaluated there; [cwarps] bend their normals *)
   | Uv_mapped of { uinner : texture; uwarps : Scene.warp list }
       (** [uinner] evaluated at the hit's (u, v, 0), its normals bent in the space of [uwarps] *)
 

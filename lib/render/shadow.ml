@@ -24,6 +24,9 @@ let robust_margin (p : Vec.t) (lp : Vec.t) remaining = (1e-9 *. remaining) +. Ro
 let rec filter obj ~hit ~uv ~fades t (tex : texture) (q : Vec.t) : filtered =
   match tex with
   | Uv_mapped u -> filter obj ~hit ~uv ~fades t u.uinner (uv ())
+  | Chosen c ->
+      let tq = c.cwarp q in
+      filter obj ~hit ~uv ~fades t c.textures.(c.choose tq) tq
   | Plain s -> filter_layers obj ~hit ~fades t [| s |] q
   | Layered ls -> filter_layers obj ~hit ~fades t ls q
   | Blended b ->
@@ -99,7 +102,7 @@ let rec walk ctx ~slot (p : Vec.t) (lp : Vec.t) lo first (o : Vec.t) (l : Vec.t)
             (* §4, §17.8: a patterned pigment is evaluated where the shadow ray crosses it *)
             let f = match sf.paint with Fixed -> sf.filcol | Varying at -> (at (hit sf) q).filcol in
             if fades then Optics.fade obj t f else f
-        | Plain _ | Layered _ | Blended _ | Uv_mapped _ ->
+        | Plain _ | Layered _ | Blended _ | Uv_mapped _ | Chosen _ ->
             (* ComputeShadowColour: the filter colour, weighed in by its filter channel; an
                object's uv_mapping evaluates its textures at the crossing's (u, v, 0) *)
             let uv () = Shape.uv obj part q in

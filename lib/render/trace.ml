@@ -102,7 +102,7 @@ and shade ctx ~reflected obj part depth ~level ~weight ~interiors (o : Vec.t) (d
     let e = if ctx.robust then Robust.error_bound o p obj.mag else 0. in
     match tex with
     | Plain s when not obj.uv_mapped -> plain ctx ~reflected obj part s p n ng e depth ~level ~weight ~interiors d
-    | Plain _ | Layered _ | Blended _ | Uv_mapped _ ->
+    | Plain _ | Layered _ | Blended _ | Uv_mapped _ | Chosen _ ->
         let at = { hobj = obj; hpart = part; hp = p; hn = n; hng = ng; he = e; hd = d; hdepth = depth; hlevel = level; hweight = weight; hinteriors = interiors; hreflected = reflected; memo = Lighting.memo sc; pnormal = n } in
         (* an object's uv_mapping: every texture is evaluated at the hit's (u, v, 0) *)
         texture_colour ctx at tex (if obj.uv_mapped then Shape.uv obj part p else p) []
@@ -176,6 +176,9 @@ and texture_colour ctx at tex q warps : result =
   match tex with
   | Plain s -> lighted ctx at [| s |] q warps
   | Layered ls -> lighted ctx at ls q warps
+  | Chosen { cwarp; choose; textures; cwarps } ->
+      let tq = cwarp q in
+      texture_colour ctx at textures.(choose tq) tq (warps @ [ cwarps ])
   | Uv_mapped { uinner; uwarps } -> texture_colour ctx at uinner (Shape.uv at.hobj at.hpart at.hp) (warps @ [ uwarps ])
   | Blended b ->
       let warps = warps @ [ b.nwarps ] in

@@ -205,6 +205,10 @@ let rec texture (t : texture) =
       let pat = pigment (Pattern { tpat with map = [| { value = 0.; colour = Colour.black } |]; pigments = [||] }) in
       let entries = Array.to_list (Array.map (fun e -> Printf.sprintf "[%s %s]" (num e.tvalue) (texture e.ttexture)) tmap) in
       Printf.sprintf "texture { %s texture_map { %s } }" pat (String.concat " " entries)
+  | Material_map { mimage; mwarps; materials } ->
+      Printf.sprintf "texture { material_map { %s %s }%s }" (bitmap mimage)
+        (String.concat " " (Array.to_list (Array.map texture materials)))
+        (String.concat "" (List.rev_map (fun w -> " " ^ warp w) mwarps))
   | Uv_mapped { uwarps; inner } ->
       Printf.sprintf "texture { uv_mapping %s%s }" (texture inner) (String.concat "" (List.rev_map (fun w -> " " ^ warp w) uwarps))
 

@@ -56,6 +56,7 @@ let transform_texture (t : Scene.texture) m : Scene.texture =
   | Layers ls -> Layers (List.map (fun l -> transform_layer l m) ls)
   | Texture_pattern p -> Texture_pattern { p with tpat = { p.tpat with warps = Pigment.transform_warps p.tpat.warps m } }
   | Uv_mapped u -> Uv_mapped { u with uwarps = Pigment.transform_warps u.uwarps m }
+  | Material_map mm -> Material_map { mm with mwarps = Pigment.transform_warps mm.mwarps m }
 
 let layer t op = transform_layer t (op_transform op)
 let texture t op = transform_texture t (op_transform op)

@@ -267,6 +267,10 @@ type texture =
           evaluated at the point the pattern saw (its warps applied); [Average] weighs every
           entry by its value *)
 
+  | Material_map of { mimage : bitmap; mwarps : warp list; materials : texture array }
+      (** [material_map { IMAGE texture {…} … }]: the image's pixel at the warped point (its palette
+          index, or its red times 255) picks one of [materials] (never empty), evaluated at that
+          point *)
   | Uv_mapped of { uwarps : warp list; inner : texture }
       (** [texture { uv_mapping … }]: [inner] evaluated at the hit's (u, v, 0); the transforms
           applied to it since ([uwarps]) move no point, they only bend the normals of [inner] (as

@@ -4,7 +4,7 @@ open Token
 open Reader
 open Expr
 
-type block = Image_map | Bump_map | Image_pattern
+type block = Image_map | Bump_map | Image_pattern | Material_map
 
 (* Parse_UV_Vect: a float stands for both terms, a longer vector gives its first two *)
 let uv st what =
@@ -88,8 +88,9 @@ let locate st loc fmt name =
 
 let not_with loc what = Error.raise_at loc "'%s' cannot be used with a non color-mapped image" what
 
-let parse st keyword =
-  let block = match keyword with "image_map" -> Image_map | "bump_map" -> Bump_map | _ -> Image_pattern in
+(* the block after [keyword], up to its '}' (a material_map: up to its first texture) *)
+let read st keyword =
+  let block = match keyword with "image_map" -> Image_map | "bump_map" -> Bump_map | "material_map" -> Material_map | _ -> Image_pattern in
   open_block st keyword;
   let file_loc = peek_loc st in
   let fmt, name = parse_file st in
@@ -158,7 +159,8 @@ let parse st keyword =
   let rec modifiers (b : Scene.bitmap) =
     let l = peek_loc st in
     match peek st with
-    | RBrace -> advance st; b
+    | RBrace when block <> Material_map -> advance st; b
+    | Ident "texture" when block = Material_map -> b
     | Ident "once" -> advance st; modifiers { b with once = true }
     | Ident "interpolate" ->
         advance st;
@@ -186,7 +188,13 @@ let parse st keyword =
     | Ident ("filter" | "transmit" as kw) when block = Image_map ->
         advance st;
         modifiers (filter_transmit b l ~is_filter:(kw = "filter"))
-    | _ -> unexpected st (Printf.sprintf "an %s modifier or '}'" keyword)
+    | _ -> unexpected st (if block = Material_map then "a material_map modifier or 'texture'" else Printf.sprintf "an %s modifier or '}'" keyword)
   in
-  let b = modifiers b in
-  match block with Image_map | Bump_map -> Scene.Bitmap b | Image_pattern -> Image_pattern b
+  (block, modifiers b)
+
+let parse st keyword =
+  match read st keyword with
+  | (Image_map | Bump_map | Material_map), b -> Scene.Bitmap b
+  | Image_pattern, b -> Image_pattern b
+
+let parse_material_map st = snd (read st "material_map")

@@ -9,3 +9,8 @@ val parse : Reader.st -> string -> Scene.pattern
     "image_pattern", already read), from its '{' to its '}': a [Bitmap] for the first two, an
     [Image_pattern] for the third. A missing, unreadable or undecodable file is a located error
     naming it; file types and options povml lacks are [not supported yet]. *)
+
+val parse_material_map : Reader.st -> Scene.bitmap
+(** [parse_material_map st] reads a [material_map] block after the keyword, from its '{' up to its
+    first [texture] (not read): the file, read without gamma correction (its pixels choose the
+    textures), and the modifiers [once], [interpolate], [map_type], [repeat], [offset]. *)

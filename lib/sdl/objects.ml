@@ -216,7 +216,7 @@ and parse_object_mods st (o : V.obj) what : V.obj =
     | None -> { o with texture = Some (Scene.Layers [ f st.default_texture ]) }
     | Some (Layers (top :: below)) -> { o with texture = Some (Layers (f top :: below)) }
     | Some (Layers []) -> o
-    | Some (Texture_pattern _ | Uv_mapped _) -> Error.raise_at loc "cannot layer over a patterned texture"
+    | Some (Texture_pattern _ | Uv_mapped _ | Material_map _) -> Error.raise_at loc "cannot layer over a patterned texture"
   in
   let rec loop (o : V.obj) =
     let loc = peek_loc st in

@@ -24,14 +24,14 @@ let convert_layer (l : Scene.layer) = { l with pigment = filter_to_transmit l.pi
 let link st loc (old : Scene.texture option) (nw : Scene.texture) : Scene.texture =
   let legacy = st.version <= 310 in
   match (old, nw) with
-  | Some (Texture_pattern _ | Uv_mapped _), _ -> Error.raise_at loc "cannot layer over a patterned texture"
+  | Some (Texture_pattern _ | Uv_mapped _ | Material_map _), _ -> Error.raise_at loc "cannot layer over a patterned texture"
   | None, Layers ls when legacy ->
       (* every layer with one below it *)
       let n = List.length ls in
       Layers (List.mapi (fun i l -> if i < n - 1 then convert_layer l else l) ls)
   | None, _ -> nw
   | Some (Layers below), Layers ls -> Layers ((if legacy then List.map convert_layer ls else ls) @ below)
-  | Some (Layers _), (Texture_pattern _ | Uv_mapped _) -> Error.raise_at loc "cannot layer a patterned texture over another"
+  | Some (Layers _), (Texture_pattern _ | Uv_mapped _ | Material_map _) -> Error.raise_at loc "cannot layer a patterned texture over another"
 
 let default_texture st : Scene.texture = Layers [ st.default_texture ]
 let transform_keyword = function Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") -> true | _ -> false
@@ -49,7 +49,7 @@ let rec transforms st ~close (t : Scene.texture) =
    or a patterned texture. *)
 let rec parse_body st ~close : Scene.texture =
   match Materials.ident_of_kind st (function V.Texture t -> Some t | _ -> None) with
-  | Some ((Texture_pattern _ | Uv_mapped _) as t) -> transforms st ~close t
+  | Some ((Texture_pattern _ | Uv_mapped _ | Material_map _) as t) -> transforms st ~close t
   | Some (Layers ls) -> plain st ~close ls true
   | None -> plain st ~close [ st.default_texture ] false
 
@@ -87,7 +87,15 @@ and plain st ~close (ls : Scene.layer list) modified =
   match peek st with
   | k when k == close -> advance st; t
   | Ident "tiles" when not modified -> advance st; transforms st ~close (parse_tiles st loc)
-  | Ident "material_map" when not modified -> not_supported loc "'material_map'"
+  | Ident "material_map" when not modified ->
+      (* Parse_Material_Map: the image, its modifiers, then the materials, each a texture block *)
+      advance st;
+      let mimage = Image_reader.parse_material_map st in
+      let rec materials acc = if is_ident st "texture" then (advance st; materials (parse st :: acc)) else List.rev acc in
+      let materials = Array.of_list (materials []) in
+      close_block st "material_map";
+      if Array.length materials = 0 then Error.raise_at loc "a material_map needs a texture";
+      transforms st ~close (Material_map { mimage; mwarps = []; materials })
   | Ident "uv_mapping" when not modified ->
       (* UV_MAP_PATTERN: the rest of the block is a texture of its own, evaluated at the hit's
          (u, v, 0) *)

@@ -228,3 +228,17 @@ let bump b amount q (n : Vec.t) =
       Vec.make (tx +. (zx *. -1.)) (ty +. (zy *. -1.)) (tz +. (zz *. -1.))
 
 let opaque b = not (b.once || b.has_filter || not (Image_file.is_opaque b.image))
+
+(* material_map: the material a point picks, 0 off the image, else the pixel's palette index or
+   its red times 255 (truncated), brought below [count] by a remainder only when above it; one
+   past the last (or more) stays on the last *)
+let material b q count =
+  let n =
+    match map_pos b q with
+    | None -> 0
+    | Some (x, y) ->
+        let (r, _, _, _, _), reg = colour_at b x y in
+        if reg = -1 then c_int (r *. 255.0) else reg
+  in
+  let n = if n > count then n mod count else n in
+  min n (count - 1)

@@ -19,3 +19,9 @@ val bump : Scene.bitmap -> float -> Vec.t -> Vec.t -> Vec.t
 val opaque : Scene.bitmap -> bool
 (** [opaque b] holds when an image_map of [b] never lets light through: not [once], no
     transparent pixel, no [filter] or [transmit] written (Post_Pigment's HAS_FILTER test). *)
+
+val material : Scene.bitmap -> Vec.t -> int -> int
+(** [material b q count] is the index, below [count], of the material a material_map of [b] picks
+    at the pattern-space point [q] (imageutil.cpp's material_map): 0 off the image, else the
+    pixel's palette index, or its red times 255 truncated; an index above [count] is taken modulo
+    [count], and one at [count] or above stays on the last material. *)
