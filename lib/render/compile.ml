@@ -271,6 +271,7 @@ let scene (s : Scene.t) : Compiled.t =
             fade_distance = f32 o.interior.fade_distance;
             fade_power = f32 o.interior.fade_power;
             fade_colour = rgb32 o.interior.fade_colour;
+            caustics = o.interior.caustics;
             old_refract = f32 (match top_finish o.texture with Some f -> f.refraction | None -> 1.);
             opaque;
             mag = Shape.magnitude shape;

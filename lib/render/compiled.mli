@@ -124,6 +124,7 @@ and obj = {
   fade_distance : float;
   fade_power : float;
   fade_colour : Rgb.t;
+  caustics : float;  (** the interior's faked caustics (0: none), as stored *)
   old_refract : float;  (** legacy finish refraction: the transmitted-colour factor (§2.7, §6.3) *)
   opaque : bool;  (** every surface has filter = transmit = 0: stops a shadow ray at once (§2.7) *)
   mag : float;

@@ -48,6 +48,7 @@ let member ~inverted shape =
     fade_distance = 0.;
     fade_power = 0.;
     fade_colour = Rgb.black;
+    caustics = 0.;
     old_refract = 1.;
     opaque = true;
     mag = 0.;

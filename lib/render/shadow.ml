@@ -18,24 +18,26 @@ let aim (lp : Vec.t) (o : Vec.t) =
 let robust_margin (p : Vec.t) (lp : Vec.t) remaining = (1e-9 *. remaining) +. Robust.error_bound p lp remaining
 
 (* ComputeShadowTexture for a texture at the point [q] of a shadow ray's crossing: the product of
-   its layers' filter colours, then the interior's fade over the [t] travelled inside (with
-   [fades]), as an rgb with filter 1; a patterned texture's entries blended in all four channels
-   (ComputeOneTextureColour). *)
-let rec filter obj ~hit ~uv ~fades t (tex : texture) (q : Vec.t) : filtered =
+   its layers' filter colours (each times the interior's faked caustics, [caustic], when it has
+   them), then the interior's fade over the [t] travelled inside (with [fades]), as an rgb with
+   filter 1; a patterned texture's entries blended in all four channels (ComputeOneTextureColour).
+   [warps]: the patterned textures around, the outermost first, whose spaces bend the normals. *)
+let rec filter obj ~hit ~uv ~caustic ~fades t (tex : texture) (q : Vec.t) warps : filtered =
   match tex with
-  | Uv_mapped u -> filter obj ~hit ~uv ~fades t u.uinner (uv ())
+  | Uv_mapped u -> filter obj ~hit ~uv ~caustic ~fades t u.uinner (uv ()) (warps @ [ u.uwarps ])
   | Chosen c ->
       let tq = c.cwarp q in
-      filter obj ~hit ~uv ~fades t c.textures.(c.choose tq) tq
-  | Plain s -> filter_layers obj ~hit ~fades t [| s |] q
-  | Layered ls -> filter_layers obj ~hit ~fades t ls q
+      filter obj ~hit ~uv ~caustic ~fades t c.textures.(c.choose tq) tq (warps @ [ c.cwarps ])
+  | Plain s -> filter_layers obj ~hit ~caustic ~fades t [| s |] q warps
+  | Layered ls -> filter_layers obj ~hit ~caustic ~fades t ls q warps
   | Blended b ->
       let tq = b.warp q in
+      let warps = warps @ [ b.nwarps ] in
       if b.average then begin
         let r = ref 0. and g = ref 0. and bl = ref 0. and fl = ref 0. and total = ref 0. in
         Array.iteri
           (fun i e ->
-            let c = filter obj ~hit ~uv ~fades t e tq in
+            let c = filter obj ~hit ~uv ~caustic ~fades t e tq warps in
             let v = b.values.(i) in
             r := f32 (!r +. f32 (c.r *. v));
             g := f32 (!g +. f32 (c.g *. v));
@@ -49,25 +51,49 @@ let rec filter obj ~hit ~uv ~fades t (tex : texture) (q : Vec.t) : filtered =
       else
         let v = b.value Patterns.no_hit tq in
         let prev, cur = Surfaces.around b.values v in
-        let c1 = filter obj ~hit ~uv ~fades t b.entries.(cur) tq in
+        let c1 = filter obj ~hit ~uv ~caustic ~fades t b.entries.(cur) tq warps in
         if prev = cur then c1
         else
-          let c2 = filter obj ~hit ~uv ~fades t b.entries.(prev) tq in
+          let c2 = filter obj ~hit ~uv ~caustic ~fades t b.entries.(prev) tq warps in
           let v1 = (v -. b.values.(prev)) /. (b.values.(cur) -. b.values.(prev)) in
           let v2 = 1. -. v1 in
           let mix x y = f32 (f32 (v1 *. x) +. f32 (v2 *. y)) in
           { r = mix c1.r c2.r; g = mix c1.g c2.g; b = mix c1.b c2.b; filter = mix c1.filter c2.filter }
 
-and filter_layers obj ~hit ~fades t ls q =
+and filter_layers obj ~hit ~caustic ~fades t ls q warps =
   let c =
     Array.fold_left
       (fun (c : Rgb.t) (s : surface) ->
         let f = match s.paint with Fixed -> s.filcol | Varying at -> (at (hit s) q).filcol in
-        Rgb.make (f32 (c.r *. f.r)) (f32 (c.g *. f.g)) (f32 (c.b *. f.b)))
+        let c = Rgb.make (f32 (c.r *. f.r)) (f32 (c.g *. f.g)) (f32 (c.b *. f.b)) in
+        match caustic with
+        | None -> c
+        | Some k ->
+            let k = k s q warps in
+            Rgb.make (f32 (c.r *. k)) (f32 (c.g *. k)) (f32 (c.b *. k)))
       Rgb.white ls
   in
   let c = if fades then Optics.fade obj t c else c in
   { r = c.r; g = c.g; b = c.b; filter = 1. }
+
+(* Faked caustics (ComputeShadowTexture): a layer lets through 1 + |N·L|^caustics times more,
+   N the layer's normal at the crossing [q] (the shape's, turned against the shadow ray [l], bent by
+   the layer's normal pattern in the space of the patterned textures around it) *)
+let caustic ctx (obj : obj) part (q : Vec.t) (l : Vec.t) =
+  let sc = ctx.scene in
+  let raw = Shape.normal obj part q in
+  let raw = if Vec.dot raw l > 0. then Vec.neg raw else raw in
+  fun (s : surface) (p : Vec.t) warps ->
+    let n =
+      match s.bump with
+      | Smooth -> raw
+      | Bumpy nm ->
+          let uv = if s.needs_uv then Shape.uv obj part q else Vec.zero in
+          let wn = List.fold_left (fun v ws -> Normals.warp_normal ws ~keep_scale:false v) raw warps in
+          let pn = Normals.perturb ~facets:sc.facets sc.noise_generator nm p { Patterns.normal = raw; dir = l; uv } wn in
+          List.fold_right (fun ws v -> Normals.unwarp_normal ws ~keep_scale:false v) warps (Normals.layer_normal nm pn)
+    in
+    1.0 +. Float.pow (Float.abs (Vec.dot n l)) obj.caustics
 
 (* The walk of a shadow ray from [o] along [l] towards the light at [lp], [remaining] from it,
    through non-opaque occluders; [first] on the first segment, whose opaque blocker is cached. *)
@@ -98,7 +124,7 @@ let rec walk ctx ~slot (p : Vec.t) (lp : Vec.t) lo first (o : Vec.t) (l : Vec.t)
       let hit (s : surface) = if s.needs_uv then { Patterns.no_hit with uv = Shape.uv obj part q } else Patterns.no_hit in
       let f =
         match tex with
-        | Plain sf when not obj.uv_mapped ->
+        | Plain sf when (not obj.uv_mapped) && obj.caustics = 0. ->
             (* §4, §17.8: a patterned pigment is evaluated where the shadow ray crosses it *)
             let f = match sf.paint with Fixed -> sf.filcol | Varying at -> (at (hit sf) q).filcol in
             if fades then Optics.fade obj t f else f
@@ -106,7 +132,8 @@ let rec walk ctx ~slot (p : Vec.t) (lp : Vec.t) lo first (o : Vec.t) (l : Vec.t)
             (* ComputeShadowColour: the filter colour, weighed in by its filter channel; an
                object's uv_mapping evaluates its textures at the crossing's (u, v, 0) *)
             let uv () = Shape.uv obj part q in
-            let c = filter obj ~hit ~uv ~fades t tex (if obj.uv_mapped then uv () else q) in
+            let caustic = if obj.caustics = 0. then None else Some (caustic ctx obj part q l) in
+            let c = filter obj ~hit ~uv ~caustic ~fades t tex (if obj.uv_mapped then uv () else q) [] in
             Rgb.make (f32 (c.r *. c.filter)) (f32 (c.g *. c.filter)) (f32 (c.b *. c.filter))
       in
       let lc = Rgb.make (f32 (lc.r *. f.r)) (f32 (lc.g *. f.g)) (f32 (lc.b *. f.b)) in

@@ -20,6 +20,7 @@ let finish =
     conserve_energy = false;
     refraction = 1.;
     legacy_ior = None;
+    legacy_caustics = None;
     irid = 0.;
     irid_thickness = 0.;
     irid_turb = 0.;
@@ -28,4 +29,4 @@ let finish =
 
 let layer = { pigment = Solid Colour.black; normal = None; finish }
 let texture = Layers [ layer ]
-let interior = { ior = 1.; fade_distance = 0.; fade_power = 0.; fade_colour = Rgb.black }
+let interior = { ior = 1.; fade_distance = 0.; fade_power = 0.; fade_colour = Rgb.black; caustics = 0. }

@@ -46,6 +46,7 @@ let finish (f : finish) =
   add f.conserve_energy "conserve_energy";
   add (f.refraction <> d.refraction) ("refraction " ^ num f.refraction);
   (match f.legacy_ior with Some i -> add true ("ior " ^ num i) | None -> ());
+  (match f.legacy_caustics with Some c -> add true ("caustics " ^ num c) | None -> ());
   add (f.crand <> 0.) ("crand " ^ num f.crand);
   add (f.irid <> 0.) (Printf.sprintf "irid { %s thickness %s turbulence %s }" (num f.irid) (num f.irid_thickness) (num f.irid_turb));
   String.concat " " (List.rev !items)
@@ -215,10 +216,11 @@ let rec texture (t : texture) =
 let interior (i : interior) =
   if i = Defaults.interior then ""
   else
-    Printf.sprintf "\n  interior { ior %s%s }" (num i.ior)
+    Printf.sprintf "\n  interior { ior %s%s%s }" (num i.ior)
       (if i.fade_distance <> 0. || i.fade_power <> 0. then
          Printf.sprintf " fade_distance %s fade_power %s fade_color %s" (num i.fade_distance) (num i.fade_power) (rgb i.fade_colour)
        else "")
+      (if i.caustics <> 0. then Printf.sprintf " caustics %s" (num (i.caustics /. 45.)) else "")
 
 let trans = function None -> "" | Some t -> "\n  " ^ matrix t
 

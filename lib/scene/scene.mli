@@ -217,6 +217,7 @@ type finish = {
   conserve_energy : bool;
   refraction : float;  (** legacy [refraction]: the transmitted-colour factor, 1 by default (§2.7) *)
   legacy_ior : float option;  (** legacy [finish { ior }], copied into the interior (§2.7) *)
+  legacy_caustics : float option;  (** legacy [finish { caustics }], copied into the interior as written *)
   irid : float;  (** [irid { amount … }]: the thin-film interference's amount, 0 without *)
   irid_thickness : float;  (** the film's thickness *)
   irid_turb : float;  (** the film thickness's turbulence (the x of the vector written) *)
@@ -280,7 +281,13 @@ type texture =
 and texture_entry = { tvalue : float; ttexture : texture }
 
 (** An interior (§6, §10.1). *)
-type interior = { ior : float; fade_distance : float; fade_power : float; fade_colour : Rgb.t }
+type interior = {
+  ior : float;
+  fade_distance : float;
+  fade_power : float;
+  fade_colour : Rgb.t;
+  caustics : float;  (** faked caustics: as stored, 45 times the value written (single precision); 0 without *)
+}
 
 (** Geometry. A plane is the set of points P with [normal]·P = [offset], [normal] unit length (§2.3).
     Transforms (§14.4) are baked into a shape's parameters while it has no [trans]; a shape that

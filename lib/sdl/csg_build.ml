@@ -29,8 +29,9 @@ let rec invert (o : V.obj) : V.obj =
 let resolved st (o : V.obj) =
   let texture = match o.texture with Some t -> t | None -> Scene.Layers [ st.default_texture ] in
   let interior = match o.interior with Some i -> i | None -> Defaults.interior in
-  let legacy_ior = match texture with Layers (l :: _) -> l.finish.legacy_ior | Layers [] | Texture_pattern _ | Uv_mapped _ | Material_map _ -> None in
-  let interior = match legacy_ior with Some ior -> { interior with ior } | None -> interior in
+  let top = match texture with Layers (l :: _) -> Some l.finish | Layers [] | Texture_pattern _ | Uv_mapped _ | Material_map _ -> None in
+  let interior = match Option.bind top (fun f -> f.legacy_ior) with Some ior -> { interior with ior } | None -> interior in
+  let interior = match Option.bind top (fun f -> f.legacy_caustics) with Some caustics -> { interior with caustics } | None -> interior in
   let interior = if interior.ior = 0. then { interior with ior = 1. } else interior in
   (texture, interior)
 

@@ -517,6 +517,10 @@ let parse_finish st (base : Scene.finish) : Scene.finish =
         advance st;
         warn st loc "refraction value unnecessary to turn on refraction; to attenuate, the fade_power and fade_distance keywords should be specified in 'interior{...}'";
         loop { f with refraction = parse_float st }
+    | Ident "caustics" ->
+        advance st;
+        warn st loc "caustics value should be specified in 'interior{...}' statement";
+        loop { f with legacy_caustics = Some (Precision.f32 (parse_float st)) }
     | Ident "ior" ->
         advance st;
         warn st loc "index of refraction value should be specified in 'interior{...}' statement";
@@ -544,6 +548,7 @@ let parse_interior st (base : Scene.interior) : Scene.interior =
     match peek st with
     | RBrace -> advance st; i
     | Ident "ior" -> advance st; loop { i with ior = parse_float st }
+    | Ident "caustics" -> advance st; loop { i with caustics = Precision.f32 (parse_float st *. 45.0) }
     | Ident "fade_distance" -> advance st; loop { i with fade_distance = parse_float st }
     | Ident "fade_power" -> advance st; loop { i with fade_power = parse_float st }
     | Ident ("fade_color" | "fade_colour") -> advance st; loop { i with fade_colour = parse_rgb st "fade_color" }
