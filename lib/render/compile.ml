@@ -158,10 +158,10 @@ let rec texture_opaque (t : Scene.texture) =
   match t with
   | Layers ls -> List.exists (fun (l : Scene.layer) -> pigment_opaque l.pigment) ls
   | Material_map { mimage; materials; _ } -> (not mimage.once) && Array.for_all texture_opaque materials
-  | Texture_pattern _ | Uv_mapped _ -> false
+  | Texture_pattern _ | Uv_mapped _ | Cutaway -> false
 
 (* the top layer's finish, which holds the legacy refraction and ior (§2.7) *)
-let top_finish (t : Scene.texture) = match t with Layers (l :: _) -> Some l.finish | Layers [] | Texture_pattern _ | Uv_mapped _ | Material_map _ -> None
+let top_finish (t : Scene.texture) = match t with Layers (l :: _) -> Some l.finish | Layers [] | Texture_pattern _ | Uv_mapped _ | Material_map _ | Cutaway -> None
 
 (* Objects that share a layer (a declared texture) share its compiled surface. *)
 module Layer_memo = Hashtbl.Make (struct
@@ -205,6 +205,7 @@ let scene (s : Scene.t) : Compiled.t =
           (blended ~noise tpat (Array.map (fun (e : Scene.texture_entry) -> f32 e.tvalue) tmap)
              (Array.map (fun (e : Scene.texture_entry) -> texture_of e.ttexture) tmap))
     | Uv_mapped { uwarps; inner } -> Uv_mapped { uinner = texture_of inner; uwarps }
+    | Cutaway -> Cutaway
     | Material_map { mimage; mwarps; materials } ->
         let count = Array.length materials in
         Chosen
@@ -254,7 +255,7 @@ let scene (s : Scene.t) : Compiled.t =
               && Option.fold ~none:true ~some:texture_opaque o.interior_texture
               && Array.for_all texture_opaque face_textures
         in
-        let clear = match tex with Plain sf -> sf.transparent | Layered _ | Blended _ | Uv_mapped _ | Chosen _ -> not (texture_opaque o.texture) in
+        let clear = match tex with Plain sf -> sf.transparent | Layered _ | Blended _ | Uv_mapped _ | Chosen _ | Cutaway -> not (texture_opaque o.texture) in
         let ob =
           {
             id;
@@ -267,6 +268,7 @@ let scene (s : Scene.t) : Compiled.t =
             face_texs;
             clear;
             uv_mapped = o.uv_mapped;
+            difference = o.difference;
             ior = f32 o.interior.ior;
             fade_distance = f32 o.interior.fade_distance;
             fade_power = f32 o.interior.fade_power;

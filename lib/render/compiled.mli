@@ -57,6 +57,9 @@ and texture =
   | Chosen of { cwarp : Vec.t -> Vec.t; choose : Vec.t -> int; textures : texture array; cwarps : Scene.warp list }
       (** a material_map: at the point warped by [cwarp], [choose] picks one of [textures],
           evaluated there; [cwarps] bend their normals *)
+  | Cutaway
+      (** the textures of the members of the hit's top-level CSG that the point lies in, weighed
+          equally (Determine_Textures); a difference's first member's *)
   | Uv_mapped of { uinner : texture; uwarps : Scene.warp list }
       (** [uinner] evaluated at the hit's (u, v, 0), its normals bent in the space of [uwarps] *)
 
@@ -119,6 +122,7 @@ and obj = {
   clear : bool;
       (** its own texture may let light through (not POV-Ray's Test_Opacity): a CSG whose texture
           is clear is not kept in the shadow cache *)
+  difference : bool;  (** a CSG written as [difference] (for [Cutaway]) *)
   uv_mapped : bool;  (** [uv_mapping] on the object: its textures are evaluated at the hit's (u, v, 0) *)
   ior : float;
   fade_distance : float;

@@ -44,6 +44,7 @@ let member ~inverted shape =
     face_texs = [||];
     clear = false;
     uv_mapped = false;
+    difference = false;
     ior = 1.;
     fade_distance = 0.;
     fade_power = 0.;

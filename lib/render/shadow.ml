@@ -25,6 +25,7 @@ let robust_margin (p : Vec.t) (lp : Vec.t) remaining = (1e-9 *. remaining) +. Ro
 let rec filter obj ~hit ~uv ~caustic ~fades t (tex : texture) (q : Vec.t) warps : filtered =
   match tex with
   | Uv_mapped u -> filter obj ~hit ~uv ~caustic ~fades t u.uinner (uv ()) (warps @ [ u.uwarps ])
+  | Cutaway -> { r = 0.; g = 0.; b = 0.; filter = 0. } (* never inside another texture *)
   | Chosen c ->
       let tq = c.cwarp q in
       filter obj ~hit ~uv ~caustic ~fades t c.textures.(c.choose tq) tq (warps @ [ c.cwarps ])
@@ -128,6 +129,23 @@ let rec walk ctx ~slot (p : Vec.t) (lp : Vec.t) lo first (o : Vec.t) (l : Vec.t)
             (* §4, §17.8: a patterned pigment is evaluated where the shadow ray crosses it *)
             let f = match sf.paint with Fixed -> sf.filcol | Varying at -> (at (hit sf) q).filcol in
             if fades then Optics.fade obj t f else f
+        | Cutaway ->
+            (* ComputeShadowColour: the members' filters weighed; none found stops the light *)
+            let caustic = if obj.caustics = 0. then None else Some (caustic ctx obj part q l) in
+            let uv () = Shape.uv obj part q in
+            let q' = if obj.uv_mapped then uv () else q in
+            let c =
+              List.fold_left
+                (fun (acc : filtered) (w, tex) ->
+                  if w < sc.adc_bailout then acc
+                  else
+                    let c = filter obj ~hit ~uv ~caustic ~fades t tex q' [] in
+                    { r = f32 (acc.r +. f32 (w *. c.r)); g = f32 (acc.g +. f32 (w *. c.g)); b = f32 (acc.b +. f32 (w *. c.b)); filter = f32 (acc.filter +. f32 (w *. c.filter)) })
+                { r = 0.; g = 0.; b = 0.; filter = 0. }
+                (Surfaces.cutaway ctx.stack sc obj q)
+            in
+            if Float.abs c.filter < sc.adc_bailout then Rgb.black
+            else Rgb.make (f32 (c.r *. c.filter)) (f32 (c.g *. c.filter)) (f32 (c.b *. c.filter))
         | Plain _ | Layered _ | Blended _ | Uv_mapped _ | Chosen _ ->
             (* ComputeShadowColour: the filter colour, weighed in by its filter channel; an
                object's uv_mapping evaluates its textures at the crossing's (u, v, 0) *)

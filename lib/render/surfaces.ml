@@ -16,3 +16,23 @@ let around (values : float array) v =
     let rec go i = if v > values.(i) then go (i + 1) else i in
     let c = go 0 in
     if v = values.(c) || c = 0 then (c, c) else (c - 1, c)
+
+(* CSG::Determine_Textures: the textures of the members of [c] that [p] lies in, in member order,
+   each CSG member's own found the same way; those found at one level weighed equally (a
+   difference: its first member's alone) *)
+let rec around_point stack (c : Compiled.obj) (p : Vec.t) : (float * Compiled.texture) list =
+  let own (m : Compiled.obj) =
+    match m.shape with
+    | Csg _ -> around_point stack m p
+    | _ -> ( match m.tex with Cutaway -> [] | t -> [ (1., t) ])
+  in
+  match c.shape with
+  | Csg { members; _ } when c.difference ->
+      if Array.length members > 0 && Shape.inside_member stack members.(0) p then own members.(0) else []
+  | Csg { members; _ } ->
+      let found = List.concat_map (fun m -> if Shape.inside_member stack m p then own m else []) (Array.to_list members) in
+      let w = Precision.f32 (1. /. Float.max (float_of_int (List.length found)) 1.) in
+      List.map (fun (_, t) -> (w, t)) found
+  | _ -> []
+
+let cutaway stack (sc : Compiled.t) (obj : Compiled.obj) p = around_point stack sc.objects.(obj.top) p

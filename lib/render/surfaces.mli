@@ -15,3 +15,9 @@ val around : float array -> float -> int * int
     Search_Blend_Map finds them: the last entry alone from its value on, else the first entry whose
     value is not below [v] and the one before it, or that entry alone when [v] equals its value or
     it is the first. *)
+
+val cutaway : float array -> Compiled.t -> Compiled.obj -> Vec.t -> (float * Compiled.texture) list
+(** [cutaway stack sc obj p] is what a member [obj] with a [Cutaway] texture shows at [p] (POV-Ray's
+    Determine_Textures on the hit's top-level CSG): the textures of the members [p] lies in, in
+    member order, a CSG member's found the same way, each weighed 1/n for the n found at its level;
+    in a difference only its first member's. [stack] is traversal room for the Inside tests. *)

@@ -102,6 +102,17 @@ and shade ctx ~reflected obj part depth ~level ~weight ~interiors (o : Vec.t) (d
     let e = if ctx.robust then Robust.error_bound o p obj.mag else 0. in
     match tex with
     | Plain s when not obj.uv_mapped -> plain ctx ~reflected obj part s p n ng e depth ~level ~weight ~interiors d
+    | Cutaway ->
+        (* ComputeTextureColour: the textures of the members around the point, weighed *)
+        let at = { hobj = obj; hpart = part; hp = p; hn = n; hng = ng; he = e; hd = d; hdepth = depth; hlevel = level; hweight = weight; hinteriors = interiors; hreflected = reflected; memo = Lighting.memo sc; pnormal = n } in
+        let q = if obj.uv_mapped then Shape.uv obj part p else p in
+        List.fold_left
+          (fun (acc : result) (w, t) ->
+            if w < sc.adc_bailout then acc
+            else
+              let c = texture_colour ctx at t q [] in
+              { r = f32 (acc.r +. f32 (w *. c.r)); g = f32 (acc.g +. f32 (w *. c.g)); b = f32 (acc.b +. f32 (w *. c.b)); tr = f32 (acc.tr +. f32 (w *. c.tr)) })
+          black (Surfaces.cutaway ctx.stack sc obj p)
     | Plain _ | Layered _ | Blended _ | Uv_mapped _ | Chosen _ ->
         let at = { hobj = obj; hpart = part; hp = p; hn = n; hng = ng; he = e; hd = d; hdepth = depth; hlevel = level; hweight = weight; hinteriors = interiors; hreflected = reflected; memo = Lighting.memo sc; pnormal = n } in
         (* an object's uv_mapping: every texture is evaluated at the hit's (u, v, 0) *)
@@ -176,6 +187,7 @@ and texture_colour ctx at tex q warps : result =
   match tex with
   | Plain s -> lighted ctx at [| s |] q warps
   | Layered ls -> lighted ctx at ls q warps
+  | Cutaway -> black (* never inside another texture *)
   | Chosen { cwarp; choose; textures; cwarps } ->
       let tq = cwarp q in
       texture_colour ctx at textures.(choose tq) tq (warps @ [ cwarps ])

@@ -210,6 +210,7 @@ let rec texture (t : texture) =
       Printf.sprintf "texture { material_map { %s %s }%s }" (bitmap mimage)
         (String.concat " " (Array.to_list (Array.map texture materials)))
         (String.concat "" (List.rev_map (fun w -> " " ^ warp w) mwarps))
+  | Cutaway -> "texture { } // cutaway: the textures of the members around"
   | Uv_mapped { uwarps; inner } ->
       Printf.sprintf "texture { uv_mapping %s%s }" (texture inner) (String.concat "" (List.rev_map (fun w -> " " ^ warp w) uwarps))
 

@@ -55,6 +55,7 @@ let transform_texture (t : Scene.texture) m : Scene.texture =
   match t with
   | Layers ls -> Layers (List.map (fun l -> transform_layer l m) ls)
   | Texture_pattern p -> Texture_pattern { p with tpat = { p.tpat with warps = Pigment.transform_warps p.tpat.warps m } }
+  | Cutaway -> Cutaway
   | Uv_mapped u -> Uv_mapped { u with uwarps = Pigment.transform_warps u.uwarps m }
   | Material_map mm -> Material_map { mm with mwarps = Pigment.transform_warps mm.mwarps m }
 

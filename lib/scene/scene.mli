@@ -277,6 +277,11 @@ type texture =
           applied to it since ([uwarps]) move no point, they only bend the normals of [inner] (as
           every texture pattern around a normal does) *)
 
+  | Cutaway
+      (** no texture of its own in an intersection or difference with [cutaway_textures]: the
+          textures of the members of its top-level CSG that the point lies in (a difference: its
+          first member's) *)
+
 (** One entry of a texture map: its value (single precision) and texture. *)
 and texture_entry = { tvalue : float; ttexture : texture }
 
@@ -372,6 +377,7 @@ and obj = {
   interior_texture : texture option;  (** the texture seen where a ray meets the surface from inside *)
   uv_mapped : bool;
       (** the object's [uv_mapping]: all its textures are evaluated at the hit's (u, v, 0) *)
+  difference : bool;  (** a CSG written as [difference]: [Cutaway] takes its first member's texture *)
   interior : interior;
   no_shadow : bool;
   loc : Loc.t;  (** where the object was written *)

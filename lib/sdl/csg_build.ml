@@ -29,7 +29,7 @@ let rec invert (o : V.obj) : V.obj =
 let resolved st (o : V.obj) =
   let texture = match o.texture with Some t -> t | None -> Scene.Layers [ st.default_texture ] in
   let interior = match o.interior with Some i -> i | None -> Defaults.interior in
-  let top = match texture with Layers (l :: _) -> Some l.finish | Layers [] | Texture_pattern _ | Uv_mapped _ | Material_map _ -> None in
+  let top = match texture with Layers (l :: _) -> Some l.finish | Layers [] | Texture_pattern _ | Uv_mapped _ | Material_map _ | Cutaway -> None in
   let interior = match Option.bind top (fun f -> f.legacy_ior) with Some ior -> { interior with ior } | None -> interior in
   let interior = match Option.bind top (fun f -> f.legacy_caustics) with Some caustics -> { interior with caustics } | None -> interior in
   let interior = if interior.ior = 0. then { interior with ior = 1. } else interior in
@@ -50,6 +50,7 @@ let scene_obj (o : V.obj) ?(no_shadow = o.no_shadow) ?(interior_texture = o.inte
     double_illuminate = o.double_illuminate;
     looks_like = o.looks_like;
     uv_mapped = o.uv_mapped;
+    difference = o.difference;
   }
 
 let finish_prim st (o : V.obj) shape : Scene.obj =
@@ -62,20 +63,31 @@ let member_interior (c : V.obj) parent =
   | Some i -> ((if i.ior = 0. then { i with Scene.ior = 1. } else i), true)
   | None -> (parent, false)
 
-(* A CSG kept whole (§16.4, §16.5, §19.1): every member gets the parent's texture unless it has its
-   own and shares the parent's interior unless it has its own; the parent's no_shadow goes to every
-   member (only the top level's is ever tested); lights join the scene's lights. *)
-let rec kept_obj st ~texture ?interior_texture ~interior (o : V.obj) : Scene.obj =
+(* TEXTURED_OBJECT: the object or one of its members has a texture *)
+let rec textured (o : V.obj) =
+  o.texture <> None || o.interior_texture <> None
+  || match o.shape with Prim _ -> false | Csg { members; _ } -> List.exists (function V.Member_obj c -> textured c | V.Member_light _ -> false) members
+
+(* A CSG kept whole (§16.4, §16.5, §19.1), as Post_Process passes textures down: an object without
+   a texture takes its parent's (none, when the parent has none); one still without is given the
+   default texture, unless a member of it has a texture or its parent is an intersection with
+   cutaway_textures: then it has none, and shows the textures around it ([Cutaway]). Every member
+   shares the parent's interior unless it has its own; the parent's no_shadow goes to every member
+   (only the top level's is ever tested); lights join the scene's lights. *)
+let rec kept_obj st ~texture ~cut_parent ?interior_texture ~interior (o : V.obj) : Scene.obj =
   let interior_texture = match o.interior_texture with Some _ -> o.interior_texture | None -> interior_texture in
+  let texture = match o.texture with Some _ -> o.texture | None -> texture in
+  let texture = match texture with Some _ -> texture | None -> if textured o || cut_parent then None else Some (Scene.Layers [ st.default_texture ]) in
+  let shown = match texture with Some t -> t | None -> Scene.Cutaway in
   match o.shape with
-  | Prim shape -> scene_obj o ~interior_texture shape texture interior
+  | Prim shape -> scene_obj o ~interior_texture shape shown interior
   | Csg { kind; members; split = _ } ->
+      let cut_parent = kind = Intersection && o.cutaway in
       let members =
         List.filter_map
           (function
             | V.Member_light l -> count_object st o.oloc; st.lights <- l :: st.lights; None
             | V.Member_obj c ->
-                let texture = match c.texture with Some t -> t | None -> texture in
                 let c = match c.texture with Some _ -> c | None -> { c with uv_mapped = c.uv_mapped || o.uv_mapped } in
                 let interior, own_interior = member_interior c interior in
                 (* §16.5: the flags pass down to every member *)
@@ -85,9 +97,10 @@ let rec kept_obj st ~texture ?interior_texture ~interior (o : V.obj) : Scene.obj
                     no_shadow = c.no_shadow || o.no_shadow;
                     no_image = c.no_image || o.no_image;
                     no_reflection = c.no_reflection || o.no_reflection;
+                    cutaway = c.cutaway || o.cutaway;
                   }
                 in
-                Some { Scene.mobj = kept_obj st ~texture ?interior_texture ~interior c; inverted = c.inverted; own_interior })
+                Some { Scene.mobj = kept_obj st ~texture ~cut_parent ?interior_texture ~interior c; inverted = c.inverted; own_interior })
           members
       in
       (* §16.4: a union whose members all have no_shadow has it too *)
@@ -95,7 +108,7 @@ let rec kept_obj st ~texture ?interior_texture ~interior (o : V.obj) : Scene.obj
         o.no_shadow
         || (match kind with Union -> members <> [] && List.for_all (fun (m : Scene.member) -> m.mobj.no_shadow) members | Merge | Intersection | Clipped -> false)
       in
-      scene_obj o ~no_shadow ~interior_texture (Csg { kind; members }) texture interior
+      scene_obj o ~no_shadow ~interior_texture (Csg { kind; members }) shown interior
 
 (* An object entering the scene (§16.4, §16.5): a union that may be split is dissolved, its members
    without a texture or interior take the union's, and its no_shadow goes to every member; its
@@ -132,6 +145,6 @@ let rec add_object st (o : V.obj) =
         ms
   | Csg { kind = Union | Merge | Intersection | Clipped; members = _; split = _ } ->
       count_object st o.oloc;
-      let texture, interior = resolved st o in
-      let obj = kept_obj st ~texture ~interior o in
+      let _, interior = resolved st o in
+      let obj = kept_obj st ~texture:None ~cut_parent:false ~interior o in
       st.objects <- obj :: st.objects

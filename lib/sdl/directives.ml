@@ -240,7 +240,7 @@ let directive st d loc =
             (match Texture_reader.parse st with
             | Layers [ l ] -> st.default_texture <- l
             | Layers _ -> Error.raise_at l "the default texture cannot be layered"
-            | Texture_pattern _ | Uv_mapped _ | Material_map _ -> Error.raise_at l "the default texture cannot be a patterned texture, a material map or tiles");
+            | Texture_pattern _ | Uv_mapped _ | Material_map _ | Cutaway -> Error.raise_at l "the default texture cannot be a patterned texture, a material map or tiles");
             loop ()
         | Ident "pigment" -> advance st; st.default_texture <- { st.default_texture with pigment = parse_pigment st st.default_texture.pigment }; loop ()
         | Ident "finish" -> advance st; st.default_texture <- { st.default_texture with finish = parse_finish st st.default_texture.finish }; loop ()

@@ -193,7 +193,7 @@ let rec parse_object st : V.obj =
         else List.mapi (fun i m -> match m with V.Member_obj o when i > 0 -> V.Member_obj (invert o) | V.Member_obj _ | V.Member_light _ -> m) ms
       in
       let kind : Scene.csg_kind = match kw with "union" -> Union | "merge" -> Merge | _ -> Intersection in
-      parse_object_mods st (new_obj_of (V.Csg { kind; members = ms; split = kind = Union }) loc) kw
+      parse_object_mods st { (new_obj_of (V.Csg { kind; members = ms; split = kind = Union }) loc) with difference = kw = "difference" } kw
   | Ident "light_source" -> (
       match parse_light_source st with Lights.Lone l -> new_obj_of (light_union l) loc | Shaped o -> o)
   | Ident s -> (
@@ -216,7 +216,7 @@ and parse_object_mods st (o : V.obj) what : V.obj =
     | None -> { o with texture = Some (Scene.Layers [ f st.default_texture ]) }
     | Some (Layers (top :: below)) -> { o with texture = Some (Layers (f top :: below)) }
     | Some (Layers []) -> o
-    | Some (Texture_pattern _ | Uv_mapped _ | Material_map _) -> Error.raise_at loc "cannot layer over a patterned texture"
+    | Some (Texture_pattern _ | Uv_mapped _ | Material_map _ | Cutaway) -> Error.raise_at loc "cannot layer over a patterned texture"
   in
   let rec loop (o : V.obj) =
     let loc = peek_loc st in
@@ -229,6 +229,12 @@ and parse_object_mods st (o : V.obj) what : V.obj =
     | Ident "finish" -> advance st; loop (edit loc o (fun t -> { t with finish = parse_finish st t.finish }))
     | Ident "normal" -> advance st; loop (edit loc o (fun t -> { t with normal = Some (parse_normal st t.normal) }))
     | Ident "texture" -> advance st; loop { o with texture = Some (Texture_reader.link st loc o.texture (Texture_reader.parse st)) }
+    | Ident "cutaway_textures" ->
+        advance st;
+        (match o.shape with
+        | Csg { kind = Intersection; _ } -> ()
+        | Csg { kind = Union | Merge | Clipped; _ } | Prim _ -> Error.raise_at loc "cutaway_textures can only be used with intersection and difference");
+        loop { o with cutaway = true }
     | Ident "uv_mapping" ->
         advance st;
         if o.texture <> None then Error.raise_at loc "uv_mapping must be specified before texture";

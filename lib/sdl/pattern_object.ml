@@ -24,6 +24,7 @@ let rec scene_obj st (o : V.obj) : Scene.obj =
       double_illuminate = o.double_illuminate;
       looks_like = o.looks_like;
       uv_mapped = o.uv_mapped;
+      difference = o.difference;
     }
   in
   let member (c : V.obj) = { Scene.mobj = scene_obj st { c with inverted = false }; inverted = c.inverted; own_interior = c.interior <> None } in

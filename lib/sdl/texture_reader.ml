@@ -24,14 +24,14 @@ let convert_layer (l : Scene.layer) = { l with pigment = filter_to_transmit l.pi
 let link st loc (old : Scene.texture option) (nw : Scene.texture) : Scene.texture =
   let legacy = st.version <= 310 in
   match (old, nw) with
-  | Some (Texture_pattern _ | Uv_mapped _ | Material_map _), _ -> Error.raise_at loc "cannot layer over a patterned texture"
+  | Some (Texture_pattern _ | Uv_mapped _ | Material_map _ | Cutaway), _ -> Error.raise_at loc "cannot layer over a patterned texture"
   | None, Layers ls when legacy ->
       (* every layer with one below it *)
       let n = List.length ls in
       Layers (List.mapi (fun i l -> if i < n - 1 then convert_layer l else l) ls)
   | None, _ -> nw
   | Some (Layers below), Layers ls -> Layers ((if legacy then List.map convert_layer ls else ls) @ below)
-  | Some (Layers _), (Texture_pattern _ | Uv_mapped _ | Material_map _) -> Error.raise_at loc "cannot layer a patterned texture over another"
+  | Some (Layers _), (Texture_pattern _ | Uv_mapped _ | Material_map _ | Cutaway) -> Error.raise_at loc "cannot layer a patterned texture over another"
 
 let default_texture st : Scene.texture = Layers [ st.default_texture ]
 let transform_keyword = function Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") -> true | _ -> false
@@ -49,7 +49,7 @@ let rec transforms st ~close (t : Scene.texture) =
    or a patterned texture. *)
 let rec parse_body st ~close : Scene.texture =
   match Materials.ident_of_kind st (function V.Texture t -> Some t | _ -> None) with
-  | Some ((Texture_pattern _ | Uv_mapped _ | Material_map _) as t) -> transforms st ~close t
+  | Some ((Texture_pattern _ | Uv_mapped _ | Material_map _ | Cutaway) as t) -> transforms st ~close t
   | Some (Layers ls) -> plain st ~close ls true
   | None -> plain st ~close [ st.default_texture ] false
 

@@ -5,6 +5,8 @@ type obj = {
   texture : Scene.texture option;
   interior_texture : Scene.texture option;
   uv_mapped : bool;  (** [uv_mapping]: its textures are evaluated at the hit's (u, v, 0), and transforms leave them *)
+  difference : bool;  (** a CSG written as [difference] *)
+  cutaway : bool;  (** [cutaway_textures] (an intersection or difference): members without a texture show those of the members around them *)
   interior : Scene.interior option;
   no_shadow : bool;
   oloc : Loc.t;

@@ -7,7 +7,7 @@ open Helpers
 let v37 = "#version 3.7; global_settings { assumed_gamma 1 }\n"
 let obj text = the_object (scene (v37 ^ text))
 let red_of (l : Scene.layer) = match l.pigment with Solid c | Solid_placed { colour = c; _ } -> c.red | Pattern _ -> nan
-let layers (o : Scene.obj) = match o.texture with Layers ls -> ls | Texture_pattern _ | Uv_mapped _ | Material_map _ -> Alcotest.fail "a patterned texture"
+let layers (o : Scene.obj) = match o.texture with Layers ls -> ls | _ -> Alcotest.fail "a patterned texture"
 
 let test_layers () =
   (* the last written on top *)
@@ -30,7 +30,7 @@ let test_layers () =
       float_eq ~eps:1e-7 "bottom filter kept" 0.5 (c bottom).filter
   | _ -> Alcotest.fail "two layers"
 
-let entries (o : Scene.obj) = match o.texture with Texture_pattern { tmap; _ } -> tmap | Layers _ | Uv_mapped _ | Material_map _ -> Alcotest.fail "a plain texture"
+let entries (o : Scene.obj) = match o.texture with Texture_pattern { tmap; _ } -> tmap | _ -> Alcotest.fail "a plain texture"
 
 let test_patterned () =
   let m = entries (obj "plane { y, 0 texture { gradient x texture_map { [0.2 pigment { rgb 1 }] [0.7 pigment { rgb 0.5 }] } } }") in
