@@ -75,7 +75,25 @@ type memo = { tested : bool array; seen : Rgb.t array }
 
 let memo (sc : Compiled.t) = { tested = Array.make (Array.length sc.lights) false; seen = Array.make (Array.length sc.lights) Rgb.black }
 
-let light_terms ctx ?memo ~light ~slot ~di (s : surface) (p : Vec.t) (n : Vec.t) ng e (d : Vec.t) interiors (lt : light) : Rgb.t =
+(* no cache: every test sends its feeler (a plain texture tests each light once anyway) *)
+let no_memo = { tested = [||]; seen = [||] }
+
+(* the light colour cache of ComputeOneDiffuseLight: one feeler per light for every layer and
+   entry of the texture shaded at this point (kept out of [light_terms], which stays small enough
+   to be inlined) *)
+let cached_feeler ctx (m : memo) light ~slot p ng e l dist interiors lc =
+  if m.tested.(light) then m.seen.(light)
+  else begin
+    let c = Shadow.feeler ctx ~slot p ng e l dist interiors lc in
+    m.tested.(light) <- true;
+    m.seen.(light) <- c;
+    c
+  end
+
+(* crand: POV_rand times crand off the diffuse intensity [i] *)
+let crand_intensity ctx (s : surface) i = i -. (random ctx.Context.scene.crand *. s.crand)
+
+let[@inline] light_terms ctx ~memo ~light ~slot ~di (s : surface) (p : Vec.t) (n : Vec.t) ng e (d : Vec.t) interiors (lt : light) : Rgb.t =
   let acc = Rgb.black in
   let lvx = lt.lx -. p.x and lvy = lt.ly -. p.y and lvz = lt.lz -. p.z in
   let dist = sqrt ((lvx *. lvx) +. (lvy *. lvy) +. (lvz *. lvz)) in
@@ -101,18 +119,8 @@ let light_terms ctx ?memo ~light ~slot ~di (s : surface) (p : Vec.t) (n : Vec.t)
       let lc =
         if lt.shadowless || dist <= 0. then lc
         else
-          match memo with
-          | None -> Shadow.feeler ctx ~slot p ng e l dist interiors lc
-          | Some m ->
-              (* the light colour cache of ComputeOneDiffuseLight: one feeler per light for every
-                 layer and entry of the texture shaded at this point *)
-              if m.tested.(light) then m.seen.(light)
-              else begin
-                let c = Shadow.feeler ctx ~slot p ng e l dist interiors lc in
-                m.tested.(light) <- true;
-                m.seen.(light) <- c;
-                c
-              end
+          if Array.length memo.tested = 0 then Shadow.feeler ctx ~slot p ng e l dist interiors lc
+          else cached_feeler ctx memo light ~slot p ng e l dist interiors lc
       in
       if Float.abs lc.r <= epsilon && Float.abs lc.g <= epsilon && Float.abs lc.b <= epsilon then Rgb.black
       else
@@ -121,7 +129,7 @@ let light_terms ctx ?memo ~light ~slot ~di (s : surface) (p : Vec.t) (n : Vec.t)
           if s.diffuse > 0. then
             let anl = Float.abs nl in
             let i = (if s.brilliance = 1. then anl else Float.pow anl s.brilliance) *. (s.diffuse *. s.att) in
-            let i = if s.crand > 0. then i -. (random ctx.Context.scene.crand *. s.crand) else i in
+            let i = if s.crand > 0. then crand_intensity ctx s i else i in
             Rgb.make
               (f32 (acc.r +. f32 (f32 (s.colour.r *. i) *. lc.r)))
               (f32 (acc.g +. f32 (f32 (s.colour.g *. i) *. lc.g)))
@@ -160,12 +168,12 @@ let light_terms ctx ?memo ~light ~slot ~di (s : surface) (p : Vec.t) (n : Vec.t)
         (* the film's interference tints what this light gave *)
         if s.irid > 0. then iridescence ctx.Context.scene s l d n p acc else acc
 
-let add_lights ctx ?memo ~level ~di s p n ng e d interiors (acc : Rgb.t) =
+let[@inline] add_lights ctx ~memo ~level ~di s p n ng e d interiors (acc : Rgb.t) =
   let lights = ctx.Context.scene.lights in
   let acc = ref acc in
   for k = 0 to Array.length lights - 1 do
     let slot = Context.cache_slot ~level k in
-    let t = light_terms ctx ?memo ~light:k ~slot ~di s p n ng e d interiors lights.(k) in
+    let t = light_terms ctx ~memo ~light:k ~slot ~di s p n ng e d interiors lights.(k) in
     let a = !acc in
     acc := Rgb.make (f32 (a.r +. t.r)) (f32 (a.g +. t.g)) (f32 (a.b +. t.b))
   done;

@@ -9,9 +9,12 @@ type memo
 val memo : Compiled.t -> memo
 (** [memo sc] is an empty cache for the lights of [sc]. *)
 
+val no_memo : memo
+(** [no_memo] is no cache at all: each test sends its feeler. *)
+
 val add_lights :
   Context.t ->
-  ?memo:memo ->
+  memo:memo ->
   level:int ->
   di:bool ->
   Compiled.surface ->
@@ -28,7 +31,7 @@ val add_lights :
     along [d] by a ray at trace [level] inside [interiors], summed in single precision the way
     POV-Ray sums them: per light first, then into the colour. [di]: the object is
     double_illuminate (§16.6, lit from behind too); [ng] and [e] place the shadow feelers' origins
-    in the robust mode. With [memo], a light's shadow feeler is sent only the first time the
+    in the robust mode. With a [memo] (not {!no_memo}), a light's shadow feeler is sent only the first time the
     light is tested at this point (the layers and entries of one texture share it); later tests
     take its colour from [memo]. *)
 

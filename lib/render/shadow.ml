@@ -96,6 +96,41 @@ let caustic ctx (obj : obj) part (q : Vec.t) (l : Vec.t) =
     in
     1.0 +. Float.pow (Float.abs (Vec.dot n l)) obj.caustics
 
+(* Whether a shadow ray along [l] meets the surface of [obj] at [q] from inside (its normal,
+   inverse counted, along the ray): it then sees the interior texture. *)
+let inside_hit (obj : obj) part q l =
+  let dn = Vec.dot (Shape.normal obj part q) l in
+  if obj.inverted then dn < 0. else dn > 0.
+
+(* ComputeShadowColour for any texture but a plain one without uv_mapping or caustics: the filter
+   colour at the crossing [q], [t] along the shadow ray [l] from its last origin. *)
+let textured ctx (obj : obj) part (q : Vec.t) (l : Vec.t) t interiors (tex : texture) : Rgb.t =
+  let sc = ctx.scene in
+  let fades = List.mem obj.iid interiors && obj.fade_power > 0. && Optics.fades obj in
+  let hit (s : surface) = if s.needs_uv then { Patterns.no_hit with uv = Shape.uv obj part q } else Patterns.no_hit in
+  let caustic = if obj.caustics = 0. then None else Some (caustic ctx obj part q l) in
+  let uv () = Shape.uv obj part q in
+  let q' = if obj.uv_mapped then uv () else q in
+  match tex with
+  | Cutaway ->
+      (* the members' filters weighed; none found stops the light *)
+      let c =
+        List.fold_left
+          (fun (acc : filtered) (w, tex) ->
+            if w < sc.adc_bailout then acc
+            else
+              let c = filter obj ~hit ~uv ~caustic ~fades t tex q' [] in
+              { r = f32 (acc.r +. f32 (w *. c.r)); g = f32 (acc.g +. f32 (w *. c.g)); b = f32 (acc.b +. f32 (w *. c.b)); filter = f32 (acc.filter +. f32 (w *. c.filter)) })
+          { r = 0.; g = 0.; b = 0.; filter = 0. }
+          (Surfaces.cutaway ctx.stack sc obj q)
+      in
+      if Float.abs c.filter < sc.adc_bailout then Rgb.black else Rgb.make (f32 (c.r *. c.filter)) (f32 (c.g *. c.filter)) (f32 (c.b *. c.filter))
+  | Plain _ | Layered _ | Blended _ | Uv_mapped _ | Chosen _ ->
+      (* the filter colour, weighed in by its filter channel; an object's uv_mapping evaluates its
+         textures at the crossing's (u, v, 0) *)
+      let c = filter obj ~hit ~uv ~caustic ~fades t tex q' [] in
+      Rgb.make (f32 (c.r *. c.filter)) (f32 (c.g *. c.filter)) (f32 (c.b *. c.filter))
+
 (* The walk of a shadow ray from [o] along [l] towards the light at [lp], [remaining] from it,
    through non-opaque occluders; [first] on the first segment, whose opaque blocker is cached. *)
 let rec walk ctx ~slot (p : Vec.t) (lp : Vec.t) lo first (o : Vec.t) (l : Vec.t) remaining interiors (lc : Rgb.t) =
@@ -113,46 +148,21 @@ let rec walk ctx ~slot (p : Vec.t) (lp : Vec.t) lo first (o : Vec.t) (l : Vec.t)
     end
     else
       let part = ctx.found.part in
-      let q = Vec.madd o t l in
-      let tex =
-        if obj.inner_tex = None then Surfaces.at obj part
-        else
-          let dn = Vec.dot (Shape.normal obj part q) l in
-          Surfaces.seen obj part ~inside:(if obj.inverted then dn < 0. else dn > 0.)
-      in
-      let fades = List.mem obj.iid interiors && obj.fade_power > 0. && Optics.fades obj in
-      (* ComputeShadowColour: a uv-mapped pigment is evaluated at the crossing's UV coordinates *)
-      let hit (s : surface) = if s.needs_uv then { Patterns.no_hit with uv = Shape.uv obj part q } else Patterns.no_hit in
+      let tex = if obj.inner_tex = None then Surfaces.at obj part else Surfaces.seen obj part ~inside:(inside_hit obj part (Vec.madd o t l) l) in
       let f =
         match tex with
         | Plain sf when (not obj.uv_mapped) && obj.caustics = 0. ->
-            (* §4, §17.8: a patterned pigment is evaluated where the shadow ray crosses it *)
-            let f = match sf.paint with Fixed -> sf.filcol | Varying at -> (at (hit sf) q).filcol in
-            if fades then Optics.fade obj t f else f
-        | Cutaway ->
-            (* ComputeShadowColour: the members' filters weighed; none found stops the light *)
-            let caustic = if obj.caustics = 0. then None else Some (caustic ctx obj part q l) in
-            let uv () = Shape.uv obj part q in
-            let q' = if obj.uv_mapped then uv () else q in
-            let c =
-              List.fold_left
-                (fun (acc : filtered) (w, tex) ->
-                  if w < sc.adc_bailout then acc
-                  else
-                    let c = filter obj ~hit ~uv ~caustic ~fades t tex q' [] in
-                    { r = f32 (acc.r +. f32 (w *. c.r)); g = f32 (acc.g +. f32 (w *. c.g)); b = f32 (acc.b +. f32 (w *. c.b)); filter = f32 (acc.filter +. f32 (w *. c.filter)) })
-                { r = 0.; g = 0.; b = 0.; filter = 0. }
-                (Surfaces.cutaway ctx.stack sc obj q)
+            (* §4, §17.8: a patterned pigment is evaluated where the shadow ray crosses it; a
+               uv-mapped one at the crossing's UV coordinates *)
+            let f =
+              match sf.paint with
+              | Fixed -> sf.filcol
+              | Varying at ->
+                  let q = Vec.madd o t l in
+                  (at (if sf.needs_uv then { Patterns.no_hit with uv = Shape.uv obj part q } else Patterns.no_hit) q).filcol
             in
-            if Float.abs c.filter < sc.adc_bailout then Rgb.black
-            else Rgb.make (f32 (c.r *. c.filter)) (f32 (c.g *. c.filter)) (f32 (c.b *. c.filter))
-        | Plain _ | Layered _ | Blended _ | Uv_mapped _ | Chosen _ ->
-            (* ComputeShadowColour: the filter colour, weighed in by its filter channel; an
-               object's uv_mapping evaluates its textures at the crossing's (u, v, 0) *)
-            let uv () = Shape.uv obj part q in
-            let caustic = if obj.caustics = 0. then None else Some (caustic ctx obj part q l) in
-            let c = filter obj ~hit ~uv ~caustic ~fades t tex (if obj.uv_mapped then uv () else q) [] in
-            Rgb.make (f32 (c.r *. c.filter)) (f32 (c.g *. c.filter)) (f32 (c.b *. c.filter))
+            if List.mem obj.iid interiors && obj.fade_power > 0. && Optics.fades obj then Optics.fade obj t f else f
+        | Plain _ | Layered _ | Blended _ | Uv_mapped _ | Chosen _ | Cutaway -> textured ctx obj part (Vec.madd o t l) l t interiors tex
       in
       let lc = Rgb.make (f32 (lc.r *. f.r)) (f32 (lc.g *. f.g)) (f32 (lc.b *. f.b)) in
       let interiors = if List.mem obj.iid interiors then Optics.remove obj.iid interiors else obj.iid :: interiors in

@@ -45,6 +45,11 @@ type hit = {
   mutable pnormal : Vec.t;
 }
 
+(* ComputeReflection: the film's interference tints the reflected colour too *)
+let irid_reflected ctx (s : surface) rd d n p (c : result) : result =
+  let k = Lighting.iridescence ctx.scene s rd d n p (Rgb.make c.r c.g c.b) in
+  { r = k.r; g = k.g; b = k.b; tr = 0. }
+
 (* a reflected colour [c] added to [acc], weighed by [refl] and through the reflection exponent [e] *)
 let add_reflection e (refl : Rgb.t) (c : result) (acc : result) =
   if e <> 1. then
@@ -101,73 +106,78 @@ and shade ctx ~reflected obj part depth ~level ~weight ~interiors (o : Vec.t) (d
     let ng = if ctx.robust then Shape.geometric_normal obj part p else n in
     let e = if ctx.robust then Robust.error_bound o p obj.mag else 0. in
     match tex with
-    | Plain s when not obj.uv_mapped -> plain ctx ~reflected obj part s p n ng e depth ~level ~weight ~interiors d
-    | Cutaway ->
-        (* ComputeTextureColour: the textures of the members around the point, weighed *)
-        let at = { hobj = obj; hpart = part; hp = p; hn = n; hng = ng; he = e; hd = d; hdepth = depth; hlevel = level; hweight = weight; hinteriors = interiors; hreflected = reflected; memo = Lighting.memo sc; pnormal = n } in
-        let q = if obj.uv_mapped then Shape.uv obj part p else p in
-        List.fold_left
-          (fun (acc : result) (w, t) ->
-            if w < sc.adc_bailout then acc
+    | Plain s when not obj.uv_mapped ->
+        (* a plain texture, one layer (the common case): the layer loop of ComputeLightedTexture
+           run once *)
+        (* normal.cpp: a texture's normal bends N before the pigment is evaluated, whose slope and aoi
+           patterns see the bent normal [pn]; [sn], the bent normal made unit, shades, reflects and
+           refracts, and the raw N keeps the reflected ray on the surface's side (trace.cpp) *)
+        let uv = if s.needs_uv then Shape.uv obj part p else Vec.zero in
+        let pn = match s.bump with Smooth -> n | Bumpy nm -> Normals.perturb ~facets:sc.facets sc.noise_generator nm p { Patterns.normal = n; dir = d; uv } n in
+        let s = match s.paint with Fixed -> s | Varying at -> at { Patterns.normal = pn; dir = d; uv } p in
+        let sn = match s.bump with Smooth -> n | Bumpy nm -> Normals.layer_normal nm pn in
+        (* k_r, the reflection colour at the cosine of incidence N·E (E = −d, the way to the eye) *)
+        let ci = -.Vec.dot d sn in
+        let refl = if s.reflects then Optics.reflectivity sc s obj interiors ci else Rgb.black in
+        (* §5.2: the reflected ray's weight, taken before the metallic tint *)
+        let w_refl =
+          f32 (if s.refl.fresnel then weight *. Rgb.max3 refl else weight *. Float.max (Rgb.max3 s.refl.rmax) (Rgb.max3 s.refl.rmin))
+        in
+        let refl = if s.reflects && s.refl.refl_metallic <> 0. then Lighting.metallic_factor s.refl.refl_metallic ci s.colour refl else refl in
+        (* local illumination: ambient and emission, then each light through its shadow feeler *)
+        let local = if s.lit then Lighting.add_lights ctx ~memo:Lighting.no_memo ~level ~di:obj.double_illuminate s p sn ng e d interiors s.emitted else s.emitted in
+        (* the transmitted ray, weighted by k_t, the filter colour (§6). POV-Ray traces it before the
+           reflected ray, and the order shows: both rays' shadow feelers share the shadow cache *)
+        let local, tr, tir =
+          if not s.transparent then (local, 0., false)
+          else
+            let filcol = Optics.conserved s refl in
+            let trans = Float.min 1. (Float.abs (Rgb.intensity filcol)) in
+            (* a ray too weak to matter (below adc_bailout) is not traced *)
+            if not (trans > sc.adc_bailout) then (local, 0., false)
             else
-              let c = texture_colour ctx at t q [] in
-              { r = f32 (acc.r +. f32 (w *. c.r)); g = f32 (acc.g +. f32 (w *. c.g)); b = f32 (acc.b +. f32 (w *. c.b)); tr = f32 (acc.tr +. f32 (w *. c.tr)) })
-          black (Surfaces.cutaway ctx.stack sc obj p)
-    | Plain _ | Layered _ | Blended _ | Uv_mapped _ | Chosen _ ->
-        let at = { hobj = obj; hpart = part; hp = p; hn = n; hng = ng; he = e; hd = d; hdepth = depth; hlevel = level; hweight = weight; hinteriors = interiors; hreflected = reflected; memo = Lighting.memo sc; pnormal = n } in
-        (* an object's uv_mapping: every texture is evaluated at the hit's (u, v, 0) *)
-        texture_colour ctx at tex (if obj.uv_mapped then Shape.uv obj part p else p) []
-
-(* A plain texture, one layer (the common case): the layer loop of ComputeLightedTexture run once. *)
-and plain ctx ~reflected obj part s p n ng e depth ~level ~weight ~interiors d =
-  let sc = ctx.scene in
-  (* normal.cpp: a texture's normal bends N before the pigment is evaluated, whose slope and aoi
-     patterns see the bent normal [pn]; [sn], the bent normal made unit, shades, reflects and
-     refracts, and the raw N keeps the reflected ray on the surface's side (trace.cpp) *)
-  let uv = if s.needs_uv then Shape.uv obj part p else Vec.zero in
-  let pn = match s.bump with Smooth -> n | Bumpy nm -> Normals.perturb ~facets:sc.facets sc.noise_generator nm p { Patterns.normal = n; dir = d; uv } n in
-  let s = match s.paint with Fixed -> s | Varying at -> at { Patterns.normal = pn; dir = d; uv } p in
-  let sn = match s.bump with Smooth -> n | Bumpy nm -> Normals.layer_normal nm pn in
-  (* k_r, the reflection colour at the cosine of incidence N·E (E = −d, the way to the eye) *)
-  let ci = -.Vec.dot d sn in
-  let refl = if s.reflects then Optics.reflectivity sc s obj interiors ci else Rgb.black in
-  (* §5.2: the reflected ray's weight, taken before the metallic tint *)
-  let w_refl =
-    f32 (if s.refl.fresnel then weight *. Rgb.max3 refl else weight *. Float.max (Rgb.max3 s.refl.rmax) (Rgb.max3 s.refl.rmin))
-  in
-  let refl = if s.reflects && s.refl.refl_metallic <> 0. then Lighting.metallic_factor s.refl.refl_metallic ci s.colour refl else refl in
-  (* local illumination: ambient and emission, then each light through its shadow feeler *)
-  let local = if s.lit then Lighting.add_lights ctx ~level ~di:obj.double_illuminate s p sn ng e d interiors s.emitted else s.emitted in
-  (* the transmitted ray, weighted by k_t, the filter colour (§6). POV-Ray traces it before the
-     reflected ray, and the order shows: both rays' shadow feelers share the shadow cache *)
-  let local, tr, tir =
-    if not s.transparent then (local, 0., false)
-    else
-      let filcol = Optics.conserved s refl in
-      let trans = Float.min 1. (Float.abs (Rgb.intensity filcol)) in
-      (* a ray too weak to matter (below adc_bailout) is not traced *)
-      if not (trans > sc.adc_bailout) then (local, 0., false)
-      else
-        let w = f32 (weight *. Float.max (Float.abs filcol.r) (Float.max (Float.abs filcol.g) (Float.abs filcol.b))) in
-        let ct, tir = refract ctx ~reflected obj ~level ~weight:w ~interiors p ng e d sn ~raw:n ~bump:s.bump in
-        (* the interior's fade when the ray travelled inside [obj] *)
-        let att = Rgb.grey obj.old_refract in
-        let att = if Optics.fades obj && List.mem obj.iid interiors then Optics.fade obj depth att else att in
-        if tir then (Rgb.make (f32 (local.r +. f32 (att.r *. ct.r))) (f32 (local.g +. f32 (att.g *. ct.g))) (f32 (local.b +. f32 (att.b *. ct.b))), 0., true)
+              let w = f32 (weight *. Float.max (Float.abs filcol.r) (Float.max (Float.abs filcol.g) (Float.abs filcol.b))) in
+              let ct, tir = refract ctx ~reflected obj ~level ~weight:w ~interiors p ng e d sn ~raw:n ~bump:s.bump in
+              (* the interior's fade when the ray travelled inside [obj] *)
+              let att = Rgb.grey obj.old_refract in
+              let att = if Optics.fades obj && List.mem obj.iid interiors then Optics.fade obj depth att else att in
+              if tir then (Rgb.make (f32 (local.r +. f32 (att.r *. ct.r))) (f32 (local.g +. f32 (att.g *. ct.g))) (f32 (local.b +. f32 (att.b *. ct.b))), 0., true)
+              else
+                ( Rgb.make
+                    (f32 (local.r +. f32 (f32 (att.r *. ct.r) *. filcol.r)))
+                    (f32 (local.g +. f32 (f32 (att.g *. ct.g) *. filcol.g)))
+                    (f32 (local.b +. f32 (f32 (att.b *. ct.b) *. filcol.b))),
+                  f32 (Rgb.intensity att *. ct.tr *. trans),
+                  false )
+        in
+        (* the reflected ray R = −E + 2(N·E)N, weighted by k_r (§5.3); none after total internal
+           reflection, which was the reflected ray already *)
+        if tir || Rgb.is_zero refl then { r = local.r; g = local.g; b = local.b; tr }
         else
-          ( Rgb.make
-              (f32 (local.r +. f32 (f32 (att.r *. ct.r) *. filcol.r)))
-              (f32 (local.g +. f32 (f32 (att.g *. ct.g) *. filcol.g)))
-              (f32 (local.b +. f32 (f32 (att.b *. ct.b) *. filcol.b))),
-            f32 (Rgb.intensity att *. ct.tr *. trans),
-            false )
-  in
-  (* the reflected ray R = −E + 2(N·E)N, weighted by k_r (§5.3); none after total internal
-     reflection, which was the reflected ray already *)
-  if tir || Rgb.is_zero refl then { r = local.r; g = local.g; b = local.b; tr }
-  else
-    let c = reflect ctx ~level ~weight:w_refl ~interiors s p ng e d sn ~raw:n in
-    add_reflection s.refl.exponent refl c { r = local.r; g = local.g; b = local.b; tr }
+          let rd = match s.bump with Smooth -> Vec.normalize (Vec.madd d (-2. *. Vec.dot d n) n) | Bumpy _ -> bent_reflection d sn n in
+          ctx.stats.reflected_rays <- ctx.stats.reflected_rays + 1;
+          let c = trace_ray ctx ~reflected:true ~level ~weight:w_refl ~interiors ~continued:false (Robust.origin ctx p ng e rd) rd in
+          let c = if s.irid > 0. then irid_reflected ctx s rd d sn p c else c in
+          add_reflection s.refl.exponent refl c { r = local.r; g = local.g; b = local.b; tr }
+    | Plain _ | Layered _ | Blended _ | Uv_mapped _ | Chosen _ | Cutaway -> shade_textured ctx ~reflected obj part tex p n ng e depth ~level ~weight ~interiors d
+
+(* Any other texture (ComputeTextureColour): layers, patterned textures, uv_mapping, cutaways. *)
+and shade_textured ctx ~reflected obj part tex p n ng e depth ~level ~weight ~interiors d =
+  let sc = ctx.scene in
+  let at = { hobj = obj; hpart = part; hp = p; hn = n; hng = ng; he = e; hd = d; hdepth = depth; hlevel = level; hweight = weight; hinteriors = interiors; hreflected = reflected; memo = Lighting.memo sc; pnormal = n } in
+  (* an object's uv_mapping: every texture is evaluated at the hit's (u, v, 0) *)
+  let q = if obj.uv_mapped then Shape.uv obj part p else p in
+  match tex with
+  | Cutaway ->
+      (* the textures of the members around the point, weighed *)
+      List.fold_left
+        (fun (acc : result) (w, t) ->
+          if w < sc.adc_bailout then acc
+          else
+            let c = texture_colour ctx at t q [] in
+            { r = f32 (acc.r +. f32 (w *. c.r)); g = f32 (acc.g +. f32 (w *. c.g)); b = f32 (acc.b +. f32 (w *. c.b)); tr = f32 (acc.tr +. f32 (w *. c.tr)) })
+        black (Surfaces.cutaway ctx.stack sc obj p)
+  | Plain _ | Layered _ | Blended _ | Uv_mapped _ | Chosen _ -> texture_colour ctx at tex q []
 
 (* The reflected ray off the normal [n] ([raw], the shape's own, keeps it on the surface's side
    when [n] is bent) and what it brings back. *)
@@ -175,11 +185,7 @@ and reflect ctx ~level ~weight ~interiors (s : surface) p ng e d n ~raw =
   let rd = match s.bump with Smooth -> Vec.normalize (Vec.madd d (-2. *. Vec.dot d n) n) | Bumpy _ -> bent_reflection d n raw in
   ctx.stats.reflected_rays <- ctx.stats.reflected_rays + 1;
   let c = trace_ray ctx ~reflected:true ~level ~weight ~interiors ~continued:false (Robust.origin ctx p ng e rd) rd in
-  if s.irid > 0. then
-    (* the film's interference tints the reflection too (ComputeReflection) *)
-    let k = Lighting.iridescence ctx.scene s rd d n p (Rgb.make c.r c.g c.b) in
-    { r = k.r; g = k.g; b = k.b; tr = 0. }
-  else c
+  if s.irid > 0. then irid_reflected ctx s rd d n p c else c
 
 (* ComputeOneTextureColour: a texture's colour at the point [q] where its pigments and normals are
    evaluated ([warps]: the patterned textures it lies in, the outermost first). *)
