@@ -38,6 +38,7 @@ CASES=(
   "scenes/bench/while_spheres.pov|+W640 +H480 -A"
   "$OUT/shapes_2000.pov|+W640 +H480 -A"
   "$OUT/shapes_2000.pov|+W640 +H480 +A0.3"
+  "scenes/bench/textures.pov|+W640 +H480 +A0.3"
 )
 
 median() { sort -g | awk '{a[NR]=$1} END {if (NR%2) print a[(NR+1)/2]; else printf "%.4f\n", (a[NR/2]+a[NR/2+1])/2}'; }
