@@ -71,24 +71,23 @@ let random (state : int array) =
   state.(0) <- next;
   float_of_int next /. 4294967295.
 
-type memo = { tested : bool array; seen : Rgb.t array }
+type memo = { mutable seen : (int * Rgb.t) list; on : bool }
 
-let memo (sc : Compiled.t) = { tested = Array.make (Array.length sc.lights) false; seen = Array.make (Array.length sc.lights) Rgb.black }
+let memo (_ : Compiled.t) = { seen = []; on = true }
 
 (* no cache: every test sends its feeler (a plain texture tests each light once anyway) *)
-let no_memo = { tested = [||]; seen = [||] }
+let no_memo = { seen = []; on = false }
 
 (* the light colour cache of ComputeOneDiffuseLight: one feeler per light for every layer and
    entry of the texture shaded at this point (kept out of [light_terms], which stays small enough
    to be inlined) *)
 let cached_feeler ctx (m : memo) light ~slot p ng e l dist interiors lc =
-  if m.tested.(light) then m.seen.(light)
-  else begin
-    let c = Shadow.feeler ctx ~slot p ng e l dist interiors lc in
-    m.tested.(light) <- true;
-    m.seen.(light) <- c;
-    c
-  end
+  match List.assq_opt light m.seen with
+  | Some c -> c
+  | None ->
+      let c = Shadow.feeler ctx ~slot p ng e l dist interiors lc in
+      m.seen <- (light, c) :: m.seen;
+      c
 
 (* crand: POV_rand times crand off the diffuse intensity [i] *)
 let crand_intensity ctx (s : surface) i = i -. (random ctx.Context.scene.crand *. s.crand)
@@ -119,7 +118,7 @@ let[@inline] light_terms ctx ~memo ~light ~slot ~di (s : surface) (p : Vec.t) (n
       let lc =
         if lt.shadowless || dist <= 0. then lc
         else
-          if Array.length memo.tested = 0 then Shadow.feeler ctx ~slot p ng e l dist interiors lc
+          if not memo.on then Shadow.feeler ctx ~slot p ng e l dist interiors lc
           else cached_feeler ctx memo light ~slot p ng e l dist interiors lc
       in
       if Float.abs lc.r <= epsilon && Float.abs lc.g <= epsilon && Float.abs lc.b <= epsilon then Rgb.black

@@ -45,6 +45,9 @@ type hit = {
   mutable pnormal : Vec.t;
 }
 
+(* A layer once shaded: what its reflected ray needs (POV-Ray's WNRX list) *)
+type shaded = { lsurf : surface; lnormal : Vec.t; lrefl : Rgb.t; lweight : float }
+
 (* ComputeReflection: the film's interference tints the reflected colour too *)
 let irid_reflected ctx (s : surface) rd d n p (c : result) : result =
   let k = Lighting.iridescence ctx.scene s rd d n p (Rgb.make c.r c.g c.b) in
@@ -234,57 +237,51 @@ and lighted ctx at (ls : surface array) q warps : result =
   let sc = ctx.scene in
   let obj = at.hobj and d = at.hd and n = at.hn in
   let count = Array.length ls in
-  (* per layer: the shading normal, the reflection colour and the reflected ray's weight *)
-  let normals = Array.make count n and refls = Array.make count Rgb.black and weights = Array.make count 0. in
-  let exponents = Array.make count 1. in
-  let surfs = Array.copy ls in
-  let res = ref Rgb.black and filcol = ref Rgb.white and trans = ref 1. and layers = ref 0 in
-  while !layers < count && !trans > sc.adc_bailout do
-    let i = !layers in
-    let s = ls.(i) in
-    let uv = if s.needs_uv then Shape.uv obj at.hpart at.hp else Vec.zero in
-    (* the layer's normal: bent by its normal pattern, in the space of the patterned textures
-       around it *)
-    let ln =
-      match s.bump with
-      | Smooth -> n
-      | Bumpy nm ->
-          let wn = List.fold_left (fun v ws -> Normals.warp_normal ws ~keep_scale:false v) n warps in
-          let pn = Normals.perturb ~facets:sc.facets sc.noise_generator nm q { Patterns.normal = at.pnormal; dir = d; uv } wn in
-          at.pnormal <- pn;
-          List.fold_right (fun ws v -> Normals.unwarp_normal ws ~keep_scale:false v) warps (Normals.layer_normal nm pn)
-    in
-    let s = match s.paint with Fixed -> s | Varying f -> f { Patterns.normal = at.pnormal; dir = d; uv } q in
-    let new_weight = at.hweight *. !trans in
-    let ci = -.Vec.dot d ln in
-    let refl = if s.reflects then Optics.reflectivity sc s obj at.hinteriors ci else Rgb.black in
-    weights.(i) <- f32 (if s.refl.fresnel then new_weight *. Rgb.max3 refl else new_weight *. Float.max (Rgb.max3 s.refl.rmax) (Rgb.max3 s.refl.rmin));
-    let refl = if s.reflects && s.refl.refl_metallic <> 0. then Lighting.metallic_factor s.refl.refl_metallic ci s.colour refl else refl in
-    normals.(i) <- ln;
-    refls.(i) <- refl;
-    exponents.(i) <- s.refl.exponent;
-    surfs.(i) <- s;
-    let local =
-      if s.lit then Lighting.add_lights ctx ~memo:at.memo ~level:at.hlevel ~di:obj.double_illuminate s at.hp ln at.hng at.he d at.hinteriors s.emitted
-      else s.emitted
-    in
-    let f = !filcol and r = !res in
-    res := Rgb.make (f32 (r.r +. f32 (local.r *. f.r))) (f32 (r.g +. f32 (local.g *. f.g))) (f32 (r.b +. f32 (local.b *. f.b)));
-    (* the filter colour left for the layers below and what lies behind *)
-    let t = s.filcol in
-    let fc = Rgb.make (f32 (f.r *. t.r)) (f32 (f.g *. t.g)) (f32 (f.b *. t.b)) in
-    let k x = f32 (Float.min 1. (1. -. x)) in
-    filcol := if s.conserve then Rgb.make (f32 (fc.r *. k refl.r)) (f32 (fc.g *. k refl.g)) (f32 (fc.b *. k refl.b)) else fc;
-    trans := Float.min 1. (Float.abs (f32 (Rgb.intensity !filcol)));
-    incr layers
-  done;
+  (* the layer loop: [res] the colour so far, [filcol] the filter colour of the layers shaded, [trans]
+     the translucency left; each layer shaded leaves what its reflected ray needs in [shaded] (the
+     last shaded first) *)
+  let rec layers i (res : Rgb.t) (filcol : Rgb.t) trans shaded =
+    if not (i < count && trans > sc.adc_bailout) then (res, filcol, trans, shaded)
+    else
+      let s = ls.(i) in
+      let uv = if s.needs_uv then Shape.uv obj at.hpart at.hp else Vec.zero in
+      (* the layer's normal: bent by its normal pattern, in the space of the patterned textures
+         around it *)
+      let ln =
+        match s.bump with
+        | Smooth -> n
+        | Bumpy nm ->
+            let wn = List.fold_left (fun v ws -> Normals.warp_normal ws ~keep_scale:false v) n warps in
+            let pn = Normals.perturb ~facets:sc.facets sc.noise_generator nm q { Patterns.normal = at.pnormal; dir = d; uv } wn in
+            at.pnormal <- pn;
+            List.fold_right (fun ws v -> Normals.unwarp_normal ws ~keep_scale:false v) warps (Normals.layer_normal nm pn)
+      in
+      let s = match s.paint with Fixed -> s | Varying f -> f { Patterns.normal = at.pnormal; dir = d; uv } q in
+      let new_weight = at.hweight *. trans in
+      let ci = -.Vec.dot d ln in
+      let refl = if s.reflects then Optics.reflectivity sc s obj at.hinteriors ci else Rgb.black in
+      let weight = f32 (if s.refl.fresnel then new_weight *. Rgb.max3 refl else new_weight *. Float.max (Rgb.max3 s.refl.rmax) (Rgb.max3 s.refl.rmin)) in
+      let refl = if s.reflects && s.refl.refl_metallic <> 0. then Lighting.metallic_factor s.refl.refl_metallic ci s.colour refl else refl in
+      let local =
+        if s.lit then Lighting.add_lights ctx ~memo:at.memo ~level:at.hlevel ~di:obj.double_illuminate s at.hp ln at.hng at.he d at.hinteriors s.emitted
+        else s.emitted
+      in
+      let res = Rgb.make (f32 (res.r +. f32 (local.r *. filcol.r))) (f32 (res.g +. f32 (local.g *. filcol.g))) (f32 (res.b +. f32 (local.b *. filcol.b))) in
+      (* the filter colour left for the layers below and what lies behind *)
+      let t = s.filcol in
+      let fc = Rgb.make (f32 (filcol.r *. t.r)) (f32 (filcol.g *. t.g)) (f32 (filcol.b *. t.b)) in
+      let k x = f32 (Float.min 1. (1. -. x)) in
+      let filcol = if s.conserve then Rgb.make (f32 (fc.r *. k refl.r)) (f32 (fc.g *. k refl.g)) (f32 (fc.b *. k refl.b)) else fc in
+      let trans = Float.min 1. (Float.abs (f32 (Rgb.intensity filcol))) in
+      layers (i + 1) res filcol trans ({ lsurf = s; lnormal = ln; lrefl = refl; lweight = weight } :: shaded)
+  in
+  let local, f, trans, shaded = layers 0 Rgb.black Rgb.white 1. [] in
+  let shaded = List.rev shaded in
+  let top_normal = match shaded with l :: _ -> l.lnormal | [] -> n in
   let top = ls.(0) in
-  let top_normal = normals.(0) in
-  let f = !filcol in
-  let local = !res in
   (* the transmitted ray, filtered by every layer *)
   let local, tr, tir =
-    if not (!trans > sc.adc_bailout) then (local, 0., false)
+    if not (trans > sc.adc_bailout) then (local, 0., false)
     else
       let w = f32 (at.hweight *. Float.max (Float.abs f.r) (Float.max (Float.abs f.g) (Float.abs f.b))) in
       let ct, tir = refract ctx ~reflected:at.hreflected obj ~level:at.hlevel ~weight:w ~interiors:at.hinteriors at.hp at.hng at.he d top_normal ~raw:n ~bump:top.bump in
@@ -296,21 +293,20 @@ and lighted ctx at (ls : surface array) q warps : result =
             (f32 (local.r +. f32 (f32 (att.r *. ct.r) *. f.r)))
             (f32 (local.g +. f32 (f32 (att.g *. ct.g) *. f.g)))
             (f32 (local.b +. f32 (f32 (att.b *. ct.b) *. f.b))),
-          f32 (Rgb.intensity att *. ct.tr *. !trans),
+          f32 (Rgb.intensity att *. ct.tr *. trans),
           false )
   in
   (* each layer's reflected ray; after total internal reflection, only those whose normal is not
      the top layer's *)
-  let acc = ref { r = local.r; g = local.g; b = local.b; tr } in
-  for i = 0 to !layers - 1 do
-    let ni = normals.(i) in
-    let differs = Float.abs (top_normal.x -. ni.x) > Precision.epsilon || Float.abs (top_normal.y -. ni.y) > Precision.epsilon || Float.abs (top_normal.z -. ni.z) > Precision.epsilon in
-    if ((not tir) || differs) && not (Rgb.is_zero refls.(i)) then begin
-      let c = reflect ctx ~level:at.hlevel ~weight:weights.(i) ~interiors:at.hinteriors surfs.(i) at.hp at.hng at.he d ni ~raw:n in
-      acc := add_reflection exponents.(i) refls.(i) c !acc
-    end
-  done;
-  !acc
+  List.fold_left
+    (fun acc l ->
+      let ni = l.lnormal in
+      let differs = Float.abs (top_normal.x -. ni.x) > Precision.epsilon || Float.abs (top_normal.y -. ni.y) > Precision.epsilon || Float.abs (top_normal.z -. ni.z) > Precision.epsilon in
+      if ((not tir) || differs) && not (Rgb.is_zero l.lrefl) then
+        let c = reflect ctx ~level:at.hlevel ~weight:l.lweight ~interiors:at.hinteriors l.lsurf at.hp at.hng at.he d ni ~raw:n in
+        add_reflection l.lsurf.refl.exponent l.lrefl c acc
+      else acc)
+    { r = local.r; g = local.g; b = local.b; tr } shaded
 
 (* §6.2: the transmitted ray by Snell's law, n₁ sin θ₁ = n₂ sin θ₂, with the ratio of the indices
    of the interiors the ray leaves and enters; its colour, and whether total internal reflection
