@@ -53,6 +53,21 @@ let irid_reflected ctx (s : surface) rd d n p (c : result) : result =
   let k = Lighting.iridescence ctx.scene s rd d n p (Rgb.make c.r c.g c.b) in
   { r = k.r; g = k.g; b = k.b; tr = 0. }
 
+(* What the transmitted ray [ct] adds to the colour [local]: faded by the interior when the ray
+   travelled inside [obj] ([depth] along it), filtered by [filcol] unless it was totally reflected
+   ([tir]); the colour, the transmittance the antialiasing compares, and [tir]. *)
+let add_transmitted (obj : obj) interiors depth (local : Rgb.t) (ct : result) tir (filcol : Rgb.t) trans =
+  let att = Rgb.grey obj.old_refract in
+  let att = if Optics.fades obj && List.mem obj.iid interiors then Optics.fade obj depth att else att in
+  if tir then (Rgb.make (f32 (local.r +. f32 (att.r *. ct.r))) (f32 (local.g +. f32 (att.g *. ct.g))) (f32 (local.b +. f32 (att.b *. ct.b))), 0., true)
+  else
+    ( Rgb.make
+        (f32 (local.r +. f32 (f32 (att.r *. ct.r) *. filcol.r)))
+        (f32 (local.g +. f32 (f32 (att.g *. ct.g) *. filcol.g)))
+        (f32 (local.b +. f32 (f32 (att.b *. ct.b) *. filcol.b))),
+      f32 (Rgb.intensity att *. ct.tr *. trans),
+      false )
+
 (* a reflected colour [c] added to [acc], weighed by [refl] and through the reflection exponent [e] *)
 let add_reflection e (refl : Rgb.t) (c : result) (acc : result) =
   if e <> 1. then
@@ -141,17 +156,7 @@ and shade ctx ~reflected obj part depth ~level ~weight ~interiors (o : Vec.t) (d
             else
               let w = f32 (weight *. Float.max (Float.abs filcol.r) (Float.max (Float.abs filcol.g) (Float.abs filcol.b))) in
               let ct, tir = refract ctx ~reflected obj ~level ~weight:w ~interiors p ng e d sn ~raw:n ~bump:s.bump in
-              (* the interior's fade when the ray travelled inside [obj] *)
-              let att = Rgb.grey obj.old_refract in
-              let att = if Optics.fades obj && List.mem obj.iid interiors then Optics.fade obj depth att else att in
-              if tir then (Rgb.make (f32 (local.r +. f32 (att.r *. ct.r))) (f32 (local.g +. f32 (att.g *. ct.g))) (f32 (local.b +. f32 (att.b *. ct.b))), 0., true)
-              else
-                ( Rgb.make
-                    (f32 (local.r +. f32 (f32 (att.r *. ct.r) *. filcol.r)))
-                    (f32 (local.g +. f32 (f32 (att.g *. ct.g) *. filcol.g)))
-                    (f32 (local.b +. f32 (f32 (att.b *. ct.b) *. filcol.b))),
-                  f32 (Rgb.intensity att *. ct.tr *. trans),
-                  false )
+              add_transmitted obj interiors depth local ct tir filcol trans
         in
         (* the reflected ray R = −E + 2(N·E)N, weighted by k_r (§5.3); none after total internal
            reflection, which was the reflected ray already *)
@@ -285,16 +290,7 @@ and lighted ctx at (ls : surface array) q warps : result =
     else
       let w = f32 (at.hweight *. Float.max (Float.abs f.r) (Float.max (Float.abs f.g) (Float.abs f.b))) in
       let ct, tir = refract ctx ~reflected:at.hreflected obj ~level:at.hlevel ~weight:w ~interiors:at.hinteriors at.hp at.hng at.he d top_normal ~raw:n ~bump:top.bump in
-      let att = Rgb.grey obj.old_refract in
-      let att = if Optics.fades obj && List.mem obj.iid at.hinteriors then Optics.fade obj at.hdepth att else att in
-      if tir then (Rgb.make (f32 (local.r +. f32 (att.r *. ct.r))) (f32 (local.g +. f32 (att.g *. ct.g))) (f32 (local.b +. f32 (att.b *. ct.b))), 0., true)
-      else
-        ( Rgb.make
-            (f32 (local.r +. f32 (f32 (att.r *. ct.r) *. f.r)))
-            (f32 (local.g +. f32 (f32 (att.g *. ct.g) *. f.g)))
-            (f32 (local.b +. f32 (f32 (att.b *. ct.b) *. f.b))),
-          f32 (Rgb.intensity att *. ct.tr *. trans),
-          false )
+      add_transmitted obj at.hinteriors at.hdepth local ct tir f trans
   in
   (* each layer's reflected ray; after total internal reflection, only those whose normal is not
      the top layer's *)

@@ -11,3 +11,9 @@ val add_object : Reader.st -> Value.obj -> unit
 (** [add_object st o] adds [o] to the scene's objects and lights: a union that may be split is
     dissolved, its texture, interior and flags going to the members that lack them; any other CSG
     enters whole; an inverted primitive enters as an intersection of itself alone. *)
+
+val scene_obj :
+  Value.obj -> ?no_shadow:bool -> ?interior_texture:Scene.texture option -> Scene.shape -> Scene.texture -> Scene.interior -> Scene.obj
+(** [scene_obj o shape texture interior] is the scene object of [o] with [shape], [texture] and
+    [interior]; its flags, place, interior texture (unless given) and no_shadow (unless given) are
+    [o]'s. *)

@@ -226,6 +226,12 @@ let mesh2 st loc =
     in
     check v.x; check v.y; check v.z
   in
+  (* a block of index triples below [limit]: where it was written, its count, the indices *)
+  let index_block name l limit what =
+    let g = ref (Growable.create 0) in
+    let n = parse_counted_block st name ~start:(fun n -> g := Growable.create ~capacity:(3 * n) 0) (fun l -> indices st l limit what !g) in
+    (l, n, Growable.to_array !g)
+  in
   let rec sections () =
     let l = peek_loc st in
     match peek st with
@@ -286,24 +292,14 @@ let mesh2 st loc =
     | Ident "normal_indices" ->
         advance st;
         let nn = match !normals with Some (n, _) -> n | None -> Error.raise_at l "normal_indices before normal_vectors" in
-        let g = ref (Growable.create 0) in
-        let n =
-          parse_counted_block st "normal_indices" ~start:(fun n -> g := Growable.create ~capacity:(3 * n) 0) (fun l ->
-              indices st l nn "normal" !g)
-        in
-        nidx := Some (l, n, Growable.to_array !g);
+        nidx := Some (index_block "normal_indices" l nn "normal");
         sections ()
     | Ident "uv_indices" ->
         advance st;
         if !uvidx <> None then Error.raise_at l "only one uv_indices section is allowed in mesh2";
         (* without uv_vectors there is one UV coordinate, (0, 0) *)
         let nu = match !uvs with Some (n, _) when n > 0 -> n | Some _ | None -> 1 in
-        let g = ref (Growable.create 0) in
-        let n =
-          parse_counted_block st "uv_indices" ~start:(fun n -> g := Growable.create ~capacity:(3 * n) 0) (fun l ->
-              indices st l nu "UV" !g)
-        in
-        uvidx := Some (l, n, Growable.to_array !g);
+        uvidx := Some (index_block "uv_indices" l nu "UV");
         sections ()
     | Ident "inside_vector" -> advance st; inside := Some (parse_vector st); sections ()
     | _ -> ()

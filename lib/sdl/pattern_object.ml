@@ -11,22 +11,7 @@ open Reader
 let rec scene_obj st (o : V.obj) : Scene.obj =
   let texture = match o.texture with Some t -> t | None -> Scene.Layers [ st.default_texture ] in
   let interior = match o.interior with Some i -> i | None -> Defaults.interior in
-  let made shape : Scene.obj =
-    {
-      shape;
-      texture;
-      interior_texture = o.interior_texture;
-      interior;
-      no_shadow = o.no_shadow;
-      loc = o.oloc;
-      no_image = o.no_image;
-      no_reflection = o.no_reflection;
-      double_illuminate = o.double_illuminate;
-      looks_like = o.looks_like;
-      uv_mapped = o.uv_mapped;
-      difference = o.difference;
-    }
-  in
+  let made shape = Csg_build.scene_obj o shape texture interior in
   let member (c : V.obj) = { Scene.mobj = scene_obj st { c with inverted = false }; inverted = c.inverted; own_interior = c.interior <> None } in
   match o.shape with
   | Prim shape when not o.inverted -> made shape
