@@ -112,6 +112,7 @@ let pattern_name (p : pattern) =
   | Slope s -> "slope " ^ vec s.slope_vector
   | Average -> "average"
   | Object_pattern t -> "object { " ^ t.shown ^ " }"
+  | Pigment_pattern p -> "pigment_pattern { " ^ p.pshown ^ " }"
   | Bitmap b -> "image_map { " ^ bitmap b ^ " }"
   | Image_pattern b -> "image_pattern { " ^ bitmap b ^ " }"
 

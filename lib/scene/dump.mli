@@ -12,3 +12,6 @@ val obj : Scene.obj -> string
 val num : float -> string
 (** [num x] prints [x] as the dump does: integers without a point, others with up to 10 significant
     digits. *)
+
+val pigment : Scene.pigment -> string
+(** [pigment p] is the body of [p] as {!scene} lists it (without [pigment { }]). *)

@@ -72,6 +72,9 @@ type pattern =
   | Aoi  (** the angle between the ray and the surface normal *)
   | Slope of slope
   | Average  (** a normal's [average] of the entries of its normal_map *)
+  | Pigment_pattern of pigment_probe
+      (** pattern.cpp pigment_pattern: the greyscale (single precision) of a pigment's colour at
+          the point *)
   | Object_pattern of object_test
       (** pattern.cpp object_pattern: 1 where the point is inside the object, 0 outside; a block
           pattern with two entries (checker's default map), frequency 0 *)
@@ -79,6 +82,11 @@ type pattern =
       (** POV-Ray's BITMAP_PATTERN: an image_map in a pigment (whose colour is the image's,
           its map unused) or a bump_map in a normal (the image's slope); it has no value *)
   | Image_pattern of bitmap  (** image_pattern: the image's grey, index or alpha as the value *)
+
+(** The pigment of a [pigment_pattern], reduced to what the pattern needs (as an object
+    pattern's object, for the same reason): the grey of its colour at a pattern-space point (0
+    where it gives none), and its [--dump] text, both made once when it was parsed. *)
+and pigment_probe = { grey : Vec.t -> float; pshown : string }
 
 (** The object of an [object] pattern, reduced to what the pattern needs: [pattern] comes before
     [obj] in this file (and one recursive group would clash labels), so the object itself is kept

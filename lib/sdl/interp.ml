@@ -136,12 +136,14 @@ let load_string opts ~file text =
       default_texture = Defaults.layer;
       directive = (fun _ _ _ -> ()); invoke = (fun _ _ _ -> ()); index = (fun _ _ -> 0); files = [];
       read_object = (fun _ -> None);
+      read_pigment = (fun _ -> Scene.Solid Colour.black);
     }
   in
   st.directive <- directive;
   st.invoke <- invoke;
   st.index <- parse_index;
   st.read_object <- (fun st -> if object_follows st then Some (parse_object st) else None);
+  st.read_pigment <- (fun st -> Materials.parse_pigment st (Scene.Solid Colour.black));
   (* the scene's files are closed when its text has been read, or at its first error *)
   Fun.protect ~finally:(fun () -> User_files.close_all st) (fun () ->
       try parse_statements st with

@@ -282,7 +282,17 @@ let rec pattern_keyword st kind (h : header) : header option =
       | _ -> ());
       advance st;
       set ~frequency:0. (Image_reader.parse st kw)
-  | Ident (("function" | "pigment_pattern" | "density_file") as s) ->
+  | Ident "pigment_pattern" ->
+      (* pigment_pattern { PIGMENT }: the pigment read from a black one, its grey the value *)
+      advance st;
+      let p = st.read_pigment st in
+      let gen = st.noise_generator in
+      let grey q =
+        let c, found = Pigment.colour_found gen p Patterns.no_hit q in
+        if found then Precision.f32 ((0.297 *. c.red) +. (0.589 *. c.green) +. (0.114 *. c.blue)) else 0.
+      in
+      set (Pigment_pattern { grey; pshown = Dump.pigment p })
+  | Ident (("function" | "density_file") as s) ->
       not_supported loc (Printf.sprintf "'%s' as a pattern" s)
   | _ -> None
 

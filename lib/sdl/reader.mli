@@ -99,6 +99,8 @@ type st = {
       (** the object parser (Objects), for the object pattern inside a pigment or normal, which
           Materials reads but cannot name (Objects uses Materials): the object written next,
           else None *)
+  mutable read_pigment : st -> Scene.pigment;
+      (** reads a pigment block after its keyword, from a black pigment (POV-Ray's Create_Pigment): Materials' reader, for [pigment_pattern] *)
 }
 
 val keywords : string list
