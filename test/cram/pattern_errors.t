@@ -70,11 +70,11 @@ A pattern povml does not read yet, directly and through a declaration:
         |                        ^
   [1]
   $ cat > turb.pov <<'POV'
-  > #declare P = pigment { pigment_pattern { checker } warp { turbulence 0.5 } }
+  > #declare P = pigment { function { x } warp { turbulence 0.5 } }
   > plane { y, 0 pigment { P } }
   > POV
   $ povml turb.pov +W10 +H10 -D
-  turb.pov:2:24: error: not supported yet: 'pigment_pattern' as a pattern (used through 'P')
+  turb.pov:2:24: error: not supported yet: 'function' as a pattern (used through 'P')
       2 | plane { y, 0 pigment { P } }
         |                        ^
   turb.pov:1:24: note: 'P' was declared here
