@@ -43,10 +43,6 @@ val format_of_extension : string -> format option
 val format_name : format -> string
 (** [format_name f] is the keyword of [f] ("png", "jpeg", …). *)
 
-val read : format -> options -> string -> (t, string) result
-(** [read fmt opts path] decodes the file [path] as [fmt] under [opts], or says why it cannot
-    (unreadable, malformed, or a format or variant povml does not read yet). *)
-
 val rgbft : t -> int -> int -> float * float * float * float * float
 (** [rgbft img x y] is POV-Ray's GetRGBFTValue of the pixel at column [x], row [y] (0 the top):
     red, green, blue, filter and transmit in single precision, alpha turned into transmit
@@ -72,3 +68,46 @@ val with_filter_transmit : t -> ?entry:int -> filter:float option -> transmit:fl
     (alpha becoming transmit) and the filter or transmit of one entry, or of all without
     [entry], replaced (single precision), as the image_map's [filter]/[transmit] do.
     [img] is returned as it is when it has no palette. *)
+
+(** {1 What the format readers share} *)
+
+exception Bad of string
+(** A malformed or unsupported file, with the reason. *)
+
+val bad : ('a, unit, string, 'b) format4 -> 'a
+(** [bad fmt …] raises {!Bad} with the message. *)
+
+val f : float -> float
+(** [f x] is [x] rounded to single precision ({!Precision.f32}). *)
+
+val linear : int -> int -> float
+(** [linear max p] is the integer sample [p] of a container with maximum [max] as a float in
+    [0, 1], single precision. *)
+
+val rgb2gray : float -> float -> float -> float
+(** [rgb2gray r g b] is POV-Ray's Image::RGB2Gray, in single precision. *)
+
+val lut_of : Gamma_curve.t -> int -> float array option
+(** [lut_of curve max] is [curve] as a lookup table over [0, max], or None when it is neutral. *)
+
+val int_decode : Gamma_curve.t -> int -> int -> float
+(** [int_decode curve v max] is POV-Ray's IntDecode: the sample [v] of [max] decoded by [curve]. *)
+
+val assumed_curve : options -> Gamma_curve.t
+(** [assumed_curve o] is the curve of a format without gamma information of its own: the default
+    gamma when one is set, else sRGB; neutral without gamma correction. *)
+
+val given_curve : options -> Gamma_curve.t
+(** [given_curve o] is PPM's and PGM's curve: the one given, else neutral. *)
+
+val u8 : string -> int -> int
+(** [u8 s i] is the byte of [s] at [i]. *)
+
+val u16be : string -> int -> int
+(** [u16be s i] is the big-endian 16-bit number at [i]. *)
+
+val u32be : string -> int -> int
+(** [u32be s i] is the big-endian 32-bit number at [i]. *)
+
+val need : string -> int -> string -> unit
+(** [need s n what] raises {!Bad} unless [s] holds at least [n] bytes ([what]: the part read). *)

@@ -107,7 +107,7 @@ let read st keyword =
     warn st file_loc "PNG input image default gamma handling has changed for pre POV-Ray 3.7 scenes; results may differ from original intention";
   let path = locate st file_loc fmt name in
   let image =
-    match Image_file.read fmt options path with
+    match Image_read.read fmt options path with
     | Ok img -> img
     | Error msg -> Error.raise_at file_loc "cannot read the image file \"%s\": %s" name msg
   in

@@ -20,7 +20,7 @@ let image name = Filename.concat (Lazy.force root) ("scenes/images/" ^ name)
 let raw : Image_file.options =
   { gamma_correct = false; default_gamma = None; working_gamma = Neutral; gamma_override = false; premultiply = None }
 
-let read fmt name = match Image_file.read fmt raw (image name) with Ok i -> i | Error m -> Alcotest.fail m
+let read fmt name = match Image_read.read fmt raw (image name) with Ok i -> i | Error m -> Alcotest.fail m
 
 (* the generator of scenes/images' base picture (an 8-bit PPM): each pixel's r, g, b *)
 let base x y = ((x * 16) + 8, (y * 21) + 5, (((x / 4) * 60) + ((y / 4) * 90) + 13) mod 256)
@@ -73,8 +73,8 @@ let decoders =
         let _, _, _, _, t = Image_file.rgbft img 10 3 in
         float_eq ~eps:0. "transmit at 10,3" (Precision.f32 (1. -. Precision.f32 (float_of_int (10 * 3 * 9 mod 256) /. 255.))) t);
     Alcotest.test_case "a missing or broken file is an error, not an exception" `Quick (fun () ->
-        (match Image_file.read Png raw "/nonexistent/x.png" with Ok _ -> Alcotest.fail "read" | Error _ -> ());
-        match Image_file.read Png raw (image "img.ppm") with Ok _ -> Alcotest.fail "a PPM read as PNG" | Error _ -> ());
+        (match Image_read.read Png raw "/nonexistent/x.png" with Ok _ -> Alcotest.fail "read" | Error _ -> ());
+        match Image_read.read Png raw (image "img.ppm") with Ok _ -> Alcotest.fail "a PPM read as PNG" | Error _ -> ());
     Alcotest.test_case "sRGB decoding in single precision" `Quick (fun () ->
         (* 128/255 decoded by SRGBGammaCurve::Decode: POV-Ray prints (srgb 128/255).red as
            0.21586053073406219482 *)
