@@ -6,7 +6,9 @@
    a function of the compiled scene and the ray; what each step needs lives in a module of its own:
    Nearest (the nearest hit and POV-Ray's tie rules), Normals (a texture's normal bending the
    surface normal), Lighting and Shadow (local illumination and shadow feelers), Optics (Fresnel,
-   interiors, fade), Sky, Robust (the robust mode's origins). *)
+   interiors, fade), Sky, Robust (the robust mode's origins). A plain texture (one layer) is shaded
+   by [shade] itself; layered and patterned textures by [texture_colour] and [lighted], POV-Ray's
+   ComputeOneTextureColour and ComputeLightedTexture (docs/textures.md). *)
 
 open Compiled
 open Context
