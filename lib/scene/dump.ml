@@ -113,6 +113,7 @@ let pattern_name (p : pattern) =
   | Average -> "average"
   | Object_pattern t -> "object { " ^ t.shown ^ " }"
   | Pigment_pattern p -> "pigment_pattern { " ^ p.pshown ^ " }"
+  | No_pattern -> "(no pattern)"
   | Bitmap b -> "image_map { " ^ bitmap b ^ " }"
   | Image_pattern b -> "image_pattern { " ^ bitmap b ^ " }"
 

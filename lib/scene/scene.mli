@@ -72,6 +72,9 @@ type pattern =
   | Aoi  (** the angle between the ray and the surface normal *)
   | Slope of slope
   | Average  (** a normal's [average] of the entries of its normal_map *)
+  | No_pattern
+      (** a normal written without a pattern: allowed only as [#default]'s, the base that later
+          normals edit; an object left with it is refused (POV-Ray: "No normal type given") *)
   | Pigment_pattern of pigment_probe
       (** pattern.cpp pigment_pattern: the greyscale (single precision) of a pigment's colour at
           the point *)

@@ -37,7 +37,18 @@ let resolved st (o : V.obj) =
 
 (* The scene object of [o] with [shape], [texture], [interior_texture], [interior] and
    [no_shadow]; its other flags and place are [o]'s. *)
+(* a layer whose normal has no pattern: only #default's may, and it must not reach an object *)
+let rec patternless (t : Scene.texture) =
+  match t with
+  | Layers ls -> List.exists (fun (l : Scene.layer) -> match l.normal with Some { npattern = No_pattern; _ } -> true | Some _ | None -> false) ls
+  | Texture_pattern { tmap; _ } -> Array.exists (fun (e : Scene.texture_entry) -> patternless e.ttexture) tmap
+  | Material_map { materials; _ } -> Array.exists patternless materials
+  | Uv_mapped { inner; _ } -> patternless inner
+  | Cutaway -> false
+
 let scene_obj (o : V.obj) ?(no_shadow = o.no_shadow) ?(interior_texture = o.interior_texture) shape texture interior : Scene.obj =
+  if patternless texture || Option.fold ~none:false ~some:patternless interior_texture then
+    Error.raise_at o.oloc "no normal type given: the default normal has no pattern, and this object's texture keeps it";
   {
     Scene.shape;
     texture;

@@ -244,7 +244,7 @@ let directive st d loc =
             loop ()
         | Ident "pigment" -> advance st; st.default_texture <- { st.default_texture with pigment = parse_pigment st st.default_texture.pigment }; loop ()
         | Ident "finish" -> advance st; st.default_texture <- { st.default_texture with finish = parse_finish st st.default_texture.finish }; loop ()
-        | Ident "normal" -> advance st; st.default_texture <- { st.default_texture with normal = Some (parse_normal st st.default_texture.normal) }; loop ()
+        | Ident "normal" -> advance st; st.default_texture <- { st.default_texture with normal = Some (parse_default_normal st st.default_texture.normal) }; loop ()
         | Ident "radiosity" ->
             (* the default radiosity importance, which only radiosity reads (Parse_Default) *)
             advance st;

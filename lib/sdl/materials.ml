@@ -289,7 +289,7 @@ let fresh_normal = { nh = Pattern_reader.plain; amount = 0.5; accuracy = Precisi
 
 let nrm_of (n : Scene.normal) =
   {
-    nh = { pat = Some n.npattern; frequency = n.nfrequency; phase = n.nphase; wave = n.nwave; warps = n.nwarps; noise = n.nnoise_generator };
+    nh = { pat = (match n.npattern with No_pattern -> None | p -> Some p); frequency = n.nfrequency; phase = n.nphase; wave = n.nwave; warps = n.nwarps; noise = n.nnoise_generator };
     amount = n.amount;
     accuracy = n.accuracy;
     no_bump_scale = n.no_bump_scale;
@@ -304,10 +304,11 @@ let rec with_no_bump_scale (n : Scene.normal) =
       { n with nmap = Normal_map (Array.map (fun (e : Scene.normal_entry) -> { e with nnormal = with_no_bump_scale { e.nnormal with no_bump_scale = true } }) es) }
   | No_map | Slope_map _ | Normal_map _ -> n
 
-let normal_of loc (n : nrm) : Scene.normal =
+let normal_of ?(template = false) loc (n : nrm) : Scene.normal =
   match n.nh.pat with
-  | None -> Error.raise_at loc "a normal needs a pattern"
-  | Some npattern ->
+  | None when not template -> Error.raise_at loc "a normal needs a pattern"
+  | None | Some _ ->
+      let npattern = match n.nh.pat with Some p -> p | None -> Scene.No_pattern in
       (match (npattern, n.nmap) with
       | Average, (No_map | Slope_map _) -> Error.raise_at loc "an average normal needs a normal_map"
       | _ -> ());
@@ -330,7 +331,7 @@ let default_normal st = match st.default_texture.normal with Some n -> nrm_of n 
 
 (* The normal body read up to [close] ('}' of a normal block, or ']' of a normal_map entry), editing
    [base] (Parse_Tnormal, Parse_Pattern for NORMAL_TYPE). *)
-let rec parse_normal_body st ~close (base : Scene.normal option) : Scene.normal =
+let rec parse_normal_body ?(template = false) st ~close (base : Scene.normal option) : Scene.normal =
   let start = peek_loc st in
   let n =
     match ident_of_kind st (function V.Normal n -> Some n | _ -> None) with
@@ -381,7 +382,7 @@ let rec parse_normal_body st ~close (base : Scene.normal option) : Scene.normal 
   let rec loop (n : nrm) =
     let loc = peek_loc st in
     match peek st with
-    | k when k == close -> advance st; normal_of start { n with nh = Pattern_reader.finish st loc n.nh }
+    | k when k == close -> advance st; normal_of ~template start { n with nh = Pattern_reader.finish st loc n.nh }
     | Ident "bump_size" -> advance st; loop { n with amount = Precision.f32 (parse_float st) }
     | Ident "accuracy" -> advance st; loop { n with accuracy = Precision.f32 (parse_float st) }
     | Ident "no_bump_scale" -> advance st; loop { n with no_bump_scale = parse_bool_opt st }
@@ -430,6 +431,11 @@ and parse_slope_map st : Scene.slope_entry array =
 and parse_normal st (base : Scene.normal option) : Scene.normal =
   open_block st "normal";
   parse_normal_body st ~close:RBrace base
+
+(* #default's normal may have no pattern: it is only the base later normals edit *)
+let parse_default_normal st (base : Scene.normal option) : Scene.normal =
+  open_block st "normal";
+  parse_normal_body ~template:true st ~close:RBrace base
 
 let parse_reflection_block st (r : Scene.reflection) : Scene.reflection =
   (* reflection { MIN [, MAX] [fresnel [b]] [falloff F] [exponent E] [metallic [M]] } (§5.1) *)

@@ -34,6 +34,10 @@ val parse_normal : Reader.st -> Scene.normal option -> Scene.normal
 (** [parse_normal st base] reads a normal block that modifies [base] (else the default texture's
     normal, else a new one: bump size 0.5, accuracy 0.02). *)
 
+val parse_default_normal : Reader.st -> Scene.normal option -> Scene.normal
+(** [parse_default_normal st base] is {!parse_normal} for [#default], where a normal may have no
+    pattern ([No_pattern]): it is only the base that later normals edit. *)
+
 val parse_finish : Reader.st -> Scene.finish -> Scene.finish
 (** [parse_finish st base] reads a finish block that modifies [base]. *)
 

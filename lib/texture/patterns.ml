@@ -660,6 +660,7 @@ let value_with ~frequency ~phase (p : Scene.pattern) (warps : Scene.warp list) g
   | Average -> invalid_arg "Patterns.value: average has no value (it averages the entries of its map)"
   | Object_pattern t -> object_pattern t q
   | Pigment_pattern pp -> pp.grey q
+  | No_pattern -> 0.
   | Bitmap _ -> invalid_arg "Patterns.value: an image_map or bump_map has a colour or a normal, not a value"
   | Image_pattern b -> Image_map.value b q
 

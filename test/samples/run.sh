@@ -199,7 +199,7 @@ read -r renders identical differ unpaired errors crashes timeouts prenders < <(a
   END { print r+0, i+0, d+0, u+0, e+0, c+0, t+0, p+0 }' "$tsv")
 totals="$renders of $total render with povml: $identical identical to POV-Ray, $differ differ"
 [ "$unpaired" -eq 0 ] || totals="$totals, $unpaired not compared (POV-Ray gave no image)"
-top=$(blockers | grep -v -F '(POV-Ray fails too)' | head -n 12 | awk -F'\t' '{ printf "%s%s %d", (NR > 1 ? ", " : ""), $2, $1 }')
+top=$(blockers | { grep -v -F '(POV-Ray fails too)' || true; } | head -n 12 | awk -F'\t' '{ printf "%s%s %d", (NR > 1 ? ", " : ""), $2, $1 }')
 povray_version=$("${POVRAY:-povray}" --version 2>&1 | head -n1 || true)
 
 {

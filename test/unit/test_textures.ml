@@ -85,6 +85,14 @@ let test_errors () =
     ~sub:"requires an exterior texture";
   expect_scene_error "uv_mapping after a texture" (v37 ^ "sphere { 0, 1 pigment { rgb 1 } uv_mapping }") ~line:2 ~col:33
     ~sub:"uv_mapping must be specified before texture";
+  (* #default's normal may have no pattern, as a base; an object that keeps it is refused *)
+  let o = obj "#default { normal { bump_size 1.5 } }\nsphere { 0, 1 normal { bumps } }" in
+  (match (List.hd (layers o)).normal with
+  | Some n -> float_eq ~eps:1e-7 "the default's bump size" 1.5 n.amount
+  | None -> Alcotest.fail "a normal");
+  expect_scene_error "a patternless default normal kept" (v37 ^ "#default { normal { bump_size 1.5 } }\nsphere { 0, 1 pigment { rgb 1 } }") ~line:3 ~col:1
+    ~sub:"no normal type given";
+  expect_scene_error "a normal without a pattern" (v37 ^ "sphere { 0, 1 normal { bump_size 1 } }") ~line:2 ~col:24 ~sub:"needs a pattern";
   expect_scene_error "layered default" (v37 ^ "#default { texture { checker texture { } texture { } } }") ~line:2 ~col:12
     ~sub:"default texture cannot be"
 
