@@ -4,33 +4,9 @@
 
 open Compiled
 
-(* what the Inside tests never read, in the fields a compiled object must have *)
-let no_surface =
-  {
-    colour = Rgb.black;
-    att = 1.;
-    emitted = Rgb.black;
-    lit = false;
-    diffuse = 0.;
-    brilliance = 0.;
-    phong = 0.;
-    phong_size = 0.;
-    specular = 0.;
-    spec_exp = 0.;
-    metallic = 0.;
-    refl = Defaults.reflection;
-    reflects = false;
-    filcol = Rgb.black;
-    transparent = false;
-    conserve = false;
-    irid = 0.;
-    irid_thickness = 0.;
-    irid_turb = 0.;
-    crand = 0.;
-    paint = Fixed;
-    bump = Smooth;
-    needs_uv = false;
-  }
+(* what the Inside tests never read, in the fields a compiled object must have: the default
+   texture's surface *)
+let no_surface = Compile.surface ~legacy:false ~noise:2 ~ambient_light:Rgb.black Defaults.layer
 
 let member ~inverted shape =
   {

@@ -248,14 +248,7 @@ let directive st d loc =
         | Ident "radiosity" ->
             (* the default radiosity importance, which only radiosity reads (Parse_Default) *)
             advance st;
-            open_block st "radiosity";
-            while is_ident st "importance" do
-              advance st;
-              let il = peek_loc st in
-              let i = parse_float st in
-              if not (i > 0. && i <= 1.) then Error.raise_at il "radiosity importance must be greater than 0 and at most 1, not %g" i
-            done;
-            close_block st "radiosity";
+            Settings.parse_radiosity_importance st;
             loop ()
         | Ident s when List.mem s [ "camera"; "media" ] -> not_supported l (Printf.sprintf "'%s' in #default" s)
         | _ -> unexpected st "'texture', 'pigment', 'normal', 'finish' or '}' in #default"

@@ -310,14 +310,7 @@ and parse_object_mods st (o : V.obj) what : V.obj =
         loop o
     | Ident "radiosity" ->
         advance st;
-        open_block st "radiosity";
-        while is_ident st "importance" do
-          advance st;
-          let l = peek_loc st in
-          let i = parse_float st in
-          if not (i > 0. && i <= 1.) then Error.raise_at l "radiosity importance must be greater than 0 and at most 1, not %g" i
-        done;
-        close_block st "radiosity";
+        Settings.parse_radiosity_importance st;
         loop o
     | Ident "no_radiosity" -> advance st; ignore (parse_bool_opt st); loop o
     | Ident "hierarchy" -> (

@@ -282,3 +282,15 @@ let parse_background st =
          { Colour.red = c.red *. (1. -. c.transmit); green = c.green *. (1. -. c.transmit); blue = c.blue *. (1. -. c.transmit); filter = 0.; transmit = 0. }
        else { c with filter = 0.; transmit = 0. })
 
+
+(* radiosity { importance I … }, in #default and in objects: read and checked, only radiosity
+   reads it (Parse_Default, Parse_Object_Mods) *)
+let parse_radiosity_importance st =
+  open_block st "radiosity";
+  while is_ident st "importance" do
+    advance st;
+    let l = peek_loc st in
+    let i = parse_float st in
+    if not (i > 0. && i <= 1.) then Error.raise_at l "radiosity importance must be greater than 0 and at most 1, not %g" i
+  done;
+  close_block st "radiosity"

@@ -25,3 +25,8 @@ val parse_sky_sphere : Reader.st -> unit
 
 val parse_background : Reader.st -> unit
 (** [parse_background st] reads a background (the keyword is the next token). *)
+
+val parse_radiosity_importance : Reader.st -> unit
+(** [parse_radiosity_importance st] reads the block of a [radiosity] in [#default] or an object,
+    after the keyword: its [importance] values, each checked to lie in (0, 1]. povml has no
+    radiosity, so nothing else reads them. *)
