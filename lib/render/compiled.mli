@@ -114,6 +114,12 @@ and obj = {
           shares its parent's interior the parent's [iid] (§16.5). [t.objects.(iid)] carries
           that interior's values. *)
   top : int;  (** the id of the top-level object it belongs to (its own id at top level) *)
+  cache : int;
+      (** the object the shadow cache keeps when this primitive stops a shadow ray (POV-Ray's
+          Intersection.Csg, else the primitive): its outermost enclosing intersection, merge or
+          clipped union, else itself; a top-level primitive whose bounding objects were removed
+          and whose own box test POV-Ray keeps (not a sphere, box, plane or triangle) is kept
+          with its box *)
   inverted : bool;  (** a CSG member whose Inside is negated (§16.3) *)
   shape : shape;
   tex : texture;  (** the object's own texture *)

@@ -13,6 +13,7 @@ let member ~inverted shape =
     id = 0;
     iid = 0;
     top = 0;
+    cache = 0;
     inverted;
     shape;
     tex = Plain no_surface;

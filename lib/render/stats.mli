@@ -38,6 +38,8 @@ type t = {
   mutable polygon_hits : int;  (** tests whose crossing is within the depth limits and the outline *)
   mutable quadric_tests : int;  (** quadrics tested *)
   mutable quadric_hits : int;  (** tests that found a root pair or a linear root, whatever its depth *)
+  mutable bound_tests : int;  (** bounding objects tested for a ray (Ray_In_Bound, one per object) *)
+  mutable bound_hits : int;  (** of those, the ones the ray met or started inside *)
 }
 
 val create : unit -> t

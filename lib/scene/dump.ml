@@ -271,7 +271,7 @@ let rec shape = function
         ^ if m.own_interior then "" else " shared interior"
       in
       Printf.sprintf "%s {\n  %s"
-        (match kind with Union -> "union" | Merge -> "merge" | Intersection -> "intersection" | Clipped -> "clipped (the first by the others)")
+        (match kind with Union -> "union" | Merge -> "merge" | Intersection -> "intersection" | Clipped -> "clipped (the first by the others)" | Bounded -> "bounded (the first by the others)" | Boxed -> "boxed (the first within the others' box)")
         (String.concat "\n  " (List.map member members))
 
 and obj (o : obj) =

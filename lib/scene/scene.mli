@@ -366,8 +366,12 @@ type shape =
 (** The kinds of CSG after parsing: a difference is an intersection whose later members are
     inverted, and an inverted CSG has been morphed (§16.1, §16.3). [Clipped] is an object with
     [clipped_by]: its first member is the object, the others the clip objects, whose surfaces are
-    not seen; the object's hits are kept inside every clip object (§15.8). *)
-and csg_kind = Union | Merge | Intersection | Clipped
+    not seen; the object's hits are kept inside every clip object (§15.8). [Bounded] is an object
+    with [bounded_by]: its first member is the object, the others the bounding objects, whose
+    surfaces are not seen; a ray meets the object only if it meets every bounding object or starts
+    inside it (Ray_In_Bound). [Boxed] is one whose bounding objects POV-Ray removed (a top-level
+    primitive, Link_To_Frame): only their box is left, the object's box when it is the smaller. *)
+and csg_kind = Union | Merge | Intersection | Clipped | Bounded | Boxed
 
 (** A member of a CSG. *)
 and member = {

@@ -17,3 +17,24 @@ val scene_obj :
 (** [scene_obj o shape texture interior] is the scene object of [o] with [shape], [texture] and
     [interior]; its flags, place, interior texture (unless given) and no_shadow (unless given) are
     [o]'s. *)
+
+val textured : Value.obj -> bool
+(** [textured o] is POV-Ray's TEXTURED_OBJECT: [o] or a member of it at any depth has a texture. *)
+
+val core : Value.obj -> Value.obj
+(** [core o] is [o] under its clipped_by and bounded_by wrappers: the object POV-Ray's type tests see. *)
+
+val clip_objects : Value.obj -> Value.member list
+(** [clip_objects o] is [o]'s clip objects ([] without clipped_by). *)
+
+val bound_objects : Value.obj -> Value.member list
+(** [bound_objects o] is [o]'s bounding objects ([] without bounded_by). *)
+
+val wrap : Scene.csg_kind -> Value.obj -> Value.member list -> Value.obj
+(** [wrap kind o objs] is [o] clipped ([Clipped]) or bounded ([Bounded]) by [objs] as well: added
+    to its wrapper of that kind when it is one, else a new wrapper holding [o] first, which takes
+    [o]'s texture, interior and flags. [o] itself when [objs] is empty. *)
+
+val patch : Value.obj -> bool
+(** [patch o] is POV-Ray's PATCH_OBJECT: [o] has no inside (a triangle, a mesh without
+    inside_vector, or a CSG with such a member). *)

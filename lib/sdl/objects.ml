@@ -231,9 +231,9 @@ and parse_object_mods st (o : V.obj) what : V.obj =
     | Ident "texture" -> advance st; loop { o with texture = Some (Texture_reader.link st loc o.texture (Texture_reader.parse st)) }
     | Ident "cutaway_textures" ->
         advance st;
-        (match o.shape with
+        (match (core o).shape with
         | Csg { kind = Intersection; _ } -> ()
-        | Csg { kind = Union | Merge | Clipped; _ } | Prim _ -> Error.raise_at loc "cutaway_textures can only be used with intersection and difference");
+        | Csg { kind = Union | Merge | Clipped | Bounded | Boxed; _ } | Prim _ -> Error.raise_at loc "cutaway_textures can only be used with intersection and difference");
         loop { o with cutaway = true }
     | Ident "uv_mapping" ->
         advance st;
@@ -267,31 +267,46 @@ and parse_object_mods st (o : V.obj) what : V.obj =
            union to it) without effect and stops on any other object *)
         match o.shape with
         | Csg ({ kind = Union; _ } as c) -> loop { o with shape = Csg { c with split = on } }
-        | Csg { kind = Merge; _ } | Csg { kind = Clipped; members = V.Member_obj { shape = Csg { kind = Union | Merge; _ }; _ } :: _; _ } ->
-            loop o (* a merge, or a clipped union, is never split *)
-        | Csg { kind = Intersection | Clipped; _ } | Prim _ -> Error.raise_at loc "split_union found in a non-union object")
+        | Csg { kind = Merge; _ } | Csg { kind = Clipped | Bounded | Boxed; members = V.Member_obj { shape = Csg { kind = Union | Merge; _ }; _ } :: _; _ } ->
+            loop o (* a merge, or a clipped or bounded union, is never split *)
+        | Csg { kind = Intersection | Clipped | Bounded | Boxed; _ } | Prim _ -> Error.raise_at loc "split_union found in a non-union object")
     | Ident "clipped_by" ->
         (* §15.8: clipped_by { OBJECT … }: the object's hits are kept inside every clip object, and
            so is its Inside. The clip objects move with the object's later transforms; its
-           texture, interior and flags stay on the clipped object. *)
+           texture, interior and flags stay on the clipped object. [clipped_by { bounded_by }]
+           clips by the bounding objects. *)
         advance st;
         open_block st "clipped_by";
-        let rec clips acc =
+        if o.linked && clip_objects o <> [] then Error.raise_at loc "Cannot add clips after linking bounds and clips.";
+        let cl, linked =
           match peek st with
-          | Ident "bounded_by" -> not_supported (peek_loc st) "'clipped_by { bounded_by }'"
-          | _ when object_follows st -> clips (V.Member_obj (parse_object st) :: acc)
-          | _ -> List.rev acc
+          | Ident "bounded_by" ->
+              let bloc = peek_loc st in
+              advance st;
+              if clip_objects o <> [] then Error.raise_at bloc "Cannot link bounds with previous clips.";
+              (bound_objects o, true)
+          | _ -> (nest st loc (fun () -> bound_clip st "clipped_by"), false)
         in
-        let cl = nest st loc (fun () -> clips []) in
-        if cl = [] then unexpected st "an object in clipped_by";
         close_block st "clipped_by";
-        let members =
-          match o.shape with
-          | Csg { kind = Clipped; members; _ } -> members @ cl
-          | Csg { kind = Union | Merge | Intersection; _ } | Prim _ ->
-              V.Member_obj { o with texture = None; interior = None; no_shadow = false } :: cl
+        loop { (wrap Clipped o cl) with linked = o.linked || linked }
+    | Ident "bounded_by" ->
+        (* bounded_by { OBJECT … }: a ray meets the object only if it meets every bounding object
+           or starts inside one (Ray_In_Bound), and their box is the object's when it is the
+           smaller; [bounded_by { clipped_by }] bounds by the clip objects *)
+        advance st;
+        open_block st "bounded_by";
+        if o.linked && bound_objects o <> [] then Error.raise_at loc "Cannot add bounds after linking bounds and clips.";
+        let bs, linked =
+          match peek st with
+          | Ident "clipped_by" ->
+              let cloc = peek_loc st in
+              advance st;
+              if bound_objects o <> [] then Error.raise_at cloc "Cannot link clips with previous bounds.";
+              (clip_objects o, true)
+          | _ -> (nest st loc (fun () -> bound_clip st "bounded_by"), false)
         in
-        loop { o with shape = Csg { kind = Clipped; members; split = false }; inverted = false }
+        close_block st "bounded_by";
+        loop { (wrap Bounded o bs) with linked = o.linked || linked }
     (* What only photon mapping or radiosity reads, which are off unless global_settings turns
        them on (and povml refuses that there): read as POV-Ray reads it (Parse_Object_Mods), and
        nothing changes (trace.cpp tests photonsEnabled before any photon flag). *)
@@ -335,6 +350,28 @@ and parse_object_mods st (o : V.obj) what : V.obj =
     | _ -> unexpected st (Printf.sprintf "an object modifier or '}' closing '%s'" what)
   in
   loop o
+
+(* Parse_Bound_Clip: the objects of a clipped_by or bounded_by block, none textured or without an
+   inside, then the transforms that move them all. *)
+and bound_clip st what =
+  let rec objects acc =
+    if object_follows st then begin
+      let c = parse_object st in
+      if textured c || patch c then Error.raise_at c.oloc "Illegal texture or patch in clip, bound or object pattern.";
+      objects (c :: acc)
+    end
+    else List.rev acc
+  in
+  let objs = objects [] in
+  if objs = [] then unexpected st (Printf.sprintf "an object in %s" what);
+  let rec moved objs =
+    match peek st with
+    | Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") ->
+        let op = parse_op st in
+        moved (List.map (move_obj op) objs)
+    | _ -> objs
+  in
+  List.map (fun c -> V.Member_obj c) (moved objs)
 
 (* Does an object (a keyword or an identifier of one) come next? *)
 and object_follows st =

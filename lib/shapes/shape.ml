@@ -102,6 +102,18 @@ and inside_member stack (m : obj) p =
   | Disc _ | Torus _ | Glyph _ | Polygon _ ->
       inside stack m.shape p <> m.inverted
 
+(* Spheres, ellipsoids, boxes, planes and triangles answer every box test of POV-Ray's
+   Intersect_BBox with yes; their clipped_by and bounded_by wrappers are theirs *)
+let rec box_test_free = function
+  | Sphere _ | Sphere_placed _ | Ellipsoid _ | Box _ | Box_trans _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ -> true
+  | Csg { kind = Clipped | Bounded | Boxed; members; _ } when Array.length members > 0 -> box_test_free members.(0).shape
+  | Csg _ | Mesh _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ -> false
+
+let cached_depth w shape o d lo =
+  match shape with
+  | Csg c when box_test_free shape -> Csg.depth_unboxed ~all_hits ~inside:inside_member w c o d lo
+  | _ -> depth w shape o d lo
+
 let hit_object (w : Scratch.t) ob = if Csg.is_csg ob.shape then w.leaf else ob.id
 
 let normal obj part p =
@@ -218,4 +230,4 @@ let stats_rows s =
   List.concat
     [ Box.stats_rows s; Cone.stats_rows s; Disc.stats_rows s; Csg.stats_rows s; Plane.stats_rows s; Polygon.stats_rows s; Quadric.stats_rows s;
       Triangle.stats_rows s;
-      Mesh.stats_rows s; Sphere.stats_rows s; Torus.stats_rows s; Glyph.stats_rows s ]
+      Mesh.stats_rows s; Sphere.stats_rows s; Torus.stats_rows s; Glyph.stats_rows s; Csg.bound_rows s ]

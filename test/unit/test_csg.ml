@@ -14,7 +14,7 @@ let members_of (o : Scene.obj) =
   | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ -> Alcotest.fail "expected a CSG"
 
 let kind_name : Scene.csg_kind -> string = function
-  | Union -> "union" | Merge -> "merge" | Intersection -> "intersection" | Clipped -> "clipped"
+  | Union -> "union" | Merge -> "merge" | Intersection -> "intersection" | Clipped -> "clipped" | Bounded -> "bounded" | Boxed -> "boxed"
 let check_kind msg e a = Alcotest.(check string) msg (kind_name e) (kind_name a)
 let inverted_flags ms = List.map (fun (m : Scene.member) -> m.inverted) ms
 
