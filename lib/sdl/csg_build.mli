@@ -38,3 +38,14 @@ val wrap : Scene.csg_kind -> Value.obj -> Value.member list -> Value.obj
 val patch : Value.obj -> bool
 (** [patch o] is POV-Ray's PATCH_OBJECT: [o] has no inside (a triangle, a mesh without
     inside_vector, or a CSG with such a member). *)
+
+val resolved : Reader.st -> Value.obj -> Scene.texture * Scene.interior
+(** [resolved st o] is [o]'s texture (the default texture without one) and interior (the default
+    interior without one, a legacy finish ior and caustics moved into it) (§2.7). *)
+
+val kept_obj :
+  Reader.st -> texture:Scene.texture option -> cut_parent:bool -> ?interior_texture:Scene.texture -> interior:Scene.interior -> Value.obj -> Scene.obj
+(** [kept_obj st ~texture ~cut_parent ~interior o] is [o] as a CSG kept whole enters the scene, its
+    textures passed down as Post_Process passes them ([texture]: the parent's, [cut_parent]: the
+    parent is an intersection with cutaway_textures); the lights among its members join the
+    scene's lights. *)

@@ -133,7 +133,8 @@ let test_parse_clipped_by () =
       vec_eq "the plane not turned over" (v 0. 1. 0.) normal
   | _ -> Alcotest.fail "expected sphere, plane");
   expect_scene_error "empty clipped_by" "sphere { 0, 1 clipped_by { } }" ~line:1 ~col:28 ~sub:"expected an object in clipped_by";
-  expect_scene_error "clipped_by { bounded_by }" "sphere { 0, 1 clipped_by { bounded_by } }" ~line:1 ~col:28 ~sub:"not supported yet"
+  expect_scene_error "clipped_by { bounded_by } after clips" "sphere { 0, 1 clipped_by { box { 0, 1 } } clipped_by { bounded_by } }" ~line:1 ~col:56
+    ~sub:"Cannot link bounds with previous clips"
 
 (* ---------------------------------------------------------------------------------------------- *)
 (* All hits of each primitive *)
