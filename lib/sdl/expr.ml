@@ -276,7 +276,12 @@ and parse_probe st name =
   let oloc = peek_loc st in
   let target =
     match peek st with
-    | Ident s -> (match cur_value st s with Some (V.Object o) -> advance st; `Object o | Some (V.Pigment p) -> advance st; `Pigment p | _ -> `None)
+    | Ident s -> (
+        match cur_value st s with
+        | Some (V.Object o) -> advance st; `Object o
+        | Some (V.Pigment p) -> advance st; `Pigment p
+        | Some (V.Unsupported u) -> unsupported_use oloc s u.what u.at
+        | _ -> `None)
     | _ -> `None
   in
   let of_vec (v : Vec.t) = V.Vector [| v.x; v.y; v.z |] in

@@ -222,7 +222,23 @@ let pov_box ~bounds:member_bounds ~pov_box c =
   | (Bounded | Boxed), None ->
       let b = bounded_box c in
       if b == huge_box then [||] else b
-  | (Union | Merge | Intersection | Clipped), None -> (
+  | (Union | Merge), None ->
+      (* the members' single-precision boxes, their upper corners added in double precision; a
+         box longer than CRITICAL_LENGTH (1e6) on any axis is POV-Ray's huge one *)
+      let lo = Array.make 3 2e10 and hi = Array.make 3 (-2e10) in
+      Array.iter
+        (fun m ->
+          let b = if Array.length m.pbox = 0 then huge_box else m.pbox in
+          for i = 0 to 2 do
+            lo.(i) <- Float.min lo.(i) b.(i);
+            hi.(i) <- Float.max hi.(i) (b.(i) +. b.(i + 3))
+          done)
+        c.members;
+      if lo.(0) > hi.(0) || lo.(1) > hi.(1) || lo.(2) > hi.(2) then [||]
+      else
+        let b = Pov_box.of_min_max lo hi in
+        if b.(3) > 1e6 || b.(4) > 1e6 || b.(5) > 1e6 then [||] else b
+  | (Intersection | Clipped), None -> (
       match bounds ~bounds:member_bounds c with None -> [||] | Some b -> Pov_box.of_min_max (Array.sub b 0 3) (Array.sub b 3 3))
 
 let magnitude c = Array.fold_left (fun m o -> Float.max m o.mag) 0. c.members
