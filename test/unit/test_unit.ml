@@ -30,6 +30,7 @@ let () =
       ("Sphere normal", Test_sphere_normal.tests);
       ("Text", Test_text.tests);
       ("CSG", Test_csg.tests);
+      ("Probe (trace, inside, extents)", Test_probe.tests);
       ("Patterns", Test_patterns.tests);
       ("Textures (layers, maps, materials)", Test_textures.tests);
       ("pattern values", Test_pattern_values.tests);
