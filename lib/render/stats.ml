@@ -38,6 +38,12 @@ type t = {
   mutable polygon_hits : int;
   mutable quadric_tests : int;
   mutable quadric_hits : int;
+  mutable blob_tests : int;
+  mutable blob_hits : int;
+  mutable blob_element_tests : int;
+  mutable blob_element_hits : int;
+  mutable blob_bound_tests : int;
+  mutable blob_bound_hits : int;
 }
 
 let create () =
@@ -48,6 +54,7 @@ let create () =
     csg_union_tests = 0; csg_union_hits = 0; csg_intersection_tests = 0; csg_intersection_hits = 0; csg_merge_tests = 0;
     csg_merge_hits = 0; ttf_tests = 0; ttf_hits = 0;
     polygon_tests = 0; polygon_hits = 0; quadric_tests = 0; quadric_hits = 0;
+    blob_tests = 0; blob_hits = 0; blob_element_tests = 0; blob_element_hits = 0; blob_bound_tests = 0; blob_bound_hits = 0;
   }
 
 let merge a b =
@@ -89,6 +96,12 @@ let merge a b =
     polygon_hits = a.polygon_hits + b.polygon_hits;
     quadric_tests = a.quadric_tests + b.quadric_tests;
     quadric_hits = a.quadric_hits + b.quadric_hits;
+    blob_tests = a.blob_tests + b.blob_tests;
+    blob_hits = a.blob_hits + b.blob_hits;
+    blob_element_tests = a.blob_element_tests + b.blob_element_tests;
+    blob_element_hits = a.blob_element_hits + b.blob_element_hits;
+    blob_bound_tests = a.blob_bound_tests + b.blob_bound_tests;
+    blob_bound_hits = a.blob_bound_hits + b.blob_bound_hits;
   }
 
 type row = { name : string; tests : int; hits : int }
