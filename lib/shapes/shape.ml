@@ -52,7 +52,7 @@ let rec depth w shape o d lo =
   | Mesh m -> Mesh.depth w m o d lo
   | Polygon p -> Polygon.depth w p o d lo
   | Quadric q -> Quadric.depth w q o d lo
-  | Blob b -> Blob.depth w b o d lo
+  | Blob b -> Blob_ray.depth w b o d lo
 
 and all_hits w ob o d lo n =
   let id = ob.id in
@@ -72,7 +72,7 @@ and all_hits w ob o d lo n =
   | Glyph g -> Glyph.hits w g id o d lo n
   | Polygon p -> Polygon.hits w p id o d lo n
   | Quadric q -> Quadric.hits w q id o d lo n
-  | Blob b -> Blob.hits w b id o d lo n
+  | Blob b -> Blob_ray.hits w b id o d lo n
 
 and inside stack shape p =
   match shape with
