@@ -265,7 +265,7 @@ let rec shape = function
         (num q.yy) (num q.zz) (num q.xy) (num q.xz) (num q.yz) (num q.lx) (num q.ly) (num q.lz) (num q.k) (num q.box_llx)
         (num q.box_lly) (num q.box_llz) (num q.box_lenx) (num q.box_leny) (num q.box_lenz)
   | Blob { blob; textures } ->
-      Printf.sprintf "%s%s%s" (Blob.describe num vec blob)
+      Printf.sprintf "%s%s%s" (Blob.describe num vec matrix blob)
         (if Array.length textures > 0 then Printf.sprintf "\n  // %d component textures" (Array.length textures) else "")
         (trans blob.trans)
   | Csg { kind; members } ->

@@ -345,13 +345,13 @@ let stats_rows (s : Stats.t) =
 
 (* ---------------------------------------------------------------------------------------------- *)
 
-let describe num vec b =
+let describe num vec matrix b =
   let comp c =
     let kind = match c.kind with Sphere -> "sphere" | Ellipsoid -> "ellipsoid" | Cylinder -> "cylinder" | Base_hemisphere | Apex_hemisphere -> "hemisphere" in
     Printf.sprintf "\n  %s { %s, radius² %s, strength %s%s%s%s }" kind (vec c.origin) (num c.rad2) (num c.strength)
       (match c.kind with Cylinder -> ", length " ^ num c.len | Sphere | Ellipsoid | Base_hemisphere | Apex_hemisphere -> "")
       (if c.tex >= 0 then Printf.sprintf ", texture %d" c.tex else "")
-      (match c.ctrans with None -> "" | Some t -> " " ^ Transform.to_string t)
+      (match c.ctrans with None -> "" | Some t -> " " ^ matrix t)
   in
   Printf.sprintf "blob { threshold %s%s%s // %d components, the last written first%s%s" (num b.threshold) (if b.sturm then " sturm" else "")
     (if b.hierarchy then "" else " hierarchy off") (List.length b.components)

@@ -47,8 +47,8 @@ let sphere_span r e px py pz dx dy dz mindist =
       true
     end
 
-(* the ray in an element's space, its direction unit: [acc.(0 … 6)] are free until the spans are
-   found, so the moved ray is returned as floats through a small record-free path *)
+(* coordinate [k] of the ray in an element's space: 0–2 the point (MInvTransPoint), 3–5 the
+   direction (MInvTransDirection), one float at a time so that nothing is allocated *)
 let[@inline] in_element e px py pz dx dy dz k =
   let m = e.etr in
   match k with
