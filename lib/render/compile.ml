@@ -269,7 +269,7 @@ let scene (s : Scene.t) : Compiled.t =
             inverted;
             shape;
             tex;
-            inner_tex = Option.map texture_of o.interior_texture;
+            inner_tex = (if blended then None (* Determine_Textures has no interior texture *) else Option.map texture_of o.interior_texture);
             face_texs;
             clear;
             uv_mapped = o.uv_mapped;

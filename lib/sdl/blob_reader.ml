@@ -105,7 +105,8 @@ let set (o : V.obj) f =
   match o.shape with Prim (Blob { blob; textures }) -> { o with shape = Prim (Blob { blob = f blob; textures }) } | Prim _ | Csg _ -> o
 
 let set_sturm on o = set o (fun b -> { b with sturm = on })
-let set_hierarchy on o = set o (fun b -> { b with hierarchy = on })
+(* the hierarchy is built by Make_Blob: the flag changes nothing once the blob is set up *)
+let set_hierarchy on o = set o (fun b -> if b.box = None then { b with hierarchy = on } else b)
 
 (* Make_Blob after the object's modifiers: its box (Compute_BBox); a clipped blob is the first
    member of its clip *)

@@ -15,7 +15,8 @@ val set_sturm : bool -> Value.obj -> Value.obj
 (** [set_sturm on o] is the blob [o] solved with Sturm sequences or not; any other object unchanged. *)
 
 val set_hierarchy : bool -> Value.obj -> Value.obj
-(** [set_hierarchy on o] is the blob [o] with or without its bounding sphere hierarchy. *)
+(** [set_hierarchy on o] is the blob [o] with or without its bounding sphere hierarchy, while its
+    own block is read; a blob already set up keeps the hierarchy it was built with. *)
 
 val finish : Value.obj -> Value.obj
 (** [finish o] sets up the blob [o] (or the blob a [clipped_by] wraps) once its modifiers are

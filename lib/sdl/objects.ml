@@ -264,12 +264,15 @@ and parse_object_mods st (o : V.obj) what : V.obj =
     | Ident "no_reflection" -> advance st; loop { o with no_reflection = parse_bool_opt st }
     | Ident "double_illuminate" -> advance st; loop (set_double_illuminate (parse_bool_opt st) o)
     | Ident "sturm" when is_torus o -> advance st; loop (set_sturm o)
-    | Ident "sturm" when Blob_reader.is_blob o -> advance st; loop (Blob_reader.set_sturm (parse_bool_opt st) o)
+    | Ident "sturm" when Blob_reader.is_blob o ->
+        (* Allow_Float(1.0) > 0.0 *)
+        advance st;
+        loop (Blob_reader.set_sturm ((not (float_follows st)) || parse_float st > 0.) o)
     | Ident "hollow" -> advance st; ignore (parse_bool_opt st); loop o
     | Ident "inverse" -> advance st; loop (invert o)
     | Ident "split_union" -> (
         advance st;
-        let on = parse_bool_opt st in
+        let on = (not (float_follows st)) || parse_float st > 0. (* Allow_Float(1.0) > 0.0 *) in
         (* §16.4: only a union is ever split; POV-Ray accepts the keyword on a merge (a kind of
            union to it) without effect and stops on any other object *)
         match o.shape with
