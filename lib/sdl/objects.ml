@@ -135,8 +135,15 @@ let rec parse_object st : V.obj =
       (* Parse_Blob: threshold and components, then the object's modifiers, then Make_Blob *)
       advance st;
       open_block st "blob";
-      let shape = Blob_reader.parse st in
-      Blob_reader.finish (parse_object_mods st (new_obj shape loc) "blob")
+      (match peek st with
+      | Ident s when (match cur_value st s with Some (V.Object _) -> true | _ -> false) -> (
+          (* Parse_Object_Id: an object identifier first makes it object { … } *)
+          match cur_value st s with
+          | Some (V.Object o) -> advance st; parse_object_mods st { o with oloc = loc } "blob"
+          | _ -> unexpected st "an object identifier")
+      | _ ->
+          let shape = Blob_reader.parse st in
+          Blob_reader.finish (parse_object_mods st (new_obj shape loc) "blob"))
   | Ident ("polygon" | "quadric" as kw) ->
       advance st;
       open_block st kw;

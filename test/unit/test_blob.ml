@@ -123,6 +123,13 @@ let test_parse () =
       Alcotest.(check bool) "ellipsoid" true (ell.kind = Blob.Ellipsoid && ell.ctrans <> None)
   | _ -> Alcotest.fail "two components"
 
+let test_object_id () =
+  (* Parse_Object_Id: blob { B … } is object { B … }; sturm takes Allow_Float(1.0) > 0 *)
+  let b, _ = blob_of (the_object (scene (v37 ^ "#declare B = blob { sphere { 0, 1, 1 } } blob { B translate x sturm -1 }"))) in
+  Alcotest.(check bool) "moved" true (b.trans <> None);
+  Alcotest.(check bool) "sturm -1 is off" false b.sturm;
+  Alcotest.(check int) "one component" 1 (List.length b.components)
+
 let test_errors () =
   expect_scene_error "no component" (v37 ^ "blob { threshold 0.5\n  pigment { rgb 1 } }") ~line:4 ~col:3 ~sub:"Need at least one component in a blob";
   expect_scene_error "degenerate cylinder" (v37 ^ "blob {\n cylinder { 1, 1, 1, 2 } }") ~line:4 ~col:22 ~sub:"Degenerate cylindrical component";
@@ -240,6 +247,7 @@ let tests =
   [
     Alcotest.test_case "parse" `Quick test_parse;
     Alcotest.test_case "parse errors" `Quick test_errors;
+    Alcotest.test_case "an object identifier first" `Quick test_object_id;
     Alcotest.test_case "POV-Ray's trace()" `Quick test_pov_trace;
     Alcotest.test_case "brute force" `Quick test_brute;
     Alcotest.test_case "inside" `Quick test_inside;
