@@ -405,7 +405,11 @@ let intersect (w : Scratch.t) c ~child (o : Vec.t) (d : Vec.t) =
 (* ---------------------------------------------------------------------------------------------- *)
 (* What the tracer asks. *)
 
+(* a blob on its own is tested only through its box: one with no component of positive strength
+   and no transform has an empty box (negative lengths), which no ray enters *)
 let depth (w : Scratch.t) c o d lo =
+  if c.cbox.(3) < 0. || c.cbox.(4) < 0. || c.cbox.(5) < 0. then infinity
+  else
   let n = intersect w c ~child:false o d in
   let best = ref infinity in
   let f = w.blob.found in

@@ -13,7 +13,9 @@ val intersect : Scratch.t -> Blob.compiled -> child:bool -> Vec.t -> Vec.t -> in
 
 val depth : Scratch.t -> Blob.compiled -> Vec.t -> Vec.t -> float -> float
 (** [depth w c o d lo] is the nearest depth of [intersect] (as a blob on its own) at least [lo],
-    or infinity. *)
+    or infinity. A blob whose box is empty (no component of positive strength, and no transform,
+    which would map that box to the whole space) is never hit on its own, as POV-Ray's bounding
+    box test never lets a ray reach it; as a CSG member it is intersected all the same. *)
 
 val hits : Scratch.t -> Blob.compiled -> int -> Vec.t -> Vec.t -> float -> int -> int
 (** [hits w c id o d lo n] pushes every depth of [intersect] (as a CSG member) at least [lo] as a

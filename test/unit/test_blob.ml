@@ -239,6 +239,15 @@ let test_box () =
   let b = Shape.pov_box obj.shape in
   float_eq ~eps:1e-6 "mapped box" (-.sqrt 2.) b.(0)
 
+let test_empty_box () =
+  (* no component of positive strength: an empty box, never entered (POV-Ray's bounding box
+     test); a transform maps that box to the whole space, and the blob is hit (checked by
+     rendering against POV-Ray) *)
+  let t, _, _ = hit (setup "blob { threshold -0.2 sphere { 0, 1, -1 } }") (v 0. 0. (-3.)) (v 0. 0. 1.) in
+  Alcotest.(check bool) "never hit" true (t = infinity);
+  let t, _, _ = hit (setup "blob { threshold -0.2 sphere { 0, 1, -1 } translate x*0.001 }") (v 0. 0. (-3.)) (v 0. 0. 1.) in
+  Alcotest.(check bool) "moved: hit" true (t < infinity)
+
 let test_dump () =
   let s = Dump.scene (scene (v37 ^ "blob { threshold 0.5 sphere { 0, 1, 2 } }")) in
   check_contains "dump" ~sub:"blob { threshold 0.5" s
@@ -254,5 +263,6 @@ let tests =
     Alcotest.test_case "hierarchy" `Quick test_hierarchy;
     Alcotest.test_case "texture weights" `Quick test_weights;
     Alcotest.test_case "box" `Quick test_box;
+    Alcotest.test_case "empty box" `Quick test_empty_box;
     Alcotest.test_case "dump" `Quick test_dump;
   ]
