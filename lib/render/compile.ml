@@ -260,9 +260,14 @@ let scene (s : Scene.t) : Compiled.t =
     match shape with
     | None -> None
     | Some shape ->
-        let tex = texture_of o.texture in
+        (* a blob whose components carry textures is textured by their blend (Cutaway's path,
+           Surfaces.cutaway): its own texture comes last among the components' *)
+        let blended = match shape with Blob b -> b.textured | _ -> false in
+        let tex = if blended then Compiled.Cutaway else texture_of o.texture in
         (* a mesh's faces may carry textures of their own; no other shape has any *)
-        let face_textures = match o.shape with Mesh m -> m.textures | _ -> [||] in
+        let face_textures =
+          match o.shape with Mesh m -> m.textures | Blob b when blended -> Array.append b.textures [| o.texture |] | _ -> [||]
+        in
         let face_texs = Array.map texture_of face_textures in
         let opaque =
           match shape with
@@ -283,7 +288,7 @@ let scene (s : Scene.t) : Compiled.t =
             inverted;
             shape;
             tex;
-            inner_tex = Option.map texture_of o.interior_texture;
+            inner_tex = (if blended then None (* Determine_Textures has no interior texture *) else Option.map texture_of o.interior_texture);
             face_texs;
             clear;
             uv_mapped = o.uv_mapped;

@@ -40,6 +40,12 @@ type t = {
   mutable quadric_hits : int;
   mutable bound_tests : int;
   mutable bound_hits : int;
+  mutable blob_tests : int;
+  mutable blob_hits : int;
+  mutable blob_element_tests : int;
+  mutable blob_element_hits : int;
+  mutable blob_bound_tests : int;
+  mutable blob_bound_hits : int;
 }
 
 let create () =
@@ -51,6 +57,7 @@ let create () =
     csg_merge_hits = 0; ttf_tests = 0; ttf_hits = 0;
     polygon_tests = 0; polygon_hits = 0; quadric_tests = 0; quadric_hits = 0;
     bound_tests = 0; bound_hits = 0;
+    blob_tests = 0; blob_hits = 0; blob_element_tests = 0; blob_element_hits = 0; blob_bound_tests = 0; blob_bound_hits = 0;
   }
 
 let merge a b =
@@ -94,6 +101,12 @@ let merge a b =
     quadric_hits = a.quadric_hits + b.quadric_hits;
     bound_tests = a.bound_tests + b.bound_tests;
     bound_hits = a.bound_hits + b.bound_hits;
+    blob_tests = a.blob_tests + b.blob_tests;
+    blob_hits = a.blob_hits + b.blob_hits;
+    blob_element_tests = a.blob_element_tests + b.blob_element_tests;
+    blob_element_hits = a.blob_element_hits + b.blob_element_hits;
+    blob_bound_tests = a.blob_bound_tests + b.blob_bound_tests;
+    blob_bound_hits = a.blob_bound_hits + b.blob_bound_hits;
   }
 
 type row = { name : string; tests : int; hits : int }

@@ -40,6 +40,12 @@ type t = {
   mutable quadric_hits : int;  (** tests that found a root pair or a linear root, whatever its depth *)
   mutable bound_tests : int;  (** bounding objects tested for a ray (Ray_In_Bound, one per object) *)
   mutable bound_hits : int;  (** of those, the ones the ray met or started inside *)
+  mutable blob_tests : int;  (** blobs tested (shape/blob.cpp) *)
+  mutable blob_hits : int;  (** tests that found a depth within the limits *)
+  mutable blob_element_tests : int;  (** blob elements tested for their span along the ray *)
+  mutable blob_element_hits : int;  (** of which the ray passed through the element's sphere of influence *)
+  mutable blob_bound_tests : int;  (** nodes of a blob's hierarchy tested *)
+  mutable blob_bound_hits : int;  (** of which the ray passed within the node's sphere *)
 }
 
 val create : unit -> t

@@ -354,6 +354,10 @@ type shape =
   | Quadric of Quadric.t
       (** quadrics.cpp: in world space; every modifier transforms its coefficients and maps its
           box, [inverse] negates the coefficients (and sets [inverted], as POV-Ray's flag) *)
+  | Blob of { blob : Blob.t; textures : texture array }
+      (** shape/blob.cpp: the components as parsed and moved, the last written first, mapped by
+          the blob's transform; [textures] are the components' own textures, which a
+          component's [tex] indexes *)
   | Csg of { kind : csg_kind; members : member list }
       (** §16: a CSG kept whole (a merge, an intersection or difference, a union with
           [split_union off]); its members are already moved by its transforms and carry the

@@ -10,7 +10,7 @@ open Csg_build
 
 (* Objects povml does not render yet: inside a union they are reported as "not supported yet". *)
 let unsupported_objects =
-  [ "prism"; "lathe"; "sor"; "blob"; "height_field";
+  [ "prism"; "lathe"; "sor"; "height_field";
     "isosurface"; "superellipsoid"; "julia_fractal"; "parametric"; "bicubic_patch"; "ovus"; "cubic";
     "quartic"; "poly"; "polynomial"; "sphere_sweep"; "lemon"; "composite" ]
 
@@ -131,6 +131,19 @@ let rec parse_object st : V.obj =
       let minor = parse_float st in
       let shape = Scene.Torus { major; minor; sturm = false; trans = Transform.identity } in
       parse_object_mods st (new_obj shape loc) "torus"
+  | Ident "blob" ->
+      (* Parse_Blob: threshold and components, then the object's modifiers, then Make_Blob *)
+      advance st;
+      open_block st "blob";
+      (match peek st with
+      | Ident s when (match cur_value st s with Some (V.Object _) -> true | _ -> false) -> (
+          (* Parse_Object_Id: an object identifier first makes it object { … } *)
+          match cur_value st s with
+          | Some (V.Object o) -> advance st; parse_object_mods st { o with oloc = loc } "blob"
+          | _ -> unexpected st "an object identifier")
+      | _ ->
+          let shape = Blob_reader.parse st in
+          Blob_reader.finish (parse_object_mods st (new_obj shape loc) "blob"))
   | Ident ("polygon" | "quadric" as kw) ->
       advance st;
       open_block st kw;
@@ -258,11 +271,15 @@ and parse_object_mods st (o : V.obj) what : V.obj =
     | Ident "no_reflection" -> advance st; loop { o with no_reflection = parse_bool_opt st }
     | Ident "double_illuminate" -> advance st; loop (set_double_illuminate (parse_bool_opt st) o)
     | Ident "sturm" when is_torus o -> advance st; loop (set_sturm o)
+    | Ident "sturm" when Blob_reader.is_blob o ->
+        (* Allow_Float(1.0) > 0.0 *)
+        advance st;
+        loop (Blob_reader.set_sturm ((not (float_follows st)) || parse_float st > 0.) o)
     | Ident "hollow" -> advance st; ignore (parse_bool_opt st); loop o
     | Ident "inverse" -> advance st; loop (invert o)
     | Ident "split_union" -> (
         advance st;
-        let on = parse_bool_opt st in
+        let on = (not (float_follows st)) || parse_float st > 0. (* Allow_Float(1.0) > 0.0 *) in
         (* §16.4: only a union is ever split; POV-Ray accepts the keyword on a merge (a kind of
            union to it) without effect and stops on any other object *)
         match o.shape with
@@ -329,11 +346,13 @@ and parse_object_mods st (o : V.obj) what : V.obj =
         loop o
     | Ident "no_radiosity" -> advance st; ignore (parse_bool_opt st); loop o
     | Ident "hierarchy" -> (
-        (* a mesh's own bounding hierarchy, which only changes how fast it is traced *)
+        (* a mesh's own bounding hierarchy, which only changes how fast it is traced; a blob's,
+           which also decides the order its elements are summed in *)
         advance st;
-        ignore (parse_bool_opt st);
+        let on = parse_bool_opt st in
         match o.shape with
         | Prim (Mesh _) -> loop o
+        | Prim (Blob _) -> loop (Blob_reader.set_hierarchy on o)
         | Prim _ | Csg _ -> Error.raise_at loc "'hierarchy' cannot be used with this object (only with a mesh)")
     | Ident "dtag" ->
         (* a debugging tag, unused by the render *)
