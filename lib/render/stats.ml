@@ -38,6 +38,8 @@ type t = {
   mutable polygon_hits : int;
   mutable quadric_tests : int;
   mutable quadric_hits : int;
+  mutable hfield_tests : int;
+  mutable hfield_hits : int;
 }
 
 let create () =
@@ -47,7 +49,7 @@ let create () =
     torus_tests = 0; torus_hits = 0; torus_bound_hits = 0; roots_tested = 0; roots_eliminated = 0; max_level = 0; samples = 0;
     csg_union_tests = 0; csg_union_hits = 0; csg_intersection_tests = 0; csg_intersection_hits = 0; csg_merge_tests = 0;
     csg_merge_hits = 0; ttf_tests = 0; ttf_hits = 0;
-    polygon_tests = 0; polygon_hits = 0; quadric_tests = 0; quadric_hits = 0;
+    polygon_tests = 0; polygon_hits = 0; quadric_tests = 0; quadric_hits = 0; hfield_tests = 0; hfield_hits = 0;
   }
 
 let merge a b =
@@ -89,6 +91,8 @@ let merge a b =
     polygon_hits = a.polygon_hits + b.polygon_hits;
     quadric_tests = a.quadric_tests + b.quadric_tests;
     quadric_hits = a.quadric_hits + b.quadric_hits;
+    hfield_tests = a.hfield_tests + b.hfield_tests;
+    hfield_hits = a.hfield_hits + b.hfield_hits;
   }
 
 type row = { name : string; tests : int; hits : int }

@@ -264,6 +264,13 @@ let rec shape = function
       Printf.sprintf "quadric { <%s, %s, %s>, <%s, %s, %s>, <%s, %s, %s>, %s // box <%s, %s, %s> + <%s, %s, %s>" (num q.xx)
         (num q.yy) (num q.zz) (num q.xy) (num q.xz) (num q.yz) (num q.lx) (num q.ly) (num q.lz) (num q.k) (num q.box_llx)
         (num q.box_lly) (num q.box_llz) (num q.box_lenx) (num q.box_leny) (num q.box_lenz)
+  | Height_field { field = f; trans = t } ->
+      Printf.sprintf "height_field { // %d x %d heights %d … %d, box y %s … %s%s%s%s%s" f.width f.height f.min_y f.max_y (num f.lo_y)
+        (num f.hi_y)
+        (if f.water <> 0. then Printf.sprintf ", water_level %s" (num (f.water /. 65536.)) else "")
+        (if f.smooth then ", smooth" else "")
+        (if f.hierarchy then Printf.sprintf ", %d x %d blocks" f.nbx f.nbz else ", no hierarchy")
+        (trans (Some t))
   | Csg { kind; members } ->
       let member (m : member) =
         String.concat "\n  " (String.split_on_char '\n' (String.trim (obj m.mobj)))

@@ -354,6 +354,9 @@ type shape =
   | Quadric of Quadric.t
       (** quadrics.cpp: in world space; every modifier transforms its coefficients and maps its
           box, [inverse] negates the coefficients (and sets [inverted], as POV-Ray's flag) *)
+  | Height_field of { field : Hfield.field; trans : Transform.t }
+      (** hfield.cpp: the field in its own space (one unit per pixel in x and z, per height step
+          in y), mapped by [trans]: Parse_HField's scaling, then every modifier composed into it *)
   | Csg of { kind : csg_kind; members : member list }
       (** §16: a CSG kept whole (a merge, an intersection or difference, a union with
           [split_union off]); its members are already moved by its transforms and carry the
