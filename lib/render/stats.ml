@@ -40,6 +40,13 @@ type t = {
   mutable quadric_hits : int;
   mutable hfield_tests : int;
   mutable hfield_hits : int;
+  mutable hfield_box_hits : int;
+  mutable hfield_triangle_tests : int;
+  mutable hfield_triangle_hits : int;
+  mutable hfield_block_tests : int;
+  mutable hfield_block_hits : int;
+  mutable hfield_cell_tests : int;
+  mutable hfield_cell_hits : int;
 }
 
 let create () =
@@ -49,7 +56,9 @@ let create () =
     torus_tests = 0; torus_hits = 0; torus_bound_hits = 0; roots_tested = 0; roots_eliminated = 0; max_level = 0; samples = 0;
     csg_union_tests = 0; csg_union_hits = 0; csg_intersection_tests = 0; csg_intersection_hits = 0; csg_merge_tests = 0;
     csg_merge_hits = 0; ttf_tests = 0; ttf_hits = 0;
-    polygon_tests = 0; polygon_hits = 0; quadric_tests = 0; quadric_hits = 0; hfield_tests = 0; hfield_hits = 0;
+    polygon_tests = 0; polygon_hits = 0; quadric_tests = 0; quadric_hits = 0; hfield_tests = 0; hfield_hits = 0; hfield_box_hits = 0;
+    hfield_triangle_tests = 0; hfield_triangle_hits = 0; hfield_block_tests = 0; hfield_block_hits = 0; hfield_cell_tests = 0;
+    hfield_cell_hits = 0;
   }
 
 let merge a b =
@@ -93,6 +102,13 @@ let merge a b =
     quadric_hits = a.quadric_hits + b.quadric_hits;
     hfield_tests = a.hfield_tests + b.hfield_tests;
     hfield_hits = a.hfield_hits + b.hfield_hits;
+    hfield_box_hits = a.hfield_box_hits + b.hfield_box_hits;
+    hfield_triangle_tests = a.hfield_triangle_tests + b.hfield_triangle_tests;
+    hfield_triangle_hits = a.hfield_triangle_hits + b.hfield_triangle_hits;
+    hfield_block_tests = a.hfield_block_tests + b.hfield_block_tests;
+    hfield_block_hits = a.hfield_block_hits + b.hfield_block_hits;
+    hfield_cell_tests = a.hfield_cell_tests + b.hfield_cell_tests;
+    hfield_cell_hits = a.hfield_cell_hits + b.hfield_cell_hits;
   }
 
 type row = { name : string; tests : int; hits : int }

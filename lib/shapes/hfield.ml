@@ -202,6 +202,8 @@ let found r depth x z tri =
    [height1, height2] over the cell *)
 let intersect_pixel r x z height1 height2 =
   let f = r.f in
+  let stats = r.w.stats in
+  stats.hfield_cell_tests <- stats.hfield_cell_tests + 1;
   (* clamped to the last cell; below 0 (never reached by POV-Ray's walk) to the first *)
   let z = if z > f.height - 2 then f.height - 2 else if z < 0 then 0 else z in
   let x = if x > f.width - 2 then f.width - 2 else if x < 0 then 0 else x in
@@ -210,10 +212,12 @@ let intersect_pixel r x z height1 height2 =
   let min_height = Float.min (Float.min y1 y4) min23 and max_height = Float.max (Float.max y1 y4) max23 in
   if max_height < height1 || min_height > height2 then false
   else begin
+    stats.hfield_cell_hits <- stats.hfield_cell_hits + 1;
     let hit = ref false in
     let fx = float_of_int x and fz = float_of_int z in
     (* the first triangle: (x, y1, z) with N = <y1 − y2, 1, y1 − y3> *)
     if Float.max y1 max23 >= height1 && Float.min y1 min23 <= height2 then begin
+      stats.hfield_triangle_tests <- stats.hfield_triangle_tests + 1;
       let nx = y1 -. y2 and nz = y1 -. y3 in
       let dot = (nx *. r.dx) +. r.dy +. (nz *. r.dz) in
       if dot > epsilon || dot < -.epsilon then begin
@@ -221,6 +225,7 @@ let intersect_pixel r x z height1 height2 =
         if depth >= r.mindist && depth <= r.maxdist then begin
           let s = r.ox +. (depth *. r.dx) -. fx and t = r.oz +. (depth *. r.dz) -. fz in
           if s >= -0.0001 && t >= -0.0001 && s +. t <= 1.0001 then begin
+            stats.hfield_triangle_hits <- stats.hfield_triangle_hits + 1;
             found r depth x z 0;
             hit := true
           end
@@ -229,6 +234,7 @@ let intersect_pixel r x z height1 height2 =
     end;
     (* the second: (x + 1, y4, z + 1) with N = <y3 − y4, 1, y2 − y4> *)
     if Float.max y4 max23 >= height1 && Float.min y4 min23 <= height2 then begin
+      stats.hfield_triangle_tests <- stats.hfield_triangle_tests + 1;
       let nx = y3 -. y4 and nz = y2 -. y4 in
       let dot = (nx *. r.dx) +. r.dy +. (nz *. r.dz) in
       if dot > epsilon || dot < -.epsilon then begin
@@ -236,6 +242,7 @@ let intersect_pixel r x z height1 height2 =
         if depth >= r.mindist && depth <= r.maxdist then begin
           let s = r.ox +. (depth *. r.dx) -. fx and t = r.oz +. (depth *. r.dz) -. fz in
           if s <= 1.0001 && t <= 1.0001 && s +. t >= 0.9999 then begin
+            stats.hfield_triangle_hits <- stats.hfield_triangle_hits + 1;
             found r depth x z 1;
             hit := true
           end
@@ -382,7 +389,9 @@ let block_traversal r sx sy sz =
     let nx_ = ref sx and ny_ = ref sy and nz_ = ref sz in
     let neary = ref sy in
     let found = ref false and stop = ref false and continue = ref true in
+    let stats = r.w.stats in
     while !continue do
+      stats.hfield_block_tests <- stats.hfield_block_tests + 1;
       let b = (!z * f.nbx) + !x in
       let k1 =
         if dx_zero then bound_huge
@@ -401,8 +410,10 @@ let block_traversal r sx sy sz =
       in
       let fx = r.ox +. (dist *. dx) and fy = r.oy +. (dist *. dy) and fz = r.oz +. (dist *. dz) in
       let y1, y2 = sorted !neary fy in
-      if y1 <= f.block_y.((2 * b) + 1) +. epsilon && y2 >= f.block_y.(2 * b) -. epsilon then
-        if dda_traversal r !nx_ !ny_ !nz_ b then if r.all then found := true else stop := true;
+      if y1 <= f.block_y.((2 * b) + 1) +. epsilon && y2 >= f.block_y.(2 * b) -. epsilon then begin
+        stats.hfield_block_hits <- stats.hfield_block_hits + 1;
+        if dda_traversal r !nx_ !ny_ !nz_ b then if r.all then found := true else stop := true
+      end;
       if !stop then continue := false
       else begin
         x := nx;
@@ -490,6 +501,8 @@ let walk (w : Scratch.t) t ~all id (o : Vec.t) (d : Vec.t) lo n =
   in
   let entered =
     box_crossings r
+    && (stats.hfield_box_hits <- stats.hfield_box_hits + 1;
+        true)
     && (r.mindist >= hfield_tolerance
        ||
        (r.mindist <- hfield_tolerance;
@@ -581,4 +594,12 @@ let pov_box t =
   let b = box t.field in
   Pov_box.mapped t.tr (Pov_box.of_min_max (Array.sub b 0 3) (Array.sub b 3 3))
 
-let stats_rows (s : Stats.t) = [ { Stats.name = "Height Field"; tests = s.hfield_tests; hits = s.hfield_hits } ]
+(* POV-Ray 3.7's build counts the walk's stages too (HFIELD_EXTRA_STATS) *)
+let stats_rows (s : Stats.t) =
+  [
+    { Stats.name = "Height Field"; tests = s.hfield_tests; hits = s.hfield_hits };
+    { Stats.name = "Height Field Box"; tests = s.hfield_tests; hits = s.hfield_box_hits };
+    { Stats.name = "Height Field Triangle"; tests = s.hfield_triangle_tests; hits = s.hfield_triangle_hits };
+    { Stats.name = "Height Field Block"; tests = s.hfield_block_tests; hits = s.hfield_block_hits };
+    { Stats.name = "Height Field Cell"; tests = s.hfield_cell_tests; hits = s.hfield_cell_hits };
+  ]
