@@ -32,6 +32,10 @@ let bound_huge = 2e10
 
 let[@inline] get f x z = Array.unsafe_get f.map ((z * f.width) + x)
 
+(* C++'s std::min and std::max (no C call, unlike Float.min) *)
+let[@inline] fmin a b = if b < a then b else a
+let[@inline] fmax a b = if a < b then b else a
+
 (* ---------------------------------------------------------------------------------------------- *)
 (* Heights from an image (imageutil.cpp's image_height_at) *)
 
@@ -53,13 +57,21 @@ let heights_of_image (img : Image_file.t) =
 (* ---------------------------------------------------------------------------------------------- *)
 (* Building the field (Compute_HField, smooth_height_field, build_hfield_blocks) *)
 
-(* HField::normalize: the vector over its length, or <0, 1, 0> for a length within EPSILON *)
-let normalize_or_up x y z =
+(* HField::normalize of (x, y, z) into [out]: the vector over its length, or <0, 1, 0> for a
+   length within EPSILON *)
+let normalize_into out x y z =
   let len = sqrt ((x *. x) +. (y *. y) +. (z *. z)) in
-  if Float.abs len > epsilon then
+  if Float.abs len > epsilon then begin
     let k = 1. /. len in
-    (x *. k, y *. k, z *. k)
-  else (0., 1., 0.)
+    out.(0) <- x *. k;
+    out.(1) <- y *. k;
+    out.(2) <- z *. k
+  end
+  else begin
+    out.(0) <- 0.;
+    out.(1) <- 1.;
+    out.(2) <- 0.
+  end
 
 (* smooth_height_field: each vertex's normal is the sum of the unit normals of the (up to four)
    triangles of its neighbours, each turned upwards, normalised and stored as shorts *)
@@ -67,38 +79,39 @@ let vertex_normals width height map =
   let xsize = width - 1 and zsize = height - 1 in
   let out = Array.make (3 * width * height) 0. in
   let h x z = map.((z * width) + x) in
+  let sum = [| 0.; 0.; 0. |] and nt = [| 0.; 0.; 0. |] in
+  (* add_single_normal: 1 when the triangle (x0, z0), (x1, z1), (x2, z2) is within the field *)
+  let add x0 z0 x1 z1 x2 z2 =
+    if x0 < 0 || z0 < 0 || x1 < 0 || z1 < 0 || x2 < 0 || z2 < 0 || x0 > xsize || z0 > zsize || x1 > xsize || z1 > zsize || x2 > xsize
+       || z2 > zsize
+    then 0
+    else begin
+      let v0x = float_of_int x0 and v0y = h x0 z0 and v0z = float_of_int z0 in
+      let t0x = float_of_int x2 -. v0x and t0y = h x2 z2 -. v0y and t0z = float_of_int z2 -. v0z in
+      let t1x = float_of_int x1 -. v0x and t1y = h x1 z1 -. v0y and t1z = float_of_int z1 -. v0z in
+      (* Nt = t0 × t1, normalised, turned upwards (times −1) *)
+      normalize_into nt ((t0y *. t1z) -. (t0z *. t1y)) ((t0z *. t1x) -. (t0x *. t1z)) ((t0x *. t1y) -. (t0y *. t1x));
+      if nt.(1) < 0. then for a = 0 to 2 do nt.(a) <- nt.(a) *. -1. done;
+      for a = 0 to 2 do sum.(a) <- sum.(a) +. nt.(a) done;
+      1
+    end
+  in
   for i = 0 to zsize do
     for j = 0 to xsize do
-      let nx = ref 0. and ny = ref 0. and nz = ref 0. and k = ref 0 in
-      let add x0 z0 x1 z1 x2 z2 =
-        if x0 < 0 || z0 < 0 || x1 < 0 || z1 < 0 || x2 < 0 || z2 < 0 || x0 > xsize || z0 > zsize || x1 > xsize || z1 > zsize || x2 > xsize
-           || z2 > zsize
-        then ()
-        else begin
-          let v0x = float_of_int x0 and v0y = h x0 z0 and v0z = float_of_int z0 in
-          let t0x = float_of_int x2 -. v0x and t0y = h x2 z2 -. v0y and t0z = float_of_int z2 -. v0z in
-          let t1x = float_of_int x1 -. v0x and t1y = h x1 z1 -. v0y and t1z = float_of_int z1 -. v0z in
-          (* Nt = t0 × t1 *)
-          let cx = (t0y *. t1z) -. (t0z *. t1y) and cy = (t0z *. t1x) -. (t0x *. t1z) and cz = (t0x *. t1y) -. (t0y *. t1x) in
-          let cx, cy, cz = normalize_or_up cx cy cz in
-          let cx, cy, cz = if cy < 0. then (cx *. -1., cy *. -1., cz *. -1.) else (cx, cy, cz) in
-          nx := !nx +. cx;
-          ny := !ny +. cy;
-          nz := !nz +. cz;
-          incr k
-        end
-      in
-      add j i (j + 1) i j (i + 1);
-      add j i j (i + 1) (j - 1) i;
-      add j i (j - 1) i j (i - 1);
-      add j i j (i - 1) (j + 1) i;
-      if !k = 0 then failwith "Failed to find any normals at.";
-      let x, y, z = normalize_or_up !nx !ny !nz in
+      sum.(0) <- 0.;
+      sum.(1) <- 0.;
+      sum.(2) <- 0.;
+      (* in this order: the sum's rounding depends on it *)
+      let k1 = add j i (j + 1) i j (i + 1) in
+      let k2 = add j i j (i + 1) (j - 1) i in
+      let k3 = add j i (j - 1) i j (i - 1) in
+      let k4 = add j i j (i - 1) (j + 1) i in
+      let k = k1 + k2 + k3 + k4 in
+      if k = 0 then failwith "Failed to find any normals at.";
+      normalize_into nt sum.(0) sum.(1) sum.(2);
       let o = 3 * ((i * width) + j) in
       (* (short)(32767·N): truncated *)
-      out.(o) <- Float.trunc (32767. *. x);
-      out.(o + 1) <- Float.trunc (32767. *. y);
-      out.(o + 2) <- Float.trunc (32767. *. z)
+      for a = 0 to 2 do out.(o + a) <- float_of_int (int_of_float (32767. *. nt.(a))) done
     done
   done;
   out
@@ -126,8 +139,8 @@ let blocks_of ~hierarchy width height map lo_y hi_y =
         for i = xmin to xmax + 1 do
           for j = zmin to zmax + 1 do
             let y = map.((j * width) + i) in
-            ymin := Float.min !ymin y;
-            ymax := Float.max !ymax y
+            ymin := fmin !ymin y;
+            ymax := fmax !ymax y
           done
         done;
         let b = (z * nx) + x in
@@ -135,7 +148,7 @@ let blocks_of ~hierarchy width height map lo_y hi_y =
         blocks.((4 * b) + 1) <- xmax;
         blocks.((4 * b) + 2) <- zmin;
         blocks.((4 * b) + 3) <- zmax;
-        ys.(2 * b) <- Float.max !ymin lo_y -. hfield_offset;
+        ys.(2 * b) <- fmax !ymin lo_y -. hfield_offset;
         ys.((2 * b) + 1) <- !ymax +. hfield_offset
       done
     done;
@@ -144,8 +157,9 @@ let blocks_of ~hierarchy width height map lo_y hi_y =
 
 let make ~width ~height ~heights ~water ~smooth =
   let map = Array.map float_of_int heights in
-  let min_y = Array.fold_left min 65535 heights and max_y = Array.fold_left max 0 heights in
-  let lo_y = Float.max (float_of_int min_y) water -. hfield_offset in
+  let min_y = Array.fold_left (fun m (h : int) -> if h < m then h else m) 65535 heights in
+  let max_y = Array.fold_left (fun m (h : int) -> if h > m then h else m) 0 heights in
+  let lo_y = fmax (float_of_int min_y) water -. hfield_offset in
   let hi_y = float_of_int max_y +. hfield_offset in
   let normals = if smooth then vertex_normals width height map else [||] in
   let nbx, nbz, wbx, wbz, blocks, block_y = blocks_of ~hierarchy:true width height map lo_y hi_y in
@@ -208,15 +222,15 @@ let intersect_pixel r x z height1 height2 =
   let z = if z > f.height - 2 then f.height - 2 else if z < 0 then 0 else z in
   let x = if x > f.width - 2 then f.width - 2 else if x < 0 then 0 else x in
   let y1 = get f x z and y2 = get f (x + 1) z and y3 = get f x (z + 1) and y4 = get f (x + 1) (z + 1) in
-  let min23, max23 = if y2 < y3 then (y2, y3) else (y3, y2) in
-  let min_height = Float.min (Float.min y1 y4) min23 and max_height = Float.max (Float.max y1 y4) max23 in
+  let min23 = if y2 < y3 then y2 else y3 and max23 = if y2 < y3 then y3 else y2 in
+  let min_height = fmin (fmin y1 y4) min23 and max_height = fmax (fmax y1 y4) max23 in
   if max_height < height1 || min_height > height2 then false
   else begin
     stats.hfield_cell_hits <- stats.hfield_cell_hits + 1;
     let hit = ref false in
     let fx = float_of_int x and fz = float_of_int z in
     (* the first triangle: (x, y1, z) with N = <y1 − y2, 1, y1 − y3> *)
-    if Float.max y1 max23 >= height1 && Float.min y1 min23 <= height2 then begin
+    if fmax y1 max23 >= height1 && fmin y1 min23 <= height2 then begin
       stats.hfield_triangle_tests <- stats.hfield_triangle_tests + 1;
       let nx = y1 -. y2 and nz = y1 -. y3 in
       let dot = (nx *. r.dx) +. r.dy +. (nz *. r.dz) in
@@ -233,7 +247,7 @@ let intersect_pixel r x z height1 height2 =
       end
     end;
     (* the second: (x + 1, y4, z + 1) with N = <y3 − y4, 1, y2 − y4> *)
-    if Float.max y4 max23 >= height1 && Float.min y4 min23 <= height2 then begin
+    if fmax y4 max23 >= height1 && fmin y4 min23 <= height2 then begin
       stats.hfield_triangle_tests <- stats.hfield_triangle_tests + 1;
       let nx = y3 -. y4 and nz = y2 -. y4 in
       let dot = (nx *. r.dx) +. r.dy +. (nz *. r.dz) in
@@ -252,7 +266,6 @@ let intersect_pixel r x z height1 height2 =
     !hit
   end
 
-let[@inline] sorted a b = if a < b then (a, b) else (b, a)
 let[@inline] sign x = if x >= 0. then 1 else -1
 
 (* dda_traversal: the cells of block [b] along the ray from [start], stepping along the axis the
@@ -262,7 +275,7 @@ let dda_traversal r sx sy sz b =
   let max_x = f.width - 2 and max_z = f.height - 2 in
   let xmin = f.blocks.(4 * b) and xmax = min (f.blocks.((4 * b) + 1) + 1) max_x in
   let zmin = f.blocks.((4 * b) + 2) and zmax = min (f.blocks.((4 * b) + 3) + 1) max_z in
-  let ymin = Float.min sy f.block_y.(2 * b) -. epsilon and ymax = Float.max sy f.block_y.((2 * b) + 1) +. epsilon in
+  let ymin = fmin sy f.block_y.(2 * b) -. epsilon and ymax = fmax sy f.block_y.((2 * b) + 1) +. epsilon in
   (* a start outside the block by a rounding error is moved onto it; by more, the ray is given up
      (POV-Ray's "Illegal grid value in dda_traversal()") *)
   let legal p lo hi =
@@ -294,7 +307,7 @@ let dda_traversal r sx sy sz b =
       let fary = ref (!neary +. deltay) in
       let continue = ref true in
       while !continue do
-        let y1, y2 = sorted !neary !fary in
+        let y1 = if !neary < !fary then !neary else !fary and y2 = if !neary < !fary then !fary else !neary in
         test !x !z y1 y2;
         if !stop then continue := false
         else begin
@@ -336,7 +349,7 @@ let dda_traversal r sx sy sz b =
       let fary = ref (!neary +. deltay) in
       let continue = ref true in
       while !continue do
-        let y1, y2 = sorted !neary !fary in
+        let y1 = if !neary < !fary then !neary else !fary and y2 = if !neary < !fary then !fary else !neary in
         test !x !z y1 y2;
         if !stop then continue := false
         else begin
@@ -377,7 +390,7 @@ let block_traversal r sx sy sz =
   let maxdv = if dx > dz then dx else dz in
   if Float.abs dx < epsilon && Float.abs dz < epsilon then begin
     let fary = if dy >= 0. then 65536.0 else 0.0 in
-    intersect_pixel r (int_of_float sx) (int_of_float sz) (Float.min sy fary) (Float.max sy fary)
+    intersect_pixel r (int_of_float sx) (int_of_float sz) (fmin sy fary) (fmax sy fary)
   end
   else if f.nbx <= 1 && f.nbz <= 1 then dda_traversal r sx sy sz 0
   else begin
@@ -409,7 +422,7 @@ let block_traversal r sx sy sz =
         else (k2, !x, !z + signz)
       in
       let fx = r.ox +. (dist *. dx) and fy = r.oy +. (dist *. dy) and fz = r.oz +. (dist *. dz) in
-      let y1, y2 = sorted !neary fy in
+      let y1 = if !neary < fy then !neary else fy and y2 = if !neary < fy then fy else !neary in
       if y1 <= f.block_y.((2 * b) + 1) +. epsilon && y2 >= f.block_y.(2 * b) -. epsilon then begin
         stats.hfield_block_hits <- stats.hfield_block_hits + 1;
         if dda_traversal r !nx_ !ny_ !nz_ b then if r.all then found := true else stop := true
@@ -573,7 +586,7 @@ let inside t (p : Vec.t) =
   else begin
     let px = int_of_float q.x and pz = int_of_float q.z in
     let x = q.x -. float_of_int px and z = q.z -. float_of_int pz in
-    let h i j = Float.max (get f i j) water in
+    let h i j = fmax (get f i j) water in
     let ox, oy, oz, nx, nz =
       if x +. z < 1.0 then
         let y1 = h px pz and y2 = h (px + 1) pz and y3 = h px (pz + 1) in
