@@ -2,17 +2,21 @@
    one unit per image pixel in x and z and one per height step (0 … 65535) in y; the parser's
    scaling transform and every modifier map it to the world. *)
 
+open Bigarray
+
+type f32s = (float, float32_elt, c_layout) Array1.t
+
 type field = {
   width : int;  (* vertices along x (the image's width) *)
   height : int;  (* vertices along z (the image's height) *)
-  map : float array;  (* the heights, map.(z·width + x), z = 0 the image's bottom row *)
+  map : f32s;  (* the heights (integers, exact in single precision), z·width + x, z = 0 the image's bottom row *)
   min_y : int;
   max_y : int;
   water : float;  (* 65536 · water_level as parsed (bounding_corner1[Y] before Compute_HField) *)
   lo_y : float;  (* bounding_corner1[Y]: max(min_y, water) − HFIELD_OFFSET *)
   hi_y : float;  (* bounding_corner2[Y]: max_y + HFIELD_OFFSET *)
   smooth : bool;
-  normals : float array;  (* smooth: 3 per vertex, the stored shorts (32767·N truncated) *)
+  normals : f32s;  (* smooth: 3 per vertex, the stored shorts (32767·N truncated) *)
   hierarchy : bool;
   nbx : int;  (* block_max_x *)
   nbz : int;  (* block_max_z *)
@@ -30,11 +34,11 @@ let hfield_tolerance = 1.0e-6
 let epsilon = Precision.epsilon
 let bound_huge = 2e10
 
-let[@inline] get f x z = Array.unsafe_get f.map ((z * f.width) + x)
+let[@inline] get f x z = Array1.unsafe_get f.map ((z * f.width) + x)
 
 (* C++'s std::min and std::max (no C call, unlike Float.min) *)
-let[@inline] fmin a b = if b < a then b else a
-let[@inline] fmax a b = if a < b then b else a
+let[@inline] fmin (a : float) b = if b < a then b else a
+let[@inline] fmax (a : float) b = if a < b then b else a
 
 (* ---------------------------------------------------------------------------------------------- *)
 (* Heights from an image (imageutil.cpp's image_height_at) *)
@@ -75,10 +79,10 @@ let normalize_into out x y z =
 
 (* smooth_height_field: each vertex's normal is the sum of the unit normals of the (up to four)
    triangles of its neighbours, each turned upwards, normalised and stored as shorts *)
-let vertex_normals width height map =
+let vertex_normals width height (map : f32s) =
   let xsize = width - 1 and zsize = height - 1 in
-  let out = Array.make (3 * width * height) 0. in
-  let h x z = map.((z * width) + x) in
+  let out = Array1.create float32 c_layout (3 * width * height) in
+  let h x z = Array1.unsafe_get map ((z * width) + x) in
   let sum = [| 0.; 0.; 0. |] and nt = [| 0.; 0.; 0. |] in
   (* add_single_normal: 1 when the triangle (x0, z0), (x1, z1), (x2, z2) is within the field *)
   let add x0 z0 x1 z1 x2 z2 =
@@ -111,14 +115,14 @@ let vertex_normals width height map =
       normalize_into nt sum.(0) sum.(1) sum.(2);
       let o = 3 * ((i * width) + j) in
       (* (short)(32767·N): truncated *)
-      for a = 0 to 2 do out.(o + a) <- float_of_int (int_of_float (32767. *. nt.(a))) done
+      for a = 0 to 2 do Array1.unsafe_set out (o + a) (float_of_int (int_of_float (32767. *. nt.(a)))) done
     done
   done;
   out
 
 (* build_hfield_blocks: about √n blocks along each axis, each with the height range of its
    vertices (water included) widened by HFIELD_OFFSET; one block without the hierarchy *)
-let blocks_of ~hierarchy width height map lo_y hi_y =
+let blocks_of ~hierarchy width height (map : f32s) lo_y hi_y =
   let max_x = width - 2 and max_z = height - 2 in
   let root n = if n < 0 then 1 else max 1 (int_of_float (sqrt (float_of_int n))) in
   let nx = root max_x and nz = root max_z in
@@ -138,7 +142,7 @@ let blocks_of ~hierarchy width height map lo_y hi_y =
         let ymin = ref bound_huge and ymax = ref (-.bound_huge) in
         for i = xmin to xmax + 1 do
           for j = zmin to zmax + 1 do
-            let y = map.((j * width) + i) in
+            let y = Array1.unsafe_get map ((j * width) + i) in
             ymin := fmin !ymin y;
             ymax := fmax !ymax y
           done
@@ -156,12 +160,13 @@ let blocks_of ~hierarchy width height map lo_y hi_y =
   end
 
 let make ~width ~height ~heights ~water ~smooth =
-  let map = Array.map float_of_int heights in
+  let map = Array1.create float32 c_layout (width * height) in
+  Array.iteri (fun i h -> Array1.unsafe_set map i (float_of_int h)) heights;
   let min_y = Array.fold_left (fun m (h : int) -> if h < m then h else m) 65535 heights in
   let max_y = Array.fold_left (fun m (h : int) -> if h > m then h else m) 0 heights in
   let lo_y = fmax (float_of_int min_y) water -. hfield_offset in
   let hi_y = float_of_int max_y +. hfield_offset in
-  let normals = if smooth then vertex_normals width height map else [||] in
+  let normals = if smooth then vertex_normals width height map else Array1.create float32 c_layout 0 in
   let nbx, nbz, wbx, wbz, blocks, block_y = blocks_of ~hierarchy:true width height map lo_y hi_y in
   { width; height; map; min_y; max_y; water; lo_y; hi_y; smooth; normals; hierarchy = true; nbx; nbz; wbx; wbz; blocks; block_y; sealed = false }
 
@@ -561,7 +566,8 @@ let smooth_normal t (p : Vec.t) =
   let x = q.x -. float_of_int px and z = q.z -. float_of_int pz in
   let corner i j =
     let o = 3 * ((j * f.width) + i) in
-    Transform.normalize (Transform.normal t.tr (Vec.make f.normals.(o) f.normals.(o + 1) f.normals.(o + 2)))
+    let n = f.normals in
+    Transform.normalize (Transform.normal t.tr (Vec.make (Array1.unsafe_get n o) (Array1.unsafe_get n (o + 1)) (Array1.unsafe_get n (o + 2))))
   in
   let n0 = corner px pz and n1 = corner (px + 1) pz and n2 = corner px (pz + 1) and n3 = corner (px + 1) (pz + 1) in
   let u = 1.0 -. x and v = 1.0 -. z in

@@ -6,17 +6,19 @@
     grid of blocks (about √n per axis, each with its height range) and, within a block, cell by
     cell (POV-Ray's block_traversal and dda_traversal). *)
 
+type f32s = (float, Bigarray.float32_elt, Bigarray.c_layout) Bigarray.Array1.t
+
 type field = private {
   width : int;  (** vertices along x: the image's width *)
   height : int;  (** vertices along z: the image's height *)
-  map : float array;  (** the heights, [map.(z·width + x)] *)
+  map : f32s;  (** the heights, at [z·width + x] (integers, exact in single precision) *)
   min_y : int;  (** the lowest height *)
   max_y : int;  (** the highest height *)
   water : float;  (** 65536 · water_level, as parsed (0 without) *)
   lo_y : float;  (** the box's bottom: max(min_y, water) − 0.001 (HFIELD_OFFSET) *)
   hi_y : float;  (** the box's top: max_y + 0.001 *)
   smooth : bool;  (** [smooth]: normals blended from the vertex normals *)
-  normals : float array;  (** smooth: 3 per vertex, as POV-Ray stores them (shorts, 32767·N truncated) *)
+  normals : f32s;  (** smooth: 3 per vertex, as POV-Ray stores them (shorts, 32767·N truncated) *)
   hierarchy : bool;  (** the block grid is built (POV-Ray's default); off: one block *)
   nbx : int;  (** blocks along x *)
   nbz : int;  (** blocks along z *)

@@ -67,7 +67,7 @@ let bumpy x z = int_of_float (30000. +. (20000. *. sin (float_of_int x /. 3.) *.
 let surface (f : Hfield.field) x z =
   let px = int_of_float x and pz = int_of_float z in
   let fx = x -. float_of_int px and fz = z -. float_of_int pz in
-  let h i j = f.map.((j * f.width) + i) in
+  let h i j = Bigarray.Array1.get f.map ((j * f.width) + i) in
   if fx +. fz <= 1. then h px pz +. (fx *. (h (px + 1) pz -. h px pz)) +. (fz *. (h px (pz + 1) -. h px pz))
   else
     let y4 = h (px + 1) (pz + 1) in
