@@ -41,24 +41,6 @@ let[@inline] fmin (a : float) b = if b < a then b else a
 let[@inline] fmax (a : float) b = if a < b then b else a
 
 (* ---------------------------------------------------------------------------------------------- *)
-(* Heights from an image (imageutil.cpp's image_height_at) *)
-
-let heights_of_image (img : Image_file.t) =
-  let w = img.width and h = img.height in
-  let value lut max p = match lut with Some (l : float array) -> l.(p) | None -> Image_file.linear max p in
-  Array.init (w * h) (fun k ->
-      let z = k / w and x = k mod w in
-      (* Map[z][x] is the image's row height − z − 1 *)
-      let i = x + ((h - z - 1) * w) in
-      match img.pixels with
-      | Indexed _ -> Image_file.index img i * 256
-      | Grey { max; grey; lut; _ } -> int_of_float (Precision.f32 (value lut max grey.(i) *. 65535.))
-      | Colour { max; rgb; lut; _ } ->
-          let r = value lut max rgb.(3 * i) and g = value lut max rgb.((3 * i) + 1) and b = value lut max rgb.((3 * i) + 2) in
-          if max > 255 then int_of_float (((0.297 *. r) +. (0.589 *. g) +. (0.114 *. b)) *. 65535.)
-          else int_of_float (((r *. 256.) +. g) *. 255.))
-
-(* ---------------------------------------------------------------------------------------------- *)
 (* Building the field (Compute_HField, smooth_height_field, build_hfield_blocks) *)
 
 (* HField::normalize of (x, y, z) into [out]: the vector over its length, or <0, 1, 0> for a
@@ -504,17 +486,8 @@ let walk (w : Scratch.t) t ~all id (o : Vec.t) (d : Vec.t) lo n =
       dx = (d.x *. m.i00) +. (d.y *. m.i10) +. (d.z *. m.i20);
       dy = (d.x *. m.i01) +. (d.y *. m.i11) +. (d.z *. m.i21);
       dz = (d.x *. m.i02) +. (d.y *. m.i12) +. (d.z *. m.i22);
-      mindist = 0.;
-      maxdist = 0.;
-      all;
-      w;
-      id;
-      wo = o;
-      wd = d;
-      lo;
-      best = infinity;
-      bpart = -1;
-      n;
+      mindist = 0.; maxdist = 0.; all; w; id; wo = o; wd = d; lo;
+      best = infinity; bpart = -1; n;
     }
   in
   let entered =

@@ -32,13 +32,6 @@ type field = private {
 
 type t = { field : field; tr : Transform.t  (** field space to world *) }
 
-val heights_of_image : Image_file.t -> int array
-(** [heights_of_image img] is the field's heights, [width·height] of them row by row from z = 0
-    (the image's bottom row), as POV-Ray's image_height_at takes them: a palette image's index
-    times 256; a grey image's value (a float in [0, 1]) times 65535 in single precision; a 16-bit
-    colour image's grey (0.297 r + 0.589 g + 0.114 b) times 65535; an 8-bit colour image's
-    (r·256 + g)·255, red the high byte and green the low one; each truncated. *)
-
 val make : width:int -> height:int -> heights:int array -> water:float -> smooth:bool -> field
 (** [make ~width ~height ~heights ~water ~smooth] is Compute_HField: the box's heights, the vertex
     normals when [smooth] (smooth_height_field), and the blocks with the hierarchy on

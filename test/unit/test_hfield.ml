@@ -145,13 +145,13 @@ let test_inside () =
 let test_heights () =
   let grey max values = { Image_file.width = 2; height = 1; pixels = Grey { max; grey = values; alpha = None; lut = None }; premultiplied = false } in
   (* 16-bit grey: v/65535 in single precision, times 65535, truncated *)
-  Alcotest.(check (array int)) "16-bit grey" [| 12345; 65535 |] (Hfield.heights_of_image (grey 65535 [| 12345; 65535 |]));
-  Alcotest.(check (array int)) "8-bit grey" [| 257 * 100; 65535 |] (Hfield.heights_of_image (grey 255 [| 100; 255 |]));
+  Alcotest.(check (array int)) "16-bit grey" [| 12345; 65535 |] (Hfield_reader.heights_of_image (grey 65535 [| 12345; 65535 |]));
+  Alcotest.(check (array int)) "8-bit grey" [| 257 * 100; 65535 |] (Hfield_reader.heights_of_image (grey 255 [| 100; 255 |]));
   let rgb = { Image_file.width = 1; height = 1; pixels = Colour { max = 255; rgb = [| 3; 200; 9 |]; alpha = None; lut = None }; premultiplied = false } in
-  Alcotest.(check (array int)) "8-bit colour: red high, green low" [| (3 * 256) + 200 |] (Hfield.heights_of_image rgb);
+  Alcotest.(check (array int)) "8-bit colour: red high, green low" [| (3 * 256) + 200 |] (Hfield_reader.heights_of_image rgb);
   (* the image's bottom row is z = 0 *)
   let two = { Image_file.width = 1; height = 2; pixels = Grey { max = 255; grey = [| 10; 20 |]; alpha = None; lut = None }; premultiplied = false } in
-  Alcotest.(check (array int)) "rows flipped" [| 20 * 257; 10 * 257 |] (Hfield.heights_of_image two)
+  Alcotest.(check (array int)) "rows flipped" [| 20 * 257; 10 * 257 |] (Hfield_reader.heights_of_image two)
 
 let test_blocks () =
   let h = synthetic 40 30 bumpy in
