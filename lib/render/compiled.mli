@@ -99,6 +99,7 @@ type shape =
   | Polygon of Polygon.t  (** §15.7, §14.5 (b): the outline in polygon space, placed by its transform *)
   | Quadric of Quadric.t  (** quadrics.cpp: in world space, the ray as it is *)
   | Blob of Blob.compiled  (** shape/blob.cpp: in blob space, through its transform if it has one *)
+  | Height_field of Hfield.t  (** hfield.cpp: the field walked in its own space, through its transform *)
 
 (** A CSG's members and how their hits are kept (§16.2, §16.3). *)
 and csg = {

@@ -46,6 +46,15 @@ type t = {
   mutable blob_element_hits : int;  (** of which the ray passed through the element's sphere of influence *)
   mutable blob_bound_tests : int;  (** nodes of a blob's hierarchy tested *)
   mutable blob_bound_hits : int;  (** of which the ray passed within the node's sphere *)
+  mutable hfield_tests : int;  (** height fields tested *)
+  mutable hfield_hits : int;  (** tests whose walk found a hit, whatever its depth *)
+  mutable hfield_box_hits : int;  (** tests whose ray met the field's box (every test tries it) *)
+  mutable hfield_triangle_tests : int;  (** triangles whose height range met the ray's *)
+  mutable hfield_triangle_hits : int;  (** of which the ray crossed the triangle within the depths *)
+  mutable hfield_block_tests : int;  (** blocks walked through *)
+  mutable hfield_block_hits : int;  (** of which the ray's height met the block's *)
+  mutable hfield_cell_tests : int;  (** cells walked through *)
+  mutable hfield_cell_hits : int;  (** of which the ray's height met the cell's *)
 }
 
 val create : unit -> t

@@ -268,6 +268,13 @@ let rec shape = function
       Printf.sprintf "%s%s%s" (Blob.describe num vec matrix blob)
         (if Array.length textures > 0 then Printf.sprintf "\n  // %d component textures" (Array.length textures) else "")
         (trans blob.trans)
+  | Height_field { field = f; trans = t } ->
+      Printf.sprintf "height_field { // %d x %d heights %d … %d, box y %s … %s%s%s%s%s" f.width f.height f.min_y f.max_y (num f.lo_y)
+        (num f.hi_y)
+        (if f.water <> 0. then Printf.sprintf ", water_level %s" (num (f.water /. 65536.)) else "")
+        (if f.smooth then ", smooth" else "")
+        (if f.hierarchy then Printf.sprintf ", %d x %d blocks" f.nbx f.nbz else ", no hierarchy")
+        (trans (Some t))
   | Csg { kind; members } ->
       let member (m : member) =
         String.concat "\n  " (String.split_on_char '\n' (String.trim (obj m.mobj)))

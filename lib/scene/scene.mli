@@ -358,6 +358,9 @@ type shape =
       (** shape/blob.cpp: the components as parsed and moved, the last written first, mapped by
           the blob's transform; [textures] are the components' own textures, which a
           component's [tex] indexes *)
+  | Height_field of { field : Hfield.field; trans : Transform.t }
+      (** hfield.cpp: the field in its own space (one unit per pixel in x and z, per height step
+          in y), mapped by [trans]: Parse_HField's scaling, then every modifier composed into it *)
   | Csg of { kind : csg_kind; members : member list }
       (** §16: a CSG kept whole (a merge, an intersection or difference, a union with
           [split_union off]); its members are already moved by its transforms and carry the

@@ -10,7 +10,7 @@ open Csg_build
 
 (* Objects povml does not render yet: inside a union they are reported as "not supported yet". *)
 let unsupported_objects =
-  [ "prism"; "lathe"; "sor"; "height_field";
+  [ "prism"; "lathe"; "sor";
     "isosurface"; "superellipsoid"; "julia_fractal"; "parametric"; "bicubic_patch"; "ovus"; "cubic";
     "quartic"; "poly"; "polynomial"; "sphere_sweep"; "lemon"; "composite" ]
 
@@ -148,6 +148,15 @@ let rec parse_object st : V.obj =
       advance st;
       open_block st kw;
       parse_object_mods st (new_obj (if kw = "polygon" then Shape_reader.polygon st loc else Shape_reader.quadric st) loc) kw
+  | Ident "height_field" ->
+      (* Parse_HField: the image and its options, then the modifiers; the field's blocks are built
+         after them (Compute_HField follows Parse_Object_Mods), so [hierarchy] there still counts *)
+      advance st;
+      let o = parse_object_mods st (new_obj (Hfield_reader.parse st) loc) "height_field" in
+      let seal (o : V.obj) = match o.shape with Prim (Height_field h) -> { o with shape = Prim (Height_field { h with field = Hfield.seal h.field }) } | Prim _ | Csg _ -> o in
+      (match o.shape with
+      | Csg { kind; members = V.Member_obj m :: rest; split } -> { o with shape = Csg { kind; members = V.Member_obj (seal m) :: rest; split } }
+      | Csg _ | Prim _ -> seal o)
   | Ident "text" ->
       (* §15.9: a union of one extruded glyph per character, then the modifiers, which move every
          letter *)
@@ -353,6 +362,7 @@ and parse_object_mods st (o : V.obj) what : V.obj =
         match o.shape with
         | Prim (Mesh _) -> loop o
         | Prim (Blob _) -> loop (Blob_reader.set_hierarchy on o)
+        | Prim (Height_field h) -> loop { o with shape = Prim (Height_field { h with field = Hfield.with_hierarchy h.field on }) }
         | Prim _ | Csg _ -> Error.raise_at loc "'hierarchy' cannot be used with this object (only with a mesh)")
     | Ident "dtag" ->
         (* a debugging tag, unused by the render *)

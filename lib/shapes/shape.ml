@@ -30,6 +30,7 @@ let compile (s : Scene.shape) =
   | Polygon p -> Some (Polygon p)
   | Quadric q -> Some (Quadric q)
   | Blob { blob; _ } -> Some (Blob (Blob.compile blob))
+  | Height_field { field; trans } -> if finite trans then Some (Height_field { Hfield.field; tr = trans }) else None
   | Csg _ -> None
 
 (* a primitive crossed once at most *)
@@ -53,6 +54,7 @@ let rec depth w shape o d lo =
   | Polygon p -> Polygon.depth w p o d lo
   | Quadric q -> Quadric.depth w q o d lo
   | Blob b -> Blob_ray.depth w b o d lo
+  | Height_field h -> Hfield.depth w h o d lo
 
 and all_hits w ob o d lo n =
   let id = ob.id in
@@ -73,6 +75,7 @@ and all_hits w ob o d lo n =
   | Polygon p -> Polygon.hits w p id o d lo n
   | Quadric q -> Quadric.hits w q id o d lo n
   | Blob b -> Blob_ray.hits w b id o d lo n
+  | Height_field h -> Hfield.hits w h id o d lo n
 
 and inside stack shape p =
   match shape with
@@ -92,6 +95,7 @@ and inside stack shape p =
   | Polygon pg -> Polygon.inside pg p
   | Quadric q -> Quadric.inside q p
   | Blob b -> Blob.inside b p
+  | Height_field h -> Hfield.inside h p
 
 and inside_member stack (m : obj) p =
   match m.shape with
@@ -103,7 +107,7 @@ and inside_member stack (m : obj) p =
          inverted quadric holds its surface too *)
       inside stack m.shape p
   | Sphere _ | Sphere_placed _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _
-  | Disc _ | Torus _ | Glyph _ | Polygon _ | Blob _ ->
+  | Disc _ | Torus _ | Glyph _ | Polygon _ | Blob _ | Height_field _ ->
       inside stack m.shape p <> m.inverted
 
 (* Spheres, ellipsoids, boxes, planes and triangles answer every box test of POV-Ray's
@@ -111,7 +115,7 @@ and inside_member stack (m : obj) p =
 let rec box_test_free = function
   | Sphere _ | Sphere_placed _ | Ellipsoid _ | Box _ | Box_trans _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ -> true
   | Csg { kind = Clipped | Bounded | Boxed; members; _ } when Array.length members > 0 -> box_test_free members.(0).shape
-  | Csg _ | Mesh _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Blob _ -> false
+  | Csg _ | Mesh _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Blob _ | Height_field _ -> false
 
 let cached_depth w shape o d lo =
   match shape with
@@ -139,13 +143,14 @@ let normal obj part p =
   | Polygon pg -> Polygon.normal pg p
   | Quadric q -> Quadric.normal q p
   | Blob b -> Blob.normal b p
+  | Height_field h -> Hfield.normal h part p
 
 let geometric_normal obj part p =
   match obj.shape with
   | Smooth_triangle t -> Triangle.flat_normal t
   | Mesh m -> Mesh.placed_face_normal m part
   | Sphere _ | Sphere_placed _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _
-  | Quadric _ | Blob _ | Csg _ ->
+  | Quadric _ | Blob _ | Height_field _ | Csg _ ->
       normal obj part p
 
 let refine obj p =
@@ -153,7 +158,7 @@ let refine obj p =
   | Sphere s | Sphere_placed { ps = s; _ } -> Sphere.refine s p
   | Ellipsoid e -> Sphere.ellipsoid_refine e p
   | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _
-  | Blob _ | Csg _ ->
+  | Blob _ | Height_field _ | Csg _ ->
       p
 
 (* Every shape's UVCoord in POV-Ray 3.7: spheres, boxes, tori and meshes have their own; every
@@ -168,7 +173,7 @@ let uv obj part (p : Vec.t) =
   | Box_trans b -> Box.moved_uv b part p
   | Torus t -> Torus.uv t p
   | Mesh m -> Mesh.placed_uv m part p
-  | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Cone _ | Disc _ | Glyph _ | Polygon _ | Quadric _ | Blob _ | Csg _ -> Vec.make p.x p.y 0.
+  | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Cone _ | Disc _ | Glyph _ | Polygon _ | Quadric _ | Blob _ | Height_field _ | Csg _ -> Vec.make p.x p.y 0.
 
 let rec bounds = function
   | Csg c -> Csg.bounds ~bounds c
@@ -186,6 +191,7 @@ let rec bounds = function
   | Polygon p -> Polygon.bounds p
   | Quadric q -> Quadric.bounds q
   | Blob b -> Some (Blob.bounds b)
+  | Height_field h -> Some (Hfield.bounds h)
 
 let magnitude shape =
   let max_abs a = Array.fold_left (fun m x -> Float.max m (Float.abs x)) 0. a in
@@ -196,7 +202,7 @@ let magnitude shape =
   | None, Csg c -> Csg.magnitude c
   | _, Polygon p -> Polygon.magnitude p
   | _, Quadric q -> Quadric.magnitude q
-  | None, (Sphere _ | Sphere_placed _ | Ellipsoid _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Blob _) -> 0.
+  | None, (Sphere _ | Sphere_placed _ | Ellipsoid _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Blob _ | Height_field _) -> 0.
 
 let rec pov_box shape =
   match shape with
@@ -214,27 +220,28 @@ let rec pov_box shape =
   | Polygon p -> Polygon.pov_box p
   | Quadric q -> Quadric.pov_box q
   | Blob b -> Blob.pov_box b
+  | Height_field h -> Hfield.pov_box h
   | Csg c -> Csg.pov_box ~bounds ~pov_box c
 
 let costly = function
-  | Ellipsoid _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Blob _ -> true
+  | Ellipsoid _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Blob _ | Height_field _ -> true
   | Sphere _ | Sphere_placed _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Csg _ -> false
 
 let as_sphere = function
   | Sphere s | Sphere_placed { ps = s; _ } -> Some s
   | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _
-  | Quadric _ | Blob _ | Csg _ ->
+  | Quadric _ | Blob _ | Height_field _ | Csg _ ->
       None
 
 let face_texture obj part =
   match obj.shape with
   | Mesh m when part >= 0 -> Mesh.texture m.mesh part
   | Sphere _ | Sphere_placed _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _
-  | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Blob _ | Csg _ ->
+  | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Blob _ | Height_field _ | Csg _ ->
       -1
 
 let stats_rows s =
   List.concat
-    [ Blob.stats_rows s; Box.stats_rows s; Cone.stats_rows s; Disc.stats_rows s; Csg.stats_rows s; Plane.stats_rows s; Polygon.stats_rows s; Quadric.stats_rows s;
+    [ Blob.stats_rows s; Box.stats_rows s; Cone.stats_rows s; Disc.stats_rows s; Csg.stats_rows s; Hfield.stats_rows s; Plane.stats_rows s; Polygon.stats_rows s; Quadric.stats_rows s;
       Triangle.stats_rows s;
       Mesh.stats_rows s; Sphere.stats_rows s; Torus.stats_rows s; Glyph.stats_rows s; Csg.bound_rows s ]

@@ -27,6 +27,7 @@ let () =
       ("Polysolv", Test_polysolv.tests);
       ("Torus", Test_torus.tests);
       ("Blob", Test_blob.tests);
+      ("Height field", Test_hfield.tests);
       ("UV coordinates and uv_mapping", Test_uv.tests);
       ("Sphere normal", Test_sphere_normal.tests);
       ("Text", Test_text.tests);
