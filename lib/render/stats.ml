@@ -38,6 +38,12 @@ type t = {
   mutable polygon_hits : int;
   mutable quadric_tests : int;
   mutable quadric_hits : int;
+  mutable superellipsoid_tests : int;
+  mutable superellipsoid_hits : int;
+  mutable ovus_tests : int;
+  mutable ovus_hits : int;
+  mutable sphere_sweep_tests : int;
+  mutable sphere_sweep_hits : int;
 }
 
 let create () =
@@ -48,6 +54,7 @@ let create () =
     csg_union_tests = 0; csg_union_hits = 0; csg_intersection_tests = 0; csg_intersection_hits = 0; csg_merge_tests = 0;
     csg_merge_hits = 0; ttf_tests = 0; ttf_hits = 0;
     polygon_tests = 0; polygon_hits = 0; quadric_tests = 0; quadric_hits = 0;
+    superellipsoid_tests = 0; superellipsoid_hits = 0; ovus_tests = 0; ovus_hits = 0; sphere_sweep_tests = 0; sphere_sweep_hits = 0;
   }
 
 let merge a b =
@@ -89,6 +96,12 @@ let merge a b =
     polygon_hits = a.polygon_hits + b.polygon_hits;
     quadric_tests = a.quadric_tests + b.quadric_tests;
     quadric_hits = a.quadric_hits + b.quadric_hits;
+    superellipsoid_tests = a.superellipsoid_tests + b.superellipsoid_tests;
+    superellipsoid_hits = a.superellipsoid_hits + b.superellipsoid_hits;
+    ovus_tests = a.ovus_tests + b.ovus_tests;
+    ovus_hits = a.ovus_hits + b.ovus_hits;
+    sphere_sweep_tests = a.sphere_sweep_tests + b.sphere_sweep_tests;
+    sphere_sweep_hits = a.sphere_sweep_hits + b.sphere_sweep_hits;
   }
 
 type row = { name : string; tests : int; hits : int }

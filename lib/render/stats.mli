@@ -38,6 +38,12 @@ type t = {
   mutable polygon_hits : int;  (** tests whose crossing is within the depth limits and the outline *)
   mutable quadric_tests : int;  (** quadrics tested *)
   mutable quadric_hits : int;  (** tests that found a root pair or a linear root, whatever its depth *)
+  mutable superellipsoid_tests : int;  (** superellipsoids tested *)
+  mutable superellipsoid_hits : int;  (** tests that kept a hit *)
+  mutable ovus_tests : int;  (** ovus shapes tested *)
+  mutable ovus_hits : int;  (** tests that kept a hit *)
+  mutable sphere_sweep_tests : int;  (** sphere sweeps tested *)
+  mutable sphere_sweep_hits : int;  (** tests that kept a hit beyond the sweep's tolerance *)
 }
 
 val create : unit -> t

@@ -264,6 +264,9 @@ let rec shape = function
       Printf.sprintf "quadric { <%s, %s, %s>, <%s, %s, %s>, <%s, %s, %s>, %s // box <%s, %s, %s> + <%s, %s, %s>" (num q.xx)
         (num q.yy) (num q.zz) (num q.xy) (num q.xz) (num q.yz) (num q.lx) (num q.ly) (num q.lz) (num q.k) (num q.box_llx)
         (num q.box_lly) (num q.box_llz) (num q.box_lenx) (num q.box_leny) (num q.box_lenz)
+  | Superellipsoid { ex; ey; ez; tr } ->
+      Printf.sprintf "superellipsoid { // powers %s, %s, %s%s" (num ex) (num ey) (num ez)
+        (trans (if Transform.is_identity tr then None else Some tr))
   | Csg { kind; members } ->
       let member (m : member) =
         String.concat "\n  " (String.split_on_char '\n' (String.trim (obj m.mobj)))
