@@ -99,6 +99,7 @@ type shape =
   | Polygon of Polygon.t  (** §15.7, §14.5 (b): the outline in polygon space, placed by its transform *)
   | Quadric of Quadric.t  (** quadrics.cpp: in world space, the ray as it is *)
   | Superellipsoid of Superellipsoid.t  (** super.cpp: its own root search in its own space *)
+  | Ovus of Ovus.t  (** ovus.cpp: the part hit decides the normal *)
 
 (** A CSG's members and how their hits are kept (§16.2, §16.3). *)
 and csg = {

@@ -267,6 +267,10 @@ let rec shape = function
   | Superellipsoid { ex; ey; ez; tr } ->
       Printf.sprintf "superellipsoid { // powers %s, %s, %s%s" (num ex) (num ey) (num ez)
         (trans (if Transform.is_identity tr then None else Some tr))
+  | Ovus { bottom; top; hpos; vpos; bvert; tvert; crad; sturm; tr } ->
+      Printf.sprintf "ovus { %s, %s%s // joint: tube %s about a circle of %s at height %s, from %s to %s%s" (num bottom) (num top)
+        (if sturm then " sturm" else "") (num crad) (num hpos) (num vpos) (num bvert) (num tvert)
+        (trans (if Transform.is_identity tr then None else Some tr))
   | Csg { kind; members } ->
       let member (m : member) =
         String.concat "\n  " (String.split_on_char '\n' (String.trim (obj m.mobj)))

@@ -11,7 +11,7 @@ open Csg_build
 (* Objects povml does not render yet: inside a union they are reported as "not supported yet". *)
 let unsupported_objects =
   [ "prism"; "lathe"; "sor"; "blob"; "height_field";
-    "isosurface"; "julia_fractal"; "parametric"; "bicubic_patch"; "ovus"; "cubic";
+    "isosurface"; "julia_fractal"; "parametric"; "bicubic_patch"; "cubic";
     "quartic"; "poly"; "polynomial"; "sphere_sweep"; "composite" ]
 
 let show_vec (v : Vec.t) = Printf.sprintf "<%g, %g, %g>" v.x v.y v.z
@@ -139,6 +139,10 @@ let rec parse_object st : V.obj =
       advance st;
       open_block st "superellipsoid";
       parse_object_mods st (new_obj (Superq_reader.superellipsoid st) loc) "superellipsoid"
+  | Ident "ovus" ->
+      advance st;
+      open_block st "ovus";
+      parse_object_mods st (new_obj (Superq_reader.ovus st loc) loc) "ovus"
   | Ident "text" ->
       (* §15.9: a union of one extruded glyph per character, then the modifiers, which move every
          letter *)
@@ -262,6 +266,11 @@ and parse_object_mods st (o : V.obj) what : V.obj =
     | Ident "no_reflection" -> advance st; loop { o with no_reflection = parse_bool_opt st }
     | Ident "double_illuminate" -> advance st; loop (set_double_illuminate (parse_bool_opt st) o)
     | Ident "sturm" when is_torus o -> advance st; loop (set_sturm o)
+    | Ident "sturm" when (match o.shape with Prim (Ovus _) -> true | Prim _ | Csg _ -> false) -> (
+        (* Ovus is STURM_OK: Bool_Flag(STURM_FLAG, Allow_Float(1.0) > 0) *)
+        advance st;
+        let on = parse_bool_opt st in
+        match o.shape with Prim (Ovus v) -> loop { o with shape = Prim (Ovus { v with sturm = on }) } | Prim _ | Csg _ -> loop o)
     | Ident "hollow" -> advance st; ignore (parse_bool_opt st); loop o
     | Ident "inverse" -> advance st; loop (invert o)
     | Ident "split_union" -> (

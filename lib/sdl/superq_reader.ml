@@ -15,3 +15,16 @@ let uv_vector st =
 let superellipsoid st =
   let e, n = uv_vector st in
   Scene.Superellipsoid (Superellipsoid.make e n)
+
+(* Parse_Ovus: bottom radius, top radius; a top radius of twice the bottom one or more makes a
+   sphere of the top radius at the bottom radius's height instead, with POV-Ray's warning *)
+let ovus st loc =
+  let bottom = Expr.parse_float st in
+  skip_comma st;
+  let top = Expr.parse_float st in
+  if top < 0. || bottom < 0. then Error.raise_at loc "Both Ovus radii must be positive";
+  match Ovus.set_up bottom top with
+  | Some v -> Scene.Ovus v
+  | None ->
+      warn st loc "Ovus second radius should be less than twice first radius: a sphere replaces the ovus, as in POV-Ray";
+      Scene.Sphere { centre = Vec.make 0. bottom 0.; radius = top; trans = None; uv_trans = None }

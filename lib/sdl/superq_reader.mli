@@ -4,3 +4,8 @@
 val superellipsoid : Reader.st -> Scene.shape
 (** [superellipsoid st] reads [<e, n>] (Parse_UV_Vect: a float stands for both) and sets up the
     powers 2/e, e/n, 2/n as Parse_Superellipsoid does. *)
+
+val ovus : Reader.st -> Loc.t -> Scene.shape
+(** [ovus st loc] reads [bottom, top] of [ovus { … }] written at [loc] (Parse_Ovus): an error when
+    a radius is negative; a top radius of at least twice the bottom one gives, with POV-Ray's
+    warning, the sphere it stands for (centre <0, bottom, 0>, radius top). *)
