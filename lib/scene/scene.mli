@@ -360,6 +360,9 @@ type shape =
   | Ovus of Ovus.t
       (** ovus.cpp: two spheres and the torus part joining them, placed by its transform (every
           modifier composes into it); [inverse] is CSG's *)
+  | Sphere_sweep of Sphere_sweep.t
+      (** sphsweep.cpp: the modeling spheres, moved by the modifiers until one needs a
+          transform; [inverse] is CSG's *)
   | Csg of { kind : csg_kind; members : member list }
       (** §16: a CSG kept whole (a merge, an intersection or difference, a union with
           [split_union off]); its members are already moved by its transforms and carry the

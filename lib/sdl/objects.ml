@@ -12,7 +12,7 @@ open Csg_build
 let unsupported_objects =
   [ "prism"; "lathe"; "sor"; "blob"; "height_field";
     "isosurface"; "julia_fractal"; "parametric"; "bicubic_patch"; "cubic";
-    "quartic"; "poly"; "polynomial"; "sphere_sweep"; "composite" ]
+    "quartic"; "poly"; "polynomial"; "composite" ]
 
 let show_vec (v : Vec.t) = Printf.sprintf "<%g, %g, %g>" v.x v.y v.z
 
@@ -143,6 +143,10 @@ let rec parse_object st : V.obj =
       advance st;
       open_block st "ovus";
       parse_object_mods st (new_obj (Superq_reader.ovus st loc) loc) "ovus"
+  | Ident "sphere_sweep" ->
+      advance st;
+      open_block st "sphere_sweep";
+      parse_object_mods st (new_obj (Superq_reader.sphere_sweep st) loc) "sphere_sweep"
   | Ident "text" ->
       (* §15.9: a union of one extruded glyph per character, then the modifiers, which move every
          letter *)

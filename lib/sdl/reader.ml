@@ -123,7 +123,7 @@ let keywords =
     "mesh2"; "vertex_vectors"; "normal_vectors"; "uv_vectors"; "texture_list"; "face_indices"; "normal_indices";
     "uv_indices"; "inside_vector"; "box"; "no_image"; "no_reflection"; "double_illuminate"; "spotlight";
     "parallel"; "point_at"; "radius"; "tightness"; "orthographic"; "looks_like"; "cylinder"; "cone"; "disc";
-    "open"; "torus"; "union"; "merge"; "intersection"; "difference"; "inverse"; "split_union"; "clipped_by"; "text"; "ttf"; "polygon"; "quadric"; "superellipsoid"; "ovus";
+    "open"; "torus"; "union"; "merge"; "intersection"; "difference"; "inverse"; "split_union"; "clipped_by"; "text"; "ttf"; "polygon"; "quadric"; "superellipsoid"; "ovus"; "sphere_sweep";
     "material"; "texture_map"; "interior_texture"; "tiles"; "irid"; "uv_mapping"; "crand"; "image_map"; "bump_map"; "image_pattern"; "caustics"; "cutaway_textures"; "pigment_pattern" ]
   (* pigment patterns (POVRAY-3.7 §17) *)
   @ [ "checker"; "gradient"; "hexagon"; "brick"; "brick_size"; "mortar"; "color_map"; "colour_map"; "frequency";
@@ -163,7 +163,7 @@ let unsupported =
   (* more of POV-Ray 3.7's reserved words that start something povml does not read, each found
      where POV-Ray reads it in an object, a light_source, a texture or an expression (checked word
      by word with POV-Ray: parser/reswords.cpp) *)
-  @ [ "sphere_sweep"; "polynomial"; "composite"; "mesh_camera"; "adaptive"; "area_illumination"; "circular"; "jitter";
+  @ [ "polynomial"; "composite"; "mesh_camera"; "adaptive"; "area_illumination"; "circular"; "jitter";
       "orient"; "media_attenuation"; "media_interaction"; "material_map"; "density"; "density_map"; "spline"; "inside"; "trace"; "max_extent"; "min_extent";
       "datetime"; "function" ]
 

@@ -31,6 +31,7 @@ let compile (s : Scene.shape) =
   | Quadric q -> Some (Quadric q)
   | Superellipsoid q -> Some (Superellipsoid q)
   | Ovus v -> Some (Ovus v)
+  | Sphere_sweep s -> Some (Sphere_sweep (Sphere_sweep.compile s))
   | Csg _ -> None
 
 (* a primitive crossed once at most *)
@@ -55,6 +56,7 @@ let rec depth w shape o d lo =
   | Quadric q -> Quadric.depth w q o d lo
   | Superellipsoid q -> Superellipsoid.depth w q o d lo
   | Ovus v -> Ovus.depth w v o d lo
+  | Sphere_sweep s -> Sphere_sweep.depth w s o d lo
 
 and all_hits w ob o d lo n =
   let id = ob.id in
@@ -76,6 +78,7 @@ and all_hits w ob o d lo n =
   | Quadric q -> Quadric.hits w q id o d lo n
   | Superellipsoid q -> Superellipsoid.hits w q id o d lo n
   | Ovus v -> Ovus.hits w v id o d lo n
+  | Sphere_sweep s -> Sphere_sweep.hits w s id o d lo n
 
 and inside stack shape p =
   match shape with
@@ -96,6 +99,7 @@ and inside stack shape p =
   | Quadric q -> Quadric.inside q p
   | Superellipsoid q -> Superellipsoid.inside q p
   | Ovus v -> Ovus.inside v p
+  | Sphere_sweep s -> Sphere_sweep.inside s p
 
 and inside_member stack (m : obj) p =
   match m.shape with
@@ -107,7 +111,7 @@ and inside_member stack (m : obj) p =
          inverted quadric holds its surface too *)
       inside stack m.shape p
   | Sphere _ | Sphere_placed _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _
-  | Disc _ | Torus _ | Glyph _ | Polygon _ | Superellipsoid _ | Ovus _ ->
+  | Disc _ | Torus _ | Glyph _ | Polygon _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ ->
       inside stack m.shape p <> m.inverted
 
 let hit_object (w : Scratch.t) ob = if Csg.is_csg ob.shape then w.leaf else ob.id
@@ -132,13 +136,14 @@ let normal obj part p =
   | Quadric q -> Quadric.normal q p
   | Superellipsoid q -> Superellipsoid.normal q p
   | Ovus v -> Ovus.normal v part p
+  | Sphere_sweep s -> Sphere_sweep.normal s part p
 
 let geometric_normal obj part p =
   match obj.shape with
   | Smooth_triangle t -> Triangle.flat_normal t
   | Mesh m -> Mesh.placed_face_normal m part
   | Sphere _ | Sphere_placed _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _
-  | Quadric _ | Superellipsoid _ | Ovus _ | Csg _ ->
+  | Quadric _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Csg _ ->
       normal obj part p
 
 let refine obj p =
@@ -146,7 +151,7 @@ let refine obj p =
   | Sphere s | Sphere_placed { ps = s; _ } -> Sphere.refine s p
   | Ellipsoid e -> Sphere.ellipsoid_refine e p
   | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _
-  | Superellipsoid _ | Ovus _ | Csg _ ->
+  | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Csg _ ->
       p
 
 (* Every shape's UVCoord in POV-Ray 3.7: spheres, boxes, tori and meshes have their own; every
@@ -162,7 +167,7 @@ let uv obj part (p : Vec.t) =
   | Torus t -> Torus.uv t p
   | Mesh m -> Mesh.placed_uv m part p
   | Ovus v -> Ovus.uv v p
-  | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Cone _ | Disc _ | Glyph _ | Polygon _ | Quadric _ | Superellipsoid _ | Csg _ -> Vec.make p.x p.y 0.
+  | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Cone _ | Disc _ | Glyph _ | Polygon _ | Quadric _ | Superellipsoid _ | Sphere_sweep _ | Csg _ -> Vec.make p.x p.y 0.
 
 let rec bounds = function
   | Csg c -> Csg.bounds ~bounds c
@@ -181,6 +186,7 @@ let rec bounds = function
   | Quadric q -> Quadric.bounds q
   | Superellipsoid q -> Some (Superellipsoid.bounds q)
   | Ovus v -> Some (Ovus.bounds v)
+  | Sphere_sweep s -> Some (Sphere_sweep.bounds s)
 
 let magnitude shape =
   let max_abs a = Array.fold_left (fun m x -> Float.max m (Float.abs x)) 0. a in
@@ -191,7 +197,7 @@ let magnitude shape =
   | None, Csg c -> Csg.magnitude c
   | _, Polygon p -> Polygon.magnitude p
   | _, Quadric q -> Quadric.magnitude q
-  | None, (Sphere _ | Sphere_placed _ | Ellipsoid _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Superellipsoid _ | Ovus _) -> 0.
+  | None, (Sphere _ | Sphere_placed _ | Ellipsoid _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Superellipsoid _ | Ovus _ | Sphere_sweep _) -> 0.
 
 let rec pov_box shape =
   match shape with
@@ -210,27 +216,28 @@ let rec pov_box shape =
   | Quadric q -> Quadric.pov_box q
   | Superellipsoid q -> Superellipsoid.pov_box q
   | Ovus v -> Ovus.pov_box v
+  | Sphere_sweep s -> Sphere_sweep.pov_box s
   | Csg c -> Csg.pov_box ~bounds ~pov_box c
 
 let costly = function
-  | Ellipsoid _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Superellipsoid _ | Ovus _ -> true
+  | Ellipsoid _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ -> true
   | Sphere _ | Sphere_placed _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Csg _ -> false
 
 let as_sphere = function
   | Sphere s | Sphere_placed { ps = s; _ } -> Some s
   | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _
-  | Quadric _ | Superellipsoid _ | Ovus _ | Csg _ ->
+  | Quadric _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Csg _ ->
       None
 
 let face_texture obj part =
   match obj.shape with
   | Mesh m when part >= 0 -> Mesh.texture m.mesh part
   | Sphere _ | Sphere_placed _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _
-  | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Superellipsoid _ | Ovus _ | Csg _ ->
+  | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Csg _ ->
       -1
 
 let stats_rows s =
   List.concat
     [ Box.stats_rows s; Cone.stats_rows s; Disc.stats_rows s; Csg.stats_rows s; Plane.stats_rows s; Polygon.stats_rows s; Quadric.stats_rows s;
       Triangle.stats_rows s;
-      Mesh.stats_rows s; Ovus.stats_rows s; Sphere.stats_rows s; Superellipsoid.stats_rows s; Torus.stats_rows s; Glyph.stats_rows s ]
+      Mesh.stats_rows s; Ovus.stats_rows s; Sphere.stats_rows s; Sphere_sweep.stats_rows s; Superellipsoid.stats_rows s; Torus.stats_rows s; Glyph.stats_rows s ]
