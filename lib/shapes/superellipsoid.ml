@@ -273,16 +273,13 @@ let counted (w : Scratch.t) s ~all o d out =
   if n > 0 then st.superellipsoid_hits <- st.superellipsoid_hits + 1;
   n
 
-(* alone, the first hit found is the only one (a lower limit above the shape's own asks for all) *)
+(* alone, the shape pushes only the first hit it finds: that is the only depth POV-Ray's search
+   sees, kept when at least [lo] (a shadow ray's first hit at its own surface, below the shadow
+   tolerance, hides the far wall) *)
 let depth (w : Scratch.t) s o d lo =
-  let all = lo > near_limit w in
-  let out = if all then Array.make 11 0. else w.crossings in
-  let n = counted w s ~all o d out in
-  let best = ref infinity in
-  for i = n - 1 downto 0 do
-    if out.(i) >= lo && out.(i) < !best then best := out.(i)
-  done;
-  !best
+  let out = w.crossings in
+  let n = counted w s ~all:false o d out in
+  if n > 0 && out.(0) >= lo then out.(0) else infinity
 
 let hits (w : Scratch.t) s id o d lo n =
   let out = Array.make 11 0. in

@@ -50,8 +50,8 @@ val pov_box : t -> float array
     transform (Recompute_BBox). *)
 
 val depth : Scratch.t -> t -> Vec.t -> Vec.t -> float -> float
-(** [depth w s o d lo] is the nearest hit at least [lo] (the first found, for a shape alone), or
-    infinity; counted ("Superellipsoid"). *)
+(** [depth w s o d lo] is the first hit found (the only one a shape alone pushes) when it is at
+    least [lo], else infinity; counted ("Superellipsoid"). *)
 
 val hits : Scratch.t -> t -> int -> Vec.t -> Vec.t -> float -> int -> int
 (** [hits w s id o d lo n] pushes every hit at least [lo], in the order found, as hits of the
