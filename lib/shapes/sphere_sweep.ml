@@ -103,7 +103,7 @@ let compile s =
   in
   let n = Array.length segments in
   let singles = Array.init (n + 1) (fun i -> if i < n then (segments.(i).c0, segments.(i).r0) else (segments.(n - 1).c1, segments.(n - 1).r1)) in
-  { sweep = s; segments; singles; ubits = 47 - bits (n + 1) }
+  { sweep = s; segments; singles; ubits = 50 - bits (n + 1) }
 
 (* the modifiers: without a transform, translate, rotate and a uniform scale move the modeling
    spheres (Translate, Rotate, Scale); anything else starts the transform, which every later
