@@ -130,6 +130,19 @@ let kind_sphere_at = 4
 let umax c = Float.of_int ((1 lsl c.ubits) - 1)
 let code c kind index u = (((index lsl c.ubits) + Float.to_int (Float.round (u *. umax c))) * 8) + kind
 
+(* The nearest hit's part needs no float: an OCaml int holds the bits of u itself (u ∈ [2⁻⁵¹¹, 1]
+   has bit 61 set and bit 62 clear, so 61 bits remain), with one bit for the kind, as a negative
+   number below −1; the segment is found again at the hit point. Other u fall back to [code]. *)
+let bit61 = 1 lsl 61
+
+let exact c kind index u =
+  let bits = Int64.to_int (Int64.bits_of_float u) in
+  if u > 0. && bits land bit61 <> 0 then -(2 + ((bits land (bit61 - 1)) lsl 1) + if kind = kind_sphere_at then 1 else 0)
+  else code c kind index u
+
+let parts c kind index u = (code c kind index u, exact c kind index u)
+let plain_part c kind index = let k = code c kind index 0. in (k, k)
+
 (* Intersect_Sphere: the two crossings of one sphere as (t, normal) with the normal
    (point − centre)/radius, or none *)
 let sphere_crossings (o : Vec.t) (d : Vec.t) (centre : Vec.t) radius add part =
@@ -213,7 +226,7 @@ let segment_crossings (st : Stats.t) work c i (o : Vec.t) (d : Vec.t) add =
         let dcen = vsub p centre in
         if vdot dcen dcen < radius *. radius then
           let n = if kind = kind_start then Vec.make (-1.0 *. dc.x) (-1.0 *. dc.y) (-1.0 *. dc.z) else dc in
-          add t (normalize n) (code c kind i 0.)
+          add t (normalize n) (plain_part c kind i)
       end
     end
   in
@@ -243,13 +256,13 @@ let segment_crossings (st : Stats.t) work c i (o : Vec.t) (d : Vec.t) add =
           if t > -.max_distance && t < max_distance then begin
             let p = vaddk o t d in
             let centre = vaddk cc.(0) u cc.(1) in
-            add t (normalize (vsub p centre)) (code c kind_side i u)
+            add t (normalize (vsub p centre)) (parts c kind_side i u)
           end
         end
         else
           let centre = vaddk cc.(0) u cc.(1) in
           let radius = (rc.(1) *. u) +. rc.(0) in
-          ignore (sphere_crossings o d centre radius add (code c kind_sphere_at i u)))
+          ignore (sphere_crossings o d centre radius add (parts c kind_sphere_at i u)))
       (in_unit roots n)
   end
   else begin
@@ -291,7 +304,7 @@ let segment_crossings (st : Stats.t) work c i (o : Vec.t) (d : Vec.t) add =
     List.iter
       (fun u ->
         let centre, radius = cubic_sphere sg u in
-        ignore (sphere_crossings o d centre radius add (code c kind_sphere_at i u)))
+        ignore (sphere_crossings o d centre radius add (parts c kind_sphere_at i u)))
       (in_unit roots n)
   end
 
@@ -344,7 +357,7 @@ let intersect (w : Scratch.t) c (o : Vec.t) (d : Vec.t) =
     (fun i (centre, radius) ->
       let found = ref [] in
       let add t n p = found := (t, n, p) :: !found in
-      if sphere_crossings o' d' centre radius add (code c kind_single i 0.) then
+      if sphere_crossings o' d' centre radius add (plain_part c kind_single i) then
         if !count + 2 <= max_isect then
           List.iter
             (fun ((t, _, _) as x) ->
@@ -375,7 +388,7 @@ let intersect (w : Scratch.t) c (o : Vec.t) (d : Vec.t) =
     Array.iter
       (fun i ->
         let t = tarr.(i) /. len in
-        if t > c.sweep.tolerance then out := (t, parr.(i)) :: !out)
+        if t > c.sweep.tolerance then out := (t, fst parr.(i), snd parr.(i)) :: !out)
       kept;
     Array.of_list (List.rev !out)
   end
@@ -383,8 +396,27 @@ let intersect (w : Scratch.t) c (o : Vec.t) (d : Vec.t) =
 (* the normal POV-Ray stored with the hit of [part] at the world point [p] *)
 let normal c part (p : Vec.t) =
   let q = match c.sweep.trans with None -> p | Some m -> Transform.inv_point m p in
-  let kind = part land 7 and rest = part lsr 3 in
-  let index = rest lsr c.ubits and u = Float.of_int (rest land ((1 lsl c.ubits) - 1)) /. umax c in
+  let kind, index, u =
+    if part < -1 then begin
+      (* an exact u: the segment is the one whose sphere at u passes nearest the point *)
+      let v = -part - 2 in
+      let u = Int64.float_of_bits (Int64.of_int ((v lsr 1) lor bit61)) in
+      let off i =
+        let sg = c.segments.(i) in
+        let centre, radius = if sg.ncoefs = 2 then (vaddk sg.cc.(0) u sg.cc.(1), (sg.rc.(1) *. u) +. sg.rc.(0)) else cubic_sphere sg u in
+        let e = vsub q centre in
+        Float.abs (vdot e e -. (radius *. radius))
+      in
+      let best = ref 0 in
+      for i = 1 to Array.length c.segments - 1 do
+        if off i < off !best then best := i
+      done;
+      ((if v land 1 = 1 then kind_sphere_at else kind_side), !best, u)
+    end
+    else
+      let rest = part lsr 3 in
+      (part land 7, rest lsr c.ubits, Float.of_int (rest land ((1 lsl c.ubits) - 1)) /. umax c)
+  in
   let n =
     if kind = kind_single then
       let centre, radius = c.singles.(index) in
@@ -473,7 +505,7 @@ let depth (w : Scratch.t) c o d lo =
   let h = counted w c o d in
   let best = ref infinity and part = ref (-1) in
   for i = Array.length h - 1 downto 0 do
-    let t, p = h.(i) in
+    let t, _, p = h.(i) in
     if t < !best && t >= lo then begin
       best := t;
       part := p
@@ -483,6 +515,6 @@ let depth (w : Scratch.t) c o d lo =
   !best
 
 let hits (w : Scratch.t) c id o d lo n =
-  Array.fold_left (fun n (t, p) -> Scratch.push_ray w n lo t p id o d) n (counted w c o d)
+  Array.fold_left (fun n (t, p, _) -> Scratch.push_ray w n lo t p id o d) n (counted w c o d)
 
 let stats_rows (s : Stats.t) = [ { Stats.name = "Sphere Sweep"; tests = s.sphere_sweep_tests; hits = s.sphere_sweep_hits } ]

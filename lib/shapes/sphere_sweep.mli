@@ -59,11 +59,13 @@ val bezier_01 : ?stats:Stats.t -> Polysolv_high.work -> int -> float array -> fl
     polynomial's Bernstein coefficients over [0, 1] all have one sign, else Solve_Polynomial's
     roots (counted in [stats] when given). *)
 
-val intersect : Scratch.t -> compiled -> Vec.t -> Vec.t -> (float * int) array
+val intersect : Scratch.t -> compiled -> Vec.t -> Vec.t -> (float * int * int) array
 (** [intersect w c o d] is SphereSweep::All_Intersections of the world ray: the kept hits as
-    (world depth, part), sorted, beyond the tolerance. A part code names the single sphere, the
-    segment's closing surface, or the segment and its u, from which [normal] rebuilds the normal
-    POV-Ray stored. "Roots tested" and "eliminated" are counted. *)
+    (world depth, part, exact part), sorted, beyond the tolerance. A part code names the single
+    sphere, the segment's closing surface, or the segment and its u, from which [normal] rebuilds
+    the normal POV-Ray stored: the part (below 2⁵³, for a CSG's hit list) with u quantised, the
+    exact part (a nearest hit's) with u's own bits. "Roots tested" and "eliminated" are
+    counted. *)
 
 val normal : compiled -> int -> Vec.t -> Vec.t
 (** [normal c part p] is the normal of the hit [part] at the world point [p]: a sphere's
