@@ -55,6 +55,12 @@ type t = {
   mutable hfield_block_hits : int;
   mutable hfield_cell_tests : int;
   mutable hfield_cell_hits : int;
+  mutable superellipsoid_tests : int;
+  mutable superellipsoid_hits : int;
+  mutable ovus_tests : int;
+  mutable ovus_hits : int;
+  mutable sphere_sweep_tests : int;
+  mutable sphere_sweep_hits : int;
 }
 
 let create () =
@@ -70,6 +76,7 @@ let create () =
     hfield_tests = 0; hfield_hits = 0; hfield_box_hits = 0;
     hfield_triangle_tests = 0; hfield_triangle_hits = 0; hfield_block_tests = 0; hfield_block_hits = 0; hfield_cell_tests = 0;
     hfield_cell_hits = 0;
+    superellipsoid_tests = 0; superellipsoid_hits = 0; ovus_tests = 0; ovus_hits = 0; sphere_sweep_tests = 0; sphere_sweep_hits = 0;
   }
 
 let merge a b =
@@ -128,6 +135,12 @@ let merge a b =
     hfield_block_hits = a.hfield_block_hits + b.hfield_block_hits;
     hfield_cell_tests = a.hfield_cell_tests + b.hfield_cell_tests;
     hfield_cell_hits = a.hfield_cell_hits + b.hfield_cell_hits;
+    superellipsoid_tests = a.superellipsoid_tests + b.superellipsoid_tests;
+    superellipsoid_hits = a.superellipsoid_hits + b.superellipsoid_hits;
+    ovus_tests = a.ovus_tests + b.ovus_tests;
+    ovus_hits = a.ovus_hits + b.ovus_hits;
+    sphere_sweep_tests = a.sphere_sweep_tests + b.sphere_sweep_tests;
+    sphere_sweep_hits = a.sphere_sweep_hits + b.sphere_sweep_hits;
   }
 
 type row = { name : string; tests : int; hits : int }

@@ -55,6 +55,12 @@ type t = {
   mutable hfield_block_hits : int;  (** of which the ray's height met the block's *)
   mutable hfield_cell_tests : int;  (** cells walked through *)
   mutable hfield_cell_hits : int;  (** of which the ray's height met the cell's *)
+  mutable superellipsoid_tests : int;  (** superellipsoids tested *)
+  mutable superellipsoid_hits : int;  (** tests that kept a hit *)
+  mutable ovus_tests : int;  (** ovus shapes tested *)
+  mutable ovus_hits : int;  (** tests that kept a hit *)
+  mutable sphere_sweep_tests : int;  (** sphere sweeps tested *)
+  mutable sphere_sweep_hits : int;  (** tests that kept a hit beyond the sweep's tolerance *)
 }
 
 val create : unit -> t

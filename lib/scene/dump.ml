@@ -275,6 +275,18 @@ let rec shape = function
         (if f.smooth then ", smooth" else "")
         (if f.hierarchy then Printf.sprintf ", %d x %d blocks" f.nbx f.nbz else ", no hierarchy")
         (trans (Some t))
+  | Superellipsoid { ex; ey; ez; tr } ->
+      Printf.sprintf "superellipsoid { // powers %s, %s, %s%s" (num ex) (num ey) (num ez)
+        (trans (if Transform.is_identity tr then None else Some tr))
+  | Ovus { bottom; top; hpos; vpos; bvert; tvert; crad; sturm; tr } ->
+      Printf.sprintf "ovus { %s, %s%s // joint: tube %s about a circle of %s at height %s, from %s to %s%s" (num bottom) (num top)
+        (if sturm then " sturm" else "") (num crad) (num hpos) (num vpos) (num bvert) (num tvert)
+        (trans (if Transform.is_identity tr then None else Some tr))
+  | Sphere_sweep { interpolation; spheres; tolerance; trans = t } ->
+      let kind = match interpolation with Linear -> "linear_spline" | Catmull_rom -> "cubic_spline" | B_spline -> "b_spline" in
+      Printf.sprintf "sphere_sweep { %s %d, %s tolerance %s%s" kind (Array.length spheres)
+        (String.concat ", " (Array.to_list (Array.map (fun (c, r) -> Printf.sprintf "%s, %s" (vec c) (num r)) spheres)))
+        (num tolerance) (trans t)
   | Csg { kind; members } ->
       let member (m : member) =
         String.concat "\n  " (String.split_on_char '\n' (String.trim (obj m.mobj)))

@@ -11,8 +11,8 @@ open Csg_build
 (* Objects povml does not render yet: inside a union they are reported as "not supported yet". *)
 let unsupported_objects =
   [ "prism"; "lathe"; "sor";
-    "isosurface"; "superellipsoid"; "julia_fractal"; "parametric"; "bicubic_patch"; "ovus"; "cubic";
-    "quartic"; "poly"; "polynomial"; "sphere_sweep"; "lemon"; "composite" ]
+    "isosurface"; "julia_fractal"; "parametric"; "bicubic_patch"; "cubic";
+    "quartic"; "poly"; "polynomial"; "composite" ]
 
 let show_vec (v : Vec.t) = Printf.sprintf "<%g, %g, %g>" v.x v.y v.z
 
@@ -157,6 +157,18 @@ let rec parse_object st : V.obj =
       (match o.shape with
       | Csg { kind; members = V.Member_obj m :: rest; split } -> { o with shape = Csg { kind; members = V.Member_obj (seal m) :: rest; split } }
       | Csg _ | Prim _ -> seal o)
+  | Ident "superellipsoid" ->
+      advance st;
+      open_block st "superellipsoid";
+      parse_object_mods st (new_obj (Superq_reader.superellipsoid st) loc) "superellipsoid"
+  | Ident "ovus" ->
+      advance st;
+      open_block st "ovus";
+      parse_object_mods st (new_obj (Superq_reader.ovus st loc) loc) "ovus"
+  | Ident "sphere_sweep" ->
+      advance st;
+      open_block st "sphere_sweep";
+      parse_object_mods st (new_obj (Superq_reader.sphere_sweep st) loc) "sphere_sweep"
   | Ident "text" ->
       (* §15.9: a union of one extruded glyph per character, then the modifiers, which move every
          letter *)
@@ -284,6 +296,11 @@ and parse_object_mods st (o : V.obj) what : V.obj =
         (* Allow_Float(1.0) > 0.0 *)
         advance st;
         loop (Blob_reader.set_sturm ((not (float_follows st)) || parse_float st > 0.) o)
+    | Ident "sturm" when (match o.shape with Prim (Ovus _) -> true | Prim _ | Csg _ -> false) -> (
+        (* Ovus is STURM_OK: Bool_Flag(STURM_FLAG, Allow_Float(1.0) > 0) *)
+        advance st;
+        let on = parse_bool_opt st in
+        match o.shape with Prim (Ovus v) -> loop { o with shape = Prim (Ovus { v with sturm = on }) } | Prim _ | Csg _ -> loop o)
     | Ident "hollow" -> advance st; ignore (parse_bool_opt st); loop o
     | Ident "inverse" -> advance st; loop (invert o)
     | Ident "split_union" -> (
