@@ -38,6 +38,18 @@ type t = {
   mutable polygon_hits : int;
   mutable quadric_tests : int;
   mutable quadric_hits : int;
+  mutable prism_tests : int;
+  mutable prism_hits : int;
+  mutable prism_bound_tests : int;
+  mutable prism_bound_hits : int;
+  mutable lathe_tests : int;
+  mutable lathe_hits : int;
+  mutable lathe_bound_tests : int;
+  mutable lathe_bound_hits : int;
+  mutable sor_tests : int;
+  mutable sor_hits : int;
+  mutable sor_bound_tests : int;
+  mutable sor_bound_hits : int;
 }
 
 let create () =
@@ -48,6 +60,7 @@ let create () =
     csg_union_tests = 0; csg_union_hits = 0; csg_intersection_tests = 0; csg_intersection_hits = 0; csg_merge_tests = 0;
     csg_merge_hits = 0; ttf_tests = 0; ttf_hits = 0;
     polygon_tests = 0; polygon_hits = 0; quadric_tests = 0; quadric_hits = 0;
+    prism_tests = 0; prism_hits = 0; prism_bound_tests = 0; prism_bound_hits = 0; lathe_tests = 0; lathe_hits = 0; lathe_bound_tests = 0; lathe_bound_hits = 0; sor_tests = 0; sor_hits = 0; sor_bound_tests = 0; sor_bound_hits = 0;
   }
 
 let merge a b =
@@ -89,6 +102,18 @@ let merge a b =
     polygon_hits = a.polygon_hits + b.polygon_hits;
     quadric_tests = a.quadric_tests + b.quadric_tests;
     quadric_hits = a.quadric_hits + b.quadric_hits;
+    prism_tests = a.prism_tests + b.prism_tests;
+    prism_hits = a.prism_hits + b.prism_hits;
+    prism_bound_tests = a.prism_bound_tests + b.prism_bound_tests;
+    prism_bound_hits = a.prism_bound_hits + b.prism_bound_hits;
+    lathe_tests = a.lathe_tests + b.lathe_tests;
+    lathe_hits = a.lathe_hits + b.lathe_hits;
+    lathe_bound_tests = a.lathe_bound_tests + b.lathe_bound_tests;
+    lathe_bound_hits = a.lathe_bound_hits + b.lathe_bound_hits;
+    sor_tests = a.sor_tests + b.sor_tests;
+    sor_hits = a.sor_hits + b.sor_hits;
+    sor_bound_tests = a.sor_bound_tests + b.sor_bound_tests;
+    sor_bound_hits = a.sor_bound_hits + b.sor_bound_hits;
   }
 
 type row = { name : string; tests : int; hits : int }

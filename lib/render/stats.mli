@@ -38,6 +38,18 @@ type t = {
   mutable polygon_hits : int;  (** tests whose crossing is within the depth limits and the outline *)
   mutable quadric_tests : int;  (** quadrics tested *)
   mutable quadric_hits : int;  (** tests that found a root pair or a linear root, whatever its depth *)
+  mutable prism_tests : int;  (** prisms tested, degenerate ones not (prism.cpp) *)
+  mutable prism_hits : int;  (** tests that pushed a crossing *)
+  mutable prism_bound_tests : int;  (** its bounding tests (POV-Ray's "Bound" row) *)
+  mutable prism_bound_hits : int;
+  mutable lathe_tests : int;  (** lathes tested (lathe.cpp) *)
+  mutable lathe_hits : int;  (** tests that pushed a crossing *)
+  mutable lathe_bound_tests : int;  (** its bounding tests (POV-Ray's "Bound" row) *)
+  mutable lathe_bound_hits : int;
+  mutable sor_tests : int;  (** surfaces of revolution tested (sor.cpp) *)
+  mutable sor_hits : int;  (** tests that pushed a crossing *)
+  mutable sor_bound_tests : int;  (** its bounding tests (POV-Ray's "Bound" row) *)
+  mutable sor_bound_hits : int;
 }
 
 val create : unit -> t

@@ -10,7 +10,7 @@ open Csg_build
 
 (* Objects povml does not render yet: inside a union they are reported as "not supported yet". *)
 let unsupported_objects =
-  [ "prism"; "lathe"; "sor"; "blob"; "height_field";
+  [ "blob"; "height_field";
     "isosurface"; "superellipsoid"; "julia_fractal"; "parametric"; "bicubic_patch"; "ovus"; "cubic";
     "quartic"; "poly"; "polynomial"; "sphere_sweep"; "lemon"; "composite" ]
 
@@ -135,6 +135,11 @@ let rec parse_object st : V.obj =
       advance st;
       open_block st kw;
       parse_object_mods st (new_obj (if kw = "polygon" then Shape_reader.polygon st loc else Shape_reader.quadric st) loc) kw
+  | Ident ("prism" | "lathe" | "sor" as kw) ->
+      advance st;
+      open_block st kw;
+      let shape = match kw with "prism" -> Spline_reader.prism st loc | "lathe" -> Spline_reader.lathe st loc | _ -> Spline_reader.sor st loc in
+      parse_object_mods st (new_obj shape loc) kw
   | Ident "text" ->
       (* §15.9: a union of one extruded glyph per character, then the modifiers, which move every
          letter *)
@@ -258,6 +263,7 @@ and parse_object_mods st (o : V.obj) what : V.obj =
     | Ident "no_reflection" -> advance st; loop { o with no_reflection = parse_bool_opt st }
     | Ident "double_illuminate" -> advance st; loop (set_double_illuminate (parse_bool_opt st) o)
     | Ident "sturm" when is_torus o -> advance st; loop (set_sturm o)
+    | Ident "sturm" when is_spline_shape o -> advance st; loop (set_sturm o)
     | Ident "hollow" -> advance st; ignore (parse_bool_opt st); loop o
     | Ident "inverse" -> advance st; loop (invert o)
     | Ident "split_union" -> (
