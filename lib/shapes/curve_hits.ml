@@ -45,3 +45,32 @@ let spline_part ~segments j w = 3 + j + ((segments + 3) * int_of_float (Float.ro
 let segment ~segments part = (part - 3) mod (segments + 3)
 
 let parameter ~segments part = Float.of_int ((part - 3) / (segments + 3)) /. steps segments
+
+(* Trace::FindIntersection's ObjectBase::Intersect_BBox (Intersect_BBox_Dir): the single-precision
+   box, the ray's origin and reciprocal direction in single precision, the slabs in single
+   precision; a zero direction component makes 1/0 = ∞, and an origin on that slab's face plane
+   makes 0·∞ = NaN, which fails every comparison: the object is not tried *)
+let box_admits (b : float array) (o : Vec.t) (d : Vec.t) =
+  Array.length b = 0
+  ||
+  let f = Precision.f32 in
+  let mind = 1e-4 in
+  let slab ll len on dn =
+    let inv = f (1. /. dn) in
+    let lo = ll and hi = f (ll +. len) in
+    let o = f on in
+    let a = f (f (lo -. o) *. inv) and b = f (f (hi -. o) *. inv) in
+    if inv < 0. then (b, a) else (a, b)
+  in
+  let tmin, tmax = slab b.(0) b.(3) o.x d.x in
+  let tymin, tymax = slab b.(1) b.(4) o.y d.y in
+  (not (tmin > tymax || tymin > tmax))
+  &&
+  let tmin = if tymin > tmin then tymin else tmin in
+  let tmax = if tymax < tmax then tymax else tmax in
+  let tzmin, tzmax = slab b.(2) b.(5) o.z d.z in
+  (not (tmin > tzmax || tzmin > tmax))
+  &&
+  let tmin = if tzmin > tmin then tzmin else tmin in
+  let tmax = if tzmax < tmax then tzmax else tmax in
+  tmin < infinity && tmax > mind

@@ -26,3 +26,10 @@ val segment : segments:int -> int -> int
 
 val parameter : segments:int -> int -> float
 (** [parameter ~segments part] is the curve parameter of a spline part (to 2^−41 or better). *)
+
+val box_admits : float array -> Vec.t -> Vec.t -> bool
+(** [box_admits b o d] is POV-Ray's per-object box test before a top-level object is tried
+    (Trace::FindIntersection, ObjectBase::Intersect_BBox): the ray from [o] along [d] against
+    the single-precision box [b] ([Pov_box] layout; [[||]] admits every ray), in single
+    precision, leaving beyond MIN_ISECT_DEPTH (1e-4). A ray lying in a face plane of the box with
+    a zero direction component fails it (0·∞ is NaN). *)

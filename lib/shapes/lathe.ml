@@ -16,6 +16,7 @@ type t = {
   radius2 : float;
   sturm : bool;
   tr : Transform.t;
+  pbox : float array;
 }
 
 let epsilon = Precision.epsilon
@@ -26,6 +27,10 @@ let cmin a b = if b < a then b else a
 let cmax a b = if a < b then b else a
 
 let segment_count (spline : spline) n = match spline with Linear -> n - 1 | Quadratic -> n - 2 | Cubic -> n - 3 | Bezier -> n / 4
+
+let pov_box t =
+  Pov_box.mapped t.tr
+    (Array.map Precision.f32 [| -.t.radius2; t.height1; -.t.radius2; 2. *. t.radius2; t.height2 -. t.height1; 2. *. t.radius2 |])
 
 (* Compute_Lathe *)
 let make ~spline ~sturm (p : (float * float) array) =
@@ -99,9 +104,12 @@ let make ~spline ~sturm (p : (float * float) array) =
         ymax := cmax !ymax h2.(segment);
         s)
   in
-  { spline; segs; bcyl = Bcyl.make r1 r2 h1 h2; height1 = !ymin; height2 = !ymax; radius1 = !xmin; radius2 = !xmax; sturm; tr = Transform.identity }
+  { spline; segs; bcyl = Bcyl.make r1 r2 h1 h2; height1 = !ymin; height2 = !ymax; radius1 = !xmin; radius2 = !xmax; sturm; tr = Transform.identity; pbox = [||] }
+  |> fun t -> { t with pbox = pov_box t }
 
-let transform t m = { t with tr = Transform.compose t.tr m }
+let transform t m =
+  let t = { t with tr = Transform.compose t.tr m } in
+  { t with pbox = pov_box t }
 let near_limit (w : Scratch.t) = if w.robust then 0. else depth_tolerance
 
 let crossings (w : Scratch.t) t ~all (o : Vec.t) (dir : Vec.t) =
@@ -200,7 +208,9 @@ let crossings (w : Scratch.t) t ~all (o : Vec.t) (dir : Vec.t) =
     end
   end
 
-let depth w t o d lo = Curve_hits.nearest w (crossings w t ~all:false o d) lo
+(* a top-level lathe is tried only when the ray passes its box (Trace::FindIntersection) *)
+let depth (w : Scratch.t) t o d lo =
+  if w.robust || Curve_hits.box_admits t.pbox o d then Curve_hits.nearest w (crossings w t ~all:false o d) lo else infinity
 let hits w t id o d lo n = Curve_hits.push w (crossings w t ~all:true o d) id o d lo n
 
 let inside t (p : Vec.t) =
@@ -256,10 +266,6 @@ let uv t part (p : Vec.t) =
 
 let box t = [| -.t.radius2; t.height1; -.t.radius2; t.radius2; t.height2; t.radius2 |]
 let bounds t = Transform.bounds t.tr (box t)
-
-let pov_box t =
-  Pov_box.mapped t.tr
-    (Array.map Precision.f32 [| -.t.radius2; t.height1; -.t.radius2; 2. *. t.radius2; t.height2 -. t.height1; 2. *. t.radius2 |])
 
 let stats_rows (s : Stats.t) =
   [

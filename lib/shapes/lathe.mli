@@ -19,6 +19,7 @@ type t = {
   radius2 : float;  (** the overall bounding cylinder *)
   sturm : bool;
   tr : Transform.t;  (** lathe space to world *)
+  pbox : float array;  (** [pov_box] as it stands, kept for the per-object box test *)
 }
 
 val segment_count : spline -> int -> int
@@ -38,7 +39,8 @@ val crossings : Scratch.t -> t -> all:bool -> Vec.t -> Vec.t -> int
     The statistics are counted. *)
 
 val depth : Scratch.t -> t -> Vec.t -> Vec.t -> float -> float
-(** [depth w t o d lo] is the nearest crossing at least [lo] (its part in [w.part]), or infinity. *)
+(** [depth w t o d lo] is the nearest crossing at least [lo] (its part in [w.part]), or infinity;
+    only when the ray passes [Curve_hits.box_admits] of [t.pbox] (not in the robust mode). *)
 
 val hits : Scratch.t -> t -> int -> Vec.t -> Vec.t -> float -> int -> int
 (** [hits w t id o d lo n] pushes every crossing at least [lo] as a hit of the member [id]. *)

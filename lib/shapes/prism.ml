@@ -41,6 +41,7 @@ type t = {
   v2 : float;
   segs : segment array;
   tr : Transform.t;
+  pbox : float array;
 }
 
 let epsilon = Precision.epsilon
@@ -219,12 +220,6 @@ let compute ~spline ~conic ~height1 ~height2 (p : (float * float) array) =
     let bx1, bx2 = span x1 x2 and by1, by2 = span y1 y2 in
     (segs, (bx1, by1, bx2, by2), (x1, y1, x2, y2))
   end
-
-let make ~spline ~conic ~height1 ~height2 ~closed ~sturm ~degenerate pts =
-  match compute ~spline ~conic ~height1 ~height2 pts with
-  | exception Failure msg -> Error msg
-  | segs, (x1, y1, x2, y2), (u1, v1, u2, v2) ->
-      Ok { spline; conic; height1; height2; closed; sturm; degenerate; x1; y1; x2; y2; u1; v1; u2; v2; segs; tr = Transform.identity }
 
 (* ------------------------------------------------------------------------------------------ *)
 (* Inside (in_curve: crossings of the ray from (u, v) towards +u) *)
@@ -438,7 +433,8 @@ let crossings (w : Scratch.t) t (o : Vec.t) (d : Vec.t) =
     end
   end
 
-let depth w t o d lo = Curve_hits.nearest w (crossings w t o d) lo
+(* a top-level prism is tried only when the ray passes its box (Trace::FindIntersection) *)
+let depth (w : Scratch.t) t o d lo = if w.robust || Curve_hits.box_admits t.pbox o d then Curve_hits.nearest w (crossings w t o d) lo else infinity
 let hits w t id o d lo n = Curve_hits.push w (crossings w t o d) id o d lo n
 
 let inside t (p : Vec.t) =
@@ -470,7 +466,16 @@ let normal t part (p : Vec.t) =
 let box t = [| t.x1; t.height1; t.y1; t.x2; t.height2; t.y2 |]
 let bounds t = Transform.bounds t.tr (box t)
 let pov_box t = let b = box t in Pov_box.mapped t.tr (Pov_box.of_min_max (Array.sub b 0 3) (Array.sub b 3 3))
-let transform t m = { t with tr = Transform.compose t.tr m }
+let transform t m =
+  let t = { t with tr = Transform.compose t.tr m } in
+  { t with pbox = pov_box t }
+
+let make ~spline ~conic ~height1 ~height2 ~closed ~sturm ~degenerate pts =
+  match compute ~spline ~conic ~height1 ~height2 pts with
+  | exception Failure msg -> Error msg
+  | segs, (x1, y1, x2, y2), (u1, v1, u2, v2) ->
+      let t = { spline; conic; height1; height2; closed; sturm; degenerate; x1; y1; x2; y2; u1; v1; u2; v2; segs; tr = Transform.identity; pbox = [||] } in
+      Ok { t with pbox = pov_box t }
 
 let stats_rows (s : Stats.t) =
   [

@@ -42,6 +42,7 @@ type t = {
   v2 : float;  (** the overall ⟨u, v⟩ rectangle of the outline *)
   segs : segment array;
   tr : Transform.t;  (** prism space to world *)
+  pbox : float array;  (** [pov_box] of the prism as it stands, kept for the per-object box test *)
 }
 
 val close : spline -> (float * float) array -> (float * float) array * [ `Closed | `Closing | `Open ]
@@ -72,7 +73,9 @@ val crossings : Scratch.t -> t -> Vec.t -> Vec.t -> int
     0 for a degenerate prism. The prism statistics are counted. *)
 
 val depth : Scratch.t -> t -> Vec.t -> Vec.t -> float -> float
-(** [depth w t o d lo] is the nearest crossing at least [lo] (its part in [w.part]), or infinity. *)
+(** [depth w t o d lo] is the nearest crossing at least [lo] (its part in [w.part]), or infinity;
+    as for a top-level object, only when the ray passes [Curve_hits.box_admits] of [t.pbox] (not in
+    the robust mode). *)
 
 val hits : Scratch.t -> t -> int -> Vec.t -> Vec.t -> float -> int -> int
 (** [hits w t id o d lo n] pushes the crossings at least [lo] as hits of the member [id]. *)

@@ -16,6 +16,7 @@ type t = {
   closed : bool;
   sturm : bool;
   tr : Transform.t;
+  pbox : float array;
 }
 
 let epsilon = Precision.epsilon
@@ -24,6 +25,10 @@ let depth_tolerance = 1e-4
 let bound_huge = 2e10
 let cmin a b = if b < a then b else a
 let cmax a b = if a < b then b else a
+
+let pov_box t =
+  Pov_box.mapped t.tr
+    (Array.map Precision.f32 [| -.t.radius2; t.height1; -.t.radius2; 2. *. t.radius2; t.height2 -. t.height1; 2. *. t.radius2 |])
 
 (* Compute_Sor: segment i through points i+1 and i+2, the slopes from points i and i+3 *)
 let make ~closed ~sturm (p : (float * float) array) =
@@ -85,10 +90,14 @@ let make ~closed ~sturm (p : (float * float) array) =
         closed;
         sturm;
         tr = Transform.identity;
+        pbox = [||];
       }
+      |> Result.map (fun t -> { t with pbox = pov_box t })
   with Bad msg -> Error msg
 
-let transform t m = { t with tr = Transform.compose t.tr m }
+let transform t m =
+  let t = { t with tr = Transform.compose t.tr m } in
+  { t with pbox = pov_box t }
 let near_limit (w : Scratch.t) = if w.robust then 0. else depth_tolerance
 
 let crossings (w : Scratch.t) t ~all (o : Vec.t) (dir : Vec.t) =
@@ -151,7 +160,9 @@ let crossings (w : Scratch.t) t ~all (o : Vec.t) (dir : Vec.t) =
     end
   end
 
-let depth w t o d lo = Curve_hits.nearest w (crossings w t ~all:false o d) lo
+(* a top-level sor is tried only when the ray passes its box (Trace::FindIntersection) *)
+let depth (w : Scratch.t) t o d lo =
+  if w.robust || Curve_hits.box_admits t.pbox o d then Curve_hits.nearest w (crossings w t ~all:false o d) lo else infinity
 let hits w t id o d lo n = Curve_hits.push w (crossings w t ~all:true o d) id o d lo n
 
 let inside t (p : Vec.t) =
@@ -220,10 +231,6 @@ let uv t part (p : Vec.t) =
 
 let box t = [| -.t.radius2; t.height1; -.t.radius2; t.radius2; t.height2; t.radius2 |]
 let bounds t = Transform.bounds t.tr (box t)
-
-let pov_box t =
-  Pov_box.mapped t.tr
-    (Array.map Precision.f32 [| -.t.radius2; t.height1; -.t.radius2; 2. *. t.radius2; t.height2 -. t.height1; 2. *. t.radius2 |])
 
 let stats_rows (s : Stats.t) =
   [
