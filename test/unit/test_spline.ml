@@ -209,8 +209,20 @@ let test_stats () =
   Alcotest.(check int) "lathe tests" 1 ctx.Context.shapes.stats.lathe_tests;
   Alcotest.(check int) "lathe bound hits" 1 ctx.Context.shapes.stats.lathe_bound_hits
 
+let test_dump () =
+  let d text = Dump.obj (the_object (scene (v37 ^ text))) in
+  check_contains "prism" ~sub:"prism { cubic_spline conic_sweep 0.2, 1 // 4 segments"
+    (d "prism { conic_sweep cubic_spline 0.2, 1, 8, <0,-1>, <1,0>, <0,1>, <-1,0>, <0,-1>, <1,0>, <0,1>, <-1,0> open sturm }");
+  check_contains "prism flags" ~sub:"open sturm"
+    (d "prism { conic_sweep cubic_spline 0.2, 1, 8, <0,-1>, <1,0>, <0,1>, <-1,0>, <0,-1>, <1,0>, <0,1>, <-1,0> open sturm }");
+  check_contains "lathe" ~sub:"lathe { bezier_spline // 2 segments, radius 0 … 1, height 0 … 2"
+    (d "lathe { bezier_spline 8, <0,0>, <1,0>, <1,1>, <0.5,1>, <0.5,1>, <0,1>, <0.8,2>, <0,2> }");
+  check_contains "sor" ~sub:"sor { // 2 segments" (d "sor { 5, <0,-0.2>, <0.8,0>, <0.3,0.7>, <0.9,1.4>, <0.5,2> open scale 2 }");
+  check_contains "sor moved" ~sub:"matrix <2, 0, 0, 0, 2, 0, 0, 0, 2, 0, 0, 0>" (d "sor { 5, <0,-0.2>, <0.8,0>, <0.3,0.7>, <0.9,1.4>, <0.5,2> open scale 2 }")
+
 let tests =
   [
+    Alcotest.test_case "--dump" `Quick test_dump;
     Alcotest.test_case "parse" `Quick test_parse;
     Alcotest.test_case "errors" `Quick test_errors;
     Alcotest.test_case "closed forms" `Quick test_closed_forms;
