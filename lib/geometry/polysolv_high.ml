@@ -12,9 +12,10 @@ let stride = max_order + 1
 
 (* A Sturm sequence of at most 11 polynomials: polynomial k has its coefficients in
    seq.(11k …) in ASCENDING powers and its degree in ord.(k). *)
-type work = { seq : float array; ord : int array; low : Polysolv.work; mutable eliminated : bool }
+type work = { seq : float array; ord : int array; low : Polysolv.work; part : float array; mutable eliminated : bool }
 
-let create () = { seq = Array.make (stride * stride) 0.; ord = Array.make stride 0; low = Polysolv.create (); eliminated = false }
+let create () =
+  { seq = Array.make (stride * stride) 0.; ord = Array.make stride 0; low = Polysolv.create (); part = Array.make 5 0.; eliminated = false }
 
 (* ---------------------------------------------------------------------------------------------- *)
 (* Sturm sequences (polysolve, buildsturm, modp, numchanges, sbisect, regula_falsa) *)
@@ -215,7 +216,7 @@ let sturm w c i n y j =
     let atmin = numchanges w np 0. and atmax = numchanges w np max_distance in
     if atmin - atmax = 0 then 0 else sbisect w np 0. max_distance atmin atmax y j
 
-let solve w c n ~eps roots =
+let solve w c n ~sturm:use_sturm ~eps roots =
   if n > max_order then invalid_arg "Polysolv_high.solve: degree above 10";
   let i = ref 0 in
   while Float.abs c.(!i) < small_enough && !i < n do
@@ -226,7 +227,8 @@ let solve w c n ~eps roots =
   w.eliminated <- false;
   if m <= 4 then begin
     (* the closed forms and the small Sturm solver, on the polynomial from its real degree *)
-    let k = Polysolv.solve w.low (Array.sub c i (m + 1)) m ~sturm:true ~eps roots in
+    Array.blit c i w.part 0 (m + 1);
+    let k = Polysolv.solve w.low w.part m ~sturm:use_sturm ~eps roots in
     w.eliminated <- Polysolv.eliminated w.low;
     k
   end

@@ -9,9 +9,10 @@ type work
 val create : unit -> work
 (** [create ()] is fresh work room; a [work] must not serve two solves at the same time. *)
 
-val solve : work -> float array -> int -> eps:float -> float array -> int
-(** [solve w c n ~eps roots] solves [c.(0)·xⁿ + … + c.(n) = 0] for [n] ≤ 10 as POV-Ray's
-    [Solve_Polynomial] with [sturm] true, writing the roots into [roots] (room for [n]) and
+val solve : work -> float array -> int -> sturm:bool -> eps:float -> float array -> int
+(** [solve w c n ~sturm ~eps roots] solves [c.(0)·xⁿ + … + c.(n) = 0] for [n] ≤ 10 as POV-Ray's
+    [Solve_Polynomial] (leading coefficients below 1e-10 lower the degree; up to degree 4 it is
+    [Polysolv.solve] with [sturm]; above, always Sturm sequences), writing the roots into [roots] (room for [n]) and
     returning their number. Above degree 4 the roots are those in [0, 1e7]; a constant term tiny
     against the linear one ([eps]) is counted as an eliminated root, but the full polynomial is
     solved all the same, as POV-Ray does. Raises [Invalid_argument] for [n] > 10. *)

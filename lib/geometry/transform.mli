@@ -40,6 +40,10 @@ val matrix : float array -> (t * string list, string) result
     warning POV-Ray prints (one per such column). A zero determinant is POV-Ray's fatal
     "Singular matrix" error. [Invalid_argument] if [a] does not hold 12 numbers. *)
 
+val invert : float array -> float array option
+(** [invert m] is POV-Ray's MInvers of the 4×4 matrix [m] (16 entries, row by row): cofactor
+    expansion in its term order; None when the determinant is 0 ("Singular matrix in MInvers"). *)
+
 val of_inverse : float array -> t option
 (** [of_inverse i] is the transform whose inverse matrix is [i] (16 entries, row by row) and whose
     matrix is [i] inverted by cofactor expansion ([MInvers]); None when [i] is singular. POV-Ray

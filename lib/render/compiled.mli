@@ -103,6 +103,9 @@ type shape =
   | Superellipsoid of Superellipsoid.t  (** super.cpp: its own root search in its own space *)
   | Ovus of Ovus.t  (** ovus.cpp: the part hit decides the normal *)
   | Sphere_sweep of Sphere_sweep.compiled  (** sphsweep.cpp: segments and single spheres, the part hit names the normal *)
+  | Prism of Prism.t  (** prism.cpp: through its transform *)
+  | Lathe of Lathe.t  (** lathe.cpp: through its transform *)
+  | Sor of Sor.t  (** sor.cpp: through its transform *)
 
 (** A CSG's members and how their hits are kept (§16.2, §16.3). *)
 and csg = {

@@ -61,6 +61,18 @@ type t = {
   mutable ovus_hits : int;
   mutable sphere_sweep_tests : int;
   mutable sphere_sweep_hits : int;
+  mutable prism_tests : int;
+  mutable prism_hits : int;
+  mutable prism_bound_tests : int;
+  mutable prism_bound_hits : int;
+  mutable lathe_tests : int;
+  mutable lathe_hits : int;
+  mutable lathe_bound_tests : int;
+  mutable lathe_bound_hits : int;
+  mutable sor_tests : int;
+  mutable sor_hits : int;
+  mutable sor_bound_tests : int;
+  mutable sor_bound_hits : int;
 }
 
 let create () =
@@ -77,6 +89,7 @@ let create () =
     hfield_triangle_tests = 0; hfield_triangle_hits = 0; hfield_block_tests = 0; hfield_block_hits = 0; hfield_cell_tests = 0;
     hfield_cell_hits = 0;
     superellipsoid_tests = 0; superellipsoid_hits = 0; ovus_tests = 0; ovus_hits = 0; sphere_sweep_tests = 0; sphere_sweep_hits = 0;
+    prism_tests = 0; prism_hits = 0; prism_bound_tests = 0; prism_bound_hits = 0; lathe_tests = 0; lathe_hits = 0; lathe_bound_tests = 0; lathe_bound_hits = 0; sor_tests = 0; sor_hits = 0; sor_bound_tests = 0; sor_bound_hits = 0;
   }
 
 let merge a b =
@@ -141,6 +154,18 @@ let merge a b =
     ovus_hits = a.ovus_hits + b.ovus_hits;
     sphere_sweep_tests = a.sphere_sweep_tests + b.sphere_sweep_tests;
     sphere_sweep_hits = a.sphere_sweep_hits + b.sphere_sweep_hits;
+    prism_tests = a.prism_tests + b.prism_tests;
+    prism_hits = a.prism_hits + b.prism_hits;
+    prism_bound_tests = a.prism_bound_tests + b.prism_bound_tests;
+    prism_bound_hits = a.prism_bound_hits + b.prism_bound_hits;
+    lathe_tests = a.lathe_tests + b.lathe_tests;
+    lathe_hits = a.lathe_hits + b.lathe_hits;
+    lathe_bound_tests = a.lathe_bound_tests + b.lathe_bound_tests;
+    lathe_bound_hits = a.lathe_bound_hits + b.lathe_bound_hits;
+    sor_tests = a.sor_tests + b.sor_tests;
+    sor_hits = a.sor_hits + b.sor_hits;
+    sor_bound_tests = a.sor_bound_tests + b.sor_bound_tests;
+    sor_bound_hits = a.sor_bound_hits + b.sor_bound_hits;
   }
 
 type row = { name : string; tests : int; hits : int }

@@ -61,6 +61,18 @@ type t = {
   mutable ovus_hits : int;  (** tests that kept a hit *)
   mutable sphere_sweep_tests : int;  (** sphere sweeps tested *)
   mutable sphere_sweep_hits : int;  (** tests that kept a hit beyond the sweep's tolerance *)
+  mutable prism_tests : int;  (** prisms tested, degenerate ones not (prism.cpp) *)
+  mutable prism_hits : int;  (** tests that pushed a crossing *)
+  mutable prism_bound_tests : int;  (** its bounding tests (POV-Ray's "Bound" row) *)
+  mutable prism_bound_hits : int;
+  mutable lathe_tests : int;  (** lathes tested (lathe.cpp) *)
+  mutable lathe_hits : int;  (** tests that pushed a crossing *)
+  mutable lathe_bound_tests : int;  (** its bounding tests (POV-Ray's "Bound" row) *)
+  mutable lathe_bound_hits : int;
+  mutable sor_tests : int;  (** surfaces of revolution tested (sor.cpp) *)
+  mutable sor_hits : int;  (** tests that pushed a crossing *)
+  mutable sor_bound_tests : int;  (** its bounding tests (POV-Ray's "Bound" row) *)
+  mutable sor_bound_hits : int;
 }
 
 val create : unit -> t

@@ -260,6 +260,22 @@ let rec shape = function
       Printf.sprintf "polygon { %d, %s // the points in its own plane%s%s" n (String.concat ", " (List.init n uv))
         (if degenerate then ", degenerate: never hit" else "")
         (trans (Some tr))
+  | Prism p ->
+      let sp = match p.spline with Linear -> "linear_spline" | Quadratic -> "quadratic_spline" | Cubic -> "cubic_spline" | Bezier -> "bezier_spline" in
+      Printf.sprintf "prism { %s %s %s, %s // %d segments within <%s, %s> … <%s, %s>%s%s%s%s" sp
+        (if p.conic then "conic_sweep" else "linear_sweep") (num p.height1) (num p.height2) (Array.length p.segs) (num p.x1) (num p.y1)
+        (num p.x2) (num p.y2) (if p.closed then "" else " open") (if p.sturm then " sturm" else "")
+        (if p.degenerate then ", not closed: never hit" else "")
+        (trans (if Transform.is_identity p.tr then None else Some p.tr))
+  | Lathe l ->
+      let sp = match l.spline with Linear -> "linear_spline" | Quadratic -> "quadratic_spline" | Cubic -> "cubic_spline" | Bezier -> "bezier_spline" in
+      Printf.sprintf "lathe { %s // %d segments, radius %s … %s, height %s … %s%s%s" sp (Array.length l.segs) (num l.radius1) (num l.radius2)
+        (num l.height1) (num l.height2) (if l.sturm then " sturm" else "")
+        (trans (if Transform.is_identity l.tr then None else Some l.tr))
+  | Sor s ->
+      Printf.sprintf "sor { // %d segments, radius %s … %s, height %s … %s%s%s%s" (Array.length s.segs) (num s.radius1) (num s.radius2)
+        (num s.height1) (num s.height2) (if s.closed then "" else " open") (if s.sturm then " sturm" else "")
+        (trans (if Transform.is_identity s.tr then None else Some s.tr))
   | Quadric q ->
       Printf.sprintf "quadric { <%s, %s, %s>, <%s, %s, %s>, <%s, %s, %s>, %s // box <%s, %s, %s> + <%s, %s, %s>" (num q.xx)
         (num q.yy) (num q.zz) (num q.xy) (num q.xz) (num q.yz) (num q.lx) (num q.ly) (num q.lz) (num q.k) (num q.box_llx)

@@ -170,6 +170,11 @@ let rec shape (s : Scene.shape) op : Scene.shape =
          needed; Transform, and everything after it, composes into Trans *)
       let kind = match op with Translate v -> Sphere_sweep.Translate v | Rotate _ -> Sphere_sweep.Rotate | Scale v -> Sphere_sweep.Scale v | Transform _ -> Sphere_sweep.Other in
       Sphere_sweep (Sphere_sweep.move s kind (op_transform op))
+  | Prism p ->
+      (* Prism::Translate/Rotate/Scale all call Transform: composed into its Trans *)
+      Prism (Prism.transform p (op_transform op))
+  | Lathe l -> Lathe (Lathe.transform l (op_transform op)) (* Lathe::Transform, likewise *)
+  | Sor s -> Sor (Sor.transform s (op_transform op)) (* Sor::Transform, likewise *)
   | Csg { kind; members } ->
       (* §16: a CSG's transform moves every member *)
       Csg { kind; members = List.map (fun (m : Scene.member) -> { m with mobj = { m.mobj with shape = shape m.mobj.shape op; texture = texture m.mobj.texture op } }) members }
@@ -187,12 +192,12 @@ let scene ~scale ~translate (s : Scene.t) : Scene.t =
     let scaling =
       match o.shape with
       | Smooth_triangle _ -> Transform (Transform.scale sv)
-      | Sphere _ | Plane _ | Triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Csg _ | Glyph _ | Polygon _ | Quadric _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ -> Scale sv
+      | Sphere _ | Plane _ | Triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Csg _ | Glyph _ | Polygon _ | Quadric _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Prism _ | Lathe _ | Sor _ -> Scale sv
     in
     let sh =
       match o.shape with
       | Csg { kind; members } -> Scene.Csg { kind; members = List.map (fun (m : Scene.member) -> { m with mobj = obj m.mobj }) members }
-      | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ ->
+      | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Prism _ | Lathe _ | Sor _ ->
           shape (shape o.shape scaling) (Translate translate)
     in
     let texture = texture (texture o.texture (Scale sv)) (Translate translate) in

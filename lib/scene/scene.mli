@@ -370,6 +370,11 @@ type shape =
   | Sphere_sweep of Sphere_sweep.t
       (** sphsweep.cpp: the modeling spheres, moved by the modifiers until one needs a
           transform; [inverse] is CSG's *)
+  | Prism of Prism.t
+      (** prism.cpp: the outline's segments in prism space, placed by its transform (every
+          modifier composes into it) *)
+  | Lathe of Lathe.t  (** lathe.cpp: the rotated spline's segments, placed by its transform *)
+  | Sor of Sor.t  (** sor.cpp: the cubic segments of radius², placed by its transform *)
   | Csg of { kind : csg_kind; members : member list }
       (** §16: a CSG kept whole (a merge, an intersection or difference, a union with
           [split_union off]); its members are already moved by its transforms and carry the

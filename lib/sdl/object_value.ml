@@ -58,4 +58,12 @@ let rec set_double_illuminate b (o : V.obj) =
 let is_torus (o : V.obj) = match o.shape with Prim (Torus _) -> true | Prim _ | Csg _ -> false
 
 let set_sturm (o : V.obj) =
-  match o.shape with Prim (Torus t) -> { o with shape = Prim (Torus { t with sturm = true }) } | Prim _ | Csg _ -> o
+  match o.shape with
+  | Prim (Torus t) -> { o with shape = Prim (Torus { t with sturm = true }) }
+  | Prim (Prism p) -> { o with shape = Prim (Prism { p with sturm = true }) }
+  | Prim (Lathe l) -> { o with shape = Prim (Lathe { l with sturm = true }) }
+  | Prim (Sor s) -> { o with shape = Prim (Sor { s with sturm = true }) }
+  | Prim _ | Csg _ -> o
+
+(* prism, lathe and sor are STURM_OK objects too *)
+let is_spline_shape (o : V.obj) = match o.shape with Prim (Prism _ | Lathe _ | Sor _) -> true | Prim _ | Csg _ -> false

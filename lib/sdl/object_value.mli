@@ -22,5 +22,8 @@ val set_double_illuminate : bool -> Value.obj -> Value.obj
 val is_torus : Value.obj -> bool
 (** [is_torus o] holds when [o] is a torus, the one object that takes [sturm] (§15.5). *)
 
+val is_spline_shape : Value.obj -> bool
+(** [is_spline_shape o] holds when [o] is a prism, lathe or sor, which take [sturm] too. *)
+
 val set_sturm : Value.obj -> Value.obj
 (** [set_sturm o] is the torus [o] solved with Sturm sequences; any other object unchanged. *)

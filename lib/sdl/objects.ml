@@ -10,8 +10,7 @@ open Csg_build
 
 (* Objects povml does not render yet: inside a union they are reported as "not supported yet". *)
 let unsupported_objects =
-  [ "prism"; "lathe"; "sor";
-    "isosurface"; "julia_fractal"; "parametric"; "bicubic_patch"; "cubic";
+  [ "isosurface"; "julia_fractal"; "parametric"; "bicubic_patch"; "cubic";
     "quartic"; "poly"; "polynomial"; "composite" ]
 
 let show_vec (v : Vec.t) = Printf.sprintf "<%g, %g, %g>" v.x v.y v.z
@@ -169,6 +168,11 @@ let rec parse_object st : V.obj =
       advance st;
       open_block st "sphere_sweep";
       parse_object_mods st (new_obj (Superq_reader.sphere_sweep st) loc) "sphere_sweep"
+  | Ident ("prism" | "lathe" | "sor" as kw) ->
+      advance st;
+      open_block st kw;
+      let shape = match kw with "prism" -> Spline_reader.prism st loc | "lathe" -> Spline_reader.lathe st loc | _ -> Spline_reader.sor st loc in
+      parse_object_mods st (new_obj shape loc) kw
   | Ident "text" ->
       (* §15.9: a union of one extruded glyph per character, then the modifiers, which move every
          letter *)
@@ -301,6 +305,7 @@ and parse_object_mods st (o : V.obj) what : V.obj =
         advance st;
         let on = parse_bool_opt st in
         match o.shape with Prim (Ovus v) -> loop { o with shape = Prim (Ovus { v with sturm = on }) } | Prim _ | Csg _ -> loop o)
+    | Ident "sturm" when is_spline_shape o -> advance st; loop (set_sturm o)
     | Ident "hollow" -> advance st; ignore (parse_bool_opt st); loop o
     | Ident "inverse" -> advance st; loop (invert o)
     | Ident "split_union" -> (

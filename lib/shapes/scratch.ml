@@ -31,6 +31,13 @@ type t = {
   depths : float array;
   quartic : Polysolv.work;
   blob : blob_room;
+  curve : growable;
+  sextic : Polysolv_high.work;
+  bcyl : growable;
+  sextic_coeffs : float array;
+  sextic_roots : float array;
+  lathe_quadratic : float array;
+  lathe_quadratic_roots : float array;
 }
 
 let hit_width = 6
@@ -59,6 +66,13 @@ let create ~robust stats =
     depths = Array.make 4 0.;
     quartic = Polysolv.create ();
     blob = { bounds = [||]; marks = [||]; fcoeffs = [||]; queue = [||]; found = Array.make 16 0.; acc = Array.make 8 0. };
+    curve = { room = Array.make 64 0. };
+    sextic = Polysolv_high.create ();
+    bcyl = { room = Array.make 64 0. };
+    sextic_coeffs = Array.make 7 0.;
+    sextic_roots = Array.make 6 0.;
+    lathe_quadratic = Array.make 3 0.;
+    lathe_quadratic_roots = Array.make 2 0.;
   }
 
 let push_hit w n t part id px py pz =

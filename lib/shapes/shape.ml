@@ -34,6 +34,9 @@ let compile (s : Scene.shape) =
   | Superellipsoid q -> Some (Superellipsoid q)
   | Ovus v -> Some (Ovus v)
   | Sphere_sweep s -> Some (Sphere_sweep (Sphere_sweep.compile s))
+  | Prism p -> Some (Prism p)
+  | Lathe l -> Some (Lathe l)
+  | Sor s -> Some (Sor s)
   | Csg _ -> None
 
 (* a primitive crossed once at most *)
@@ -61,6 +64,9 @@ let rec depth w shape o d lo =
   | Superellipsoid q -> Superellipsoid.depth w q o d lo
   | Ovus v -> Ovus.depth w v o d lo
   | Sphere_sweep s -> Sphere_sweep.depth w s o d lo
+  | Prism p -> Prism.depth w p o d lo
+  | Lathe l -> Lathe.depth w l o d lo
+  | Sor s -> Sor.depth w s o d lo
 
 and all_hits w ob o d lo n =
   let id = ob.id in
@@ -85,6 +91,9 @@ and all_hits w ob o d lo n =
   | Superellipsoid q -> Superellipsoid.hits w q id o d lo n
   | Ovus v -> Ovus.hits w v id o d lo n
   | Sphere_sweep s -> Sphere_sweep.hits w s id o d lo n
+  | Prism p -> Prism.hits w p id o d lo n
+  | Lathe l -> Lathe.hits w l id o d lo n
+  | Sor s -> Sor.hits w s id o d lo n
 
 and inside stack shape p =
   match shape with
@@ -108,6 +117,9 @@ and inside stack shape p =
   | Superellipsoid q -> Superellipsoid.inside q p
   | Ovus v -> Ovus.inside v p
   | Sphere_sweep s -> Sphere_sweep.inside s p
+  | Prism pr -> Prism.inside pr p
+  | Lathe l -> Lathe.inside l p
+  | Sor s -> Sor.inside s p
 
 and inside_member stack (m : obj) p =
   match m.shape with
@@ -119,7 +131,7 @@ and inside_member stack (m : obj) p =
          inverted quadric holds its surface too *)
       inside stack m.shape p
   | Sphere _ | Sphere_placed _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _
-  | Disc _ | Torus _ | Glyph _ | Polygon _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ ->
+  | Disc _ | Torus _ | Glyph _ | Polygon _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Prism _ | Lathe _ | Sor _ ->
       inside stack m.shape p <> m.inverted
 
 (* Spheres, ellipsoids, boxes, planes and triangles answer every box test of POV-Ray's
@@ -127,7 +139,9 @@ and inside_member stack (m : obj) p =
 let rec box_test_free = function
   | Sphere _ | Sphere_placed _ | Ellipsoid _ | Box _ | Box_trans _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ -> true
   | Csg { kind = Clipped | Bounded | Boxed; members; _ } when Array.length members > 0 -> box_test_free members.(0).shape
-  | Csg _ | Mesh _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ -> false
+  | Csg _ | Mesh _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _
+  | Prism _ | Lathe _ | Sor _ ->
+      false
 
 let cached_depth w shape o d lo =
   match shape with
@@ -159,13 +173,16 @@ let normal obj part p =
   | Superellipsoid q -> Superellipsoid.normal q p
   | Ovus v -> Ovus.normal v part p
   | Sphere_sweep s -> Sphere_sweep.normal s part p
+  | Prism pr -> Prism.normal pr part p
+  | Lathe l -> Lathe.normal l part p
+  | Sor s -> Sor.normal s part p
 
 let geometric_normal obj part p =
   match obj.shape with
   | Smooth_triangle t -> Triangle.flat_normal t
   | Mesh m -> Mesh.placed_face_normal m part
   | Sphere _ | Sphere_placed _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _
-  | Quadric _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Csg _ ->
+  | Quadric _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Csg _ | Prism _ | Lathe _ | Sor _ ->
       normal obj part p
 
 let refine obj p =
@@ -173,7 +190,7 @@ let refine obj p =
   | Sphere s | Sphere_placed { ps = s; _ } -> Sphere.refine s p
   | Ellipsoid e -> Sphere.ellipsoid_refine e p
   | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _
-  | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Csg _ ->
+  | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Csg _ | Prism _ | Lathe _ | Sor _ ->
       p
 
 (* Every shape's UVCoord in POV-Ray 3.7: spheres, boxes, tori and meshes have their own; every
@@ -189,7 +206,9 @@ let uv obj part (p : Vec.t) =
   | Torus t -> Torus.uv t p
   | Mesh m -> Mesh.placed_uv m part p
   | Ovus v -> Ovus.uv v p
-  | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Cone _ | Disc _ | Glyph _ | Polygon _ | Quadric _ | Blob _ | Height_field _ | Superellipsoid _ | Sphere_sweep _ | Csg _ -> Vec.make p.x p.y 0.
+  | Lathe l -> Lathe.uv l part p
+  | Sor s -> Sor.uv s part p
+  | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Cone _ | Disc _ | Glyph _ | Polygon _ | Quadric _ | Blob _ | Height_field _ | Superellipsoid _ | Sphere_sweep _ | Prism _ | Csg _ -> Vec.make p.x p.y 0.
 
 let rec bounds = function
   | Csg c -> Csg.bounds ~bounds c
@@ -211,6 +230,9 @@ let rec bounds = function
   | Superellipsoid q -> Some (Superellipsoid.bounds q)
   | Ovus v -> Some (Ovus.bounds v)
   | Sphere_sweep s -> Some (Sphere_sweep.bounds s)
+  | Prism p -> Some (Prism.bounds p)
+  | Lathe l -> Some (Lathe.bounds l)
+  | Sor s -> Some (Sor.bounds s)
 
 let magnitude shape =
   let max_abs a = Array.fold_left (fun m x -> Float.max m (Float.abs x)) 0. a in
@@ -221,7 +243,7 @@ let magnitude shape =
   | None, Csg c -> Csg.magnitude c
   | _, Polygon p -> Polygon.magnitude p
   | _, Quadric q -> Quadric.magnitude q
-  | None, (Sphere _ | Sphere_placed _ | Ellipsoid _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _) -> 0.
+  | None, (Sphere _ | Sphere_placed _ | Ellipsoid _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Prism _ | Lathe _ | Sor _) -> 0.
 
 let rec pov_box shape =
   match shape with
@@ -243,27 +265,30 @@ let rec pov_box shape =
   | Superellipsoid q -> Superellipsoid.pov_box q
   | Ovus v -> Ovus.pov_box v
   | Sphere_sweep s -> Sphere_sweep.pov_box s
+  | Prism p -> Prism.pov_box p
+  | Lathe l -> Lathe.pov_box l
+  | Sor s -> Sor.pov_box s
   | Csg c -> Csg.pov_box ~bounds ~pov_box c
 
 let costly = function
-  | Ellipsoid _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ -> true
+  | Ellipsoid _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Prism _ | Lathe _ | Sor _ -> true
   | Sphere _ | Sphere_placed _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Csg _ -> false
 
 let as_sphere = function
   | Sphere s | Sphere_placed { ps = s; _ } -> Some s
   | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _
-  | Quadric _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Csg _ ->
+  | Quadric _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Csg _ | Prism _ | Lathe _ | Sor _ ->
       None
 
 let face_texture obj part =
   match obj.shape with
   | Mesh m when part >= 0 -> Mesh.texture m.mesh part
   | Sphere _ | Sphere_placed _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _
-  | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Csg _ ->
+  | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Csg _ | Prism _ | Lathe _ | Sor _ ->
       -1
 
 let stats_rows s =
   List.concat
-    [ Blob.stats_rows s; Box.stats_rows s; Cone.stats_rows s; Disc.stats_rows s; Csg.stats_rows s; Hfield.stats_rows s; Plane.stats_rows s; Polygon.stats_rows s; Quadric.stats_rows s;
+    [ Blob.stats_rows s; Box.stats_rows s; Cone.stats_rows s; Disc.stats_rows s; Csg.stats_rows s; Hfield.stats_rows s; Lathe.stats_rows s; Plane.stats_rows s; Polygon.stats_rows s; Prism.stats_rows s; Quadric.stats_rows s;
       Triangle.stats_rows s;
-      Mesh.stats_rows s; Ovus.stats_rows s; Sphere.stats_rows s; Sphere_sweep.stats_rows s; Superellipsoid.stats_rows s; Torus.stats_rows s; Glyph.stats_rows s; Csg.bound_rows s ]
+      Mesh.stats_rows s; Ovus.stats_rows s; Sphere.stats_rows s; Sphere_sweep.stats_rows s; Superellipsoid.stats_rows s; Sor.stats_rows s; Torus.stats_rows s; Glyph.stats_rows s; Csg.bound_rows s ]

@@ -181,7 +181,7 @@ let bezier_01 ?stats work degree (coef : float array) roots =
     else
       let nonneg = nonneg && d.(degree - i) >= 0. and nonpos = nonpos && d.(degree - i) <= 0. in
       if not (nonneg || nonpos) then begin
-        let n = Polysolv_high.solve work coef degree ~eps:1e-10 roots in
+        let n = Polysolv_high.solve work coef degree ~sturm:true ~eps:1e-10 roots in
         (match stats with
         | Some (st : Stats.t) ->
             st.roots_tested <- st.roots_tested + 1;
@@ -247,7 +247,7 @@ let segment_crossings (st : Stats.t) work c i (o : Vec.t) (d : Vec.t) add =
     let e = (vdot v cc.(1) +. (rc.(0) *. rc.(1))) *. -2.0 in
     let f = vdot v v -. (rc.(0) *. rc.(0)) in
     let coef = [| (4.0 *. (dd *. dd)) -. (b *. b *. dd); (4.0 *. dd *. e) -. (2.0 *. b *. cq *. dd); (e *. e) -. (b *. cq *. e) +. (b *. b *. f) |] in
-    let n = solved (Polysolv_high.solve work coef 2 ~eps:1e-10 roots) in
+    let n = solved (Polysolv_high.solve work coef 2 ~sturm:true ~eps:1e-10 roots) in
     List.iter
       (fun u ->
         let fp0 = (2.0 *. dd *. u) +. e and fp1 = b in
@@ -446,7 +446,7 @@ let inside c (p : Vec.t) =
       let n, coef =
         if sg.ncoefs = 2 then
           let coef = [| vdot cc.(1) cc.(1) -. (rc.(1) *. rc.(1)); (vdot v cc.(1) +. (rc.(0) *. rc.(1))) *. -2.0; vdot v v -. (rc.(0) *. rc.(0)) |] in
-          (Polysolv_high.solve work coef 2 ~eps:1e-10 roots, coef)
+          (Polysolv_high.solve work coef 2 ~sturm:true ~eps:1e-10 roots, coef)
         else
           let coef =
             [|

@@ -56,9 +56,9 @@ POV-Ray missing: a clear message and exit status 4.
 A renderer that fails (here povml, on an object it does not support yet) gives its message and
 exit status 3:
 
-  $ printf '#version 3.7;\nlathe { linear_spline 2, <0,0>, <1,1> }\n' > lathe.pov
-  $ povml check lathe.pov
-  povml check: error: povml failed (exit status 1): lathe.pov:2:1: error: not supported yet: 'lathe'
+  $ printf '#version 3.7;\njulia_fractal { <-0.083, 0.0, -0.83, -0.025> }\n' > julia.pov
+  $ povml check julia.pov
+  povml check: error: povml failed (exit status 1): julia.pov:2:1: error: not supported yet: 'julia_fractal'
   [3]
 
 Usage errors (exit status 2):

@@ -70,10 +70,10 @@ A zero plane normal is refused, as POV-Ray refuses it:
 
 Features of later versions are named:
 
-  $ printf 'lathe { linear_spline 2, <0,0>, <1,1> }\n' > lathe.pov
-  $ povml lathe.pov +W10 +H10 -D
-  lathe.pov:1:1: error: not supported yet: 'lathe'
-      1 | lathe { linear_spline 2, <0,0>, <1,1> }
+  $ printf 'julia_fractal { <-0.083, 0.0, -0.83, -0.025> }\n' > julia.pov
+  $ povml julia.pov +W10 +H10 -D
+  julia.pov:1:1: error: not supported yet: 'julia_fractal'
+      1 | julia_fractal { <-0.083, 0.0, -0.83, -0.025> }
         | ^
   [1]
 

@@ -196,7 +196,7 @@ let test_high_degree () =
     let c = poly rs in
     let n = Array.length c - 1 in
     let out = Array.make n 0. in
-    let k = Polysolv_high.solve w c n ~eps:1e-10 out in
+    let k = Polysolv_high.solve w c n ~sturm:true ~eps:1e-10 out in
     let got = List.sort compare (Array.to_list (Array.sub out 0 k)) in
     let want = List.sort compare (List.filter (fun r -> r >= 0.) rs) in
     Alcotest.(check int) (name ^ ": count") (List.length want) (List.length got);

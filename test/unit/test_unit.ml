@@ -28,6 +28,7 @@ let () =
       ("Torus", Test_torus.tests);
       ("Blob", Test_blob.tests);
       ("Height field", Test_hfield.tests);
+      ("Prism, lathe, sor", Test_spline.tests);
       ("UV coordinates and uv_mapping", Test_uv.tests);
       ("Sphere normal", Test_sphere_normal.tests);
       ("Text", Test_text.tests);

@@ -1,0 +1,92 @@
+(* Readers of prism, lathe and sor (parse.cpp: Parse_Prism, Parse_Lathe, Parse_Sor): their items
+   after the keyword and '{', with POV-Ray's checks, errors and warnings. *)
+
+open Reader
+module V = Value
+
+(* Parse_UV_Vect: a float stands for both terms; more than two terms is an error *)
+let uv_vector st =
+  let loc = peek_loc st in
+  match Expr.parse_expr st with
+  | V.Float f -> (f, f)
+  | V.Vector [| u; v |] -> (u, v)
+  | v -> Error.raise_at loc "expected a UV vector <u, v> but found %s" (V.kind_name v)
+
+let points st n =
+  Array.init n (fun _ ->
+      skip_comma st;
+      uv_vector st)
+
+(* the spline keywords (and, for a prism, the sweep ones), in any order, any number of times *)
+let rec options st ~sweep (spline, conic) =
+  let next v = advance st; options st ~sweep v in
+  match peek st with
+  | Token.Ident "linear_spline" -> next (Prism.Linear, conic)
+  | Token.Ident "quadratic_spline" -> next (Prism.Quadratic, conic)
+  | Token.Ident "cubic_spline" -> next (Prism.Cubic, conic)
+  | Token.Ident "bezier_spline" -> next (Prism.Bezier, conic)
+  | Token.Ident "linear_sweep" when sweep -> next (spline, false)
+  | Token.Ident "conic_sweep" when sweep -> next (spline, true)
+  | _ -> (spline, conic)
+
+let count st = int_of_float (Expr.c_int (Expr.parse_float st))
+
+let prism st loc =
+  let spline, conic = options st ~sweep:true (Prism.Linear, false) in
+  let h1 = Expr.parse_float st in
+  skip_comma st;
+  let h2 = Expr.parse_float st in
+  skip_comma st;
+  let height1, height2 = if h1 > h2 then (h2, h1) else (h1, h2) in
+  let nloc = peek_loc st in
+  let n = count st in
+  (match spline with
+  | Linear -> if n < 3 then Error.raise_at nloc "Prism with linear splines must have at least three points."
+  | Quadratic -> if n < 5 then Error.raise_at nloc "Prism with quadratic splines must have at least five points."
+  | Cubic -> if n < 6 then Error.raise_at nloc "Prism with cubic splines must have at least six points."
+  | Bezier -> if n land 3 <> 0 then Error.raise_at nloc "Prism with Bezier splines must have four points per segment.");
+  let pts = points st n in
+  let closed = not (accept_ident st "open") in
+  let pts, state = Prism.close spline pts in
+  (match state with
+  | `Closed -> ()
+  | `Closing -> warn st loc "Linear prism not closed. Closing it."
+  | `Open -> warn st loc "Prism not closed. Ignoring it.");
+  match Prism.make ~spline ~conic ~height1 ~height2 ~closed ~sturm:false ~degenerate:(state = `Open) pts with
+  | Ok p -> Scene.Prism p
+  | Error msg -> Error.raise_at loc "%s" msg
+
+let lathe st loc =
+  ignore loc;
+  let spline, _ = options st ~sweep:false (Prism.Linear, false) in
+  let nloc = peek_loc st in
+  let n = count st in
+  (match spline with
+  | Linear -> if n < 2 then Error.raise_at nloc "Lathe with linear splines must have at least two points."
+  | Quadratic -> if n < 3 then Error.raise_at nloc "Lathe with quadratic splines must have at least three points."
+  | Cubic -> if n < 4 then Error.raise_at nloc "Prism with cubic splines must have at least four points."
+  | Bezier -> if n land 3 <> 0 then Error.raise_at nloc "Lathe with Bezier splines must have four points per segment.");
+  let pts =
+    Array.init n (fun i ->
+        skip_comma st;
+        let ploc = peek_loc st in
+        let ((x, _) as p) = uv_vector st in
+        if i > 0 && i < n - 1 && x < 0. then Error.raise_at ploc "Incorrect point in lathe.";
+        p)
+  in
+  Scene.Lathe (Lathe.make ~spline ~sturm:false pts)
+
+let sor st loc =
+  let nloc = peek_loc st in
+  let n = count st in
+  if n < 4 then Error.raise_at nloc "Surface of revolution must have at least four points.";
+  let pts = Array.make n (0., 0.) in
+  for i = 0 to n - 1 do
+    skip_comma st;
+    let ploc = peek_loc st in
+    let ((x, y) as p) = uv_vector st in
+    if x < 0. || (i > 1 && i < n - 1 && y <= snd pts.(i - 1)) then Error.raise_at ploc "Incorrect point in surface of revolution.";
+    pts.(i) <- p
+  done;
+  let closed = not (accept_ident st "open") in
+  match Sor.make ~closed ~sturm:false pts with Ok s -> Scene.Sor s | Error msg -> Error.raise_at loc "%s" msg

@@ -1,0 +1,12 @@
+// povml fidelity scene: lathe_shadow
+// Rule: lathes in shadow rays: the floor, a sphere and the lathe's own overhangs shadowed
+#version 3.7;
+global_settings { assumed_gamma 1.0 }
+camera { location <0, 4, -6> look_at <0, 0.7, 0> right x*image_width/image_height }
+background { rgb <0.3, 0.35, 0.5> }
+light_source { <-2, 7, -3>, rgb 1 }
+plane { y, 0 pigment { checker rgb 0.9 rgb 0.4 } }
+light_source { <6, 3, 1>, rgb 0.4 }
+lathe { quadratic_spline 6, <0,0>, <0.8,0>, <0.4,1>, <0.9, 1.5>, <0.3, 2>, <0, 2.2> pigment { rgb <1,0.5,0.2> } translate <-1, 0, 0.3> }
+lathe { linear_spline 4, <0.5,0.4>, <0.8,0.8>, <0.3,1>, <0.5,0.4> pigment { rgbf <0.3,0.6,1,0.7> } translate <1.2, 0, -0.6> }
+sphere { <1.3, 0.3, 0.8>, 0.3 pigment { rgb 1 } }

@@ -1,0 +1,10 @@
+// povml fidelity scene: sor_transformed
+// Rule: Sor::Transform: rotated, scaled non-uniformly, moved
+#version 3.7;
+global_settings { assumed_gamma 1.0 }
+camera { location <0, 4, -6> look_at <0, 0.7, 0> right x*image_width/image_height }
+background { rgb <0.3, 0.35, 0.5> }
+light_source { <-2, 7, -3>, rgb 1 }
+plane { y, 0 pigment { checker rgb 0.9 rgb 0.4 } }
+sor { 7, <0,0>, <0.6,0>, <1,0.5>, <0.5,1>, <0.8,1.5>, <0.4,2>, <0,2.5> rotate z*60 scale <0.6, 1, 1.3> translate <-1.3, 1, 0> pigment { rgb <1,0.4,0.2> } }
+sor { 6, <0,-0.2>, <0.8,0>, <0.3,0.7>, <0.9,1.4>, <0.5,2>, <0.5,2.2> open scale <1.2, 0.7, 0.8> rotate x*-40 translate <1.4, 0.5, 0> pigment { rgb <0.2,1,0.4> } }
