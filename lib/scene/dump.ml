@@ -264,6 +264,22 @@ let rec shape = function
       Printf.sprintf "quadric { <%s, %s, %s>, <%s, %s, %s>, <%s, %s, %s>, %s // box <%s, %s, %s> + <%s, %s, %s>" (num q.xx)
         (num q.yy) (num q.zz) (num q.xy) (num q.xz) (num q.yz) (num q.lx) (num q.ly) (num q.lz) (num q.k) (num q.box_llx)
         (num q.box_lly) (num q.box_llz) (num q.box_lenx) (num q.box_leny) (num q.box_lenz)
+  | Julia f ->
+      let alg = match f.algebra with Quaternion -> "quaternion" | Hypercomplex -> "hypercomplex" in
+      let fn =
+        match f.func with
+        | Sqr -> "sqr"
+        | Cube -> "cube"
+        | Reciprocal -> "reciprocal"
+        | Func g -> (
+            match g with
+            | Exp -> "exp" | Ln -> "ln" | Sin -> "sin" | Asin -> "asin" | Cos -> "cos" | Acos -> "acos" | Tan -> "tan"
+            | Atan -> "atan" | Sinh -> "sinh" | Asinh -> "asinh" | Cosh -> "cosh" | Acosh -> "acosh" | Tanh -> "tanh"
+            | Atanh -> "atanh" | Pwr -> Printf.sprintf "pwr(%s, %s)" (num f.ex) (num f.ey))
+      in
+      Printf.sprintf "julia_fractal { <%s, %s, %s, %s> %s %s max_iteration %d precision %s slice <%s, %s, %s, %s>, %s%s // radius %s, exit %s%s"
+        (num f.p0) (num f.p1) (num f.p2) (num f.p3) alg fn f.iterations (num (1. /. f.precision)) (num f.s0) (num f.s1) (num f.s2)
+        (num f.s3) (num f.slice_dist) (if f.inverted then " inverted" else "") (num f.radius) (num f.exit_value) (trans f.trans)
   | Csg { kind; members } ->
       let member (m : member) =
         String.concat "\n  " (String.split_on_char '\n' (String.trim (obj m.mobj)))

@@ -354,6 +354,9 @@ type shape =
   | Quadric of Quadric.t
       (** quadrics.cpp: in world space; every modifier transforms its coefficients and maps its
           box, [inverse] negates the coefficients (and sets [inverted], as POV-Ray's flag) *)
+  | Julia of Julia.t
+      (** fractal.cpp: in fractal space, placed by its own transform (every modifier composes
+          into it and clears the fractal's own inverted flag); [inverse] toggles that flag *)
   | Csg of { kind : csg_kind; members : member list }
       (** §16: a CSG kept whole (a merge, an intersection or difference, a union with
           [split_union off]); its members are already moved by its transforms and carry the

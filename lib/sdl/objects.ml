@@ -11,7 +11,7 @@ open Csg_build
 (* Objects povml does not render yet: inside a union they are reported as "not supported yet". *)
 let unsupported_objects =
   [ "prism"; "lathe"; "sor"; "blob"; "height_field";
-    "isosurface"; "superellipsoid"; "julia_fractal"; "parametric"; "bicubic_patch"; "ovus"; "cubic";
+    "isosurface"; "superellipsoid"; "parametric"; "bicubic_patch"; "ovus"; "cubic";
     "quartic"; "poly"; "polynomial"; "sphere_sweep"; "lemon"; "composite" ]
 
 let show_vec (v : Vec.t) = Printf.sprintf "<%g, %g, %g>" v.x v.y v.z
@@ -135,6 +135,11 @@ let rec parse_object st : V.obj =
       advance st;
       open_block st kw;
       parse_object_mods st (new_obj (if kw = "polygon" then Shape_reader.polygon st loc else Shape_reader.quadric st) loc) kw
+  | Ident "julia_fractal" ->
+      advance st;
+      open_block st "julia_fractal";
+      let shape = Julia_reader.julia st in
+      Julia_reader.set_up loc (parse_object_mods st (new_obj shape loc) "julia_fractal")
   | Ident "text" ->
       (* §15.9: a union of one extruded glyph per character, then the modifiers, which move every
          letter *)

@@ -31,6 +31,9 @@ type t = {
   roots : float array;  (** … its roots … *)
   depths : float array;  (** … and their world depths, unfiltered *)
   quartic : Polysolv.work;  (** the polynomial solver's room *)
+  fractal_stack : growable;
+      (** a julia fractal's iteration stack, 4 floats (x, y, z, w) per iteration; like POV-Ray's
+          per-thread stack it keeps what deeper iterations left beyond the last one *)
 }
 
 val create : robust:bool -> Stats.t -> t
