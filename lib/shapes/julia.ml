@@ -416,8 +416,18 @@ let march (w : Scratch.t) f (o : Vec.t) (d : Vec.t) emit =
                 else if !last <> !current then ignore (iterate f st !ix !iy !iz);
                 let p = Vec.make !ix !iy !iz in
                 let p = match f.trans with None -> p | Some m -> Transform.point m p in
+                (* after the first crossing POV-Ray's depth lags behind its point (it goes on from
+                   the point past the crossing with the depth of the crossing): the depth orders
+                   the hits, the point (kept in the scratch, Julia.point) is where they are shaded *)
+                let t = !depth *. len in
                 found := true;
-                if not (emit (!depth *. len) p.x p.y p.z) then over := true
+                let k = 4 * (w.fractal_count land 31) in
+                w.fractal_points.(k) <- t;
+                w.fractal_points.(k + 1) <- p.x;
+                w.fractal_points.(k + 2) <- p.y;
+                w.fractal_points.(k + 3) <- p.z;
+                w.fractal_count <- w.fractal_count + 1;
+                if not (emit t p.x p.y p.z) then over := true
                 else begin
                   ix := !nx;
                   iy := !ny;
@@ -450,6 +460,15 @@ let hits (w : Scratch.t) f id o d lo n =
          if t >= lo then count := Scratch.push_hit w !count t (-1) id px py pz;
          true));
   !count
+
+let point (w : Scratch.t) t (p : Vec.t) =
+  let found = ref None and i = ref 0 in
+  while !found = None && !i < 32 && !i < w.fractal_count do
+    let k = 4 * ((w.fractal_count - 1 - !i) land 31) in
+    if w.fractal_points.(k) = t then found := Some (Vec.make w.fractal_points.(k + 1) w.fractal_points.(k + 2) w.fractal_points.(k + 3));
+    incr i
+  done;
+  match !found with Some q -> q | None -> p
 
 let local f (p : Vec.t) = match f.trans with None -> p | Some m -> Transform.inv_point m p
 

@@ -90,6 +90,10 @@ val hits : Scratch.t -> t -> int -> Vec.t -> Vec.t -> float -> int -> int
     member [id] at POV-Ray's intersection points (the fractal-space point mapped back); it is the
     new count. After the first crossing POV-Ray's depths lag behind the points, as they do here. *)
 
+val point : Scratch.t -> float -> Vec.t -> Vec.t
+(** [point w t p] is the point of the crossing at depth [t] a march of this worker reported last
+    (Real_Pt, the fractal-space point mapped to the world), or [p] when there is none. *)
+
 val inside : float array -> t -> Vec.t -> bool
 (** [inside stack f p] is Fractal::Inside of the world point [p] ([stack] used as the iteration
     stack when it has room). *)

@@ -22,6 +22,8 @@ type t = {
   depths : float array;
   quartic : Polysolv.work;
   fractal_stack : growable;
+  fractal_points : float array;
+  mutable fractal_count : int;
 }
 
 let hit_width = 6
@@ -50,6 +52,8 @@ let create ~robust stats =
     depths = Array.make 4 0.;
     quartic = Polysolv.create ();
     fractal_stack = { room = Array.make 84 0. };
+    fractal_points = Array.make (4 * 32) nan;
+    fractal_count = 0;
   }
 
 let push_hit w n t part id px py pz =

@@ -34,6 +34,10 @@ type t = {
   fractal_stack : growable;
       (** a julia fractal's iteration stack, 4 floats (x, y, z, w) per iteration; like POV-Ray's
           per-thread stack it keeps what deeper iterations left beyond the last one *)
+  fractal_points : float array;
+      (** the last 32 crossings julia fractals reported, (depth, x, y, z) each: POV-Ray shades a
+          fractal at the point its march found, which the depth alone does not give back *)
+  mutable fractal_count : int;  (** how many crossings were written there (modulo 32 is the next slot) *)
 }
 
 val create : robust:bool -> Stats.t -> t

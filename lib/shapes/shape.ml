@@ -139,6 +139,13 @@ let geometric_normal obj part p =
   | Quadric _ | Julia _ | Csg _ ->
       normal obj part p
 
+let hit_point (w : Scratch.t) obj depth p =
+  match obj.shape with
+  | Julia _ -> Julia.point w depth p
+  | Sphere _ | Sphere_placed _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _
+  | Torus _ | Glyph _ | Polygon _ | Quadric _ | Csg _ ->
+      p
+
 let refine obj p =
   match obj.shape with
   | Sphere s | Sphere_placed { ps = s; _ } -> Sphere.refine s p
