@@ -102,6 +102,12 @@ val normal : t -> Vec.t -> Vec.t
 (** [normal f p] is the unit normal at the world point [p]: Iteration there, Normal_Calc over
     every iteration, MTransNormal, normalised (POV-Ray computes it at the crossing's own point). *)
 
+val hit_normal : Scratch.t -> t -> Vec.t -> Vec.t
+(** [hit_normal w f p] is the normal POV-Ray computed at the crossing whose point is [p], when a
+    march of this worker reported it lately (the stack as the march left it: where the last
+    Iteration escaped, as the function maps' does, what deeper iterations left counts); else
+    [normal f p]. *)
+
 val bounds : t -> float array
 (** [bounds f] is the box of the bounding sphere's cube mapped by the transform. *)
 

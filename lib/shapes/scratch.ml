@@ -52,7 +52,7 @@ let create ~robust stats =
     depths = Array.make 4 0.;
     quartic = Polysolv.create ();
     fractal_stack = { room = Array.make 84 0. };
-    fractal_points = Array.make (4 * 32) nan;
+    fractal_points = Array.make (8 * 32) nan;
     fractal_count = 0;
   }
 

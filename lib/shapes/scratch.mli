@@ -35,8 +35,10 @@ type t = {
       (** a julia fractal's iteration stack, 4 floats (x, y, z, w) per iteration; like POV-Ray's
           per-thread stack it keeps what deeper iterations left beyond the last one *)
   fractal_points : float array;
-      (** the last 32 crossings julia fractals reported, (depth, x, y, z) each: POV-Ray shades a
-          fractal at the point its march found, which the depth alone does not give back *)
+      (** the last 32 crossings julia fractals reported, 8 floats each (depth, point, normal, 0):
+          POV-Ray shades a fractal at the point its march found and with the normal computed
+          there from the iteration stack as the march left it, which neither the depth nor the
+          point alone gives back *)
   mutable fractal_count : int;  (** how many crossings were written there (modulo 32 is the next slot) *)
 }
 

@@ -146,6 +146,13 @@ let hit_point (w : Scratch.t) obj depth p =
   | Torus _ | Glyph _ | Polygon _ | Quadric _ | Csg _ ->
       p
 
+let hit_normal (w : Scratch.t) obj part p =
+  match obj.shape with
+  | Julia f -> Julia.hit_normal w f p
+  | Sphere _ | Sphere_placed _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _
+  | Torus _ | Glyph _ | Polygon _ | Quadric _ | Csg _ ->
+      normal obj part p
+
 let refine obj p =
   match obj.shape with
   | Sphere s | Sphere_placed { ps = s; _ } -> Sphere.refine s p
