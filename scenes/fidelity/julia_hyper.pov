@@ -1,7 +1,7 @@
 // povml fidelity scene: julia_hyper
 // Rule: the hypercomplex algebra (hcmplx.cpp): sqr, cube (z^2 by HSqr) and the step from the
 //       slope toward the surface, radius 4, escape 16; a slice off w = 0. (The reciprocal map
-//       is in test_julia.ml; the function maps are left out: see docs/julia.md.)
+//       is in test_julia.ml, the function maps in julia_func.)
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 camera { location <0, 1.2, -3.2> look_at <0, 0, 0> angle 45 right x*image_width/image_height }
