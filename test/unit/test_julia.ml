@@ -158,6 +158,48 @@ let test_inverted () =
   let moved = the_object (scene (v37 ^ "#declare J = julia_fractal { <-0.083, 0.0, -0.83, -0.025> }\nobject { J inverse translate x }")) in
   Alcotest.(check bool) "a later transform clears it" false (julia_of moved).inverted
 
+(* A function map: Iteration_HCompl_Func reads y for z, so the polished point's Iteration may
+   escape; POV-Ray's normal is then Normal_Calc on the stack as the march left it, which
+   Julia.hit_normal keeps (Julia.normal, iterating afresh, cannot know it). *)
+let test_function_normal () =
+  let f = parse "julia_fractal { <0.5, 0.2, 0.1, 0.0> hypercomplex sin max_iteration 5 precision 30 }" in
+  let cases =
+    [ (v (-0.2) 0.1 (-5.), v 0. 0. 1., v (-0.20000000000000001) 0.10000000000000001 (-1.46041171642394518),
+       v (-0.79176812671258645) 0.49159075045786965 0.36254898646432604);
+      (v 0.3 (-0.2) (-5.), v 0.01 0.02 1., v 0.33482143171879508 (-0.13035713656240772) (-1.51785682812032841),
+       v 0.84721175004920946 0.33522980831284876 0.41213253474712042) ]
+  in
+  List.iteri
+    (fun i (o, d, ep, en) ->
+      let w = Scratch.create ~robust:false (Stats.create ()) in
+      let t = Julia.depth w f o (Vec.normalize d) 0. in
+      Alcotest.(check bool) (Printf.sprintf "case %d: a hit" i) true (t < infinity);
+      let p = Julia.point w t (Vec.madd o t (Vec.normalize d)) in
+      vec_eq ~eps:1e-15 (Printf.sprintf "case %d: the march's point" i) ep p;
+      vec_eq ~eps:1e-12 (Printf.sprintf "case %d: the march's normal" i) en (Julia.hit_normal w f p))
+    cases
+
+(* In CSG every crossing is reported; after the first the depth lags behind the point by the
+   step the march had taken past the crossing, as POV-Ray's does. *)
+let test_later_crossings () =
+  let f = parse fractals.(0) in
+  let w = Scratch.create ~robust:false (Stats.create ()) in
+  let o = v 0. 0.05 (-3.) and d = v 0. 0. 1. in
+  let n = Julia.hits w f 0 o d 0. 0 in
+  Alcotest.(check bool) "several crossings" true (n >= 2);
+  let h = w.hits.room in
+  let depth k = h.(k * Scratch.hit_width) and along k = h.((k * Scratch.hit_width) + 5) -. o.z in
+  float_eq ~eps:1e-12 "the first depth is its point's" (along 0) (depth 0);
+  for k = 1 to n - 1 do
+    Alcotest.(check bool) (Printf.sprintf "crossing %d: in order" k) true (depth k >= depth (k - 1));
+    Alcotest.(check bool) (Printf.sprintf "crossing %d: the depth lags" k) true (depth k < along k -. 1e-9)
+  done;
+  (* the point and normal reported for each are found again by depth and by point *)
+  for k = 0 to n - 1 do
+    let p = Julia.point w (depth k) Vec.zero in
+    float_eq ~eps:0. (Printf.sprintf "crossing %d: point by depth" k) h.((k * Scratch.hit_width) + 5) p.z
+  done
+
 let test_box () =
   let f = parse "julia_fractal { <-0.083, 0.0, -0.83, -0.025> }" in
   let b = Julia.pov_box f in
@@ -173,5 +215,7 @@ let tests =
     Alcotest.test_case "inside()" `Quick test_inside;
     Alcotest.test_case "crossings by sampling" `Quick test_sampling;
     Alcotest.test_case "inverted flag" `Quick test_inverted;
+    Alcotest.test_case "function map normal" `Quick test_function_normal;
+    Alcotest.test_case "later crossings in CSG" `Quick test_later_crossings;
     Alcotest.test_case "box" `Quick test_box;
   ]

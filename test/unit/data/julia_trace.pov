@@ -18,3 +18,7 @@ T(J4, <-4, 0.05, 0.1>, <1, 0.01, 0>)
 #macro I(J, P) #debug concat(str(inside(J, P), 0, 0), "\n") #end
 I(J1, <0, 0, 0>) I(J1, <0.5, 0.2, 0.1>) I(J1, <0.2, 0.5, -0.3>) I(J1, <1.9, 0, 0>)
 I(J3, <0, 0, 0>) I(J3, <0.8, 0.2, 0>)
+// a function map: its normal comes from the stack as the march left it
+#declare J5 = julia_fractal { <0.5, 0.2, 0.1, 0.0> hypercomplex sin max_iteration 5 precision 30 }
+T(J5, <-0.2, 0.1, -5>, <0, 0, 1>)
+T(J5, <0.3, -0.2, -5>, <0.01, 0.02, 1>)
