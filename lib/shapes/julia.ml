@@ -425,16 +425,7 @@ let march (w : Scratch.t) f (o : Vec.t) (d : Vec.t) emit =
                    holds what the march's deeper iterations left beyond its escape *)
                 let n = raw_normal f st f.iterations in
                 let n = Transform.normalize (match f.trans with None -> n | Some m -> Transform.normal m n) in
-                let k = 8 * (w.fractal_count land 31) in
-                let r = w.fractal_points in
-                r.(k) <- t;
-                r.(k + 1) <- p.x;
-                r.(k + 2) <- p.y;
-                r.(k + 3) <- p.z;
-                r.(k + 4) <- n.x;
-                r.(k + 5) <- n.y;
-                r.(k + 6) <- n.z;
-                w.fractal_count <- w.fractal_count + 1;
+                Scratch.report w t p n;
                 if not (emit t p.x p.y p.z) then over := true
                 else begin
                   ix := !nx;
@@ -469,20 +460,7 @@ let hits (w : Scratch.t) f id o d lo n =
          true));
   !count
 
-(* the slot of the latest crossing reported in [w] whose field [at] (0: the depth, 1: the point's
-   x, …) is [key], or −1 *)
-let slot (w : Scratch.t) at key =
-  let found = ref (-1) and i = ref 0 in
-  while !found < 0 && !i < 32 && !i < w.fractal_count do
-    let k = 8 * ((w.fractal_count - 1 - !i) land 31) in
-    if w.fractal_points.(k + at) = key then found := k;
-    incr i
-  done;
-  !found
-
-let point (w : Scratch.t) t (p : Vec.t) =
-  let k = slot w 0 t in
-  if k < 0 then p else Vec.make w.fractal_points.(k + 1) w.fractal_points.(k + 2) w.fractal_points.(k + 3)
+let point (w : Scratch.t) t (p : Vec.t) = match Scratch.reported_point w t with Some q -> q | None -> p
 
 let local f (p : Vec.t) = match f.trans with None -> p | Some m -> Transform.inv_point m p
 
@@ -505,10 +483,7 @@ let normal f p =
   let st = Array.make (4 * (f.iterations + 1)) 0. in
   normal_with st f p
 
-let hit_normal (w : Scratch.t) f (p : Vec.t) =
-  let k = slot w 1 p.x in
-  let r = w.fractal_points in
-  if k >= 0 && r.(k + 2) = p.y && r.(k + 3) = p.z then Vec.make r.(k + 4) r.(k + 5) r.(k + 6) else normal f p
+let hit_normal (w : Scratch.t) f p = match Scratch.reported_normal w p with Some n -> n | None -> normal f p
 
 let box f =
   let r = f.radius in
