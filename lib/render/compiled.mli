@@ -99,6 +99,7 @@ type shape =
   | Polygon of Polygon.t  (** §15.7, §14.5 (b): the outline in polygon space, placed by its transform *)
   | Quadric of Quadric.t  (** quadrics.cpp: in world space, the ray as it is *)
   | Julia of Julia.t  (** fractal.cpp: the ray taken into fractal space, its direction renormalised *)
+  | Bicubic of Bezier.t  (** bezier.cpp: in world space, type 1 with its tree of bounding spheres *)
 
 (** A CSG's members and how their hits are kept (§16.2, §16.3). *)
 and csg = {

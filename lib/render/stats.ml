@@ -40,6 +40,8 @@ type t = {
   mutable quadric_hits : int;
   mutable fractal_tests : int;
   mutable fractal_hits : int;
+  mutable bicubic_tests : int;
+  mutable bicubic_hits : int;
 }
 
 let create () =
@@ -50,7 +52,7 @@ let create () =
     csg_union_tests = 0; csg_union_hits = 0; csg_intersection_tests = 0; csg_intersection_hits = 0; csg_merge_tests = 0;
     csg_merge_hits = 0; ttf_tests = 0; ttf_hits = 0;
     polygon_tests = 0; polygon_hits = 0; quadric_tests = 0; quadric_hits = 0;
-    fractal_tests = 0; fractal_hits = 0;
+    fractal_tests = 0; fractal_hits = 0; bicubic_tests = 0; bicubic_hits = 0;
   }
 
 let merge a b =
@@ -94,6 +96,8 @@ let merge a b =
     quadric_hits = a.quadric_hits + b.quadric_hits;
     fractal_tests = a.fractal_tests + b.fractal_tests;
     fractal_hits = a.fractal_hits + b.fractal_hits;
+    bicubic_tests = a.bicubic_tests + b.bicubic_tests;
+    bicubic_hits = a.bicubic_hits + b.bicubic_hits;
   }
 
 type row = { name : string; tests : int; hits : int }

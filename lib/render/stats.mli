@@ -40,6 +40,8 @@ type t = {
   mutable quadric_hits : int;  (** tests that found a root pair or a linear root, whatever its depth *)
   mutable fractal_tests : int;  (** julia fractals tested *)
   mutable fractal_hits : int;  (** tests whose march found a crossing, whatever its depth *)
+  mutable bicubic_tests : int;  (** bicubic patches tested *)
+  mutable bicubic_hits : int;  (** tests that found a crossing beyond 1e-5 *)
 }
 
 val create : unit -> t

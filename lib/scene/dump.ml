@@ -264,6 +264,9 @@ let rec shape = function
       Printf.sprintf "quadric { <%s, %s, %s>, <%s, %s, %s>, <%s, %s, %s>, %s // box <%s, %s, %s> + <%s, %s, %s>" (num q.xx)
         (num q.yy) (num q.zz) (num q.xy) (num q.xz) (num q.yz) (num q.lx) (num q.ly) (num q.lz) (num q.k) (num q.box_llx)
         (num q.box_lly) (num q.box_llz) (num q.box_lenx) (num q.box_leny) (num q.box_lenz)
+  | Bicubic { patch_type; u_steps; v_steps; flatness; points } ->
+      Printf.sprintf "bicubic_patch { type %d flatness %s u_steps %d v_steps %d %s" patch_type (num flatness) u_steps v_steps
+        (String.concat ", " (Array.to_list (Array.map vec points)))
   | Julia f ->
       let alg = match f.algebra with Quaternion -> "quaternion" | Hypercomplex -> "hypercomplex" in
       let fn =

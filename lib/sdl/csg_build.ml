@@ -12,6 +12,7 @@ let rec invert (o : V.obj) : V.obj =
   | Prim (Plane { normal; offset; trans }) -> { o with shape = Prim (Plane { normal = Vec.neg normal; offset = -.offset; trans }) }
   | Prim (Sphere _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Csg _ | Glyph _) -> { o with inverted = not o.inverted }
   | Prim (Polygon _) -> o (* Polygon::Invert does nothing, not even the flag *)
+  | Prim (Bicubic _) -> o (* BicubicPatch::Invert does nothing *)
   | Prim (Julia f) -> { o with shape = Prim (Julia (Julia.invert f)) } (* Fractal::Invert: its own flag, not INVERTED_FLAG *)
   | Prim (Quadric q) -> { o with shape = Prim (Quadric (Quadric.invert q)); inverted = not o.inverted }
   | Csg { members; _ } when List.for_all (function V.Member_light _ -> true | V.Member_obj _ -> false) members ->

@@ -11,7 +11,7 @@ open Csg_build
 (* Objects povml does not render yet: inside a union they are reported as "not supported yet". *)
 let unsupported_objects =
   [ "prism"; "lathe"; "sor"; "blob"; "height_field";
-    "isosurface"; "superellipsoid"; "parametric"; "bicubic_patch"; "ovus"; "cubic";
+    "isosurface"; "superellipsoid"; "parametric"; "ovus"; "cubic";
     "quartic"; "poly"; "polynomial"; "sphere_sweep"; "lemon"; "composite" ]
 
 let show_vec (v : Vec.t) = Printf.sprintf "<%g, %g, %g>" v.x v.y v.z
@@ -135,6 +135,10 @@ let rec parse_object st : V.obj =
       advance st;
       open_block st kw;
       parse_object_mods st (new_obj (if kw = "polygon" then Shape_reader.polygon st loc else Shape_reader.quadric st) loc) kw
+  | Ident "bicubic_patch" ->
+      advance st;
+      open_block st "bicubic_patch";
+      parse_object_mods st (new_obj (Bicubic_reader.bicubic st loc) loc) "bicubic_patch"
   | Ident "julia_fractal" ->
       advance st;
       open_block st "julia_fractal";

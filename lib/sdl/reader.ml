@@ -123,7 +123,7 @@ let keywords =
     "mesh2"; "vertex_vectors"; "normal_vectors"; "uv_vectors"; "texture_list"; "face_indices"; "normal_indices";
     "uv_indices"; "inside_vector"; "box"; "no_image"; "no_reflection"; "double_illuminate"; "spotlight";
     "parallel"; "point_at"; "radius"; "tightness"; "orthographic"; "looks_like"; "cylinder"; "cone"; "disc";
-    "open"; "torus"; "union"; "merge"; "intersection"; "difference"; "inverse"; "split_union"; "clipped_by"; "text"; "ttf"; "polygon"; "quadric"; "julia_fractal"; "reciprocal";
+    "open"; "torus"; "union"; "merge"; "intersection"; "difference"; "inverse"; "split_union"; "clipped_by"; "text"; "ttf"; "polygon"; "quadric"; "julia_fractal"; "reciprocal"; "bicubic_patch";
     "material"; "texture_map"; "interior_texture"; "tiles"; "irid"; "uv_mapping"; "crand"; "image_map"; "bump_map"; "image_pattern"; "caustics"; "cutaway_textures"; "pigment_pattern" ]
   (* pigment patterns (POVRAY-3.7 §17) *)
   @ [ "checker"; "gradient"; "hexagon"; "brick"; "brick_size"; "mortar"; "color_map"; "colour_map"; "frequency";
@@ -150,7 +150,7 @@ let keywords =
 (* POV-Ray keywords that a later povml will read; meeting one is a located "not supported yet". *)
 let unsupported =
   [ "prism"; "lathe"; "sor"; "blob"; "height_field"; "isosurface"; "superellipsoid";
-    "parametric"; "bicubic_patch"; "ovus"; "quartic"; "poly"; "rotate"; "scale"; "matrix"; "transform";
+    "parametric"; "ovus"; "quartic"; "poly"; "rotate"; "scale"; "matrix"; "transform";
     "area_light";
     "projected_through"; "fisheye"; "panoramic"; "ultra_wide_angle"; "omnimax";
     "radiosity"; "photons";

@@ -30,6 +30,7 @@ let compile (s : Scene.shape) =
   | Polygon p -> Some (Polygon p)
   | Quadric q -> Some (Quadric q)
   | Julia f -> Some (Julia f)
+  | Bicubic { patch_type; u_steps; v_steps; flatness; points } -> Some (Bicubic (Bezier.make ~patch_type ~u_steps ~v_steps ~flatness points))
   | Csg _ -> None
 
 (* a primitive crossed once at most *)
@@ -53,6 +54,7 @@ let rec depth w shape o d lo =
   | Polygon p -> Polygon.depth w p o d lo
   | Quadric q -> Quadric.depth w q o d lo
   | Julia f -> Julia.depth w f o d lo
+  | Bicubic b -> Bezier.depth w b o d lo
 
 and all_hits w ob o d lo n =
   let id = ob.id in
@@ -73,6 +75,7 @@ and all_hits w ob o d lo n =
   | Polygon p -> Polygon.hits w p id o d lo n
   | Quadric q -> Quadric.hits w q id o d lo n
   | Julia f -> Julia.hits w f id o d lo n
+  | Bicubic b -> Bezier.hits w b id o d lo n
 
 and inside stack shape p =
   match shape with
@@ -92,6 +95,7 @@ and inside stack shape p =
   | Polygon pg -> Polygon.inside pg p
   | Quadric q -> Quadric.inside q p
   | Julia f -> Julia.inside stack f p
+  | Bicubic _ -> false
 
 and inside_member stack (m : obj) p =
   match m.shape with
@@ -106,7 +110,7 @@ and inside_member stack (m : obj) p =
       (* Fractal::Invert toggles the fractal's own flag, which its Inside holds *)
       inside stack m.shape p
   | Sphere _ | Sphere_placed _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _
-  | Disc _ | Torus _ | Glyph _ | Polygon _ ->
+  | Disc _ | Torus _ | Glyph _ | Polygon _ | Bicubic _ ->
       inside stack m.shape p <> m.inverted
 
 let hit_object (w : Scratch.t) ob = if Csg.is_csg ob.shape then w.leaf else ob.id
@@ -130,25 +134,27 @@ let normal obj part p =
   | Polygon pg -> Polygon.normal pg p
   | Quadric q -> Quadric.normal q p
   | Julia f -> Julia.normal f p
+  | Bicubic _ -> Vec.make 1. 0. 0. (* its normal is the crossing's: hit_normal *)
 
 let geometric_normal obj part p =
   match obj.shape with
   | Smooth_triangle t -> Triangle.flat_normal t
   | Mesh m -> Mesh.placed_face_normal m part
   | Sphere _ | Sphere_placed _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _
-  | Quadric _ | Julia _ | Csg _ ->
+  | Quadric _ | Julia _ | Bicubic _ | Csg _ ->
       normal obj part p
 
 let hit_point (w : Scratch.t) obj depth p =
   match obj.shape with
   | Julia _ -> Julia.point w depth p
   | Sphere _ | Sphere_placed _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _
-  | Torus _ | Glyph _ | Polygon _ | Quadric _ | Csg _ ->
+  | Torus _ | Glyph _ | Polygon _ | Quadric _ | Bicubic _ | Csg _ ->
       p
 
 let hit_normal (w : Scratch.t) obj part p =
   match obj.shape with
   | Julia f -> Julia.hit_normal w f p
+  | Bicubic _ -> Bezier.hit_normal w p
   | Sphere _ | Sphere_placed _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _
   | Torus _ | Glyph _ | Polygon _ | Quadric _ | Csg _ ->
       normal obj part p
@@ -158,7 +164,7 @@ let refine obj p =
   | Sphere s | Sphere_placed { ps = s; _ } -> Sphere.refine s p
   | Ellipsoid e -> Sphere.ellipsoid_refine e p
   | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _
-  | Julia _ | Csg _ ->
+  | Julia _ | Bicubic _ | Csg _ ->
       p
 
 (* Every shape's UVCoord in POV-Ray 3.7: spheres, boxes, tori and meshes have their own; every
@@ -173,7 +179,7 @@ let uv obj part (p : Vec.t) =
   | Box_trans b -> Box.moved_uv b part p
   | Torus t -> Torus.uv t p
   | Mesh m -> Mesh.placed_uv m part p
-  | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Cone _ | Disc _ | Glyph _ | Polygon _ | Quadric _ | Julia _ | Csg _ -> Vec.make p.x p.y 0.
+  | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Cone _ | Disc _ | Glyph _ | Polygon _ | Quadric _ | Julia _ | Bicubic _ | Csg _ -> Vec.make p.x p.y 0.
 
 let rec bounds = function
   | Csg c -> Csg.bounds ~bounds c
@@ -191,6 +197,7 @@ let rec bounds = function
   | Polygon p -> Polygon.bounds p
   | Quadric q -> Quadric.bounds q
   | Julia f -> Some (Julia.bounds f)
+  | Bicubic b -> Some (Bezier.bounds b)
 
 let magnitude shape =
   let max_abs a = Array.fold_left (fun m x -> Float.max m (Float.abs x)) 0. a in
@@ -201,7 +208,7 @@ let magnitude shape =
   | None, Csg c -> Csg.magnitude c
   | _, Polygon p -> Polygon.magnitude p
   | _, Quadric q -> Quadric.magnitude q
-  | None, (Sphere _ | Sphere_placed _ | Ellipsoid _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Julia _) -> 0.
+  | None, (Sphere _ | Sphere_placed _ | Ellipsoid _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Julia _ | Bicubic _) -> 0.
 
 let rec pov_box shape =
   match shape with
@@ -219,27 +226,28 @@ let rec pov_box shape =
   | Polygon p -> Polygon.pov_box p
   | Quadric q -> Quadric.pov_box q
   | Julia f -> Julia.pov_box f
+  | Bicubic b -> Bezier.pov_box b
   | Csg c -> Csg.pov_box ~bounds ~pov_box c
 
 let costly = function
-  | Ellipsoid _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Julia _ -> true
+  | Ellipsoid _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Julia _ | Bicubic _ -> true
   | Sphere _ | Sphere_placed _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Csg _ -> false
 
 let as_sphere = function
   | Sphere s | Sphere_placed { ps = s; _ } -> Some s
   | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _
-  | Quadric _ | Julia _ | Csg _ ->
+  | Quadric _ | Julia _ | Bicubic _ | Csg _ ->
       None
 
 let face_texture obj part =
   match obj.shape with
   | Mesh m when part >= 0 -> Mesh.texture m.mesh part
   | Sphere _ | Sphere_placed _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _
-  | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Julia _ | Csg _ ->
+  | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Julia _ | Bicubic _ | Csg _ ->
       -1
 
 let stats_rows s =
   List.concat
-    [ Box.stats_rows s; Cone.stats_rows s; Disc.stats_rows s; Csg.stats_rows s; Plane.stats_rows s; Polygon.stats_rows s; Quadric.stats_rows s;
+    [ Bezier.stats_rows s; Box.stats_rows s; Cone.stats_rows s; Disc.stats_rows s; Csg.stats_rows s; Plane.stats_rows s; Polygon.stats_rows s; Quadric.stats_rows s;
       Triangle.stats_rows s;
       Mesh.stats_rows s; Sphere.stats_rows s; Torus.stats_rows s; Glyph.stats_rows s; Julia.stats_rows s ]

@@ -11,7 +11,7 @@ let v37 = "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"
 let julia_of (o : Scene.obj) =
   match o.shape with
   | Julia f -> f
-  | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Csg _ ->
+  | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Bicubic _ | Csg _ ->
       Alcotest.fail "expected a julia fractal"
 
 let parse text = julia_of (the_object (scene (v37 ^ text)))
