@@ -27,6 +27,7 @@ let () =
       ("Polysolv", Test_polysolv.tests);
       ("Torus", Test_torus.tests);
       ("Julia fractal", Test_julia.tests);
+      ("Bicubic patch", Test_bezier.tests);
       ("UV coordinates and uv_mapping", Test_uv.tests);
       ("Sphere normal", Test_sphere_normal.tests);
       ("Text", Test_text.tests);
