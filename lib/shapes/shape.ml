@@ -248,6 +248,6 @@ let face_texture obj part =
 
 let stats_rows s =
   List.concat
-    [ Bezier.stats_rows s; Box.stats_rows s; Cone.stats_rows s; Disc.stats_rows s; Csg.stats_rows s; Plane.stats_rows s; Polygon.stats_rows s; Quadric.stats_rows s;
+    [ Bezier.stats_rows s; Box.stats_rows s; Cone.stats_rows s; Disc.stats_rows s; Csg.stats_rows s; Julia.stats_rows s; Plane.stats_rows s; Polygon.stats_rows s; Quadric.stats_rows s;
       Triangle.stats_rows s;
-      Mesh.stats_rows s; Sphere.stats_rows s; Torus.stats_rows s; Glyph.stats_rows s; Julia.stats_rows s ]
+      Mesh.stats_rows s; Sphere.stats_rows s; Torus.stats_rows s; Glyph.stats_rows s ]
