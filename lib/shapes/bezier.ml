@@ -281,8 +281,6 @@ let make ~patch_type ~u_steps ~v_steps ~flatness cp =
   let b = { patch_type; u_steps; v_steps; flatness; cp; tree = None } in
   if patch_type = 1 then { b with tree = Some (build b cp 0.0 1.0 0.0 1.0 0) } else b
 
-let map f b = make ~patch_type:b.patch_type ~u_steps:b.u_steps ~v_steps:b.v_steps ~flatness:b.flatness (Array.map f b.cp)
-
 (* All_Intersections: every crossing, in POV-Ray's push order, to [emit] *)
 let crossings (w : Scratch.t) b o d emit =
   let stats = w.stats in
