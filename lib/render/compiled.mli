@@ -106,6 +106,8 @@ type shape =
   | Prism of Prism.t  (** prism.cpp: through its transform *)
   | Lathe of Lathe.t  (** lathe.cpp: through its transform *)
   | Sor of Sor.t  (** sor.cpp: through its transform *)
+  | Julia of Julia.t  (** fractal.cpp: the ray taken into fractal space, its direction renormalised *)
+  | Bicubic of Bezier.t  (** bezier.cpp: in world space, type 1 with its tree of bounding spheres *)
 
 (** A CSG's members and how their hits are kept (§16.2, §16.3). *)
 and csg = {

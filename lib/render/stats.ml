@@ -73,6 +73,10 @@ type t = {
   mutable sor_hits : int;
   mutable sor_bound_tests : int;
   mutable sor_bound_hits : int;
+  mutable fractal_tests : int;
+  mutable fractal_hits : int;
+  mutable bicubic_tests : int;
+  mutable bicubic_hits : int;
 }
 
 let create () =
@@ -90,6 +94,7 @@ let create () =
     hfield_cell_hits = 0;
     superellipsoid_tests = 0; superellipsoid_hits = 0; ovus_tests = 0; ovus_hits = 0; sphere_sweep_tests = 0; sphere_sweep_hits = 0;
     prism_tests = 0; prism_hits = 0; prism_bound_tests = 0; prism_bound_hits = 0; lathe_tests = 0; lathe_hits = 0; lathe_bound_tests = 0; lathe_bound_hits = 0; sor_tests = 0; sor_hits = 0; sor_bound_tests = 0; sor_bound_hits = 0;
+    fractal_tests = 0; fractal_hits = 0; bicubic_tests = 0; bicubic_hits = 0;
   }
 
 let merge a b =
@@ -166,6 +171,10 @@ let merge a b =
     sor_hits = a.sor_hits + b.sor_hits;
     sor_bound_tests = a.sor_bound_tests + b.sor_bound_tests;
     sor_bound_hits = a.sor_bound_hits + b.sor_bound_hits;
+    fractal_tests = a.fractal_tests + b.fractal_tests;
+    fractal_hits = a.fractal_hits + b.fractal_hits;
+    bicubic_tests = a.bicubic_tests + b.bicubic_tests;
+    bicubic_hits = a.bicubic_hits + b.bicubic_hits;
   }
 
 type row = { name : string; tests : int; hits : int }

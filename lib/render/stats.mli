@@ -73,6 +73,10 @@ type t = {
   mutable sor_hits : int;  (** tests that pushed a crossing *)
   mutable sor_bound_tests : int;  (** its bounding tests (POV-Ray's "Bound" row) *)
   mutable sor_bound_hits : int;
+  mutable fractal_tests : int;  (** julia fractals tested *)
+  mutable fractal_hits : int;  (** tests whose march found a crossing, whatever its depth *)
+  mutable bicubic_tests : int;  (** bicubic patches tested *)
+  mutable bicubic_hits : int;  (** tests that found a crossing beyond 1e-5 *)
 }
 
 val create : unit -> t

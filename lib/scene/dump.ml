@@ -303,6 +303,25 @@ let rec shape = function
       Printf.sprintf "sphere_sweep { %s %d, %s tolerance %s%s" kind (Array.length spheres)
         (String.concat ", " (Array.to_list (Array.map (fun (c, r) -> Printf.sprintf "%s, %s" (vec c) (num r)) spheres)))
         (num tolerance) (trans t)
+  | Bicubic { patch_type; u_steps; v_steps; flatness; points } ->
+      Printf.sprintf "bicubic_patch { type %d flatness %s u_steps %d v_steps %d %s" patch_type (num flatness) u_steps v_steps
+        (String.concat ", " (Array.to_list (Array.map vec points)))
+  | Julia f ->
+      let alg = match f.algebra with Quaternion -> "quaternion" | Hypercomplex -> "hypercomplex" in
+      let fn =
+        match f.func with
+        | Sqr -> "sqr"
+        | Cube -> "cube"
+        | Reciprocal -> "reciprocal"
+        | Func g -> (
+            match g with
+            | Exp -> "exp" | Ln -> "ln" | Sin -> "sin" | Asin -> "asin" | Cos -> "cos" | Acos -> "acos" | Tan -> "tan"
+            | Atan -> "atan" | Sinh -> "sinh" | Asinh -> "asinh" | Cosh -> "cosh" | Acosh -> "acosh" | Tanh -> "tanh"
+            | Atanh -> "atanh" | Pwr -> Printf.sprintf "pwr(%s, %s)" (num f.ex) (num f.ey))
+      in
+      Printf.sprintf "julia_fractal { <%s, %s, %s, %s> %s %s max_iteration %d precision %s slice <%s, %s, %s, %s>, %s%s // radius %s, exit %s%s"
+        (num f.p0) (num f.p1) (num f.p2) (num f.p3) alg fn f.iterations (num (1. /. f.precision)) (num f.s0) (num f.s1) (num f.s2)
+        (num f.s3) (num f.slice_dist) (if f.inverted then " inverted" else "") (num f.radius) (num f.exit_value) (trans f.trans)
   | Csg { kind; members } ->
       let member (m : member) =
         String.concat "\n  " (String.split_on_char '\n' (String.trim (obj m.mobj)))

@@ -175,6 +175,20 @@ let rec shape (s : Scene.shape) op : Scene.shape =
       Prism (Prism.transform p (op_transform op))
   | Lathe l -> Lathe (Lathe.transform l (op_transform op)) (* Lathe::Transform, likewise *)
   | Sor s -> Sor (Sor.transform s (op_transform op)) (* Sor::Transform, likewise *)
+  | Bicubic b ->
+      (* BicubicPatch::Translate adds, Scale multiplies, Rotate and Transform map every control
+         point (MTransPoint); the subdivision is rebuilt from the points at the end *)
+      let mv (q : Vec.t) =
+        match op with
+        | Translate v -> Vec.make (q.x +. v.x) (q.y +. v.y) (q.z +. v.z)
+        | Scale v -> Vec.make (q.x *. v.x) (q.y *. v.y) (q.z *. v.z)
+        | Rotate _ | Transform _ -> Transform.point (op_transform op) q
+      in
+      Bicubic { b with points = Array.map mv b.points }
+  | Julia f ->
+      (* Fractal::Translate/Rotate/Scale all call Transform: composed into its Trans, and its
+         Compute_BBox clears the inverted flag *)
+      Julia (Julia.transform f (op_transform op))
   | Csg { kind; members } ->
       (* §16: a CSG's transform moves every member *)
       Csg { kind; members = List.map (fun (m : Scene.member) -> { m with mobj = { m.mobj with shape = shape m.mobj.shape op; texture = texture m.mobj.texture op } }) members }
@@ -192,12 +206,12 @@ let scene ~scale ~translate (s : Scene.t) : Scene.t =
     let scaling =
       match o.shape with
       | Smooth_triangle _ -> Transform (Transform.scale sv)
-      | Sphere _ | Plane _ | Triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Csg _ | Glyph _ | Polygon _ | Quadric _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Prism _ | Lathe _ | Sor _ -> Scale sv
+      | Sphere _ | Plane _ | Triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Csg _ | Glyph _ | Polygon _ | Quadric _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Prism _ | Lathe _ | Sor _ | Julia _ | Bicubic _ -> Scale sv
     in
     let sh =
       match o.shape with
       | Csg { kind; members } -> Scene.Csg { kind; members = List.map (fun (m : Scene.member) -> { m with mobj = obj m.mobj }) members }
-      | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Prism _ | Lathe _ | Sor _ ->
+      | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Prism _ | Lathe _ | Sor _ | Julia _ | Bicubic _ ->
           shape (shape o.shape scaling) (Translate translate)
     in
     let texture = texture (texture o.texture (Scale sv)) (Translate translate) in

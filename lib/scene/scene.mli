@@ -375,6 +375,12 @@ type shape =
           modifier composes into it) *)
   | Lathe of Lathe.t  (** lathe.cpp: the rotated spline's segments, placed by its transform *)
   | Sor of Sor.t  (** sor.cpp: the cubic segments of radius², placed by its transform *)
+  | Julia of Julia.t
+      (** fractal.cpp: in fractal space, placed by its own transform (every modifier composes
+          into it and clears the fractal's own inverted flag); [inverse] toggles that flag *)
+  | Bicubic of { patch_type : int; u_steps : int; v_steps : int; flatness : float; points : Vec.t array }
+      (** bezier.cpp: the 16 control points in world space (row by row, P[i][j] at 4i + j), which
+          every modifier moves; type 0 or 1; flat, with no inside *)
   | Csg of { kind : csg_kind; members : member list }
       (** §16: a CSG kept whole (a merge, an intersection or difference, a union with
           [split_union off]); its members are already moved by its transforms and carry the

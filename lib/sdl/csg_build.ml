@@ -14,6 +14,8 @@ let rec invert (o : V.obj) : V.obj =
   | Prim (Superellipsoid _ | Ovus _ | Sphere_sweep _) -> { o with inverted = not o.inverted }
   | Prim (Prism _ | Lathe _ | Sor _) -> { o with inverted = not o.inverted } (* Invert_Flag of INVERTED_FLAG *)
   | Prim (Polygon _) -> o (* Polygon::Invert does nothing, not even the flag *)
+  | Prim (Bicubic _) -> o (* BicubicPatch::Invert does nothing *)
+  | Prim (Julia f) -> { o with shape = Prim (Julia (Julia.invert f)) } (* Fractal::Invert: its own flag, not INVERTED_FLAG *)
   | Prim (Quadric q) -> { o with shape = Prim (Quadric (Quadric.invert q)); inverted = not o.inverted }
   | Csg { members; _ } when List.for_all (function V.Member_light _ -> true | V.Member_obj _ -> false) members ->
       o (* lights only (a light in object position): nothing to invert *)
@@ -149,10 +151,10 @@ let wrap kind (o : V.obj) objs =
         { o with shape = Csg { kind; members = V.Member_obj inner :: objs; split = false }; inverted = false }
 
 (* PATCH_OBJECT, which CSG inherits from its members: a shape without an inside (a triangle, a
-   mesh without inside_vector) *)
+   mesh without inside_vector, a bicubic patch) *)
 let rec patch (o : V.obj) =
   match o.shape with
-  | Prim (Triangle _ | Smooth_triangle _) -> true
+  | Prim (Triangle _ | Smooth_triangle _ | Bicubic _) -> true
   | Prim (Mesh { mesh; _ }) -> mesh.inside_vector = None
   | Prim _ -> false
   | Csg { members; _ } -> List.exists (function V.Member_obj c -> patch c | V.Member_light _ -> false) members

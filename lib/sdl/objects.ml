@@ -10,7 +10,7 @@ open Csg_build
 
 (* Objects povml does not render yet: inside a union they are reported as "not supported yet". *)
 let unsupported_objects =
-  [ "isosurface"; "julia_fractal"; "parametric"; "bicubic_patch"; "cubic";
+  [ "isosurface"; "parametric"; "cubic";
     "quartic"; "poly"; "polynomial"; "composite" ]
 
 let show_vec (v : Vec.t) = Printf.sprintf "<%g, %g, %g>" v.x v.y v.z
@@ -173,6 +173,15 @@ let rec parse_object st : V.obj =
       open_block st kw;
       let shape = match kw with "prism" -> Spline_reader.prism st loc | "lathe" -> Spline_reader.lathe st loc | _ -> Spline_reader.sor st loc in
       parse_object_mods st (new_obj shape loc) kw
+  | Ident "bicubic_patch" ->
+      advance st;
+      open_block st "bicubic_patch";
+      parse_object_mods st (new_obj (Bicubic_reader.bicubic st loc) loc) "bicubic_patch"
+  | Ident "julia_fractal" ->
+      advance st;
+      open_block st "julia_fractal";
+      let shape = Julia_reader.julia st in
+      Julia_reader.set_up loc (parse_object_mods st (new_obj shape loc) "julia_fractal")
   | Ident "text" ->
       (* §15.9: a union of one extruded glyph per character, then the modifiers, which move every
          letter *)

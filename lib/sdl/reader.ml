@@ -125,7 +125,7 @@ let keywords =
     "uv_indices"; "inside_vector"; "box"; "no_image"; "no_reflection"; "double_illuminate"; "spotlight";
     "parallel"; "point_at"; "radius"; "tightness"; "orthographic"; "looks_like"; "cylinder"; "cone"; "disc";
     "open"; "torus"; "union"; "merge"; "intersection"; "difference"; "inverse"; "split_union"; "clipped_by"; "text"; "ttf"; "polygon"; "quadric";
-    "blob"; "height_field"; "superellipsoid"; "ovus"; "sphere_sweep"; "prism"; "lathe"; "sor";
+    "blob"; "height_field"; "superellipsoid"; "ovus"; "sphere_sweep"; "prism"; "lathe"; "sor"; "julia_fractal"; "reciprocal"; "bicubic_patch";
     "material"; "texture_map"; "interior_texture"; "tiles"; "irid"; "uv_mapping"; "crand"; "image_map"; "bump_map"; "image_pattern"; "caustics"; "cutaway_textures"; "pigment_pattern";
     "bounded_by"; "trace"; "inside"; "min_extent"; "max_extent" ]
   (* pigment patterns (POVRAY-3.7 §17) *)
@@ -152,8 +152,8 @@ let keywords =
 
 (* POV-Ray keywords that a later povml will read; meeting one is a located "not supported yet". *)
 let unsupported =
-  [ "isosurface"; "julia_fractal";
-    "parametric"; "bicubic_patch"; "quartic"; "poly"; "rotate"; "scale"; "matrix"; "transform";
+  [ "isosurface";
+    "parametric"; "quartic"; "poly"; "rotate"; "scale"; "matrix"; "transform";
     "area_light";
     "projected_through"; "fisheye"; "panoramic"; "ultra_wide_angle"; "omnimax";
     "radiosity"; "photons";

@@ -38,6 +38,9 @@ type t = {
   sextic_roots : float array;
   lathe_quadratic : float array;
   lathe_quadratic_roots : float array;
+  fractal_stack : growable;
+  fractal_points : float array;
+  mutable fractal_count : int;
 }
 
 let hit_width = 6
@@ -73,6 +76,9 @@ let create ~robust stats =
     sextic_roots = Array.make 6 0.;
     lathe_quadratic = Array.make 3 0.;
     lathe_quadratic_roots = Array.make 2 0.;
+    fractal_stack = { room = Array.make 84 0. };
+    fractal_points = Array.make (8 * 32) nan;
+    fractal_count = 0;
   }
 
 let push_hit w n t part id px py pz =
@@ -106,6 +112,35 @@ let nearest_crossing w n lo =
   done;
   if !best < infinity then w.part <- !part;
   !best
+
+let report w t (p : Vec.t) (n : Vec.t) =
+  let k = 8 * (w.fractal_count land 31) and r = w.fractal_points in
+  r.(k) <- t;
+  r.(k + 1) <- p.x;
+  r.(k + 2) <- p.y;
+  r.(k + 3) <- p.z;
+  r.(k + 4) <- n.x;
+  r.(k + 5) <- n.y;
+  r.(k + 6) <- n.z;
+  w.fractal_count <- w.fractal_count + 1
+
+(* the slot of the latest report whose field [at] (0: the depth, 1: the point's x) is [key], or −1 *)
+let slot w at key =
+  let found = ref (-1) and i = ref 0 in
+  while !found < 0 && !i < 32 && !i < w.fractal_count do
+    let k = 8 * ((w.fractal_count - 1 - !i) land 31) in
+    if w.fractal_points.(k + at) = key then found := k;
+    incr i
+  done;
+  !found
+
+let reported_point w t =
+  let k = slot w 0 t and r = w.fractal_points in
+  if k < 0 then None else Some (Vec.make r.(k + 1) r.(k + 2) r.(k + 3))
+
+let reported_normal w (p : Vec.t) =
+  let k = slot w 1 p.x and r = w.fractal_points in
+  if k >= 0 && r.(k + 2) = p.y && r.(k + 3) = p.z then Some (Vec.make r.(k + 4) r.(k + 5) r.(k + 6)) else None
 
 let nearest_depth w n lo =
   let best = ref infinity in

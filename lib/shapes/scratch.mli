@@ -49,6 +49,16 @@ type t = {
   sextic_roots : float array;  (** … and its roots (6) *)
   lathe_quadratic : float array;  (** a lathe's ray-parallel quadratic (3) … *)
   lathe_quadratic_roots : float array;  (** … and its roots (2) *)
+  fractal_stack : growable;
+      (** a julia fractal's iteration stack, 4 floats (x, y, z, w) per iteration; like POV-Ray's
+          per-thread stack it keeps what deeper iterations left beyond the last one *)
+  fractal_points : float array;
+      (** the last 32 crossings julia fractals and bicubic patches reported ([report]), 8 floats
+          each (depth, point, normal, 0): POV-Ray shades a fractal at the point its march found,
+          and both with the normal computed at the crossing (the fractal's from the iteration
+          stack as the march left it, the patch's interpolated over its triangle), which neither
+          the depth nor the point alone gives back *)
+  mutable fractal_count : int;  (** how many crossings were written there (modulo 32 is the next slot) *)
 }
 
 val create : robust:bool -> Stats.t -> t
@@ -70,6 +80,15 @@ val nearest_crossing : t -> int -> float -> float
 (** [nearest_crossing w n lo] is the nearest of the [n] (depth, part) pairs in [w.crossings] at
     least [lo], its part left in [w.part]; or infinity. POV-Ray takes them from the top of its
     intersection stack, keeping a strictly nearer one, so of equal depths the last found wins. *)
+
+val report : t -> float -> Vec.t -> Vec.t -> unit
+(** [report w t p n] records the crossing at depth [t], point [p], normal [n] in [fractal_points]. *)
+
+val reported_point : t -> float -> Vec.t option
+(** [reported_point w t] is the point of the latest crossing reported at depth [t], if any. *)
+
+val reported_normal : t -> Vec.t -> Vec.t option
+(** [reported_normal w p] is the normal of the latest crossing reported at the point [p], if any. *)
 
 val nearest_depth : t -> int -> float -> float
 (** [nearest_depth w n lo] is the nearest of the [n] plain depths in [w.crossings] at least [lo],

@@ -56,9 +56,9 @@ POV-Ray missing: a clear message and exit status 4.
 A renderer that fails (here povml, on an object it does not support yet) gives its message and
 exit status 3:
 
-  $ printf '#version 3.7;\njulia_fractal { <-0.083, 0.0, -0.83, -0.025> }\n' > julia.pov
-  $ povml check julia.pov
-  povml check: error: povml failed (exit status 1): julia.pov:2:1: error: not supported yet: 'julia_fractal'
+  $ printf '#version 3.7;\nisosurface { function { x } }\n' > iso.pov
+  $ povml check iso.pov
+  povml check: error: povml failed (exit status 1): iso.pov:2:1: error: not supported yet: 'isosurface'
   [3]
 
 Usage errors (exit status 2):

@@ -70,10 +70,10 @@ A zero plane normal is refused, as POV-Ray refuses it:
 
 Features of later versions are named:
 
-  $ printf 'julia_fractal { <-0.083, 0.0, -0.83, -0.025> }\n' > julia.pov
-  $ povml julia.pov +W10 +H10 -D
-  julia.pov:1:1: error: not supported yet: 'julia_fractal'
-      1 | julia_fractal { <-0.083, 0.0, -0.83, -0.025> }
+  $ printf 'isosurface { function { x } }\n' > iso.pov
+  $ povml iso.pov +W10 +H10 -D
+  iso.pov:1:1: error: not supported yet: 'isosurface'
+      1 | isosurface { function { x } }
         | ^
   [1]
 

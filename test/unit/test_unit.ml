@@ -29,6 +29,8 @@ let () =
       ("Blob", Test_blob.tests);
       ("Height field", Test_hfield.tests);
       ("Prism, lathe, sor", Test_spline.tests);
+      ("Julia fractal", Test_julia.tests);
+      ("Bicubic patch", Test_bezier.tests);
       ("UV coordinates and uv_mapping", Test_uv.tests);
       ("Sphere normal", Test_sphere_normal.tests);
       ("Text", Test_text.tests);

@@ -1,0 +1,54 @@
+(** The bicubic patch (POV-Ray's shape/bezier.cpp): a Bezier patch of 16 control points in world
+    space, cut into flat enough subpatches, each crossed as two triangles whose normal is
+    interpolated from the patch's own normals at their corners. Type 0 subdivides for every ray,
+    type 1 keeps the subdivision as a tree of bounding spheres. Flat: no inside. *)
+
+(** A node of the type 1 tree: a leaf holds a flat subpatch's corners P00, P03, P33, P30 and its
+    parameter range (single precision, as POV-Ray's uvbnds); every node its bounding sphere
+    (centre, squared radius). *)
+type node =
+  | Leaf of { lc : Vec.t; lr2 : float; corners : Vec.t array; u0 : float; u1 : float; v0 : float; v1 : float }
+  | Interior of { ic : Vec.t; ir2 : float; children : node array }
+
+type t = {
+  patch_type : int;  (** 0 or 1 *)
+  u_steps : int;
+  v_steps : int;  (** the most splits in u and in v *)
+  flatness : float;  (** a subpatch is flat when its control points are nearer than this to its plane *)
+  cp : Vec.t array;  (** P[i][j] at 4i + j, i with u, j with v *)
+  tree : node option;  (** type 1's tree (bezier_tree_builder); None for type 0 *)
+}
+
+val make : patch_type:int -> u_steps:int -> v_steps:int -> flatness:float -> Vec.t array -> t
+(** [make ~patch_type ~u_steps ~v_steps ~flatness cp] is the patch of the 16 points [cp], with its
+    tree built for type 1 (Precompute_Patch_Values). *)
+
+val patch_normal : t -> float -> float -> Vec.t
+(** [patch_normal b u v] is bezier_value's normal at (u, v): the unit cross product of the
+    tangents, or (1, 0, 0) where they are (nearly) parallel. *)
+
+val flatness_of : Vec.t array -> float
+(** [flatness_of p] is determine_subpatch_flatness of the 16 points [p]: the largest distance of
+    a point from the plane of three distinct corners, or −1 when there are none. *)
+
+val depth : Scratch.t -> t -> Vec.t -> Vec.t -> float -> float
+(** [depth w b o d lo] is the nearest crossing at least [lo] along the ray from [o] along the unit
+    [d] (of equal depths the last pushed), or infinity; every crossing is reported
+    (Scratch.report) with its normal; counted ("Bicubic Patch"). *)
+
+val hits : Scratch.t -> t -> int -> Vec.t -> Vec.t -> float -> int -> int
+(** [hits w b id o d lo n] pushes every crossing at least [lo] as a hit of the member [id], in
+    POV-Ray's order, reporting each; it is the new count. *)
+
+val hit_normal : Scratch.t -> Vec.t -> Vec.t
+(** [hit_normal w p] is the interpolated normal of the crossing reported at the point [p], or
+    (1, 0, 0) when none was. *)
+
+val bounds : t -> float array
+(** [bounds b] is the control points' box, lower then upper corner. *)
+
+val pov_box : t -> float array
+(** [pov_box b] is BicubicPatch::Compute_BBox: Make_BBox_from_min_max of the control points. *)
+
+val stats_rows : Stats.t -> Stats.row list
+(** [stats_rows s] is the "Bicubic Patch" row. *)
