@@ -362,43 +362,45 @@ let sturm w c i n y j =
     let atmin = numchanges w np 0. and atmax = numchanges w np max_distance in
     if atmin - atmax = 0 then 0 else sbisect w np 0. max_distance atmin atmax y j
 
-let solve w c n ~sturm:use_sturm ~eps roots =
+let solve_at w c o n ~sturm:use_sturm ~eps roots j =
   if n > max_order then invalid_arg "Polysolv.solve: degree above 35";
   (* the real degree: small leading coefficients dropped *)
-  let i = ref 0 in
-  while Float.abs c.(!i) < small_enough && !i < n do
+  let i = ref o in
+  while Float.abs c.(!i) < small_enough && !i - o < n do
     incr i
   done;
   let i = !i in
   w.eliminated <- false;
-  match n - i with
+  match n - (i - o) with
   | 0 -> 0
   | 1 ->
       if c.(i) <> 0. then begin
-        roots.(0) <- -.c.(i + 1) /. c.(i);
+        roots.(j) <- -.c.(i + 1) /. c.(i);
         1
       end
       else 0
-  | 2 -> quadratic c i roots 0
+  | 2 -> quadratic c i roots j
   | 3 ->
       (* root elimination: a constant term tiny against the linear one means a root at 0 *)
-      if eps > 0. && c.(i + 2) <> 0. && Float.abs (c.(i + 3) /. c.(i + 2)) < eps then (w.eliminated <- true; quadratic c i roots 0)
-      else if use_sturm then sturm w c i 3 roots 0
-      else cubic c i roots 0
+      if eps > 0. && c.(i + 2) <> 0. && Float.abs (c.(i + 3) /. c.(i + 2)) < eps then (w.eliminated <- true; quadratic c i roots j)
+      else if use_sturm then sturm w c i 3 roots j
+      else cubic c i roots j
   | 4 ->
       if eps > 0. && c.(i + 3) <> 0. && Float.abs (c.(i + 4) /. c.(i + 3)) < eps then begin
         w.eliminated <- true;
-        if use_sturm then sturm w c i 3 roots 0 else cubic c i roots 0
+        if use_sturm then sturm w c i 3 roots j else cubic c i roots j
       end
-      else if use_sturm || difficult c i then sturm w c i 4 roots 0
-      else quartic w c i roots 0
+      else if use_sturm || difficult c i then sturm w c i 4 roots j
+      else quartic w c i roots j
   | m ->
       (* above 4, always Sturm; a root at 0 is counted as eliminated but POV-Ray then solves the
          whole polynomial anyway, its lower-degree roots overwritten (kept: it is what it draws) *)
       if eps > 0. && c.(i + m - 1) <> 0. && Float.abs (c.(i + m) /. c.(i + m - 1)) < eps then begin
         w.eliminated <- true;
-        ignore (sturm w c i (m - 1) roots 0)
+        ignore (sturm w c i (m - 1) roots j)
       end;
-      sturm w c i m roots 0
+      sturm w c i m roots j
+
+let solve w c n ~sturm ~eps roots = solve_at w c 0 n ~sturm ~eps roots 0
 
 let eliminated w = w.eliminated

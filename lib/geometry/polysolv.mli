@@ -20,6 +20,10 @@ val solve : work -> float array -> int -> sturm:bool -> eps:float -> float array
     only counted as eliminated: POV-Ray solves the whole polynomial all the same). The roots are in
     POV-Ray's order, not sorted, and may repeat. Raises [Invalid_argument] for [n] > 35. *)
 
+val solve_at : work -> float array -> int -> int -> sturm:bool -> eps:float -> float array -> int -> int
+(** [solve_at w c o n ~sturm ~eps roots j] is [solve] of the polynomial whose coefficients start at
+    [c.(o)], its roots written from [roots.(j)]. *)
+
 val quadratic : float array -> int -> float array -> int -> int
 (** [quadratic x i y j] is POV-Ray's [solve_quadratic] of [x.(i)·t² + x.(i+1)·t + x.(i+2)]: the
     roots written from [y.(j)], their number returned (a discriminant within 1e-10 of 0 gives one

@@ -98,6 +98,7 @@ type shape =
   | Glyph of Glyph.t  (** §15.9: a text object's letter, always through its transform *)
   | Polygon of Polygon.t  (** §15.7, §14.5 (b): the outline in polygon space, placed by its transform *)
   | Quadric of Quadric.t  (** quadrics.cpp: in world space, the ray as it is *)
+  | Poly of Poly.t  (** poly.cpp: poly, cubic, quartic, through its transform; unbounded *)
 
 (** A CSG's members and how their hits are kept (§16.2, §16.3). *)
 and csg = {

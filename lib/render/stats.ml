@@ -38,6 +38,8 @@ type t = {
   mutable polygon_hits : int;
   mutable quadric_tests : int;
   mutable quadric_hits : int;
+  mutable poly_tests : int;
+  mutable poly_hits : int;
 }
 
 let create () =
@@ -48,6 +50,7 @@ let create () =
     csg_union_tests = 0; csg_union_hits = 0; csg_intersection_tests = 0; csg_intersection_hits = 0; csg_merge_tests = 0;
     csg_merge_hits = 0; ttf_tests = 0; ttf_hits = 0;
     polygon_tests = 0; polygon_hits = 0; quadric_tests = 0; quadric_hits = 0;
+    poly_tests = 0; poly_hits = 0;
   }
 
 let merge a b =
@@ -89,6 +92,8 @@ let merge a b =
     polygon_hits = a.polygon_hits + b.polygon_hits;
     quadric_tests = a.quadric_tests + b.quadric_tests;
     quadric_hits = a.quadric_hits + b.quadric_hits;
+    poly_tests = a.poly_tests + b.poly_tests;
+    poly_hits = a.poly_hits + b.poly_hits;
   }
 
 type row = { name : string; tests : int; hits : int }

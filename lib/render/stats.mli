@@ -38,6 +38,8 @@ type t = {
   mutable polygon_hits : int;  (** tests whose crossing is within the depth limits and the outline *)
   mutable quadric_tests : int;  (** quadrics tested *)
   mutable quadric_hits : int;  (** tests that found a root pair or a linear root, whatever its depth *)
+  mutable poly_tests : int;  (** polys, cubics and quartics tested *)
+  mutable poly_hits : int;  (** tests that found a root, whatever its depth *)
 }
 
 val create : unit -> t

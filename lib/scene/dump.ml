@@ -260,6 +260,9 @@ let rec shape = function
       Printf.sprintf "polygon { %d, %s // the points in its own plane%s%s" n (String.concat ", " (List.init n uv))
         (if degenerate then ", degenerate: never hit" else "")
         (trans (Some tr))
+  | Poly { order; coeffs; sturm; tr } ->
+      Printf.sprintf "poly { %d, <%s>%s%s" order (String.concat ", " (Array.to_list (Array.map num coeffs)))
+        (if sturm then " sturm" else "") (trans (Some tr))
   | Quadric q ->
       Printf.sprintf "quadric { <%s, %s, %s>, <%s, %s, %s>, <%s, %s, %s>, %s // box <%s, %s, %s> + <%s, %s, %s>" (num q.xx)
         (num q.yy) (num q.zz) (num q.xy) (num q.xz) (num q.yz) (num q.lx) (num q.ly) (num q.lz) (num q.k) (num q.box_llx)

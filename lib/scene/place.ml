@@ -149,6 +149,9 @@ let rec shape (s : Scene.shape) op : Scene.shape =
   | Polygon p ->
       (* §15.7, Polygon::Translate/Rotate/Scale all call Transform: composed into its Trans *)
       Polygon (Polygon.transform p (op_transform op))
+  | Poly p ->
+      (* Poly::Translate/Rotate/Scale all call Transform: composed into its Trans *)
+      Poly { p with tr = attach (Some p.tr) op }
   | Quadric q ->
       (* Quadric::Translate/Rotate/Scale all call Transform: the coefficients change *)
       Quadric (Quadric.transform q (op_transform op))
@@ -169,12 +172,12 @@ let scene ~scale ~translate (s : Scene.t) : Scene.t =
     let scaling =
       match o.shape with
       | Smooth_triangle _ -> Transform (Transform.scale sv)
-      | Sphere _ | Plane _ | Triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Csg _ | Glyph _ | Polygon _ | Quadric _ -> Scale sv
+      | Sphere _ | Plane _ | Triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Csg _ | Glyph _ | Polygon _ | Quadric _ | Poly _ -> Scale sv
     in
     let sh =
       match o.shape with
       | Csg { kind; members } -> Scene.Csg { kind; members = List.map (fun (m : Scene.member) -> { m with mobj = obj m.mobj }) members }
-      | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ ->
+      | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Poly _ ->
           shape (shape o.shape scaling) (Translate translate)
     in
     let texture = texture (texture o.texture (Scale sv)) (Translate translate) in

@@ -11,8 +11,8 @@ open Csg_build
 (* Objects povml does not render yet: inside a union they are reported as "not supported yet". *)
 let unsupported_objects =
   [ "prism"; "lathe"; "sor"; "blob"; "height_field";
-    "isosurface"; "superellipsoid"; "julia_fractal"; "parametric"; "bicubic_patch"; "ovus"; "cubic";
-    "quartic"; "poly"; "polynomial"; "sphere_sweep"; "lemon"; "composite" ]
+    "isosurface"; "superellipsoid"; "julia_fractal"; "parametric"; "bicubic_patch"; "ovus";
+    "sphere_sweep"; "lemon"; "composite" ]
 
 let show_vec (v : Vec.t) = Printf.sprintf "<%g, %g, %g>" v.x v.y v.z
 
@@ -131,6 +131,17 @@ let rec parse_object st : V.obj =
       let minor = parse_float st in
       let shape = Scene.Torus { major; minor; sturm = false; trans = Transform.identity } in
       parse_object_mods st (new_obj shape loc) "torus"
+  | Ident ("poly" | "cubic" | "quartic" | "polynomial" as kw) ->
+      advance st;
+      open_block st kw;
+      let shape =
+        match kw with
+        | "cubic" -> Shape_reader.poly st ~order:3
+        | "quartic" -> Shape_reader.poly st ~order:4
+        | "polynomial" -> Shape_reader.polynomial st
+        | _ -> Shape_reader.poly st ~order:0
+      in
+      parse_object_mods st (new_obj shape loc) kw
   | Ident ("polygon" | "quadric" as kw) ->
       advance st;
       open_block st kw;
@@ -258,6 +269,7 @@ and parse_object_mods st (o : V.obj) what : V.obj =
     | Ident "no_reflection" -> advance st; loop { o with no_reflection = parse_bool_opt st }
     | Ident "double_illuminate" -> advance st; loop (set_double_illuminate (parse_bool_opt st) o)
     | Ident "sturm" when is_torus o -> advance st; loop (set_sturm o)
+    | Ident "sturm" when is_poly o -> advance st; loop (set_poly_sturm (parse_bool_opt st) o)
     | Ident "hollow" -> advance st; ignore (parse_bool_opt st); loop o
     | Ident "inverse" -> advance st; loop (invert o)
     | Ident "split_union" -> (

@@ -21,6 +21,7 @@ type t = {
   roots : float array;
   depths : float array;
   quartic : Polysolv.work;
+  poly_room : float array;
 }
 
 let hit_width = 6
@@ -48,6 +49,7 @@ let create ~robust stats =
     roots = Array.make 4 0.;
     depths = Array.make 4 0.;
     quartic = Polysolv.create ();
+    poly_room = Array.make 512 0.;
   }
 
 let push_hit w n t part id px py pz =

@@ -31,6 +31,7 @@ type t = {
   roots : float array;  (** … its roots … *)
   depths : float array;  (** … and their world depths, unfiltered *)
   quartic : Polysolv.work;  (** the polynomial solver's room *)
+  poly_room : float array;  (** a poly's powers of the ray, its polynomial in t, roots and depths *)
 }
 
 val create : robust:bool -> Stats.t -> t
