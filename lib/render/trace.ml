@@ -116,7 +116,7 @@ and shade ctx ~reflected obj part depth ~level ~weight ~interiors (o : Vec.t) (d
   if not (1. > sc.adc_bailout) then black
   else
     (* the hit point P and its normal N, turned toward the ray (§3.1) *)
-    let p = Vec.madd o depth d in
+    let p = Shape.hit_point ctx.shapes obj o depth d in
     let p = if ctx.robust then Shape.refine obj p else p in
     let n = Shape.normal obj part p in
     let dn = Vec.dot n d in

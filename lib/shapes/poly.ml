@@ -88,7 +88,7 @@ let quadratic a x y z xx yy zz r =
    the binomial theorem and the three products summed into the polynomial in t (eqn.(0) the
    coefficient of t^order); then Solve_Polynomial on it from its first non-zero coefficient, when
    its degree is above 1. Counts "Roots tested" and "eliminated". *)
-let general (w : Scratch.t) p px py pz dx dy dz =
+let general (w : Scratch.t) ~count p px py pz dx dy dz =
   let r = w.poly_room and order = p.order and a = p.coeffs in
   for j = 0 to 2 do
     r.(at_v + (j * width)) <- 1.;
@@ -150,8 +150,10 @@ let general (w : Scratch.t) p px py pz dx dy dz =
   let deg = order - !i in
   if deg > 1 then begin
     let n = Polysolv.solve_at w.quartic r (at_eqn + !i) deg ~sturm:p.sturm ~eps:root_tolerance r at_roots in
-    w.stats.roots_tested <- w.stats.roots_tested + 1;
-    if Polysolv.eliminated w.quartic then w.stats.roots_eliminated <- w.stats.roots_eliminated + 1;
+    if count then begin
+      w.stats.roots_tested <- w.stats.roots_tested + 1;
+      if Polysolv.eliminated w.quartic then w.stats.roots_eliminated <- w.stats.roots_eliminated + 1
+    end;
     n
   end
   else 0
@@ -161,7 +163,7 @@ let general (w : Scratch.t) p px py pz dx dy dz =
    DEPTH_TOLERANCE (in poly space; none in the robust mode) that repeat no earlier root kept as
    world depths with their world points, from [at_depths] in fours (depth, x, y, z). Counted as
    POV-Ray counts it ("Quartic/Poly"). *)
-let crossings (w : Scratch.t) p (o : Vec.t) (d : Vec.t) =
+let solve (w : Scratch.t) ~count p (o : Vec.t) (d : Vec.t) =
   let m = p.tr and r = w.poly_room in
   let px = (o.x *. m.i00) +. (o.y *. m.i10) +. (o.z *. m.i20) +. m.i30 in
   let py = (o.x *. m.i01) +. (o.y *. m.i11) +. (o.z *. m.i21) +. m.i31 in
@@ -173,9 +175,9 @@ let crossings (w : Scratch.t) p (o : Vec.t) (d : Vec.t) =
   let k = 1.0 /. len in
   let dx = dx *. k and dy = dy *. k and dz = dz *. k in
   let stats = w.stats in
-  stats.poly_tests <- stats.poly_tests + 1;
-  let cnt = if p.order = 2 then quadratic p.coeffs px py pz dx dy dz r else general w p px py pz dx dy dz in
-  if cnt > 0 then stats.poly_hits <- stats.poly_hits + 1;
+  if count then stats.poly_tests <- stats.poly_tests + 1;
+  let cnt = if p.order = 2 then quadratic p.coeffs px py pz dx dy dz r else general w ~count p px py pz dx dy dz in
+  if count && cnt > 0 then stats.poly_hits <- stats.poly_hits + 1;
   let near = if w.robust then 0. else depth_tolerance in
   let kept = ref 0 in
   for i = 0 to cnt - 1 do
@@ -198,6 +200,19 @@ let crossings (w : Scratch.t) p (o : Vec.t) (d : Vec.t) =
     end
   done;
   !kept
+
+let crossings w p o d = solve w ~count:true p o d
+
+(* The hit point POV-Ray shades: the crossings found again (uncounted), the one at [depth] *)
+let hit_point (w : Scratch.t) p o d depth =
+  let n = solve w ~count:false p o d in
+  let r = w.poly_room in
+  let pt = ref (Vec.madd o depth d) in
+  for i = n - 1 downto 0 do
+    let b = at_depths + (4 * i) in
+    if r.(b) = depth then pt := Vec.make r.(b + 1) r.(b + 2) r.(b + 3)
+  done;
+  !pt
 
 let depth (w : Scratch.t) p o d lo =
   let n = crossings w p o d in

@@ -136,6 +136,13 @@ let geometric_normal obj part p =
   | Quadric _ | Poly _ | Csg _ ->
       normal obj part p
 
+let hit_point w obj o depth d =
+  match obj.shape with
+  | Poly pl -> Poly.hit_point w pl o d depth
+  | Sphere _ | Sphere_placed _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _
+  | Csg _ ->
+      Vec.madd o depth d
+
 let refine obj p =
   match obj.shape with
   | Sphere s | Sphere_placed { ps = s; _ } -> Sphere.refine s p

@@ -39,6 +39,11 @@ val uv : Compiled.obj -> int -> Vec.t -> Vec.t
     boxes, tori and meshes (their uv_vectors blended); every other shape has POV-Ray's default,
     the world point's x and y. *)
 
+val hit_point : Scratch.t -> Compiled.obj -> Vec.t -> float -> Vec.t -> Vec.t
+(** [hit_point w obj o depth d] is the point POV-Ray shades where the ray from [o] along [d] hits
+    the primitive [obj] at [depth]: [o + depth·d], except for a poly, whose point comes back from
+    its own space ([Poly.hit_point]). *)
+
 val refine : Compiled.obj -> Vec.t -> Vec.t
 (** [refine obj p] is the hit point [p] put back onto the surface where the shape allows it
     (spheres and ellipsoids), else [p]: the robust mode's hit points. *)
