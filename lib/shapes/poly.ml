@@ -202,6 +202,7 @@ let solve (w : Scratch.t) ~count p (o : Vec.t) (d : Vec.t) =
   !kept
 
 let crossings w p o d = solve w ~count:true p o d
+let crossing (w : Scratch.t) i = w.poly_room.(at_depths + (4 * i))
 
 (* The hit point POV-Ray shades: the crossings found again (uncounted), the one at [depth] *)
 let hit_point (w : Scratch.t) p o d depth =

@@ -39,6 +39,9 @@ val crossings : Scratch.t -> t -> Vec.t -> Vec.t -> int
     world points (the poly-space point mapped back by the transform) are left in the scratch's
     [poly_room]. Returns their number; counts "Quartic/Poly" and "Roots tested … eliminated". *)
 
+val crossing : Scratch.t -> int -> float
+(** [crossing w i] is the world depth of crossing [i] of the last [crossings] (or [depth], [hits]). *)
+
 val hit_point : Scratch.t -> t -> Vec.t -> Vec.t -> float -> Vec.t
 (** [hit_point w p o d depth] is the world point POV-Ray shades for the crossing at the world
     [depth] along the ray: the poly-space point mapped back by the transform, which can differ in

@@ -26,6 +26,7 @@ let () =
       ("Polygon", Test_polygon.tests);
       ("Polysolv", Test_polysolv.tests);
       ("Torus", Test_torus.tests);
+      ("Poly (poly, cubic, quartic)", Test_poly.tests);
       ("UV coordinates and uv_mapping", Test_uv.tests);
       ("Sphere normal", Test_sphere_normal.tests);
       ("Text", Test_text.tests);
