@@ -127,16 +127,31 @@ let general (w : Scratch.t) ~count p px py pz dx dy dz =
         if c <> 0. then begin
           expand 2 k;
           let offset = order - (i + j + k) in
+          (* one product c·t0·t1·t2 added into the coefficient of its power of t *)
+          let add i1 j1 k1 =
+            let h = at_eqn + offset + i1 + j1 + k1 in
+            let v = c *. r.(at_t + i1) in
+            let v = v *. r.(at_t + width + j1) in
+            let v = v *. r.(at_t + (2 * width) + k1) in
+            r.(h) <- r.(h) +. v
+          in
+          (* The order of the sums is that of POV-Ray's binary, not of its source: built with
+             -O3, GCC vectorizes the j1 loop as an outer loop over pairs (j1, j1 + 1), so for
+             each k1 the pair's two products are added one after the other, and an odd last j1
+             is done alone after the pairs. The sums then round differently (an ulp of a
+             coefficient, enough to move a grazing root: checked against POV-Ray's trace()). *)
           for i1 = 0 to i do
-            for j1 = 0 to j do
+            let pairs = (j + 1) / 2 in
+            for p = 0 to pairs - 1 do
               for k1 = 0 to k do
-                let h = at_eqn + offset + i1 + j1 + k1 in
-                let v = c *. r.(at_t + i1) in
-                let v = v *. r.(at_t + width + j1) in
-                let v = v *. r.(at_t + (2 * width) + k1) in
-                r.(h) <- r.(h) +. v
+                add i1 (2 * p) k1;
+                add i1 ((2 * p) + 1) k1
               done
-            done
+            done;
+            if (j + 1) mod 2 = 1 then
+              for k1 = 0 to k do
+                add i1 j k1
+              done
           done
         end;
         incr term

@@ -21,3 +21,10 @@ T("P2a", P2, <0.1, 0.2, -3>, <0, 0, 1>)
 T("P2b", P2, <2, 1.5, -1>, <-1, -0.8, 0.6>)
 T("P3a", P3, <0.3, 2, -0.4>, <0.1, -1, 0.2>)
 T("P4a", P4, <-2, 0.1, -0.1>, <1, 0.05, 0.02>)
+// a ray grazing the torus's tube, where the order of the sums in the expansion shows (POV-Ray's
+// binary adds them in GCC's vectorized order, see lib/shapes/poly.ml), without and with sturm
+#declare P5 = quartic { < 1, 0, 0, 0, 2, 0, 0, 2, 0, 2*K - 4*R2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0,
+  1, 0, 0, 2, 0, 2*K, 0, 0, 0, 0, 1, 0, 2*K - 4*R2, 0, K*K > }
+#declare P6 = object { P5 sturm }
+T("P5a", P5, <1.6, 5.613139720814413, -1.2777568135664554>, <-0.1361893369949414, -0.9591521508170833, 0.2479508339809358>)
+T("P6a", P6, <1.6, 5.613139720814413, -1.2777568135664554>, <-0.1361893369949414, -0.9591521508170833, 0.2479508339809358>)
