@@ -219,17 +219,35 @@ let scene (s : Scene.t) : Compiled.t =
   (* Objects are numbered in scene order, each CSG before its members (the numbering keeps the
      scene order of top-level objects, which decides ties without a bounding hierarchy). *)
   let next = ref 0 and built = ref [] in
-  let rec build ~top ~iid ~inverted (o : Scene.obj) : obj option =
+  let rec build ?(cache = -1) ?(wrapper = -1) ~top ~iid ~inverted (o : Scene.obj) : obj option =
     let id = !next in
+    (* POV-Ray's object of this node: its clipped_by and bounded_by wrappers are the node *)
+    let pov_object = if wrapper >= 0 then wrapper else id in
     let top = if top < 0 then id else top and iid = if iid < 0 then id else iid in
+    let rec union_core (o : Scene.obj) =
+      match o.shape with
+      | Csg { kind = Union; _ } -> true
+      | Csg { kind = Bounded | Boxed; members = m :: _ } -> union_core m.mobj
+      | _ -> false
+    in
     let shape =
       match o.shape with
       | Csg { kind; members } ->
           incr next;
+          let sets_csg =
+            match (kind, members) with
+            | (Intersection | Merge), _ -> true
+            | Clipped, m :: _ -> union_core m.mobj
+            | (Union | Clipped | Bounded | Boxed), _ -> false
+          in
+          let cache = if cache < 0 && sets_csg then pov_object else cache in
           let members =
-            List.filter_map
-              (fun (m : Scene.member) -> build ~top ~iid:(if m.own_interior then -1 else iid) ~inverted:m.inverted m.mobj)
+            List.mapi
+              (fun k (m : Scene.member) ->
+                let wrapper = match kind with (Clipped | Bounded | Boxed) when k = 0 -> pov_object | _ -> -1 in
+                build ~cache ~wrapper ~top ~iid:(if m.own_interior then -1 else iid) ~inverted:m.inverted m.mobj)
               members
+            |> List.filter_map Fun.id
           in
           let members = Array.of_list members in
           Some (Csg { kind; members; cbox = Shape.pov_box (Csg { kind; members; cbox = [||] }) })
@@ -242,9 +260,14 @@ let scene (s : Scene.t) : Compiled.t =
     match shape with
     | None -> None
     | Some shape ->
-        let tex = texture_of o.texture in
+        (* a blob whose components carry textures is textured by their blend (Cutaway's path,
+           Surfaces.cutaway): its own texture comes last among the components' *)
+        let blended = match shape with Blob b -> b.textured | _ -> false in
+        let tex = if blended then Compiled.Cutaway else texture_of o.texture in
         (* a mesh's faces may carry textures of their own; no other shape has any *)
-        let face_textures = match o.shape with Mesh m -> m.textures | _ -> [||] in
+        let face_textures =
+          match o.shape with Mesh m -> m.textures | Blob b when blended -> Array.append b.textures [| o.texture |] | _ -> [||]
+        in
         let face_texs = Array.map texture_of face_textures in
         let opaque =
           match shape with
@@ -261,10 +284,11 @@ let scene (s : Scene.t) : Compiled.t =
             id;
             iid;
             top;
+            cache = (if cache >= 0 then cache else pov_object);
             inverted;
             shape;
             tex;
-            inner_tex = Option.map texture_of o.interior_texture;
+            inner_tex = (if blended then None (* Determine_Textures has no interior texture *) else Option.map texture_of o.interior_texture);
             face_texs;
             clear;
             uv_mapped = o.uv_mapped;

@@ -98,6 +98,7 @@ type shape =
   | Glyph of Glyph.t  (** §15.9: a text object's letter, always through its transform *)
   | Polygon of Polygon.t  (** §15.7, §14.5 (b): the outline in polygon space, placed by its transform *)
   | Quadric of Quadric.t  (** quadrics.cpp: in world space, the ray as it is *)
+  | Blob of Blob.compiled  (** shape/blob.cpp: in blob space, through its transform if it has one *)
   | Poly of Poly.t  (** poly.cpp: poly, cubic, quartic, through its transform; unbounded *)
 
 (** A CSG's members and how their hits are kept (§16.2, §16.3). *)
@@ -115,6 +116,12 @@ and obj = {
           shares its parent's interior the parent's [iid] (§16.5). [t.objects.(iid)] carries
           that interior's values. *)
   top : int;  (** the id of the top-level object it belongs to (its own id at top level) *)
+  cache : int;
+      (** the object the shadow cache keeps when this primitive stops a shadow ray (POV-Ray's
+          Intersection.Csg, else the primitive): its outermost enclosing intersection, merge or
+          clipped union, else itself; a top-level primitive whose bounding objects were removed
+          and whose own box test POV-Ray keeps (not a sphere, box, plane or triangle) is kept
+          with its box *)
   inverted : bool;  (** a CSG member whose Inside is negated (§16.3) *)
   shape : shape;
   tex : texture;  (** the object's own texture *)

@@ -13,6 +13,7 @@ let member ~inverted shape =
     id = 0;
     iid = 0;
     top = 0;
+    cache = 0;
     inverted;
     shape;
     tex = Plain no_surface;
@@ -41,7 +42,7 @@ let rec shape (s : Scene.shape) : Compiled.shape option =
         List.filter_map (fun (m : Scene.member) -> Option.map (member ~inverted:m.inverted) (shape m.mobj.shape)) members
       in
       Some (Csg { kind; members = Array.of_list members; cbox = [||] })
-  | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Polygon _ | Quadric _ | Glyph _ | Poly _ ->
+  | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Polygon _ | Quadric _ | Glyph _ | Poly _ | Blob _ ->
       Shape.compile s
 
 let of_object (o : Scene.obj) =

@@ -141,9 +141,10 @@ let rec walk ctx ~slot (p : Vec.t) (lp : Vec.t) lo first (o : Vec.t) (l : Vec.t)
   else
     let obj = sc.objects.(i) in
     if obj.opaque then begin
-      (* the cache holds the top-level object (a CSG, not its member), and a CSG only when
-         its own texture is opaque: POV-Ray tests the OPAQUE flag of Intersection.Csg *)
-      if first && not sc.objects.(obj.top).clear then ctx.shadow_cache.(slot) <- obj.top;
+      (* the cache holds POV-Ray's Intersection.Csg (the outermost intersection, merge or
+         clipped union around the member), else the primitive, and a CSG only when its own
+         texture is opaque: POV-Ray tests the OPAQUE flag of that object *)
+      if first && not sc.objects.(obj.cache).clear then ctx.shadow_cache.(slot) <- obj.cache;
       Rgb.black
     end
     else
@@ -199,7 +200,7 @@ let feeler ctx ~slot (p : Vec.t) (ng : Vec.t) e (l : Vec.t) dist interiors (lc :
           &&
           let shape = sc.objects.(cached).shape in
           (if ctx.robust then Shape.depth ctx.shapes shape o l lo < dist -. robust_margin p lp dist
-           else Shape.depth ctx.shapes shape p l Precision.min_isect_depth < dist)
+           else Shape.cached_depth ctx.shapes shape p l Precision.min_isect_depth < dist)
           (* a cached CSG shadows only if the member hit is opaque *)
           && ((not (Csg.is_csg shape)) || sc.objects.(ctx.shapes.leaf).opaque)
         in

@@ -38,6 +38,14 @@ type t = {
   mutable polygon_hits : int;
   mutable quadric_tests : int;
   mutable quadric_hits : int;
+  mutable bound_tests : int;
+  mutable bound_hits : int;
+  mutable blob_tests : int;
+  mutable blob_hits : int;
+  mutable blob_element_tests : int;
+  mutable blob_element_hits : int;
+  mutable blob_bound_tests : int;
+  mutable blob_bound_hits : int;
   mutable poly_tests : int;
   mutable poly_hits : int;
 }
@@ -50,6 +58,8 @@ let create () =
     csg_union_tests = 0; csg_union_hits = 0; csg_intersection_tests = 0; csg_intersection_hits = 0; csg_merge_tests = 0;
     csg_merge_hits = 0; ttf_tests = 0; ttf_hits = 0;
     polygon_tests = 0; polygon_hits = 0; quadric_tests = 0; quadric_hits = 0;
+    bound_tests = 0; bound_hits = 0;
+    blob_tests = 0; blob_hits = 0; blob_element_tests = 0; blob_element_hits = 0; blob_bound_tests = 0; blob_bound_hits = 0;
     poly_tests = 0; poly_hits = 0;
   }
 
@@ -92,6 +102,14 @@ let merge a b =
     polygon_hits = a.polygon_hits + b.polygon_hits;
     quadric_tests = a.quadric_tests + b.quadric_tests;
     quadric_hits = a.quadric_hits + b.quadric_hits;
+    bound_tests = a.bound_tests + b.bound_tests;
+    bound_hits = a.bound_hits + b.bound_hits;
+    blob_tests = a.blob_tests + b.blob_tests;
+    blob_hits = a.blob_hits + b.blob_hits;
+    blob_element_tests = a.blob_element_tests + b.blob_element_tests;
+    blob_element_hits = a.blob_element_hits + b.blob_element_hits;
+    blob_bound_tests = a.blob_bound_tests + b.blob_bound_tests;
+    blob_bound_hits = a.blob_bound_hits + b.blob_bound_hits;
     poly_tests = a.poly_tests + b.poly_tests;
     poly_hits = a.poly_hits + b.poly_hits;
   }

@@ -35,4 +35,10 @@ let rec around_point stack (c : Compiled.obj) (p : Vec.t) : (float * Compiled.te
       List.map (fun (_, t) -> (w, t)) found
   | _ -> []
 
-let cutaway stack (sc : Compiled.t) (obj : Compiled.obj) p = around_point stack sc.objects.(obj.top) p
+let cutaway stack (sc : Compiled.t) (obj : Compiled.obj) p =
+  match obj.shape with
+  | Blob b ->
+      (* Blob::Determine_Textures: the components' own textures, the blob's (last) for the others *)
+      let own = Array.length obj.face_texs - 1 in
+      List.map (fun (w, t) -> (w, obj.face_texs.(if t < 0 then own else t))) (Blob.weights b p)
+  | _ -> around_point stack sc.objects.(obj.top) p

@@ -20,4 +20,7 @@ val cutaway : float array -> Compiled.t -> Compiled.obj -> Vec.t -> (float * Com
 (** [cutaway stack sc obj p] is what a member [obj] with a [Cutaway] texture shows at [p] (POV-Ray's
     Determine_Textures on the hit's top-level CSG): the textures of the members [p] lies in, in
     member order, a CSG member's found the same way, each weighed 1/n for the n found at its level;
-    in a difference only its first member's. [stack] is traversal room for the Inside tests. *)
+    in a difference only its first member's. [stack] is traversal room for the Inside tests. A
+    blob with textured components has a [Cutaway] texture too: its components' textures (the
+    blob's own, the last of [obj.face_texs], for those without one) weighed by their fields at
+    [p] (Blob::Determine_Textures). *)

@@ -267,6 +267,10 @@ let rec shape = function
       Printf.sprintf "quadric { <%s, %s, %s>, <%s, %s, %s>, <%s, %s, %s>, %s // box <%s, %s, %s> + <%s, %s, %s>" (num q.xx)
         (num q.yy) (num q.zz) (num q.xy) (num q.xz) (num q.yz) (num q.lx) (num q.ly) (num q.lz) (num q.k) (num q.box_llx)
         (num q.box_lly) (num q.box_llz) (num q.box_lenx) (num q.box_leny) (num q.box_lenz)
+  | Blob { blob; textures } ->
+      Printf.sprintf "%s%s%s" (Blob.describe num vec matrix blob)
+        (if Array.length textures > 0 then Printf.sprintf "\n  // %d component textures" (Array.length textures) else "")
+        (trans blob.trans)
   | Csg { kind; members } ->
       let member (m : member) =
         String.concat "\n  " (String.split_on_char '\n' (String.trim (obj m.mobj)))
@@ -274,7 +278,7 @@ let rec shape = function
         ^ if m.own_interior then "" else " shared interior"
       in
       Printf.sprintf "%s {\n  %s"
-        (match kind with Union -> "union" | Merge -> "merge" | Intersection -> "intersection" | Clipped -> "clipped (the first by the others)")
+        (match kind with Union -> "union" | Merge -> "merge" | Intersection -> "intersection" | Clipped -> "clipped (the first by the others)" | Bounded -> "bounded (the first by the others)" | Boxed -> "boxed (the first within the others' box)")
         (String.concat "\n  " (List.map member members))
 
 and obj (o : obj) =

@@ -155,6 +155,10 @@ let rec shape (s : Scene.shape) op : Scene.shape =
   | Quadric q ->
       (* Quadric::Translate/Rotate/Scale all call Transform: the coefficients change *)
       Quadric (Quadric.transform q (op_transform op))
+  | Blob { blob; textures } ->
+      (* Blob::Translate/Rotate/Scale all call Transform: composed into its Trans (a box already
+         set up is mapped), the components' own textures moved with it *)
+      Blob { blob = Blob.transform blob (op_transform op); textures = Array.map (fun t -> texture t op) textures }
   | Csg { kind; members } ->
       (* §16: a CSG's transform moves every member *)
       Csg { kind; members = List.map (fun (m : Scene.member) -> { m with mobj = { m.mobj with shape = shape m.mobj.shape op; texture = texture m.mobj.texture op } }) members }
@@ -172,12 +176,12 @@ let scene ~scale ~translate (s : Scene.t) : Scene.t =
     let scaling =
       match o.shape with
       | Smooth_triangle _ -> Transform (Transform.scale sv)
-      | Sphere _ | Plane _ | Triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Csg _ | Glyph _ | Polygon _ | Quadric _ | Poly _ -> Scale sv
+      | Sphere _ | Plane _ | Triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Csg _ | Glyph _ | Polygon _ | Quadric _ | Poly _ | Blob _ -> Scale sv
     in
     let sh =
       match o.shape with
       | Csg { kind; members } -> Scene.Csg { kind; members = List.map (fun (m : Scene.member) -> { m with mobj = obj m.mobj }) members }
-      | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Poly _ ->
+      | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Poly _ | Blob _ ->
           shape (shape o.shape scaling) (Translate translate)
     in
     let texture = texture (texture o.texture (Scale sv)) (Translate translate) in

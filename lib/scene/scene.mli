@@ -357,6 +357,10 @@ type shape =
   | Quadric of Quadric.t
       (** quadrics.cpp: in world space; every modifier transforms its coefficients and maps its
           box, [inverse] negates the coefficients (and sets [inverted], as POV-Ray's flag) *)
+  | Blob of { blob : Blob.t; textures : texture array }
+      (** shape/blob.cpp: the components as parsed and moved, the last written first, mapped by
+          the blob's transform; [textures] are the components' own textures, which a
+          component's [tex] indexes *)
   | Csg of { kind : csg_kind; members : member list }
       (** §16: a CSG kept whole (a merge, an intersection or difference, a union with
           [split_union off]); its members are already moved by its transforms and carry the
@@ -369,8 +373,12 @@ type shape =
 (** The kinds of CSG after parsing: a difference is an intersection whose later members are
     inverted, and an inverted CSG has been morphed (§16.1, §16.3). [Clipped] is an object with
     [clipped_by]: its first member is the object, the others the clip objects, whose surfaces are
-    not seen; the object's hits are kept inside every clip object (§15.8). *)
-and csg_kind = Union | Merge | Intersection | Clipped
+    not seen; the object's hits are kept inside every clip object (§15.8). [Bounded] is an object
+    with [bounded_by]: its first member is the object, the others the bounding objects, whose
+    surfaces are not seen; a ray meets the object only if it meets every bounding object or starts
+    inside it (Ray_In_Bound). [Boxed] is one whose bounding objects POV-Ray removed (a top-level
+    primitive, Link_To_Frame): only their box is left, the object's box when it is the smaller. *)
+and csg_kind = Union | Merge | Intersection | Clipped | Bounded | Boxed
 
 (** A member of a CSG. *)
 and member = {

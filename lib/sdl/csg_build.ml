@@ -10,17 +10,18 @@ open Reader
 let rec invert (o : V.obj) : V.obj =
   match o.shape with
   | Prim (Plane { normal; offset; trans }) -> { o with shape = Prim (Plane { normal = Vec.neg normal; offset = -.offset; trans }) }
-  | Prim (Sphere _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Csg _ | Glyph _) -> { o with inverted = not o.inverted }
+  | Prim (Sphere _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Csg _ | Glyph _ | Blob _) -> { o with inverted = not o.inverted }
   | Prim (Poly _) -> { o with inverted = not o.inverted } (* Poly::Invert toggles its flag *)
   | Prim (Polygon _) -> o (* Polygon::Invert does nothing, not even the flag *)
   | Prim (Quadric q) -> { o with shape = Prim (Quadric (Quadric.invert q)); inverted = not o.inverted }
   | Csg { members; _ } when List.for_all (function V.Member_light _ -> true | V.Member_obj _ -> false) members ->
       o (* lights only (a light in object position): nothing to invert *)
-  | Csg { kind = Clipped; members = V.Member_obj c :: clips; split } ->
-      (* the object is inverted, its clip objects are not *)
-      { o with shape = Csg { kind = Clipped; members = V.Member_obj (invert c) :: clips; split } }
-  | Csg { kind = (Union | Merge | Intersection | Clipped) as kind; members; split } ->
-      let kind : Scene.csg_kind = match kind with Union | Merge -> Intersection | Intersection | Clipped -> Merge in
+  | Csg { kind = (Clipped | Bounded | Boxed) as kind; members = V.Member_obj c :: clips; split } ->
+      (* the object is inverted, its clip or bounding objects are not; the flag (POV-Ray's, on
+         the object) leaves it out of an enclosing intersection's box *)
+      { o with shape = Csg { kind; members = V.Member_obj (invert c) :: clips; split }; inverted = not o.inverted }
+  | Csg { kind = (Union | Merge | Intersection | Clipped | Bounded | Boxed) as kind; members; split } ->
+      let kind : Scene.csg_kind = match kind with Union | Merge -> Intersection | Intersection | Clipped | Bounded | Boxed -> Merge in
       let members = List.map (function V.Member_obj c -> V.Member_obj (invert c) | V.Member_light _ as l -> l) members in
       (* the CSG keeps an inverted flag too: an enclosing intersection leaves it out of its box *)
       { o with shape = Csg { kind; members; split }; inverted = not o.inverted }
@@ -118,15 +119,77 @@ let rec kept_obj st ~texture ~cut_parent ?interior_texture ~interior (o : V.obj)
       (* §16.4: a union whose members all have no_shadow has it too *)
       let no_shadow =
         o.no_shadow
-        || (match kind with Union -> members <> [] && List.for_all (fun (m : Scene.member) -> m.mobj.no_shadow) members | Merge | Intersection | Clipped -> false)
+        || (match kind with Union -> members <> [] && List.for_all (fun (m : Scene.member) -> m.mobj.no_shadow) members | Merge | Intersection | Clipped | Bounded | Boxed -> false)
       in
       scene_obj o ~no_shadow ~interior_texture (Csg { kind; members }) shown interior
+
+(* The object under its clipped_by and bounded_by wrappers: what POV-Ray's object is. *)
+let rec core (o : V.obj) =
+  match o.shape with Csg { kind = Clipped | Bounded | Boxed; members = V.Member_obj c :: _; _ } -> core c | Prim _ | Csg _ -> o
+
+(* The clip or bounding objects of [o]: the members after the first of its wrapper of [kind],
+   looked for through its other wrappers. *)
+let rec wrapped kind (o : V.obj) =
+  match o.shape with
+  | Csg { kind = k; members = _ :: rest; _ } when k = kind -> rest
+  | Csg { kind = Clipped | Bounded | Boxed; members = V.Member_obj c :: _; _ } -> wrapped kind c
+  | Prim _ | Csg _ -> []
+
+let clip_objects o = wrapped Scene.Clipped o
+let bound_objects o = wrapped Scene.Bounded o
+
+let wrap kind (o : V.obj) objs =
+  if objs = [] then o
+  else
+    match o.shape with
+    | Csg { kind = k; members; split } when k = kind -> { o with shape = Csg { kind; members = members @ objs; split } }
+    | Prim _ | Csg _ ->
+        let inner = { o with texture = None; interior = None; no_shadow = false; linked = false } in
+        { o with shape = Csg { kind; members = V.Member_obj inner :: objs; split = false }; inverted = false }
+
+(* PATCH_OBJECT, which CSG inherits from its members: a shape without an inside (a triangle, a
+   mesh without inside_vector) *)
+let rec patch (o : V.obj) =
+  match o.shape with
+  | Prim (Triangle _ | Smooth_triangle _) -> true
+  | Prim (Mesh { mesh; _ }) -> mesh.inside_vector = None
+  | Prim _ -> false
+  | Csg { members; _ } -> List.exists (function V.Member_obj c -> patch c | V.Member_light _ -> false) members
+
+(* Link_To_Frame keeps the bounding objects of a top-level union, intersection or merge (a text
+   object is a union of its letters), of an infinite quadric (one without Automatic_Bounds) and of
+   [poly]; any other object's are removed with a warning, their box staying the object's box. *)
+let bounds_kept (o : V.obj) =
+  match (core o).shape with
+  | Csg { kind = Union | Merge | Intersection; _ } -> true
+  | Prim (Quadric q) -> q.box_lenx >= 2e10 || q.box_leny >= 2e10 || q.box_lenz >= 2e10
+  | Csg { kind = Clipped | Bounded | Boxed; _ } | Prim _ -> false
+
+let rec unbound st (o : V.obj) : V.obj =
+  match o.shape with
+  | Csg { kind = Bounded; members = V.Member_obj c :: bs; split } when not (bounds_kept c) ->
+      warn st o.oloc "Unnecessary bounding object removed.";
+      { o with shape = Csg { kind = Boxed; members = V.Member_obj (unbound st c) :: bs; split } }
+  | Csg { kind = (Clipped | Bounded) as kind; members = V.Member_obj c :: rest; split } ->
+      { o with shape = Csg { kind; members = V.Member_obj (unbound st c) :: rest; split } }
+  | Prim _ | Csg _ -> o
+
+(* A finite union's box: its members' boxes are all finite (no plane, no infinite quadric) *)
+let rec finite (o : V.obj) =
+  match o.shape with
+  | Prim (Plane _) -> false
+  | Prim (Quadric q) -> q.box_lenx < 2e10 && q.box_leny < 2e10 && q.box_lenz < 2e10
+  | Prim _ -> true
+  | Csg { kind = Union | Merge; members; _ } -> List.for_all (function V.Member_obj c -> finite c | V.Member_light _ -> true) members
+  | Csg { kind = Intersection | Clipped | Bounded | Boxed; members; _ } ->
+      List.exists (function V.Member_obj c -> finite c | V.Member_light _ -> false) members
 
 (* An object entering the scene (§16.4, §16.5): a union that may be split is dissolved, its members
    without a texture or interior take the union's, and its no_shadow goes to every member; its
    lights join the scene's. Another CSG enters whole. An inverted primitive enters as an
    intersection of itself alone, which has the same surface and the negated Inside (§16.3). *)
 let rec add_object st (o : V.obj) =
+  let o = unbound st o in
   match o.shape with
   | Prim shape when not o.inverted ->
       count_object st o.oloc;
@@ -155,7 +218,11 @@ let rec add_object st (o : V.obj) =
                   looks_like = c.looks_like || o.looks_like;
                 })
         ms
-  | Csg { kind = Union | Merge | Intersection | Clipped; members = _; split = _ } ->
+  | Csg { kind = Union | Merge | Intersection | Clipped | Bounded | Boxed; members = _; split = _ } ->
+      (match o.shape with
+      | Csg { kind = Bounded; members = V.Member_obj ({ shape = Csg { kind = Union; members = ms; _ }; _ } as u) :: _; _ } when finite u && ms <> [] ->
+          warn st o.oloc "CSG union unnecessarily bounded."
+      | Prim _ | Csg _ -> ());
       count_object st o.oloc;
       let _, interior = resolved st o in
       let obj = kept_obj st ~texture:None ~cut_parent:false ~interior o in

@@ -153,9 +153,10 @@ let parse_index st (a : V.array_v) =
 
 (* Where #declare and #local write (§11.3): an existing identifier is changed where it is found (the
    innermost table that has it), a new one goes to the global table for #declare and to the current
-   table (file or macro) for #local. *)
-let assign st ~local name value =
-  let current = List.hd st.tables in
+   table (file or macro) for #local: the table current when the declaration began, since a macro
+   that gives the value ends only after it (#local V = M(); where M's body ends in #if … #end). *)
+let assign ?(current = []) st ~local name value =
+  let current = match current with t :: _ -> t | [] -> List.hd st.tables in
   match (local, lookup_cell st name) with
   | true, _ -> (
       match Names.find_opt current name with Some c -> c := value | None -> Names.replace current name (ref value))
@@ -209,7 +210,8 @@ let parse_declare st ~local dloc =
   expect st Eq (Printf.sprintf "'=' after '%s'" name);
   let d0 = st.depth and p0 = st.parens in
   let in_main = List.length st.frames = 1 in
-  let store value = match target with `Name s -> assign st ~local s value | `Element (_, a, i) -> a.cells.(i) <- Some value in
+  let tables = st.tables in
+  let store value = match target with `Name s -> assign ~current:tables st ~local s value | `Element (_, a, i) -> a.cells.(i) <- Some value in
   let value, needs_semi =
     try parse_rvalue ~store st
     with Unsupported (l, what, _) ->

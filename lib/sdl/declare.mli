@@ -9,8 +9,9 @@ val parse_rvalue : ?store:(Value.t -> unit) -> Reader.st -> Value.t * bool
 val parse_index : Reader.st -> Value.array_v -> int
 (** [parse_index st a] reads the subscripts of an element of [a] as a row-major index. *)
 
-val assign : Reader.st -> local:bool -> string -> Value.t -> unit
-(** [assign st ~local name v] stores [v] as #local or #declare do. *)
+val assign : ?current:Value.t ref Reader.Names.t list -> Reader.st -> local:bool -> string -> Value.t -> unit
+(** [assign st ~local name v] stores [v] as #local or #declare do; a new #local goes to the head of
+    [current] (the tables when the declaration began), by default the current table. *)
 
 val parse_declare : Reader.st -> local:bool -> Loc.t -> unit
 (** [parse_declare st ~local loc] reads and runs a #declare or #local. *)

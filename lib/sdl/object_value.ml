@@ -19,6 +19,7 @@ let new_obj_of shape loc =
     double_illuminate = false;
     looks_like = false;
     inverted = false;
+    linked = false;
   }
 
 let new_obj shape loc = new_obj_of (V.Prim shape) loc

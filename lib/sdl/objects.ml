@@ -10,7 +10,7 @@ open Csg_build
 
 (* Objects povml does not render yet: inside a union they are reported as "not supported yet". *)
 let unsupported_objects =
-  [ "prism"; "lathe"; "sor"; "blob"; "height_field";
+  [ "prism"; "lathe"; "sor"; "height_field";
     "isosurface"; "superellipsoid"; "julia_fractal"; "parametric"; "bicubic_patch"; "ovus";
     "sphere_sweep"; "lemon"; "composite" ]
 
@@ -131,6 +131,19 @@ let rec parse_object st : V.obj =
       let minor = parse_float st in
       let shape = Scene.Torus { major; minor; sturm = false; trans = Transform.identity } in
       parse_object_mods st (new_obj shape loc) "torus"
+  | Ident "blob" ->
+      (* Parse_Blob: threshold and components, then the object's modifiers, then Make_Blob *)
+      advance st;
+      open_block st "blob";
+      (match peek st with
+      | Ident s when (match cur_value st s with Some (V.Object _) -> true | _ -> false) -> (
+          (* Parse_Object_Id: an object identifier first makes it object { … } *)
+          match cur_value st s with
+          | Some (V.Object o) -> advance st; parse_object_mods st { o with oloc = loc } "blob"
+          | _ -> unexpected st "an object identifier")
+      | _ ->
+          let shape = Blob_reader.parse st in
+          Blob_reader.finish (parse_object_mods st (new_obj shape loc) "blob"))
   | Ident ("poly" | "cubic" | "quartic" | "polynomial" as kw) ->
       advance st;
       open_block st kw;
@@ -242,9 +255,9 @@ and parse_object_mods st (o : V.obj) what : V.obj =
     | Ident "texture" -> advance st; loop { o with texture = Some (Texture_reader.link st loc o.texture (Texture_reader.parse st)) }
     | Ident "cutaway_textures" ->
         advance st;
-        (match o.shape with
+        (match (core o).shape with
         | Csg { kind = Intersection; _ } -> ()
-        | Csg { kind = Union | Merge | Clipped; _ } | Prim _ -> Error.raise_at loc "cutaway_textures can only be used with intersection and difference");
+        | Csg { kind = Union | Merge | Clipped | Bounded | Boxed; _ } | Prim _ -> Error.raise_at loc "cutaway_textures can only be used with intersection and difference");
         loop { o with cutaway = true }
     | Ident "uv_mapping" ->
         advance st;
@@ -269,41 +282,60 @@ and parse_object_mods st (o : V.obj) what : V.obj =
     | Ident "no_reflection" -> advance st; loop { o with no_reflection = parse_bool_opt st }
     | Ident "double_illuminate" -> advance st; loop (set_double_illuminate (parse_bool_opt st) o)
     | Ident "sturm" when is_torus o -> advance st; loop (set_sturm o)
+    | Ident "sturm" when Blob_reader.is_blob o ->
+        (* Allow_Float(1.0) > 0.0 *)
+        advance st;
+        loop (Blob_reader.set_sturm ((not (float_follows st)) || parse_float st > 0.) o)
     | Ident "sturm" when is_poly o -> advance st; loop (set_poly_sturm (parse_bool_opt st) o)
     | Ident "hollow" -> advance st; ignore (parse_bool_opt st); loop o
     | Ident "inverse" -> advance st; loop (invert o)
     | Ident "split_union" -> (
         advance st;
-        let on = parse_bool_opt st in
+        let on = (not (float_follows st)) || parse_float st > 0. (* Allow_Float(1.0) > 0.0 *) in
         (* §16.4: only a union is ever split; POV-Ray accepts the keyword on a merge (a kind of
            union to it) without effect and stops on any other object *)
         match o.shape with
         | Csg ({ kind = Union; _ } as c) -> loop { o with shape = Csg { c with split = on } }
-        | Csg { kind = Merge; _ } | Csg { kind = Clipped; members = V.Member_obj { shape = Csg { kind = Union | Merge; _ }; _ } :: _; _ } ->
-            loop o (* a merge, or a clipped union, is never split *)
-        | Csg { kind = Intersection | Clipped; _ } | Prim _ -> Error.raise_at loc "split_union found in a non-union object")
+        | Csg { kind = Merge; _ } | Csg { kind = Clipped | Bounded | Boxed; members = V.Member_obj { shape = Csg { kind = Union | Merge; _ }; _ } :: _; _ } ->
+            loop o (* a merge, or a clipped or bounded union, is never split *)
+        | Csg { kind = Intersection | Clipped | Bounded | Boxed; _ } | Prim _ -> Error.raise_at loc "split_union found in a non-union object")
     | Ident "clipped_by" ->
         (* §15.8: clipped_by { OBJECT … }: the object's hits are kept inside every clip object, and
            so is its Inside. The clip objects move with the object's later transforms; its
-           texture, interior and flags stay on the clipped object. *)
+           texture, interior and flags stay on the clipped object. [clipped_by { bounded_by }]
+           clips by the bounding objects. *)
         advance st;
         open_block st "clipped_by";
-        let rec clips acc =
+        if o.linked && clip_objects o <> [] then Error.raise_at loc "Cannot add clips after linking bounds and clips.";
+        let cl, linked =
           match peek st with
-          | Ident "bounded_by" -> not_supported (peek_loc st) "'clipped_by { bounded_by }'"
-          | _ when object_follows st -> clips (V.Member_obj (parse_object st) :: acc)
-          | _ -> List.rev acc
+          | Ident "bounded_by" ->
+              let bloc = peek_loc st in
+              advance st;
+              if clip_objects o <> [] then Error.raise_at bloc "Cannot link bounds with previous clips.";
+              (bound_objects o, true)
+          | _ -> (nest st loc (fun () -> bound_clip st "clipped_by"), false)
         in
-        let cl = nest st loc (fun () -> clips []) in
-        if cl = [] then unexpected st "an object in clipped_by";
         close_block st "clipped_by";
-        let members =
-          match o.shape with
-          | Csg { kind = Clipped; members; _ } -> members @ cl
-          | Csg { kind = Union | Merge | Intersection; _ } | Prim _ ->
-              V.Member_obj { o with texture = None; interior = None; no_shadow = false } :: cl
+        loop { (wrap Clipped o cl) with linked = o.linked || linked }
+    | Ident "bounded_by" ->
+        (* bounded_by { OBJECT … }: a ray meets the object only if it meets every bounding object
+           or starts inside one (Ray_In_Bound), and their box is the object's when it is the
+           smaller; [bounded_by { clipped_by }] bounds by the clip objects *)
+        advance st;
+        open_block st "bounded_by";
+        if o.linked && bound_objects o <> [] then Error.raise_at loc "Cannot add bounds after linking bounds and clips.";
+        let bs, linked =
+          match peek st with
+          | Ident "clipped_by" ->
+              let cloc = peek_loc st in
+              advance st;
+              if bound_objects o <> [] then Error.raise_at cloc "Cannot link clips with previous bounds.";
+              (clip_objects o, true)
+          | _ -> (nest st loc (fun () -> bound_clip st "bounded_by"), false)
         in
-        loop { o with shape = Csg { kind = Clipped; members; split = false }; inverted = false }
+        close_block st "bounded_by";
+        loop { (wrap Bounded o bs) with linked = o.linked || linked }
     (* What only photon mapping or radiosity reads, which are off unless global_settings turns
        them on (and povml refuses that there): read as POV-Ray reads it (Parse_Object_Mods), and
        nothing changes (trace.cpp tests photonsEnabled before any photon flag). *)
@@ -326,11 +358,13 @@ and parse_object_mods st (o : V.obj) what : V.obj =
         loop o
     | Ident "no_radiosity" -> advance st; ignore (parse_bool_opt st); loop o
     | Ident "hierarchy" -> (
-        (* a mesh's own bounding hierarchy, which only changes how fast it is traced *)
+        (* a mesh's own bounding hierarchy, which only changes how fast it is traced; a blob's,
+           which also decides the order its elements are summed in *)
         advance st;
-        ignore (parse_bool_opt st);
+        let on = parse_bool_opt st in
         match o.shape with
         | Prim (Mesh _) -> loop o
+        | Prim (Blob _) -> loop (Blob_reader.set_hierarchy on o)
         | Prim _ | Csg _ -> Error.raise_at loc "'hierarchy' cannot be used with this object (only with a mesh)")
     | Ident "dtag" ->
         (* a debugging tag, unused by the render *)
@@ -347,6 +381,28 @@ and parse_object_mods st (o : V.obj) what : V.obj =
     | _ -> unexpected st (Printf.sprintf "an object modifier or '}' closing '%s'" what)
   in
   loop o
+
+(* Parse_Bound_Clip: the objects of a clipped_by or bounded_by block, none textured or without an
+   inside, then the transforms that move them all. *)
+and bound_clip st what =
+  let rec objects acc =
+    if object_follows st then begin
+      let c = parse_object st in
+      if textured c || patch c then Error.raise_at c.oloc "Illegal texture or patch in clip, bound or object pattern.";
+      objects (c :: acc)
+    end
+    else List.rev acc
+  in
+  let objs = objects [] in
+  if objs = [] then unexpected st (Printf.sprintf "an object in %s" what);
+  let rec moved objs =
+    match peek st with
+    | Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") ->
+        let op = parse_op st in
+        moved (List.map (move_obj op) objs)
+    | _ -> objs
+  in
+  List.map (fun c -> V.Member_obj c) (moved objs)
 
 (* Does an object (a keyword or an identifier of one) come next? *)
 and object_follows st =

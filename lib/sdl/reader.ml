@@ -78,6 +78,7 @@ type st = {
   mutable nesting : int;  (* open parentheses, vectors, unary operators and unions being read *)
   mutable braces : int;  (* POV-Ray's count of nested blocks, for its warning past 200 *)
   mutable object_count : int;  (* objects and lights that entered the scene *)
+  mutable probed : (V.obj * Compiled.t) option;  (* the object trace(), inside() or an extent function compiled last, and its compiled scene *)
   mutable version : int;  (* languageVersion × 100 *)
   mutable version_set : bool;
   mutable charset : charset;  (* how a text's string is read *)
@@ -125,7 +126,9 @@ let keywords =
     "parallel"; "point_at"; "radius"; "tightness"; "orthographic"; "looks_like"; "cylinder"; "cone"; "disc";
     "open"; "torus"; "union"; "merge"; "intersection"; "difference"; "inverse"; "split_union"; "clipped_by"; "text"; "ttf"; "polygon"; "quadric";
     "quartic"; "poly"; "polynomial";
-    "material"; "texture_map"; "interior_texture"; "tiles"; "irid"; "uv_mapping"; "crand"; "image_map"; "bump_map"; "image_pattern"; "caustics"; "cutaway_textures"; "pigment_pattern" ]
+    "blob";
+    "material"; "texture_map"; "interior_texture"; "tiles"; "irid"; "uv_mapping"; "crand"; "image_map"; "bump_map"; "image_pattern"; "caustics"; "cutaway_textures"; "pigment_pattern";
+    "bounded_by"; "trace"; "inside"; "min_extent"; "max_extent" ]
   (* pigment patterns (POVRAY-3.7 §17) *)
   @ [ "checker"; "gradient"; "hexagon"; "brick"; "brick_size"; "mortar"; "color_map"; "colour_map"; "frequency";
       "phase"; "ramp_wave"; "triangle_wave"; "sine_wave"; "scallop_wave"; "cubic_wave"; "poly_wave"; "pigment_map" ]
@@ -150,13 +153,13 @@ let keywords =
 
 (* POV-Ray keywords that a later povml will read; meeting one is a located "not supported yet". *)
 let unsupported =
-  [ "prism"; "lathe"; "sor"; "blob"; "height_field"; "isosurface"; "superellipsoid"; "julia_fractal";
+  [ "prism"; "lathe"; "sor"; "height_field"; "isosurface"; "superellipsoid"; "julia_fractal";
     "parametric"; "bicubic_patch"; "ovus"; "rotate"; "scale"; "matrix"; "transform";
     "area_light";
     "projected_through"; "fisheye"; "panoramic"; "ultra_wide_angle"; "omnimax";
     "radiosity"; "photons";
     "media"; "fog"; "rainbow"; "dispersion"; "dispersion_samples";
-    "bounded_by"; "subsurface";
+    "subsurface";
     "light_group"; "sturm";
     "phong_albedo"; "metallic_albedo"; "translucency" ]
   (* patterns and pattern modifiers not read yet (POVRAY-3.7 §17) *)
@@ -165,7 +168,7 @@ let unsupported =
      where POV-Ray reads it in an object, a light_source, a texture or an expression (checked word
      by word with POV-Ray: parser/reswords.cpp) *)
   @ [ "sphere_sweep"; "composite"; "mesh_camera"; "adaptive"; "area_illumination"; "circular"; "jitter";
-      "orient"; "media_attenuation"; "media_interaction"; "material_map"; "density"; "density_map"; "spline"; "inside"; "trace"; "max_extent"; "min_extent";
+      "orient"; "media_attenuation"; "media_interaction"; "material_map"; "density"; "density_map"; "spline";
       "datetime"; "function" ]
 
 (* The rest of POV-Ray 3.7's reserved words (parser/reswords.cpp), none of which povml reads: words

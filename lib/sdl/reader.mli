@@ -74,6 +74,7 @@ type st = {
   mutable nesting : int;  (** parentheses, vectors, signs and unions open in the reader *)
   mutable braces : int;  (** POV-Ray's count of nested blocks, for its warning past 200 *)
   mutable object_count : int;  (** objects and lights that entered the scene *)
+  mutable probed : (V.obj * Compiled.t) option;  (** the object trace(), inside() or an extent function compiled last, and its compiled scene *)
   mutable version : int;
   mutable version_set : bool;
   mutable charset : charset;  (** [global_settings { charset … }]: how a text's string is read (§15.9) *)

@@ -16,6 +16,7 @@ type obj = {
   double_illuminate : bool;
   looks_like : bool;  (** a light's looks_like object (§19.2) *)
   inverted : bool;  (** [inverse] was applied: a primitive's Inside is negated, a CSG was morphed (§16.3) *)
+  linked : bool;  (** [clipped_by { bounded_by }] or [bounded_by { clipped_by }]: its clip and bounding objects are one list *)
 }
 
 (** A primitive, or a CSG: a union with [split] on is dissolved into its members when it enters

@@ -39,6 +39,27 @@ let keep_hits ~inside (w : Scratch.t) (members : obj array) ~skip ~want ~reverse
   end;
   !k
 
+(* Ray_In_Bound: the ray meets the object only if it meets every bounding object (members 1 …)
+   at a depth of at least MIN_ISECT_DEPTH, their boxes tested first as Find_Intersection does, or
+   starts inside it. The bounding objects' hits are pushed above [n] and dropped. *)
+let in_bound ~all_hits ~inside (w : Scratch.t) (members : obj array) o d n =
+  let stats = w.stats and nm = Array.length members in
+  let rec from k =
+    k >= nm
+    ||
+    let b = members.(k) in
+    stats.bound_tests <- stats.bound_tests + 1;
+    let met =
+      (Array.length b.pbox = 0 || Pov_box.entry b.pbox o d < infinity) && all_hits w b o d Precision.min_isect_depth n > n
+    in
+    (met || inside w.mesh_stack b o)
+    && begin
+         stats.bound_hits <- stats.bound_hits + 1;
+         from (k + 1)
+       end
+  in
+  from 1
+
 let hits ~all_hits ~inside (w : Scratch.t) (c : csg) o d lo n =
   let stats = w.stats and n0 = n in
   let members = c.members in
@@ -53,8 +74,8 @@ let hits ~all_hits ~inside (w : Scratch.t) (c : csg) o d lo n =
     | Intersection | Merge ->
         (match c.kind with
         | Intersection -> stats.csg_intersection_tests <- stats.csg_intersection_tests + 1
-        | Merge | Union | Clipped -> stats.csg_merge_tests <- stats.csg_merge_tests + 1);
-        let want = match c.kind with Intersection -> true | Merge | Union | Clipped -> false in
+        | Merge | Union | Clipped | Bounded | Boxed -> stats.csg_merge_tests <- stats.csg_merge_tests + 1);
+        let want = match c.kind with Intersection -> true | Merge | Union | Clipped | Bounded | Boxed -> false in
         let n = ref n in
         for k = 0 to nm - 1 do
           let start = !n in
@@ -62,7 +83,9 @@ let hits ~all_hits ~inside (w : Scratch.t) (c : csg) o d lo n =
           n := keep_hits ~inside w members ~skip:k ~want ~reverse:true start e
         done;
         !n
-    | Clipped when nm = 0 -> n
+    | (Clipped | Bounded | Boxed) when nm = 0 -> n
+    | Bounded -> if in_bound ~all_hits ~inside w members o d n then all_hits w members.(0) o d lo n else n
+    | Boxed -> all_hits w members.(0) o d lo n
     | Clipped -> (
         match members.(0).shape with
         | Csg { kind = Union; members = um; _ } ->
@@ -86,7 +109,7 @@ let hits ~all_hits ~inside (w : Scratch.t) (c : csg) o d lo n =
      | Union -> stats.csg_union_hits <- stats.csg_union_hits + 1
      | Intersection -> stats.csg_intersection_hits <- stats.csg_intersection_hits + 1
      | Merge -> stats.csg_merge_hits <- stats.csg_merge_hits + 1
-     | Clipped -> ());
+     | Clipped | Bounded | Boxed -> ());
   n
 
 let nearest_kept ~all_hits ~inside (w : Scratch.t) c o d lo =
@@ -107,19 +130,52 @@ let depth ~all_hits ~inside (w : Scratch.t) c o d lo =
   if (not w.robust) && Array.length c.cbox > 0 && Pov_box.entry c.cbox o d = infinity then infinity
   else nearest_kept ~all_hits ~inside w c o d lo
 
+let depth_unboxed = nearest_kept
+
 let inside ~inside stack c p =
   match c.kind with
   | Union | Merge -> Array.exists (fun m -> inside stack m p) c.members
   | Intersection | Clipped -> Array.for_all (fun m -> inside stack m p) c.members
+  | Bounded | Boxed -> Array.length c.members > 0 && inside stack c.members.(0) p
 
 let lone_inverted c =
   match c with
   | { kind = Intersection; members = [| m |]; _ } when m.inverted && not (is_csg m.shape) -> Some m
   | _ -> None
 
+(* The end of Parse_Object_Mods: the box of the bounding objects (members 1 …, the inverted ones
+   left out), their single-precision corners overlapped in double precision, replaces the
+   object's box when its volume, multiplied out in single precision, is the smaller. An unbounded
+   box is POV-Ray's huge one. *)
+let huge_box = [| -1e10; -1e10; -1e10; 2e10; 2e10; 2e10 |]
+
+let bounded_box (c : csg) =
+  let f32 = Precision.f32 in
+  let own = if Array.length c.members.(0).pbox = 0 then huge_box else c.members.(0).pbox in
+  let lo = Array.make 3 (-2e10) and hi = Array.make 3 2e10 in
+  for k = 1 to Array.length c.members - 1 do
+    let m = c.members.(k) in
+    if not m.inverted then begin
+      let b = if Array.length m.pbox = 0 then huge_box else m.pbox in
+      for i = 0 to 2 do
+        lo.(i) <- Float.max lo.(i) b.(i);
+        hi.(i) <- Float.min hi.(i) (f32 (b.(i) +. b.(i + 3)))
+      done
+    end
+  done;
+  let box = Pov_box.of_min_max lo hi in
+  let volume b = f32 (f32 (b.(3) *. b.(4)) *. b.(5)) in
+  if volume box < volume own then box else own
+
 let bounds ~bounds c =
   match (c.kind, lone_inverted c) with
   | _, Some m -> bounds m.shape
+  | (Bounded | Boxed), None when Array.length c.members = 0 -> None
+  | (Bounded | Boxed), None ->
+      let b = bounded_box c in
+      if b == c.members.(0).pbox then bounds c.members.(0).shape
+      else if b == huge_box then None
+      else Some [| b.(0); b.(1); b.(2); Precision.f32 (b.(0) +. b.(3)); Precision.f32 (b.(1) +. b.(4)); Precision.f32 (b.(2) +. b.(5)) |]
   | (Union | Merge), None ->
       Array.fold_left
         (fun acc m ->
@@ -160,9 +216,30 @@ let bounds ~bounds c =
       Option.bind b (fun b -> if b.(0) > b.(3) || b.(1) > b.(4) || b.(2) > b.(5) then None else Some b)
 
 let pov_box ~bounds:member_bounds ~pov_box c =
-  match lone_inverted c with
-  | Some m -> pov_box m.shape
-  | None -> ( match bounds ~bounds:member_bounds c with None -> [||] | Some b -> Pov_box.of_min_max (Array.sub b 0 3) (Array.sub b 3 3))
+  match (c.kind, lone_inverted c) with
+  | _, Some m -> pov_box m.shape
+  | (Bounded | Boxed), None when Array.length c.members = 0 -> [||]
+  | (Bounded | Boxed), None ->
+      let b = bounded_box c in
+      if b == huge_box then [||] else b
+  | (Union | Merge), None ->
+      (* the members' single-precision boxes, their upper corners added in double precision; a
+         box longer than CRITICAL_LENGTH (1e6) on any axis is POV-Ray's huge one *)
+      let lo = Array.make 3 2e10 and hi = Array.make 3 (-2e10) in
+      Array.iter
+        (fun m ->
+          let b = if Array.length m.pbox = 0 then huge_box else m.pbox in
+          for i = 0 to 2 do
+            lo.(i) <- Float.min lo.(i) b.(i);
+            hi.(i) <- Float.max hi.(i) (b.(i) +. b.(i + 3))
+          done)
+        c.members;
+      if lo.(0) > hi.(0) || lo.(1) > hi.(1) || lo.(2) > hi.(2) then [||]
+      else
+        let b = Pov_box.of_min_max lo hi in
+        if b.(3) > 1e6 || b.(4) > 1e6 || b.(5) > 1e6 then [||] else b
+  | (Intersection | Clipped), None -> (
+      match bounds ~bounds:member_bounds c with None -> [||] | Some b -> Pov_box.of_min_max (Array.sub b 0 3) (Array.sub b 3 3))
 
 let magnitude c = Array.fold_left (fun m o -> Float.max m o.mag) 0. c.members
 
@@ -172,3 +249,5 @@ let stats_rows (s : Stats.t) =
     { Stats.name = "CSG Merge"; tests = s.csg_merge_tests; hits = s.csg_merge_hits };
     { Stats.name = "CSG Union"; tests = s.csg_union_tests; hits = s.csg_union_hits };
   ]
+
+let bound_rows (s : Stats.t) = [ { Stats.name = "Bounding Object"; tests = s.bound_tests; hits = s.bound_hits } ]

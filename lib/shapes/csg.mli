@@ -1,5 +1,5 @@
 (** CSG kept whole (POVRAY-3.7 §16): union (with [split_union off]), merge, intersection and
-    difference, and objects with [clipped_by]. A CSG's hits are its members' hits kept by its rule;
+    difference, and objects with [clipped_by] or [bounded_by]. A CSG's hits are its members' hits kept by its rule;
     its inside is its members' insides combined. The members are shapes again, so each function
     takes the member operation it recurses through ([Shape]'s) as an argument. *)
 
@@ -16,8 +16,10 @@ val hits :
     inside every other member; a merge one inside no other member. A member's surviving hits are
     taken off its own stack, so they are pushed in reverse (intersection and merge). A clipped
     object keeps its hits inside every clip object, in the order it pushes them (Point_In_Clip); a
-    clipped union, like an intersection, takes each member's hits off a stack of its own.
-    [all_hits] lists a member's hits, [inside] is a member's Inside test. *)
+    clipped union, like an intersection, takes each member's hits off a stack of its own. A
+    bounded object's hits are its own, when the ray meets every bounding object (their boxes
+    tested first, then their hits at MIN_ISECT_DEPTH or beyond) or starts inside it
+    (Ray_In_Bound); none otherwise. [all_hits] lists a member's hits, [inside] is a member's Inside test. *)
 
 val depth :
   all_hits:(Scratch.t -> Compiled.obj -> Vec.t -> Vec.t -> float -> int -> int) ->
@@ -29,9 +31,16 @@ val depth :
     (Trace::FindIntersection, §15.8): a ray grazing an edge of the box within its rounding misses
     the CSG. The robust mode decides by the geometry alone. *)
 
+val depth_unboxed :
+  all_hits:(Scratch.t -> Compiled.obj -> Vec.t -> Vec.t -> float -> int -> int) ->
+  inside:(float array -> Compiled.obj -> Vec.t -> bool) ->
+  Scratch.t -> Compiled.csg -> Vec.t -> Vec.t -> float -> float
+(** [depth_unboxed] is [depth] without the test of the CSG's own box. *)
+
 val inside : inside:(float array -> Compiled.obj -> Vec.t -> bool) -> float array -> Compiled.csg -> Vec.t -> bool
 (** [inside ~inside stack c p] is §16.3: inside any member (union, merge), or inside every member
-    (intersection; a clipped object's Inside asks its clip objects too). *)
+    (intersection; a clipped object's Inside asks its clip objects too); a bounded object's is
+    its own. *)
 
 val bounds : bounds:(Compiled.shape -> float array option) -> Compiled.csg -> float array option
 (** [bounds ~bounds c] is CSG::Compute_BBox: a union's or merge's box holds its members' boxes; an
@@ -40,7 +49,8 @@ val bounds : bounds:(Compiled.shape -> float array option) -> Compiled.csg -> fl
     is unbounded here (POV-Ray bounds an axis-aligned one on one side: that changes only
     equal-depth ties). An inverted primitive written alone, an intersection of itself, keeps the
     primitive's own box. POV-Ray bounds an intersection's quadrics last, each within the box of
-    the other members. *)
+    the other members. A bounded object's box is the overlap of its bounding objects' boxes
+    when that is the smaller, by POV-Ray's single-precision volumes (Parse_Object_Mods). *)
 
 val lone_inverted : Compiled.csg -> Compiled.obj option
 (** [lone_inverted c] is the member of an intersection that holds one inverted primitive alone (an
@@ -58,3 +68,6 @@ val magnitude : Compiled.csg -> float
 
 val stats_rows : Stats.t -> Stats.row list
 (** [stats_rows s] is the statistics rows of intersections (and differences), merges and kept unions, as POV-Ray names them. *)
+
+val bound_rows : Stats.t -> Stats.row list
+(** [bound_rows s] is the row of bounding objects' tests (Ray_In_Bound), as POV-Ray names it. *)

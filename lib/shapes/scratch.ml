@@ -3,6 +3,15 @@
 type slab = { mutable t_near : float; mutable t_far : float }
 type growable = { mutable room : float array }
 
+type blob_room = {
+  mutable bounds : float array;
+  mutable marks : int array;
+  mutable fcoeffs : float array;
+  mutable queue : int array;
+  mutable found : float array;
+  acc : float array;
+}
+
 type t = {
   stats : Stats.t;
   lim : Limits.t;
@@ -21,6 +30,7 @@ type t = {
   roots : float array;
   depths : float array;
   quartic : Polysolv.work;
+  blob : blob_room;
   poly_room : float array;
 }
 
@@ -49,6 +59,7 @@ let create ~robust stats =
     roots = Array.make 4 0.;
     depths = Array.make 4 0.;
     quartic = Polysolv.create ();
+    blob = { bounds = [||]; marks = [||]; fcoeffs = [||]; queue = [||]; found = Array.make 16 0.; acc = Array.make 8 0. };
     poly_room = Array.make 512 0.;
   }
 

@@ -9,6 +9,16 @@ type slab = { mutable t_near : float; mutable t_far : float }
 type growable = { mutable room : float array }
 (** A float array that is replaced by a bigger one when a ray crosses more surfaces. *)
 
+type blob_room = {
+  mutable bounds : float array;  (** a blob's interval list: where each component starts or stops … *)
+  mutable marks : int array;  (** … and which: the element's index times 2, plus 1 where it stops *)
+  mutable fcoeffs : float array;  (** each element's quartic along the ray, 5 floats each *)
+  mutable queue : int array;  (** the nodes of its hierarchy waiting to be visited *)
+  mutable found : float array;  (** the depths found *)
+  acc : float array;  (** the sum of the active elements' quartics (5 floats), then room for 2 *)
+}
+(** The room of a blob's intersection (shape/blob.cpp), grown to its number of elements. *)
+
 type t = {
   stats : Stats.t;  (** the worker's counters *)
   lim : Limits.t;  (** the depths shapes accept (POV-Ray's, or the robust mode's) *)
@@ -31,6 +41,7 @@ type t = {
   roots : float array;  (** … its roots … *)
   depths : float array;  (** … and their world depths, unfiltered *)
   quartic : Polysolv.work;  (** the polynomial solver's room *)
+  blob : blob_room;  (** a blob's intervals, quartics and depths *)
   poly_room : float array;  (** a poly's powers of the ray, its polynomial in t, roots and depths *)
 }
 

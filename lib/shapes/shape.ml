@@ -29,6 +29,7 @@ let compile (s : Scene.shape) =
   | Glyph { outline; depth; trans } -> if finite trans then Some (Glyph { Glyph.outline; depth; tr = trans }) else None
   | Polygon p -> Some (Polygon p)
   | Quadric q -> Some (Quadric q)
+  | Blob { blob; _ } -> Some (Blob (Blob.compile blob))
   | Poly p -> Some (Poly p)
   | Csg _ -> None
 
@@ -52,6 +53,7 @@ let rec depth w shape o d lo =
   | Mesh m -> Mesh.depth w m o d lo
   | Polygon p -> Polygon.depth w p o d lo
   | Quadric q -> Quadric.depth w q o d lo
+  | Blob b -> Blob_ray.depth w b o d lo
   | Poly p -> Poly.depth w p o d lo
 
 and all_hits w ob o d lo n =
@@ -72,6 +74,7 @@ and all_hits w ob o d lo n =
   | Glyph g -> Glyph.hits w g id o d lo n
   | Polygon p -> Polygon.hits w p id o d lo n
   | Quadric q -> Quadric.hits w q id o d lo n
+  | Blob b -> Blob_ray.hits w b id o d lo n
   | Poly p -> Poly.hits w p id o d lo n
 
 and inside stack shape p =
@@ -91,6 +94,7 @@ and inside stack shape p =
   | Mesh m -> Mesh.placed_inside stack m p
   | Polygon pg -> Polygon.inside pg p
   | Quadric q -> Quadric.inside q p
+  | Blob b -> Blob.inside b p
   | Poly pl -> Poly.inside pl p
 
 and inside_member stack (m : obj) p =
@@ -103,8 +107,20 @@ and inside_member stack (m : obj) p =
          inverted quadric holds its surface too *)
       inside stack m.shape p
   | Sphere _ | Sphere_placed _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _
-  | Disc _ | Torus _ | Glyph _ | Polygon _ | Poly _ ->
+  | Disc _ | Torus _ | Glyph _ | Polygon _ | Poly _ | Blob _ ->
       inside stack m.shape p <> m.inverted
+
+(* Spheres, ellipsoids, boxes, planes, triangles and polys answer every box test of POV-Ray's
+   Intersect_BBox with yes; their clipped_by and bounded_by wrappers are theirs *)
+let rec box_test_free = function
+  | Sphere _ | Sphere_placed _ | Ellipsoid _ | Box _ | Box_trans _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Poly _ -> true
+  | Csg { kind = Clipped | Bounded | Boxed; members; _ } when Array.length members > 0 -> box_test_free members.(0).shape
+  | Csg _ | Mesh _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Blob _ -> false
+
+let cached_depth w shape o d lo =
+  match shape with
+  | Csg c when box_test_free shape -> Csg.depth_unboxed ~all_hits ~inside:inside_member w c o d lo
+  | _ -> depth w shape o d lo
 
 let hit_object (w : Scratch.t) ob = if Csg.is_csg ob.shape then w.leaf else ob.id
 
@@ -126,6 +142,7 @@ let normal obj part p =
   | Mesh m -> Mesh.placed_normal m part p
   | Polygon pg -> Polygon.normal pg p
   | Quadric q -> Quadric.normal q p
+  | Blob b -> Blob.normal b p
   | Poly pl -> Poly.normal pl p
 
 let geometric_normal obj part p =
@@ -133,14 +150,14 @@ let geometric_normal obj part p =
   | Smooth_triangle t -> Triangle.flat_normal t
   | Mesh m -> Mesh.placed_face_normal m part
   | Sphere _ | Sphere_placed _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _
-  | Quadric _ | Poly _ | Csg _ ->
+  | Quadric _ | Poly _ | Blob _ | Csg _ ->
       normal obj part p
 
 let hit_point w obj o depth d =
   match obj.shape with
   | Poly pl -> Poly.hit_point w pl o d depth
   | Sphere _ | Sphere_placed _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _
-  | Csg _ ->
+  | Blob _ | Csg _ ->
       Vec.madd o depth d
 
 let refine obj p =
@@ -148,7 +165,7 @@ let refine obj p =
   | Sphere s | Sphere_placed { ps = s; _ } -> Sphere.refine s p
   | Ellipsoid e -> Sphere.ellipsoid_refine e p
   | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _
-  | Poly _ | Csg _ ->
+  | Poly _ | Blob _ | Csg _ ->
       p
 
 (* Every shape's UVCoord in POV-Ray 3.7: spheres, boxes, tori and meshes have their own; every
@@ -163,7 +180,7 @@ let uv obj part (p : Vec.t) =
   | Box_trans b -> Box.moved_uv b part p
   | Torus t -> Torus.uv t p
   | Mesh m -> Mesh.placed_uv m part p
-  | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Cone _ | Disc _ | Glyph _ | Polygon _ | Quadric _ | Poly _ | Csg _ -> Vec.make p.x p.y 0.
+  | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Cone _ | Disc _ | Glyph _ | Polygon _ | Quadric _ | Poly _ | Blob _ | Csg _ -> Vec.make p.x p.y 0.
 
 let rec bounds = function
   | Csg c -> Csg.bounds ~bounds c
@@ -180,6 +197,7 @@ let rec bounds = function
   | Glyph g -> Some (Glyph.bounds g)
   | Polygon p -> Polygon.bounds p
   | Quadric q -> Quadric.bounds q
+  | Blob b -> Some (Blob.bounds b)
   | Poly _ -> None (* POV-Ray's BOUND_HUGE box: an infinite object *)
 
 let magnitude shape =
@@ -192,7 +210,7 @@ let magnitude shape =
   | _, Polygon p -> Polygon.magnitude p
   | _, Quadric q -> Quadric.magnitude q
   | None, Poly _ -> 0.
-  | None, (Sphere _ | Sphere_placed _ | Ellipsoid _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _) -> 0.
+  | None, (Sphere _ | Sphere_placed _ | Ellipsoid _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Blob _) -> 0.
 
 let rec pov_box shape =
   match shape with
@@ -209,28 +227,29 @@ let rec pov_box shape =
   | Glyph g -> Glyph.pov_box g
   | Polygon p -> Polygon.pov_box p
   | Quadric q -> Quadric.pov_box q
+  | Blob b -> Blob.pov_box b
   | Poly _ -> [||]
   | Csg c -> Csg.pov_box ~bounds ~pov_box c
 
 let costly = function
-  | Ellipsoid _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Poly _ -> true
+  | Ellipsoid _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Poly _ | Blob _ -> true
   | Sphere _ | Sphere_placed _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Csg _ -> false
 
 let as_sphere = function
   | Sphere s | Sphere_placed { ps = s; _ } -> Some s
   | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _
-  | Quadric _ | Poly _ | Csg _ ->
+  | Quadric _ | Poly _ | Blob _ | Csg _ ->
       None
 
 let face_texture obj part =
   match obj.shape with
   | Mesh m when part >= 0 -> Mesh.texture m.mesh part
   | Sphere _ | Sphere_placed _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _
-  | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Poly _ | Csg _ ->
+  | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Poly _ | Blob _ | Csg _ ->
       -1
 
 let stats_rows s =
   List.concat
-    [ Box.stats_rows s; Cone.stats_rows s; Disc.stats_rows s; Csg.stats_rows s; Plane.stats_rows s; Polygon.stats_rows s; Quadric.stats_rows s; Poly.stats_rows s;
+    [ Blob.stats_rows s; Box.stats_rows s; Cone.stats_rows s; Disc.stats_rows s; Csg.stats_rows s; Plane.stats_rows s; Polygon.stats_rows s; Quadric.stats_rows s; Poly.stats_rows s;
       Triangle.stats_rows s;
-      Mesh.stats_rows s; Sphere.stats_rows s; Torus.stats_rows s; Glyph.stats_rows s ]
+      Mesh.stats_rows s; Sphere.stats_rows s; Torus.stats_rows s; Glyph.stats_rows s; Csg.bound_rows s ]

@@ -92,7 +92,8 @@ Something that is not an object among the members is an error:
         |                         ^
   [1]
 
-clipped_by needs at least one object; clipped_by { bounded_by } is not read yet:
+clipped_by needs at least one object; clipped_by { bounded_by } links the clips to bounds that
+must come first, as POV-Ray's parser requires:
 
   $ printf 'sphere { 0, 1 clipped_by { } }\n' > clip.pov
   $ povml clip.pov +W4 +H4 -D
@@ -100,9 +101,15 @@ clipped_by needs at least one object; clipped_by { bounded_by } is not read yet:
       1 | sphere { 0, 1 clipped_by { } }
         |                            ^
   [1]
-  $ printf 'sphere { 0, 1 clipped_by { bounded_by } }\n' > clip2.pov
+  $ printf 'sphere { 0, 1 clipped_by { box { 0, 1 } } clipped_by { bounded_by } }\n' > clip2.pov
   $ povml clip2.pov +W4 +H4 -D
-  clip2.pov:1:28: error: not supported yet: 'clipped_by { bounded_by }'
-      1 | sphere { 0, 1 clipped_by { bounded_by } }
+  clip2.pov:1:56: error: Cannot link bounds with previous clips.
+      1 | sphere { 0, 1 clipped_by { box { 0, 1 } } clipped_by { bounded_by } }
+        |                                                        ^
+  [1]
+  $ printf 'sphere { 0, 1 bounded_by { box { 0, 1 pigment { rgb 1 } } } }\n' > bound.pov
+  $ povml bound.pov +W4 +H4 -D
+  bound.pov:1:28: error: Illegal texture or patch in clip, bound or object pattern.
+      1 | sphere { 0, 1 bounded_by { box { 0, 1 pigment { rgb 1 } } } }
         |                            ^
   [1]

@@ -11,10 +11,10 @@ let v37 = "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"
 let members_of (o : Scene.obj) =
   match o.shape with
   | Csg { kind; members } -> (kind, members)
-  | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Poly _ -> Alcotest.fail "expected a CSG"
+  | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Poly _ | Blob _ -> Alcotest.fail "expected a CSG"
 
 let kind_name : Scene.csg_kind -> string = function
-  | Union -> "union" | Merge -> "merge" | Intersection -> "intersection" | Clipped -> "clipped"
+  | Union -> "union" | Merge -> "merge" | Intersection -> "intersection" | Clipped -> "clipped" | Bounded -> "bounded" | Boxed -> "boxed"
 let check_kind msg e a = Alcotest.(check string) msg (kind_name e) (kind_name a)
 let inverted_flags ms = List.map (fun (m : Scene.member) -> m.inverted) ms
 
@@ -133,7 +133,8 @@ let test_parse_clipped_by () =
       vec_eq "the plane not turned over" (v 0. 1. 0.) normal
   | _ -> Alcotest.fail "expected sphere, plane");
   expect_scene_error "empty clipped_by" "sphere { 0, 1 clipped_by { } }" ~line:1 ~col:28 ~sub:"expected an object in clipped_by";
-  expect_scene_error "clipped_by { bounded_by }" "sphere { 0, 1 clipped_by { bounded_by } }" ~line:1 ~col:28 ~sub:"not supported yet"
+  expect_scene_error "clipped_by { bounded_by } after clips" "sphere { 0, 1 clipped_by { box { 0, 1 } } clipped_by { bounded_by } }" ~line:1 ~col:56
+    ~sub:"Cannot link bounds with previous clips"
 
 (* ---------------------------------------------------------------------------------------------- *)
 (* All hits of each primitive *)

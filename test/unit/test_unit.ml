@@ -26,11 +26,13 @@ let () =
       ("Polygon", Test_polygon.tests);
       ("Polysolv", Test_polysolv.tests);
       ("Torus", Test_torus.tests);
+      ("Blob", Test_blob.tests);
       ("Poly (poly, cubic, quartic)", Test_poly.tests);
       ("UV coordinates and uv_mapping", Test_uv.tests);
       ("Sphere normal", Test_sphere_normal.tests);
       ("Text", Test_text.tests);
       ("CSG", Test_csg.tests);
+      ("Probe (trace, inside, extents)", Test_probe.tests);
       ("Patterns", Test_patterns.tests);
       ("Textures (layers, maps, materials)", Test_textures.tests);
       ("pattern values", Test_pattern_values.tests);
