@@ -163,6 +163,7 @@ let bounds_kept (o : V.obj) =
   match (core o).shape with
   | Csg { kind = Union | Merge | Intersection; _ } -> true
   | Prim (Quadric q) -> q.box_lenx >= 2e10 || q.box_leny >= 2e10 || q.box_lenz >= 2e10
+  | Prim (Poly _) -> true
   | Csg { kind = Clipped | Bounded | Boxed; _ } | Prim _ -> false
 
 let rec unbound st (o : V.obj) : V.obj =
@@ -174,11 +175,12 @@ let rec unbound st (o : V.obj) : V.obj =
       { o with shape = Csg { kind; members = V.Member_obj (unbound st c) :: rest; split } }
   | Prim _ | Csg _ -> o
 
-(* A finite union's box: its members' boxes are all finite (no plane, no infinite quadric) *)
+(* A finite union's box: its members' boxes are all finite (no plane, no infinite quadric, no poly) *)
 let rec finite (o : V.obj) =
   match o.shape with
   | Prim (Plane _) -> false
   | Prim (Quadric q) -> q.box_lenx < 2e10 && q.box_leny < 2e10 && q.box_lenz < 2e10
+  | Prim (Poly _) -> false (* Poly::Compute_BBox: BOUND_HUGE *)
   | Prim _ -> true
   | Csg { kind = Union | Merge; members; _ } -> List.for_all (function V.Member_obj c -> finite c | V.Member_light _ -> true) members
   | Csg { kind = Intersection | Clipped | Bounded | Boxed; members; _ } ->
