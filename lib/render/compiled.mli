@@ -99,6 +99,10 @@ type shape =
   | Polygon of Polygon.t  (** §15.7, §14.5 (b): the outline in polygon space, placed by its transform *)
   | Quadric of Quadric.t  (** quadrics.cpp: in world space, the ray as it is *)
   | Blob of Blob.compiled  (** shape/blob.cpp: in blob space, through its transform if it has one *)
+  | Height_field of Hfield.t  (** hfield.cpp: the field walked in its own space, through its transform *)
+  | Superellipsoid of Superellipsoid.t  (** super.cpp: its own root search in its own space *)
+  | Ovus of Ovus.t  (** ovus.cpp: the part hit decides the normal *)
+  | Sphere_sweep of Sphere_sweep.compiled  (** sphsweep.cpp: segments and single spheres, the part hit names the normal *)
   | Poly of Poly.t  (** poly.cpp: poly, cubic, quartic, through its transform; unbounded *)
 
 (** A CSG's members and how their hits are kept (§16.2, §16.3). *)

@@ -46,6 +46,21 @@ type t = {
   mutable blob_element_hits : int;
   mutable blob_bound_tests : int;
   mutable blob_bound_hits : int;
+  mutable hfield_tests : int;
+  mutable hfield_hits : int;
+  mutable hfield_box_hits : int;
+  mutable hfield_triangle_tests : int;
+  mutable hfield_triangle_hits : int;
+  mutable hfield_block_tests : int;
+  mutable hfield_block_hits : int;
+  mutable hfield_cell_tests : int;
+  mutable hfield_cell_hits : int;
+  mutable superellipsoid_tests : int;
+  mutable superellipsoid_hits : int;
+  mutable ovus_tests : int;
+  mutable ovus_hits : int;
+  mutable sphere_sweep_tests : int;
+  mutable sphere_sweep_hits : int;
   mutable poly_tests : int;
   mutable poly_hits : int;
 }
@@ -60,6 +75,10 @@ let create () =
     polygon_tests = 0; polygon_hits = 0; quadric_tests = 0; quadric_hits = 0;
     bound_tests = 0; bound_hits = 0;
     blob_tests = 0; blob_hits = 0; blob_element_tests = 0; blob_element_hits = 0; blob_bound_tests = 0; blob_bound_hits = 0;
+    hfield_tests = 0; hfield_hits = 0; hfield_box_hits = 0;
+    hfield_triangle_tests = 0; hfield_triangle_hits = 0; hfield_block_tests = 0; hfield_block_hits = 0; hfield_cell_tests = 0;
+    hfield_cell_hits = 0;
+    superellipsoid_tests = 0; superellipsoid_hits = 0; ovus_tests = 0; ovus_hits = 0; sphere_sweep_tests = 0; sphere_sweep_hits = 0;
     poly_tests = 0; poly_hits = 0;
   }
 
@@ -110,6 +129,21 @@ let merge a b =
     blob_element_hits = a.blob_element_hits + b.blob_element_hits;
     blob_bound_tests = a.blob_bound_tests + b.blob_bound_tests;
     blob_bound_hits = a.blob_bound_hits + b.blob_bound_hits;
+    hfield_tests = a.hfield_tests + b.hfield_tests;
+    hfield_hits = a.hfield_hits + b.hfield_hits;
+    hfield_box_hits = a.hfield_box_hits + b.hfield_box_hits;
+    hfield_triangle_tests = a.hfield_triangle_tests + b.hfield_triangle_tests;
+    hfield_triangle_hits = a.hfield_triangle_hits + b.hfield_triangle_hits;
+    hfield_block_tests = a.hfield_block_tests + b.hfield_block_tests;
+    hfield_block_hits = a.hfield_block_hits + b.hfield_block_hits;
+    hfield_cell_tests = a.hfield_cell_tests + b.hfield_cell_tests;
+    hfield_cell_hits = a.hfield_cell_hits + b.hfield_cell_hits;
+    superellipsoid_tests = a.superellipsoid_tests + b.superellipsoid_tests;
+    superellipsoid_hits = a.superellipsoid_hits + b.superellipsoid_hits;
+    ovus_tests = a.ovus_tests + b.ovus_tests;
+    ovus_hits = a.ovus_hits + b.ovus_hits;
+    sphere_sweep_tests = a.sphere_sweep_tests + b.sphere_sweep_tests;
+    sphere_sweep_hits = a.sphere_sweep_hits + b.sphere_sweep_hits;
     poly_tests = a.poly_tests + b.poly_tests;
     poly_hits = a.poly_hits + b.poly_hits;
   }

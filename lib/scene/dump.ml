@@ -271,6 +271,25 @@ let rec shape = function
       Printf.sprintf "%s%s%s" (Blob.describe num vec matrix blob)
         (if Array.length textures > 0 then Printf.sprintf "\n  // %d component textures" (Array.length textures) else "")
         (trans blob.trans)
+  | Height_field { field = f; trans = t } ->
+      Printf.sprintf "height_field { // %d x %d heights %d … %d, box y %s … %s%s%s%s%s" f.width f.height f.min_y f.max_y (num f.lo_y)
+        (num f.hi_y)
+        (if f.water <> 0. then Printf.sprintf ", water_level %s" (num (f.water /. 65536.)) else "")
+        (if f.smooth then ", smooth" else "")
+        (if f.hierarchy then Printf.sprintf ", %d x %d blocks" f.nbx f.nbz else ", no hierarchy")
+        (trans (Some t))
+  | Superellipsoid { ex; ey; ez; tr } ->
+      Printf.sprintf "superellipsoid { // powers %s, %s, %s%s" (num ex) (num ey) (num ez)
+        (trans (if Transform.is_identity tr then None else Some tr))
+  | Ovus { bottom; top; hpos; vpos; bvert; tvert; crad; sturm; tr } ->
+      Printf.sprintf "ovus { %s, %s%s // joint: tube %s about a circle of %s at height %s, from %s to %s%s" (num bottom) (num top)
+        (if sturm then " sturm" else "") (num crad) (num hpos) (num vpos) (num bvert) (num tvert)
+        (trans (if Transform.is_identity tr then None else Some tr))
+  | Sphere_sweep { interpolation; spheres; tolerance; trans = t } ->
+      let kind = match interpolation with Linear -> "linear_spline" | Catmull_rom -> "cubic_spline" | B_spline -> "b_spline" in
+      Printf.sprintf "sphere_sweep { %s %d, %s tolerance %s%s" kind (Array.length spheres)
+        (String.concat ", " (Array.to_list (Array.map (fun (c, r) -> Printf.sprintf "%s, %s" (vec c) (num r)) spheres)))
+        (num tolerance) (trans t)
   | Csg { kind; members } ->
       let member (m : member) =
         String.concat "\n  " (String.split_on_char '\n' (String.trim (obj m.mobj)))

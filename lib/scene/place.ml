@@ -149,6 +149,9 @@ let rec shape (s : Scene.shape) op : Scene.shape =
   | Polygon p ->
       (* §15.7, Polygon::Translate/Rotate/Scale all call Transform: composed into its Trans *)
       Polygon (Polygon.transform p (op_transform op))
+  | Height_field h ->
+      (* HField::Translate/Rotate/Scale all call Transform: composed into its Trans *)
+      Height_field { h with trans = attach (Some h.trans) op }
   | Poly p ->
       (* Poly::Translate/Rotate/Scale all call Transform: composed into its Trans *)
       Poly { p with tr = attach (Some p.tr) op }
@@ -159,6 +162,17 @@ let rec shape (s : Scene.shape) op : Scene.shape =
       (* Blob::Translate/Rotate/Scale all call Transform: composed into its Trans (a box already
          set up is mapped), the components' own textures moved with it *)
       Blob { blob = Blob.transform blob (op_transform op); textures = Array.map (fun t -> texture t op) textures }
+  | Superellipsoid q ->
+      (* Superellipsoid::Translate/Rotate/Scale all call Transform: composed into its Trans *)
+      Superellipsoid (Superellipsoid.transform q (op_transform op))
+  | Ovus v ->
+      (* Ovus::Translate/Rotate/Scale all call Transform: composed into its Trans *)
+      Ovus (Ovus.transform v (op_transform op))
+  | Sphere_sweep s ->
+      (* SphereSweep::Translate/Rotate/Scale move the modeling spheres until a transform is
+         needed; Transform, and everything after it, composes into Trans *)
+      let kind = match op with Translate v -> Sphere_sweep.Translate v | Rotate _ -> Sphere_sweep.Rotate | Scale v -> Sphere_sweep.Scale v | Transform _ -> Sphere_sweep.Other in
+      Sphere_sweep (Sphere_sweep.move s kind (op_transform op))
   | Csg { kind; members } ->
       (* §16: a CSG's transform moves every member *)
       Csg { kind; members = List.map (fun (m : Scene.member) -> { m with mobj = { m.mobj with shape = shape m.mobj.shape op; texture = texture m.mobj.texture op } }) members }
@@ -176,12 +190,12 @@ let scene ~scale ~translate (s : Scene.t) : Scene.t =
     let scaling =
       match o.shape with
       | Smooth_triangle _ -> Transform (Transform.scale sv)
-      | Sphere _ | Plane _ | Triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Csg _ | Glyph _ | Polygon _ | Quadric _ | Poly _ | Blob _ -> Scale sv
+      | Sphere _ | Plane _ | Triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Csg _ | Glyph _ | Polygon _ | Quadric _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ -> Scale sv
     in
     let sh =
       match o.shape with
       | Csg { kind; members } -> Scene.Csg { kind; members = List.map (fun (m : Scene.member) -> { m with mobj = obj m.mobj }) members }
-      | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Poly _ | Blob _ ->
+      | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ ->
           shape (shape o.shape scaling) (Translate translate)
     in
     let texture = texture (texture o.texture (Scale sv)) (Translate translate) in

@@ -361,6 +361,18 @@ type shape =
       (** shape/blob.cpp: the components as parsed and moved, the last written first, mapped by
           the blob's transform; [textures] are the components' own textures, which a
           component's [tex] indexes *)
+  | Height_field of { field : Hfield.field; trans : Transform.t }
+      (** hfield.cpp: the field in its own space (one unit per pixel in x and z, per height step
+          in y), mapped by [trans]: Parse_HField's scaling, then every modifier composed into it *)
+  | Superellipsoid of Superellipsoid.t
+      (** super.cpp: the powers from <e, n>, placed by its transform (every modifier composes
+          into it); [inverse] is CSG's *)
+  | Ovus of Ovus.t
+      (** ovus.cpp: two spheres and the torus part joining them, placed by its transform (every
+          modifier composes into it); [inverse] is CSG's *)
+  | Sphere_sweep of Sphere_sweep.t
+      (** sphsweep.cpp: the modeling spheres, moved by the modifiers until one needs a
+          transform; [inverse] is CSG's *)
   | Csg of { kind : csg_kind; members : member list }
       (** §16: a CSG kept whole (a merge, an intersection or difference, a union with
           [split_union off]); its members are already moved by its transforms and carry the

@@ -10,7 +10,8 @@ open Reader
 let rec invert (o : V.obj) : V.obj =
   match o.shape with
   | Prim (Plane { normal; offset; trans }) -> { o with shape = Prim (Plane { normal = Vec.neg normal; offset = -.offset; trans }) }
-  | Prim (Sphere _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Csg _ | Glyph _ | Blob _) -> { o with inverted = not o.inverted }
+  | Prim (Sphere _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Csg _ | Glyph _ | Blob _ | Height_field _) -> { o with inverted = not o.inverted }
+  | Prim (Superellipsoid _ | Ovus _ | Sphere_sweep _) -> { o with inverted = not o.inverted }
   | Prim (Poly _) -> { o with inverted = not o.inverted } (* Poly::Invert toggles its flag *)
   | Prim (Polygon _) -> o (* Polygon::Invert does nothing, not even the flag *)
   | Prim (Quadric q) -> { o with shape = Prim (Quadric (Quadric.invert q)); inverted = not o.inverted }

@@ -198,3 +198,23 @@ let parse st keyword =
   | Image_pattern, b -> Image_pattern b
 
 let parse_material_map st = snd (read st "material_map")
+
+(* A height field's file: Parse_Image (HF_FILE) as for a bump_map, without gamma correction unless
+   [gamma] is given; the image is decoded at once *)
+let height_field_image st =
+  let file_loc = peek_loc st in
+  let fmt, name = parse_file st in
+  let rec file_options gamma premultiply =
+    match peek st with
+    | Ident "gamma" -> advance st; file_options (Some (parse_gamma st)) premultiply
+    | Ident "premultiplied" -> advance st; file_options gamma (Some (Expr.c_int (parse_float st) <> 0.))
+    | _ -> (gamma, premultiply)
+  in
+  let gamma, premultiply = file_options None None in
+  let options = read_options st Bump_map ~gamma ~premultiply in
+  if options.gamma_correct && (not options.gamma_override) && fmt = Png && ((not st.version_set) || st.version < 370) then
+    warn st file_loc "PNG input image default gamma handling has changed for pre POV-Ray 3.7 scenes; results may differ from original intention";
+  let path = locate st file_loc fmt name in
+  match Image_read.read fmt options path with
+  | Ok img -> (img, name)
+  | Error msg -> Error.raise_at file_loc "cannot read the image file \"%s\": %s" name msg

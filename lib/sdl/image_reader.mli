@@ -14,3 +14,9 @@ val parse_material_map : Reader.st -> Scene.bitmap
 (** [parse_material_map st] reads a [material_map] block after the keyword, from its '{' up to its
     first [texture] (not read): the file, read without gamma correction (its pixels choose the
     textures), and the modifiers [once], [interpolate], [map_type], [repeat], [offset]. *)
+
+val height_field_image : Reader.st -> Image_file.t * string
+(** [height_field_image st] reads the file of a [height_field] (its type keyword or a name whose
+    extension gives it, then [gamma] and [premultiplied]) and decodes it as POV-Ray's Parse_Image
+    does for a height field: without gamma correction unless [gamma] is given. It is the image and
+    its name as written; errors as for [parse]. *)

@@ -10,9 +10,9 @@ open Csg_build
 
 (* Objects povml does not render yet: inside a union they are reported as "not supported yet". *)
 let unsupported_objects =
-  [ "prism"; "lathe"; "sor"; "height_field";
-    "isosurface"; "superellipsoid"; "julia_fractal"; "parametric"; "bicubic_patch"; "ovus";
-    "sphere_sweep"; "lemon"; "composite" ]
+  [ "prism"; "lathe"; "sor";
+    "isosurface"; "julia_fractal"; "parametric"; "bicubic_patch";
+    "composite" ]
 
 let show_vec (v : Vec.t) = Printf.sprintf "<%g, %g, %g>" v.x v.y v.z
 
@@ -159,6 +159,27 @@ let rec parse_object st : V.obj =
       advance st;
       open_block st kw;
       parse_object_mods st (new_obj (if kw = "polygon" then Shape_reader.polygon st loc else Shape_reader.quadric st) loc) kw
+  | Ident "height_field" ->
+      (* Parse_HField: the image and its options, then the modifiers; the field's blocks are built
+         after them (Compute_HField follows Parse_Object_Mods), so [hierarchy] there still counts *)
+      advance st;
+      let o = parse_object_mods st (new_obj (Hfield_reader.parse st) loc) "height_field" in
+      let seal (o : V.obj) = match o.shape with Prim (Height_field h) -> { o with shape = Prim (Height_field { h with field = Hfield.seal h.field }) } | Prim _ | Csg _ -> o in
+      (match o.shape with
+      | Csg { kind; members = V.Member_obj m :: rest; split } -> { o with shape = Csg { kind; members = V.Member_obj (seal m) :: rest; split } }
+      | Csg _ | Prim _ -> seal o)
+  | Ident "superellipsoid" ->
+      advance st;
+      open_block st "superellipsoid";
+      parse_object_mods st (new_obj (Superq_reader.superellipsoid st) loc) "superellipsoid"
+  | Ident "ovus" ->
+      advance st;
+      open_block st "ovus";
+      parse_object_mods st (new_obj (Superq_reader.ovus st loc) loc) "ovus"
+  | Ident "sphere_sweep" ->
+      advance st;
+      open_block st "sphere_sweep";
+      parse_object_mods st (new_obj (Superq_reader.sphere_sweep st) loc) "sphere_sweep"
   | Ident "text" ->
       (* §15.9: a union of one extruded glyph per character, then the modifiers, which move every
          letter *)
@@ -286,6 +307,11 @@ and parse_object_mods st (o : V.obj) what : V.obj =
         (* Allow_Float(1.0) > 0.0 *)
         advance st;
         loop (Blob_reader.set_sturm ((not (float_follows st)) || parse_float st > 0.) o)
+    | Ident "sturm" when (match o.shape with Prim (Ovus _) -> true | Prim _ | Csg _ -> false) -> (
+        (* Ovus is STURM_OK: Bool_Flag(STURM_FLAG, Allow_Float(1.0) > 0) *)
+        advance st;
+        let on = parse_bool_opt st in
+        match o.shape with Prim (Ovus v) -> loop { o with shape = Prim (Ovus { v with sturm = on }) } | Prim _ | Csg _ -> loop o)
     | Ident "sturm" when is_poly o -> advance st; loop (set_poly_sturm (parse_bool_opt st) o)
     | Ident "hollow" -> advance st; ignore (parse_bool_opt st); loop o
     | Ident "inverse" -> advance st; loop (invert o)
@@ -365,6 +391,7 @@ and parse_object_mods st (o : V.obj) what : V.obj =
         match o.shape with
         | Prim (Mesh _) -> loop o
         | Prim (Blob _) -> loop (Blob_reader.set_hierarchy on o)
+        | Prim (Height_field h) -> loop { o with shape = Prim (Height_field { h with field = Hfield.with_hierarchy h.field on }) }
         | Prim _ | Csg _ -> Error.raise_at loc "'hierarchy' cannot be used with this object (only with a mesh)")
     | Ident "dtag" ->
         (* a debugging tag, unused by the render *)

@@ -188,10 +188,12 @@ let bounds ~bounds c =
   | (Intersection | Clipped), None ->
       let overlap a b = Array.init 6 (fun i -> if i < 3 then Float.max a.(i) b.(i) else Float.min a.(i) b.(i)) in
       let is_quadric m = match m.shape with Quadric _ -> true | _ -> false in
+      (* CSG::Compute_BBox leaves an intersection's height fields out too *)
+      let is_hfield m = match (c.kind, m.shape) with Intersection, Height_field _ -> true | _ -> false in
       let b =
         Array.fold_left
           (fun acc m ->
-            match (m.inverted || is_quadric m, acc, bounds m.shape) with
+            match (m.inverted || is_quadric m || is_hfield m, acc, bounds m.shape) with
             | false, None, Some b -> Some b
             | false, Some a, Some b -> Some (overlap a b)
             | false, acc, None | true, acc, _ -> acc)

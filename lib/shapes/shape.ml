@@ -30,6 +30,10 @@ let compile (s : Scene.shape) =
   | Polygon p -> Some (Polygon p)
   | Quadric q -> Some (Quadric q)
   | Blob { blob; _ } -> Some (Blob (Blob.compile blob))
+  | Height_field { field; trans } -> if finite trans then Some (Height_field { Hfield.field; tr = trans }) else None
+  | Superellipsoid q -> Some (Superellipsoid q)
+  | Ovus v -> Some (Ovus v)
+  | Sphere_sweep s -> Some (Sphere_sweep (Sphere_sweep.compile s))
   | Poly p -> Some (Poly p)
   | Csg _ -> None
 
@@ -54,6 +58,10 @@ let rec depth w shape o d lo =
   | Polygon p -> Polygon.depth w p o d lo
   | Quadric q -> Quadric.depth w q o d lo
   | Blob b -> Blob_ray.depth w b o d lo
+  | Height_field h -> Hfield.depth w h o d lo
+  | Superellipsoid q -> Superellipsoid.depth w q o d lo
+  | Ovus v -> Ovus.depth w v o d lo
+  | Sphere_sweep s -> Sphere_sweep.depth w s o d lo
   | Poly p -> Poly.depth w p o d lo
 
 and all_hits w ob o d lo n =
@@ -75,6 +83,10 @@ and all_hits w ob o d lo n =
   | Polygon p -> Polygon.hits w p id o d lo n
   | Quadric q -> Quadric.hits w q id o d lo n
   | Blob b -> Blob_ray.hits w b id o d lo n
+  | Height_field h -> Hfield.hits w h id o d lo n
+  | Superellipsoid q -> Superellipsoid.hits w q id o d lo n
+  | Ovus v -> Ovus.hits w v id o d lo n
+  | Sphere_sweep s -> Sphere_sweep.hits w s id o d lo n
   | Poly p -> Poly.hits w p id o d lo n
 
 and inside stack shape p =
@@ -95,6 +107,10 @@ and inside stack shape p =
   | Polygon pg -> Polygon.inside pg p
   | Quadric q -> Quadric.inside q p
   | Blob b -> Blob.inside b p
+  | Height_field h -> Hfield.inside h p
+  | Superellipsoid q -> Superellipsoid.inside q p
+  | Ovus v -> Ovus.inside v p
+  | Sphere_sweep s -> Sphere_sweep.inside s p
   | Poly pl -> Poly.inside pl p
 
 and inside_member stack (m : obj) p =
@@ -107,7 +123,7 @@ and inside_member stack (m : obj) p =
          inverted quadric holds its surface too *)
       inside stack m.shape p
   | Sphere _ | Sphere_placed _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _
-  | Disc _ | Torus _ | Glyph _ | Polygon _ | Poly _ | Blob _ ->
+  | Disc _ | Torus _ | Glyph _ | Polygon _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ ->
       inside stack m.shape p <> m.inverted
 
 (* Spheres, ellipsoids, boxes, planes, triangles and polys answer every box test of POV-Ray's
@@ -115,7 +131,7 @@ and inside_member stack (m : obj) p =
 let rec box_test_free = function
   | Sphere _ | Sphere_placed _ | Ellipsoid _ | Box _ | Box_trans _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Poly _ -> true
   | Csg { kind = Clipped | Bounded | Boxed; members; _ } when Array.length members > 0 -> box_test_free members.(0).shape
-  | Csg _ | Mesh _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Blob _ -> false
+  | Csg _ | Mesh _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ -> false
 
 let cached_depth w shape o d lo =
   match shape with
@@ -143,6 +159,10 @@ let normal obj part p =
   | Polygon pg -> Polygon.normal pg p
   | Quadric q -> Quadric.normal q p
   | Blob b -> Blob.normal b p
+  | Height_field h -> Hfield.normal h part p
+  | Superellipsoid q -> Superellipsoid.normal q p
+  | Ovus v -> Ovus.normal v part p
+  | Sphere_sweep s -> Sphere_sweep.normal s part p
   | Poly pl -> Poly.normal pl p
 
 let geometric_normal obj part p =
@@ -150,14 +170,14 @@ let geometric_normal obj part p =
   | Smooth_triangle t -> Triangle.flat_normal t
   | Mesh m -> Mesh.placed_face_normal m part
   | Sphere _ | Sphere_placed _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _
-  | Quadric _ | Poly _ | Blob _ | Csg _ ->
+  | Quadric _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Csg _ ->
       normal obj part p
 
 let hit_point w obj o depth d =
   match obj.shape with
   | Poly pl -> Poly.hit_point w pl o d depth
   | Sphere _ | Sphere_placed _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _
-  | Blob _ | Csg _ ->
+  | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Csg _ ->
       Vec.madd o depth d
 
 let refine obj p =
@@ -165,7 +185,7 @@ let refine obj p =
   | Sphere s | Sphere_placed { ps = s; _ } -> Sphere.refine s p
   | Ellipsoid e -> Sphere.ellipsoid_refine e p
   | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _
-  | Poly _ | Blob _ | Csg _ ->
+  | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Csg _ ->
       p
 
 (* Every shape's UVCoord in POV-Ray 3.7: spheres, boxes, tori and meshes have their own; every
@@ -180,7 +200,8 @@ let uv obj part (p : Vec.t) =
   | Box_trans b -> Box.moved_uv b part p
   | Torus t -> Torus.uv t p
   | Mesh m -> Mesh.placed_uv m part p
-  | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Cone _ | Disc _ | Glyph _ | Polygon _ | Quadric _ | Poly _ | Blob _ | Csg _ -> Vec.make p.x p.y 0.
+  | Ovus v -> Ovus.uv v p
+  | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Cone _ | Disc _ | Glyph _ | Polygon _ | Quadric _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Sphere_sweep _ | Csg _ -> Vec.make p.x p.y 0.
 
 let rec bounds = function
   | Csg c -> Csg.bounds ~bounds c
@@ -198,6 +219,10 @@ let rec bounds = function
   | Polygon p -> Polygon.bounds p
   | Quadric q -> Quadric.bounds q
   | Blob b -> Some (Blob.bounds b)
+  | Height_field h -> Some (Hfield.bounds h)
+  | Superellipsoid q -> Some (Superellipsoid.bounds q)
+  | Ovus v -> Some (Ovus.bounds v)
+  | Sphere_sweep s -> Some (Sphere_sweep.bounds s)
   | Poly _ -> None (* POV-Ray's BOUND_HUGE box: an infinite object *)
 
 let magnitude shape =
@@ -210,7 +235,7 @@ let magnitude shape =
   | _, Polygon p -> Polygon.magnitude p
   | _, Quadric q -> Quadric.magnitude q
   | None, Poly _ -> 0.
-  | None, (Sphere _ | Sphere_placed _ | Ellipsoid _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Blob _) -> 0.
+  | None, (Sphere _ | Sphere_placed _ | Ellipsoid _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _) -> 0.
 
 let rec pov_box shape =
   match shape with
@@ -228,28 +253,32 @@ let rec pov_box shape =
   | Polygon p -> Polygon.pov_box p
   | Quadric q -> Quadric.pov_box q
   | Blob b -> Blob.pov_box b
+  | Height_field h -> Hfield.pov_box h
+  | Superellipsoid q -> Superellipsoid.pov_box q
+  | Ovus v -> Ovus.pov_box v
+  | Sphere_sweep s -> Sphere_sweep.pov_box s
   | Poly _ -> [||]
   | Csg c -> Csg.pov_box ~bounds ~pov_box c
 
 let costly = function
-  | Ellipsoid _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Poly _ | Blob _ -> true
+  | Ellipsoid _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ -> true
   | Sphere _ | Sphere_placed _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Csg _ -> false
 
 let as_sphere = function
   | Sphere s | Sphere_placed { ps = s; _ } -> Some s
   | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _
-  | Quadric _ | Poly _ | Blob _ | Csg _ ->
+  | Quadric _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Csg _ ->
       None
 
 let face_texture obj part =
   match obj.shape with
   | Mesh m when part >= 0 -> Mesh.texture m.mesh part
   | Sphere _ | Sphere_placed _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _
-  | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Poly _ | Blob _ | Csg _ ->
+  | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Csg _ ->
       -1
 
 let stats_rows s =
   List.concat
-    [ Blob.stats_rows s; Box.stats_rows s; Cone.stats_rows s; Disc.stats_rows s; Csg.stats_rows s; Plane.stats_rows s; Polygon.stats_rows s; Quadric.stats_rows s; Poly.stats_rows s;
+    [ Blob.stats_rows s; Box.stats_rows s; Cone.stats_rows s; Disc.stats_rows s; Csg.stats_rows s; Hfield.stats_rows s; Plane.stats_rows s; Polygon.stats_rows s; Quadric.stats_rows s; Poly.stats_rows s;
       Triangle.stats_rows s;
-      Mesh.stats_rows s; Sphere.stats_rows s; Torus.stats_rows s; Glyph.stats_rows s; Csg.bound_rows s ]
+      Mesh.stats_rows s; Ovus.stats_rows s; Sphere.stats_rows s; Sphere_sweep.stats_rows s; Superellipsoid.stats_rows s; Torus.stats_rows s; Glyph.stats_rows s; Csg.bound_rows s ]

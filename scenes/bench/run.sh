@@ -6,7 +6,8 @@
 #
 # The large scenes are generated into scenes/bench/generated/ by the generators in
 # scenes/bench/gen/ (a 1,000,000-triangle mesh2 terrain, a 100,000-smooth-triangle mesh, sphere
-# fields, a field of mixed shapes: boxes, cylinders, cones, discs, tori). RUNS (default 3) and
+# fields, a field of mixed shapes: boxes, cylinders, cones, discs, tori; with scenes/bench/gen_hfield.sh
+# the 1024×1024 16-bit height map of scenes/bench/hfield.pov). RUNS (default 3) and
 # THREADS (default 2) can be set in the environment; ONLY=PATTERN runs only the cases whose scene
 # path contains PATTERN (e.g. ONLY=shapes).
 set -euo pipefail
@@ -26,6 +27,7 @@ tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 [ -f "$OUT/smooth.pov" ] || "$GEN/gen_smooth.exe" "$OUT/smooth.pov"
 for n in 1000 10000 100000; do [ -f "$OUT/spheres_$n.pov" ] || "$GEN/gen_spheres.exe" "$OUT/spheres_$n.pov" "$n"; done
 [ -f "$OUT/shapes_2000.pov" ] || "$GEN/gen_shapes.exe" "$OUT/shapes_2000.pov" 2000
+[ -f "$OUT/hfield_1024.png" ] || bash scenes/bench/gen_hfield.sh "$OUT/hfield_1024.png"
 
 # scene|switches
 CASES=(
@@ -39,6 +41,7 @@ CASES=(
   "$OUT/shapes_2000.pov|+W640 +H480 -A"
   "$OUT/shapes_2000.pov|+W640 +H480 +A0.3"
   "scenes/bench/textures.pov|+W640 +H480 +A0.3"
+  "scenes/bench/hfield.pov|+W640 +H480 -A"
 )
 
 median() { sort -g | awk '{a[NR]=$1} END {if (NR%2) print a[(NR+1)/2]; else printf "%.4f\n", (a[NR/2]+a[NR/2+1])/2}'; }

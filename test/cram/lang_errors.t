@@ -448,12 +448,12 @@ textures/pigments/blkhole.pov calls Correct_Pigment_Gamma(pigment { DMFWood4 …
 
 A directive is no part of a declared value, even when the declaration runs it while looking past
 its value (array[3] looks for a '{'): an unsupported value in its condition is the error there
-(POV-Ray takes the branch max_extent decides, here the false one; incdemo/circletext.pov reaches
-the same through Circle_Text in shapes.inc):
+(POV-Ray takes the branch the value decides; incdemo/circletext.pov reached the same through
+Circle_Text in shapes.inc while max_extent was not read):
 
   $ cat > ifunsup.pov <<'POV'
   > #declare S = sphere { 0, 1 }
-  > #declare FW = max_extent(S).x;
+  > #declare FW = strlen(datetime(now));
   > #local C = array[3]
   > #if (FW > 2)
   >   #error "too long"
@@ -461,10 +461,10 @@ the same through Circle_Text in shapes.inc):
   > sphere { 0, 1 }
   > POV
   $ povml --dump ifunsup.pov
-  ifunsup.pov:4:6: error: not supported yet: the function 'max_extent' (used through 'FW')
+  ifunsup.pov:4:6: error: not supported yet: the function 'datetime' (used through 'FW')
       4 | #if (FW > 2)
         |      ^
-  ifunsup.pov:2:15: note: 'FW' was declared here
+  ifunsup.pov:2:22: note: 'FW' was declared here
   [1]
 
 Not checked here, because POV-Ray refuses them and povml does not (povml accepts each silently):

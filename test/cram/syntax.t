@@ -98,10 +98,10 @@ source, in a union, in an expression:
       2 | light_source { <0, 5, 0>, rgb 1 area_illumination }
         |                                 ^
   [1]
-  $ printf '#version 3.7;\nunion {\n  sphere { 0, 1 }\n  sphere_sweep { linear_spline 2, <0,0,0>, 0.1, <1,0,0>, 0.1 }\n}\n' > sweep.pov
-  $ povml --dump sweep.pov
-  sweep.pov:4:3: error: not supported yet: 'sphere_sweep'
-      4 |   sphere_sweep { linear_spline 2, <0,0,0>, 0.1, <1,0,0>, 0.1 }
+  $ printf '#version 3.7;\nunion {\n  sphere { 0, 1 }\n  julia_fractal { <-0.083, 0.0, -0.83, -0.025> }\n}\n' > julia.pov
+  $ povml --dump julia.pov
+  julia.pov:4:3: error: not supported yet: 'julia_fractal'
+      4 |   julia_fractal { <-0.083, 0.0, -0.83, -0.025> }
         |   ^
   [1]
   $ printf '#version 3.7;\nsphere { 0, 1 translate vturbulence(2, 0.5, 6, <1, 2, 3>) }\n' > vturb.pov

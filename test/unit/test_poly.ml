@@ -33,7 +33,7 @@ let rec poly_of (o : Scene.obj) =
   | Csg { kind = Intersection; members = [ m ] } ->
       let p, inv = poly_of m.mobj in
       (p, inv <> m.inverted)
-  | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Csg _ | Glyph _ | Polygon _ | Quadric _ | Blob _ ->
+  | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Csg _ | Glyph _ | Polygon _ | Quadric _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ ->
       Alcotest.fail "expected a poly"
 
 let parsed text = poly_of (the_object (scene (v37 ^ text)))

@@ -27,6 +27,7 @@ let () =
       ("Polysolv", Test_polysolv.tests);
       ("Torus", Test_torus.tests);
       ("Blob", Test_blob.tests);
+      ("Height field", Test_hfield.tests);
       ("Poly (poly, cubic, quartic)", Test_poly.tests);
       ("UV coordinates and uv_mapping", Test_uv.tests);
       ("Sphere normal", Test_sphere_normal.tests);
@@ -58,4 +59,5 @@ let () =
       ("Interrupt", Test_interrupt.tests);
       ("Normals (perturbed normals)", Test_normals.tests);
       ("Images (image_map, image_pattern, bump_map)", Test_images.tests);
+      ("Superellipsoid, ovus, sphere_sweep", Test_superq.tests);
     ])
