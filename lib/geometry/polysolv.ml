@@ -1,20 +1,25 @@
 (* POV-Ray's Solve_Polynomial (POVRAY-3.7 §15.6, math/polysolv.cpp of the default build), written
-   anew for degrees up to 4. The arithmetic follows POV-Ray's order of operations term by term:
-   a root that differs in its last bit can move a torus's silhouette by a pixel. *)
+   anew for every degree up to MAX_ORDER (35): closed forms up to 4, Sturm sequences above. The
+   arithmetic follows POV-Ray's order of operations term by term: a root that differs in its last
+   bit can move a torus's silhouette by a pixel. *)
 
 let small_enough = 1e-10 (* a coefficient below this is 0 *)
 let relerror = 1e-12 (* the relative accuracy asked of a Sturm root *)
 let max_iterations = 50
 let fudge_factor1 = 1e12 (* coefficients this far apart make a quartic "difficult" *)
 let max_distance = 1e7 (* Sturm roots are looked for in [0, MAX_DISTANCE] *)
+let max_order = 35 (* MAX_ORDER: the highest degree solved *)
+let stride = max_order + 1 (* the room of one polynomial of the Sturm sequence *)
 let two_pi_3 = 2.0943951023931954923084
 let four_pi_3 = 4.1887902047863909846168
 
-(* A Sturm sequence of at most 5 polynomials of degree ≤ 4: polynomial k has its coefficients in
-   seq.(5k …) in ASCENDING powers (as POV-Ray stores them there) and its degree in ord.(k). *)
+(* A Sturm sequence of at most MAX_ORDER + 1 polynomials of degree ≤ MAX_ORDER: polynomial k has
+   its coefficients in seq.(stride·k …) in ASCENDING powers (as POV-Ray stores them there) and its
+   degree in ord.(k). *)
 type work = { seq : float array; ord : int array; cub : float array; croots : float array; mutable eliminated : bool }
 
-let create () = { seq = Array.make 25 0.; ord = Array.make 5 0; cub = Array.make 4 0.; croots = Array.make 3 0.; eliminated = false }
+let create () =
+  { seq = Array.make (stride * stride) 0.; ord = Array.make stride 0; cub = Array.make 4 0.; croots = Array.make 3 0.; eliminated = false }
 
 let eval c i n x =
   let v = ref c.(i) in
@@ -162,7 +167,7 @@ let difficult c i =
 
 (* polynomial k of the sequence at x, ascending coefficients, by Horner's rule from the top *)
 let seq_eval w k x =
-  let s = w.seq and b = 5 * k in
+  let s = w.seq and b = stride * k in
   let n = w.ord.(k) in
   let v = ref s.(b + n) in
   for m = n - 1 downto 0 do
@@ -173,9 +178,10 @@ let seq_eval w k x =
 (* modp: polynomial r := u mod v (v's leading coefficient is ±1), near-zero top coefficients
    cleared; returns r's degree (0 when the remainder is a constant). *)
 let modp w u v r =
-  let s = w.seq and bu = 5 * u and bv = 5 * v and br = 5 * r in
+  let s = w.seq and bu = stride * u and bv = stride * v and br = stride * r in
   let uo = w.ord.(u) and vo = w.ord.(v) in
-  Array.blit s bu s br 5;
+  (* r := u; the coefficients above u's degree are never read *)
+  Array.blit s bu s br (uo + 1);
   if s.(bv + vo) < 0. then begin
     let k = ref (uo - vo - 1) in
     while !k >= 0 do
@@ -211,18 +217,18 @@ let buildsturm w ord =
   w.ord.(1) <- ord - 1;
   let f = Float.abs (s.(ord) *. float_of_int ord) in
   for i = 1 to ord do
-    s.(5 + i - 1) <- s.(i) *. float_of_int i /. f
+    s.(stride + i - 1) <- s.(i) *. float_of_int i /. f
   done;
   let sp = ref 2 in
   while modp w (!sp - 2) (!sp - 1) !sp <> 0 do
-    let b = 5 * !sp and o = w.ord.(!sp) in
+    let b = stride * !sp and o = w.ord.(!sp) in
     let f = -.Float.abs s.(b + o) in
     for m = o downto 0 do
       s.(b + m) <- s.(b + m) /. f
     done;
     incr sp
   done;
-  s.(5 * !sp) <- -.s.(5 * !sp);
+  s.(stride * !sp) <- -.s.(stride * !sp);
   !sp
 
 (* Sign changes along the sequence's values, a 0 counting as a change from it (numchanges, and
@@ -241,7 +247,7 @@ let numchanges w np a =
    leading one (at +∞) *)
 let coefficient_changes w np ~leading =
   let s = w.seq in
-  let coef k = if leading then s.((5 * k) + w.ord.(k)) else s.(5 * k) in
+  let coef k = if leading then s.((stride * k) + w.ord.(k)) else s.(stride * k) in
   let n = ref 0 in
   let lf = ref (coef 0) in
   for k = 1 to np do
@@ -356,35 +362,45 @@ let sturm w c i n y j =
     let atmin = numchanges w np 0. and atmax = numchanges w np max_distance in
     if atmin - atmax = 0 then 0 else sbisect w np 0. max_distance atmin atmax y j
 
-let solve w c n ~sturm:use_sturm ~eps roots =
-  if n > 4 then invalid_arg "Polysolv.solve: degree above 4";
+let solve_at w c o n ~sturm:use_sturm ~eps roots j =
+  if n > max_order then invalid_arg "Polysolv.solve: degree above 35";
   (* the real degree: small leading coefficients dropped *)
-  let i = ref 0 in
-  while Float.abs c.(!i) < small_enough && !i < n do
+  let i = ref o in
+  while Float.abs c.(!i) < small_enough && !i - o < n do
     incr i
   done;
   let i = !i in
   w.eliminated <- false;
-  match n - i with
+  match n - (i - o) with
   | 0 -> 0
   | 1 ->
       if c.(i) <> 0. then begin
-        roots.(0) <- -.c.(i + 1) /. c.(i);
+        roots.(j) <- -.c.(i + 1) /. c.(i);
         1
       end
       else 0
-  | 2 -> quadratic c i roots 0
+  | 2 -> quadratic c i roots j
   | 3 ->
       (* root elimination: a constant term tiny against the linear one means a root at 0 *)
-      if eps > 0. && c.(i + 2) <> 0. && Float.abs (c.(i + 3) /. c.(i + 2)) < eps then (w.eliminated <- true; quadratic c i roots 0)
-      else if use_sturm then sturm w c i 3 roots 0
-      else cubic c i roots 0
-  | _ ->
+      if eps > 0. && c.(i + 2) <> 0. && Float.abs (c.(i + 3) /. c.(i + 2)) < eps then (w.eliminated <- true; quadratic c i roots j)
+      else if use_sturm then sturm w c i 3 roots j
+      else cubic c i roots j
+  | 4 ->
       if eps > 0. && c.(i + 3) <> 0. && Float.abs (c.(i + 4) /. c.(i + 3)) < eps then begin
         w.eliminated <- true;
-        if use_sturm then sturm w c i 3 roots 0 else cubic c i roots 0
+        if use_sturm then sturm w c i 3 roots j else cubic c i roots j
       end
-      else if use_sturm || difficult c i then sturm w c i 4 roots 0
-      else quartic w c i roots 0
+      else if use_sturm || difficult c i then sturm w c i 4 roots j
+      else quartic w c i roots j
+  | m ->
+      (* above 4, always Sturm; a root at 0 is counted as eliminated but POV-Ray then solves the
+         whole polynomial anyway, its lower-degree roots overwritten (kept: it is what it draws) *)
+      if eps > 0. && c.(i + m - 1) <> 0. && Float.abs (c.(i + m) /. c.(i + m - 1)) < eps then begin
+        w.eliminated <- true;
+        ignore (sturm w c i (m - 1) roots j)
+      end;
+      sturm w c i m roots j
+
+let solve w c n ~sturm ~eps roots = solve_at w c 0 n ~sturm ~eps roots 0
 
 let eliminated w = w.eliminated

@@ -1,6 +1,6 @@
 (** POV-Ray's polynomial solver, [Solve_Polynomial] of its default build (POVRAY-3.7 §15.6), up to
-    degree 4: closed forms for degrees 1–3, Ferrari's quartic, root elimination, the [difficult]
-    test and Sturm sequences with modified regula falsi. Every operation is done in the same
+    degree 35 (MAX_ORDER): closed forms for degrees 1–3, Ferrari's quartic, root elimination, the
+    [difficult] test and Sturm sequences with modified regula falsi (every degree above 4). Every operation is done in the same
     order as POV-Ray does it, so the roots are the same to the last bit. Nothing is allocated per
     call: the work room comes from a [work] value made once per render worker. *)
 
@@ -11,13 +11,18 @@ val create : unit -> work
 (** [create ()] is fresh work room. A [work] must not be used by two solves at the same time. *)
 
 val solve : work -> float array -> int -> sturm:bool -> eps:float -> float array -> int
-(** [solve w c n ~sturm ~eps roots] solves [c.(0)·xⁿ + c.(1)·xⁿ⁻¹ + … + c.(n) = 0] for [n] ≤ 4
+(** [solve w c n ~sturm ~eps roots] solves [c.(0)·xⁿ + c.(1)·xⁿ⁻¹ + … + c.(n) = 0] for [n] ≤ 35
     and writes its roots into [roots.(0 …)] (room for [n]), returning their number. Leading
     coefficients below 1e-10 in magnitude lower the degree. With [eps] > 0 a root at 0 is dropped
     when [|c.(n)/c.(n−1)| < eps] (degrees 3 and 4). [sturm] chooses Sturm sequences (only roots in
     [0, 1e7]) over the closed forms for degrees 3 and 4; a quartic with coefficients too far apart
-    ([difficult]) always uses them. The roots are in POV-Ray's order, not sorted, and may
-    repeat. Raises [Invalid_argument] for [n] > 4. *)
+    ([difficult]) always uses them; degrees above 4 always do (with [eps] > 0 a root at 0 there is
+    only counted as eliminated: POV-Ray solves the whole polynomial all the same). The roots are in
+    POV-Ray's order, not sorted, and may repeat. Raises [Invalid_argument] for [n] > 35. *)
+
+val solve_at : work -> float array -> int -> int -> sturm:bool -> eps:float -> float array -> int -> int
+(** [solve_at w c o n ~sturm ~eps roots j] is [solve] of the polynomial whose coefficients start at
+    [c.(o)], its roots written from [roots.(j)]. *)
 
 val quadratic : float array -> int -> float array -> int -> int
 (** [quadratic x i y j] is POV-Ray's [solve_quadratic] of [x.(i)·t² + x.(i+1)·t + x.(i+2)]: the

@@ -108,6 +108,7 @@ type shape =
   | Sor of Sor.t  (** sor.cpp: through its transform *)
   | Julia of Julia.t  (** fractal.cpp: the ray taken into fractal space, its direction renormalised *)
   | Bicubic of Bezier.t  (** bezier.cpp: in world space, type 1 with its tree of bounding spheres *)
+  | Poly of Poly.t  (** poly.cpp: poly, cubic, quartic, through its transform; unbounded *)
 
 (** A CSG's members and how their hits are kept (§16.2, §16.3). *)
 and csg = {

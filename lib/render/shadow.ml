@@ -149,7 +149,9 @@ let rec walk ctx ~slot (p : Vec.t) (lp : Vec.t) lo first (o : Vec.t) (l : Vec.t)
     end
     else
       let part = ctx.found.part in
-      let tex = if obj.inner_tex = None then Surfaces.at obj part else Surfaces.seen obj part ~inside:(inside_hit obj part (Vec.madd o t l) l) in
+      (* the crossing, as the shape gives it (a poly's comes back from its own space) *)
+      let q = Shape.hit_point ctx.shapes obj o t l in
+      let tex = if obj.inner_tex = None then Surfaces.at obj part else Surfaces.seen obj part ~inside:(inside_hit obj part q l) in
       let f =
         match tex with
         | Plain sf when (not obj.uv_mapped) && obj.caustics = 0. ->
@@ -159,15 +161,13 @@ let rec walk ctx ~slot (p : Vec.t) (lp : Vec.t) lo first (o : Vec.t) (l : Vec.t)
               match sf.paint with
               | Fixed -> sf.filcol
               | Varying at ->
-                  let q = Vec.madd o t l in
                   (at (if sf.needs_uv then { Patterns.no_hit with uv = Shape.uv obj part q } else Patterns.no_hit) q).filcol
             in
             if List.mem obj.iid interiors && obj.fade_power > 0. && Optics.fades obj then Optics.fade obj t f else f
-        | Plain _ | Layered _ | Blended _ | Uv_mapped _ | Chosen _ | Cutaway -> textured ctx obj part (Vec.madd o t l) l t interiors tex
+        | Plain _ | Layered _ | Blended _ | Uv_mapped _ | Chosen _ | Cutaway -> textured ctx obj part q l t interiors tex
       in
       let lc = Rgb.make (f32 (lc.r *. f.r)) (f32 (lc.g *. f.g)) (f32 (lc.b *. f.b)) in
       let interiors = if List.mem obj.iid interiors then Optics.remove obj.iid interiors else obj.iid :: interiors in
-      let q = Vec.madd o t l in
       if not ctx.robust then walk ctx ~slot p lp lo false q l (remaining -. t) interiors lc
       else
         let q = Shape.refine obj q in

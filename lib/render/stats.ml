@@ -77,6 +77,8 @@ type t = {
   mutable fractal_hits : int;
   mutable bicubic_tests : int;
   mutable bicubic_hits : int;
+  mutable poly_tests : int;
+  mutable poly_hits : int;
 }
 
 let create () =
@@ -95,6 +97,7 @@ let create () =
     superellipsoid_tests = 0; superellipsoid_hits = 0; ovus_tests = 0; ovus_hits = 0; sphere_sweep_tests = 0; sphere_sweep_hits = 0;
     prism_tests = 0; prism_hits = 0; prism_bound_tests = 0; prism_bound_hits = 0; lathe_tests = 0; lathe_hits = 0; lathe_bound_tests = 0; lathe_bound_hits = 0; sor_tests = 0; sor_hits = 0; sor_bound_tests = 0; sor_bound_hits = 0;
     fractal_tests = 0; fractal_hits = 0; bicubic_tests = 0; bicubic_hits = 0;
+    poly_tests = 0; poly_hits = 0;
   }
 
 let merge a b =
@@ -175,6 +178,8 @@ let merge a b =
     fractal_hits = a.fractal_hits + b.fractal_hits;
     bicubic_tests = a.bicubic_tests + b.bicubic_tests;
     bicubic_hits = a.bicubic_hits + b.bicubic_hits;
+    poly_tests = a.poly_tests + b.poly_tests;
+    poly_hits = a.poly_hits + b.poly_hits;
   }
 
 type row = { name : string; tests : int; hits : int }

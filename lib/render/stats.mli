@@ -77,6 +77,8 @@ type t = {
   mutable fractal_hits : int;  (** tests whose march found a crossing, whatever its depth *)
   mutable bicubic_tests : int;  (** bicubic patches tested *)
   mutable bicubic_hits : int;  (** tests that found a crossing beyond 1e-5 *)
+  mutable poly_tests : int;  (** polys, cubics and quartics tested *)
+  mutable poly_hits : int;  (** tests that found a root, whatever its depth *)
 }
 
 val create : unit -> t

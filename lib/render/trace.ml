@@ -116,8 +116,7 @@ and shade ctx ~reflected obj part depth ~level ~weight ~interiors (o : Vec.t) (d
   if not (1. > sc.adc_bailout) then black
   else
     (* the hit point P and its normal N, turned toward the ray (§3.1) *)
-    let p = Vec.madd o depth d in
-    let p = if ctx.robust then Shape.refine obj p else Shape.hit_point ctx.shapes obj depth p in
+    let p = if ctx.robust then Shape.refine obj (Vec.madd o depth d) else Shape.hit_point ctx.shapes obj o depth d in
     let n = Shape.hit_normal ctx.shapes obj part p in
     let dn = Vec.dot n d in
     let tex = if obj.inner_tex = None then Surfaces.at obj part else Surfaces.seen obj part ~inside:(if obj.inverted then dn < 0. else dn > 0.) in

@@ -276,6 +276,9 @@ let rec shape = function
       Printf.sprintf "sor { // %d segments, radius %s … %s, height %s … %s%s%s%s" (Array.length s.segs) (num s.radius1) (num s.radius2)
         (num s.height1) (num s.height2) (if s.closed then "" else " open") (if s.sturm then " sturm" else "")
         (trans (if Transform.is_identity s.tr then None else Some s.tr))
+  | Poly { order; coeffs; sturm; tr } ->
+      Printf.sprintf "poly { %d, <%s>%s%s" order (String.concat ", " (Array.to_list (Array.map num coeffs)))
+        (if sturm then " sturm" else "") (trans (Some tr))
   | Quadric q ->
       Printf.sprintf "quadric { <%s, %s, %s>, <%s, %s, %s>, <%s, %s, %s>, %s // box <%s, %s, %s> + <%s, %s, %s>" (num q.xx)
         (num q.yy) (num q.zz) (num q.xy) (num q.xz) (num q.yz) (num q.lx) (num q.ly) (num q.lz) (num q.k) (num q.box_llx)

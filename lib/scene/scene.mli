@@ -351,6 +351,9 @@ type shape =
   | Polygon of Polygon.t
       (** §15.7: the outline in its own plane, placed by its transform (its frame, then every
           modifier); flat, with no inside *)
+  | Poly of Poly.t
+      (** poly.cpp: poly, cubic and quartic, the coefficients as written, placed by the
+          transform every modifier composes into; [inverse] is CSG's, as for every primitive *)
   | Quadric of Quadric.t
       (** quadrics.cpp: in world space; every modifier transforms its coefficients and maps its
           box, [inverse] negates the coefficients (and sets [inverted], as POV-Ray's flag) *)

@@ -13,6 +13,7 @@ let rec invert (o : V.obj) : V.obj =
   | Prim (Sphere _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Csg _ | Glyph _ | Blob _ | Height_field _) -> { o with inverted = not o.inverted }
   | Prim (Superellipsoid _ | Ovus _ | Sphere_sweep _) -> { o with inverted = not o.inverted }
   | Prim (Prism _ | Lathe _ | Sor _) -> { o with inverted = not o.inverted } (* Invert_Flag of INVERTED_FLAG *)
+  | Prim (Poly _) -> { o with inverted = not o.inverted } (* Poly::Invert toggles its flag *)
   | Prim (Polygon _) -> o (* Polygon::Invert does nothing, not even the flag *)
   | Prim (Bicubic _) -> o (* BicubicPatch::Invert does nothing *)
   | Prim (Julia f) -> { o with shape = Prim (Julia (Julia.invert f)) } (* Fractal::Invert: its own flag, not INVERTED_FLAG *)
@@ -166,6 +167,7 @@ let bounds_kept (o : V.obj) =
   match (core o).shape with
   | Csg { kind = Union | Merge | Intersection; _ } -> true
   | Prim (Quadric q) -> q.box_lenx >= 2e10 || q.box_leny >= 2e10 || q.box_lenz >= 2e10
+  | Prim (Poly _) -> true
   | Csg { kind = Clipped | Bounded | Boxed; _ } | Prim _ -> false
 
 let rec unbound st (o : V.obj) : V.obj =
@@ -177,11 +179,12 @@ let rec unbound st (o : V.obj) : V.obj =
       { o with shape = Csg { kind; members = V.Member_obj (unbound st c) :: rest; split } }
   | Prim _ | Csg _ -> o
 
-(* A finite union's box: its members' boxes are all finite (no plane, no infinite quadric) *)
+(* A finite union's box: its members' boxes are all finite (no plane, no infinite quadric, no poly) *)
 let rec finite (o : V.obj) =
   match o.shape with
   | Prim (Plane _) -> false
   | Prim (Quadric q) -> q.box_lenx < 2e10 && q.box_leny < 2e10 && q.box_lenz < 2e10
+  | Prim (Poly _) -> false (* Poly::Compute_BBox: BOUND_HUGE *)
   | Prim _ -> true
   | Csg { kind = Union | Merge; members; _ } -> List.for_all (function V.Member_obj c -> finite c | V.Member_light _ -> true) members
   | Csg { kind = Intersection | Clipped | Bounded | Boxed; members; _ } ->

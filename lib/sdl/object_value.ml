@@ -55,6 +55,11 @@ let rec set_double_illuminate b (o : V.obj) =
 
 (* §15.5: a torus takes [sturm] (solve with Sturm sequences) among its modifiers, wherever it
    stands *)
+let is_poly (o : V.obj) = match o.shape with Prim (Poly _) -> true | Prim _ | Csg _ -> false
+
+let set_poly_sturm on (o : V.obj) =
+  match o.shape with Prim (Poly p) -> { o with shape = Prim (Poly { p with sturm = on }) } | Prim _ | Csg _ -> o
+
 let is_torus (o : V.obj) = match o.shape with Prim (Torus _) -> true | Prim _ | Csg _ -> false
 
 let set_sturm (o : V.obj) =

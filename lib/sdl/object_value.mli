@@ -19,6 +19,13 @@ val set_double_illuminate : bool -> Value.obj -> Value.obj
 (** [set_double_illuminate b o] is [o] with double_illuminate [b] on itself and every member at
     any depth (§16.5). *)
 
+val is_poly : Value.obj -> bool
+(** [is_poly o] holds when [o] is a poly, cubic or quartic, which take [sturm] too. *)
+
+val set_poly_sturm : bool -> Value.obj -> Value.obj
+(** [set_poly_sturm on o] is the poly [o] with [sturm] set to [on] (POV-Ray's [sturm [BOOL]]); any
+    other object unchanged. *)
+
 val is_torus : Value.obj -> bool
 (** [is_torus o] holds when [o] is a torus, the one object that takes [sturm] (§15.5). *)
 

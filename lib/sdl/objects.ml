@@ -10,8 +10,7 @@ open Csg_build
 
 (* Objects povml does not render yet: inside a union they are reported as "not supported yet". *)
 let unsupported_objects =
-  [ "isosurface"; "parametric"; "cubic";
-    "quartic"; "poly"; "polynomial"; "composite" ]
+  [ "isosurface"; "parametric"; "composite" ]
 
 let show_vec (v : Vec.t) = Printf.sprintf "<%g, %g, %g>" v.x v.y v.z
 
@@ -143,6 +142,17 @@ let rec parse_object st : V.obj =
       | _ ->
           let shape = Blob_reader.parse st in
           Blob_reader.finish (parse_object_mods st (new_obj shape loc) "blob"))
+  | Ident ("poly" | "cubic" | "quartic" | "polynomial" as kw) ->
+      advance st;
+      open_block st kw;
+      let shape =
+        match kw with
+        | "cubic" -> Shape_reader.poly st ~order:3
+        | "quartic" -> Shape_reader.poly st ~order:4
+        | "polynomial" -> Shape_reader.polynomial st
+        | _ -> Shape_reader.poly st ~order:0
+      in
+      parse_object_mods st (new_obj shape loc) kw
   | Ident ("polygon" | "quadric" as kw) ->
       advance st;
       open_block st kw;
@@ -315,6 +325,7 @@ and parse_object_mods st (o : V.obj) what : V.obj =
         let on = parse_bool_opt st in
         match o.shape with Prim (Ovus v) -> loop { o with shape = Prim (Ovus { v with sturm = on }) } | Prim _ | Csg _ -> loop o)
     | Ident "sturm" when is_spline_shape o -> advance st; loop (set_sturm o)
+    | Ident "sturm" when is_poly o -> advance st; loop (set_poly_sturm (parse_bool_opt st) o)
     | Ident "hollow" -> advance st; ignore (parse_bool_opt st); loop o
     | Ident "inverse" -> advance st; loop (invert o)
     | Ident "split_union" -> (

@@ -74,7 +74,7 @@ let trace st (o : V.obj) (origin : Vec.t) (dir : Vec.t) =
       let b = !best * width in
       let leaf = sc.objects.(int_of_float h.(b + 2)) and part = int_of_float h.(b + 1) in
       (* a julia fractal reports the point its march found and the normal there *)
-      let p = Shape.hit_point w leaf h.(b) (Vec.make h.(b + 3) h.(b + 4) h.(b + 5)) in
+      let p = Shape.hit_point w leaf origin h.(b) d in
       let nrm = Shape.hit_normal w leaf part p in
       Some (p, if leaf.inverted then Vec.neg nrm else nrm)
   end

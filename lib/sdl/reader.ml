@@ -125,6 +125,7 @@ let keywords =
     "uv_indices"; "inside_vector"; "box"; "no_image"; "no_reflection"; "double_illuminate"; "spotlight";
     "parallel"; "point_at"; "radius"; "tightness"; "orthographic"; "looks_like"; "cylinder"; "cone"; "disc";
     "open"; "torus"; "union"; "merge"; "intersection"; "difference"; "inverse"; "split_union"; "clipped_by"; "text"; "ttf"; "polygon"; "quadric";
+    "quartic"; "poly"; "polynomial";
     "blob"; "height_field"; "superellipsoid"; "ovus"; "sphere_sweep"; "prism"; "lathe"; "sor"; "julia_fractal"; "reciprocal"; "bicubic_patch";
     "material"; "texture_map"; "interior_texture"; "tiles"; "irid"; "uv_mapping"; "crand"; "image_map"; "bump_map"; "image_pattern"; "caustics"; "cutaway_textures"; "pigment_pattern";
     "bounded_by"; "trace"; "inside"; "min_extent"; "max_extent" ]
@@ -153,7 +154,7 @@ let keywords =
 (* POV-Ray keywords that a later povml will read; meeting one is a located "not supported yet". *)
 let unsupported =
   [ "isosurface";
-    "parametric"; "quartic"; "poly"; "rotate"; "scale"; "matrix"; "transform";
+    "parametric"; "rotate"; "scale"; "matrix"; "transform";
     "area_light";
     "projected_through"; "fisheye"; "panoramic"; "ultra_wide_angle"; "omnimax";
     "radiosity"; "photons";
@@ -166,7 +167,7 @@ let unsupported =
   (* more of POV-Ray 3.7's reserved words that start something povml does not read, each found
      where POV-Ray reads it in an object, a light_source, a texture or an expression (checked word
      by word with POV-Ray: parser/reswords.cpp) *)
-  @ [ "polynomial"; "composite"; "mesh_camera"; "adaptive"; "area_illumination"; "circular"; "jitter";
+  @ [ "composite"; "mesh_camera"; "adaptive"; "area_illumination"; "circular"; "jitter";
       "orient"; "media_attenuation"; "media_interaction"; "material_map"; "density"; "density_map"; "spline";
       "datetime"; "function" ]
 

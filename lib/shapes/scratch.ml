@@ -41,6 +41,7 @@ type t = {
   fractal_stack : growable;
   fractal_points : float array;
   mutable fractal_count : int;
+  poly_room : float array;
 }
 
 let hit_width = 6
@@ -79,6 +80,7 @@ let create ~robust stats =
     fractal_stack = { room = Array.make 84 0. };
     fractal_points = Array.make (8 * 32) nan;
     fractal_count = 0;
+    poly_room = Array.make 512 0.;
   }
 
 let push_hit w n t part id px py pz =

@@ -59,6 +59,7 @@ type t = {
           stack as the march left it, the patch's interpolated over its triangle), which neither
           the depth nor the point alone gives back *)
   mutable fractal_count : int;  (** how many crossings were written there (modulo 32 is the next slot) *)
+  poly_room : float array;  (** a poly's powers of the ray, its polynomial in t, roots and depths *)
 }
 
 val create : robust:bool -> Stats.t -> t

@@ -39,14 +39,15 @@ val uv : Compiled.obj -> int -> Vec.t -> Vec.t
     boxes, tori and meshes (their uv_vectors blended); every other shape has POV-Ray's default,
     the world point's x and y. *)
 
-val hit_point : Scratch.t -> Compiled.obj -> float -> Vec.t -> Vec.t
-(** [hit_point w obj depth p] is the point at which POV-Ray shades the hit at [depth] on [obj],
-    [p] = origin + depth·direction for every shape but the julia fractal, whose march reports its
-    own point (Julia.point). *)
-
 val hit_normal : Scratch.t -> Compiled.obj -> int -> Vec.t -> Vec.t
 (** [hit_normal w obj part p] is [normal obj part p] for every shape but the julia fractal, whose
     normal at a crossing its march reported is the one computed there (Julia.hit_normal). *)
+
+val hit_point : Scratch.t -> Compiled.obj -> Vec.t -> float -> Vec.t -> Vec.t
+(** [hit_point w obj o depth d] is the point POV-Ray shades where the ray from [o] along [d] hits
+    the primitive [obj] at [depth]: [o + depth·d], except for a poly, whose point comes back from
+    its own space ([Poly.hit_point]), and a julia fractal, whose march reports its own point
+    ([Julia.point]). *)
 
 val refine : Compiled.obj -> Vec.t -> Vec.t
 (** [refine obj p] is the hit point [p] put back onto the surface where the shape allows it

@@ -31,6 +31,7 @@ let () =
       ("Prism, lathe, sor", Test_spline.tests);
       ("Julia fractal", Test_julia.tests);
       ("Bicubic patch", Test_bezier.tests);
+      ("Poly (poly, cubic, quartic)", Test_poly.tests);
       ("UV coordinates and uv_mapping", Test_uv.tests);
       ("Sphere normal", Test_sphere_normal.tests);
       ("Text", Test_text.tests);
