@@ -173,7 +173,7 @@ let crossings (w : Scratch.t) t ~all (o : Vec.t) (dir : Vec.t) =
                      (((2. *. e.by *. dyp) +. (e.cy *. e.cy)) *. r) +. (2. *. e.by *. dy *. m) -. (((2. *. e.bx *. e.dx) +. (e.cx *. e.cx)) *. dy2);
                    c6.(5) <- 2. *. ((e.cy *. ((dyp *. r) +. (dy *. m))) -. (e.cx *. e.dx *. dy2));
                    c6.(6) <- (dyp *. ((dyp *. r) +. (2. *. dy *. m))) +. (dy2 *. ((px *. px) +. (pz *. pz) -. (e.dx *. e.dx)));
-                   (Polysolv_high.solve w.sextic c6 6 ~sturm:t.sturm ~eps:0. roots6, roots6)
+                   (Polysolv.solve w.sextic c6 6 ~sturm:t.sturm ~eps:0. roots6, roots6)
              in
              for q = n - 1 downto 0 do
                let wv = rs.(q) in

@@ -1,7 +1,7 @@
 (** The lathe (POV-Ray's [shape/lathe.cpp], [Parse_Lathe]): a 2-D spline of (radius, height)
     points rotated about the Y axis of its own space. A ray meets a segment where a polynomial in
     the curve parameter vanishes: degree 2 (linear spline), 4 (quadratic) or 6 (cubic and Bezier,
-    solved by [Polysolv_high]'s Sturm sequences). No caps. Placed by its transform, the ray
+    solved by [Polysolv]'s Sturm sequences). No caps. Placed by its transform, the ray
     renormalised in lathe space; depths in world units. *)
 
 type spline = Prism.spline

@@ -32,7 +32,7 @@ type t = {
   quartic : Polysolv.work;
   blob : blob_room;
   curve : growable;
-  sextic : Polysolv_high.work;
+  sextic : Polysolv.work;
   bcyl : growable;
   sextic_coeffs : float array;
   sextic_roots : float array;
@@ -71,7 +71,7 @@ let create ~robust stats =
     quartic = Polysolv.create ();
     blob = { bounds = [||]; marks = [||]; fcoeffs = [||]; queue = [||]; found = Array.make 16 0.; acc = Array.make 8 0. };
     curve = { room = Array.make 64 0. };
-    sextic = Polysolv_high.create ();
+    sextic = Polysolv.create ();
     bcyl = { room = Array.make 64 0. };
     sextic_coeffs = Array.make 7 0.;
     sextic_roots = Array.make 6 0.;

@@ -43,7 +43,7 @@ type t = {
   quartic : Polysolv.work;  (** the polynomial solver's room *)
   blob : blob_room;  (** a blob's intervals, quartics and depths *)
   curve : growable;  (** a prism's, lathe's or sor's crossings as (depth, part) pairs *)
-  sextic : Polysolv_high.work;  (** the degree-6 solver's room (a cubic lathe) *)
+  sextic : Polysolv.work;  (** the degree-6 solver's room (a cubic lathe) *)
   bcyl : growable;  (** a lathe's or sor's bounding-cylinder crossings ([Bcyl]) *)
   sextic_coeffs : float array;  (** a lathe segment's polynomial (7 coefficients) … *)
   sextic_roots : float array;  (** … and its roots (6) *)

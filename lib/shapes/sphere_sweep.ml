@@ -181,11 +181,11 @@ let bezier_01 ?stats work degree (coef : float array) roots =
     else
       let nonneg = nonneg && d.(degree - i) >= 0. and nonpos = nonpos && d.(degree - i) <= 0. in
       if not (nonneg || nonpos) then begin
-        let n = Polysolv_high.solve work coef degree ~sturm:true ~eps:1e-10 roots in
+        let n = Polysolv.solve work coef degree ~sturm:true ~eps:1e-10 roots in
         (match stats with
         | Some (st : Stats.t) ->
             st.roots_tested <- st.roots_tested + 1;
-            if Polysolv_high.eliminated work then st.roots_eliminated <- st.roots_eliminated + 1
+            if Polysolv.eliminated work then st.roots_eliminated <- st.roots_eliminated + 1
         | None -> ());
         n
       end
@@ -235,7 +235,7 @@ let segment_crossings (st : Stats.t) work c i (o : Vec.t) (d : Vec.t) add =
   let roots = Array.make 10 0. in
   let solved n =
     st.roots_tested <- st.roots_tested + 1;
-    if Polysolv_high.eliminated work then st.roots_eliminated <- st.roots_eliminated + 1;
+    if Polysolv.eliminated work then st.roots_eliminated <- st.roots_eliminated + 1;
     n
   in
   let cc = sg.cc and rc = sg.rc in
@@ -247,7 +247,7 @@ let segment_crossings (st : Stats.t) work c i (o : Vec.t) (d : Vec.t) add =
     let e = (vdot v cc.(1) +. (rc.(0) *. rc.(1))) *. -2.0 in
     let f = vdot v v -. (rc.(0) *. rc.(0)) in
     let coef = [| (4.0 *. (dd *. dd)) -. (b *. b *. dd); (4.0 *. dd *. e) -. (2.0 *. b *. cq *. dd); (e *. e) -. (b *. cq *. e) +. (b *. b *. f) |] in
-    let n = solved (Polysolv_high.solve work coef 2 ~sturm:true ~eps:1e-10 roots) in
+    let n = solved (Polysolv.solve work coef 2 ~sturm:true ~eps:1e-10 roots) in
     List.iter
       (fun u ->
         let fp0 = (2.0 *. dd *. u) +. e and fp1 = b in
@@ -367,7 +367,7 @@ let intersect (w : Scratch.t) c (o : Vec.t) (d : Vec.t) =
               end)
             (List.rev !found))
     c.singles;
-  let work = Polysolv_high.create () in
+  let work = Polysolv.create () in
   for i = 0 to nseg - 1 do
     let found = ref [] and k = ref 0 in
     let add t n p = found := (t, n, p) :: !found; incr k in
@@ -438,7 +438,7 @@ let normal c part (p : Vec.t) =
    root in [0, 1] of |P − C(u)|² − R(u)² *)
 let inside c (p : Vec.t) =
   let q = match c.sweep.trans with None -> p | Some m -> Transform.inv_point m p in
-  let work = Polysolv_high.create () and roots = Array.make 6 0. in
+  let work = Polysolv.create () and roots = Array.make 6 0. in
   Array.exists
     (fun sg ->
       let cc = sg.cc and rc = sg.rc in
@@ -446,7 +446,7 @@ let inside c (p : Vec.t) =
       let n, coef =
         if sg.ncoefs = 2 then
           let coef = [| vdot cc.(1) cc.(1) -. (rc.(1) *. rc.(1)); (vdot v cc.(1) +. (rc.(0) *. rc.(1))) *. -2.0; vdot v v -. (rc.(0) *. rc.(0)) |] in
-          (Polysolv_high.solve work coef 2 ~sturm:true ~eps:1e-10 roots, coef)
+          (Polysolv.solve work coef 2 ~sturm:true ~eps:1e-10 roots, coef)
         else
           let coef =
             [|

@@ -54,7 +54,7 @@ val compile : t -> compiled
 (** [compile s] is SphereSweep::Compute: the segments' coefficients (the spline matrices
     applied as POV-Ray does), closing spheres and end derivatives, and the single spheres. *)
 
-val bezier_01 : ?stats:Stats.t -> Polysolv_high.work -> int -> float array -> float array -> int
+val bezier_01 : ?stats:Stats.t -> Polysolv.work -> int -> float array -> float array -> int
 (** [bezier_01 w degree coef roots] is POV-Ray's [bezier_01] for degree 6 or 10: 0 when the
     polynomial's Bernstein coefficients over [0, 1] all have one sign, else Solve_Polynomial's
     roots (counted in [stats] when given). *)

@@ -225,23 +225,6 @@ let test_sturm_high () =
   Alcotest.(check int) "five roots" 5 k;
   Alcotest.(check bool) "the root near 0 is still there" true (List.exists (fun x -> Float.abs x < 1e-9) (Array.to_list (Array.sub r 0 k)))
 
-(* sphere_sweep's Polysolv_high is polysolve too (up to degree 10): the same roots to the bit *)
-let test_agrees_with_high () =
-  let w = Polysolv.create () and wh = Polysolv_high.create () in
-  Random.init 7;
-  for _ = 1 to 2000 do
-    let n = 5 + Random.int 6 in
-    let c = Array.init (n + 1) (fun _ -> Random.float 20. -. 10.) in
-    if Random.bool () then c.(n) <- c.(n) *. 1e-6;
-    let r = Array.make n nan and rh = Array.make n nan in
-    let k = Polysolv.solve w c n ~sturm:true ~eps:1e-4 r and kh = Polysolv_high.solve wh c n ~sturm:true ~eps:1e-4 rh in
-    Alcotest.(check int) "as many roots" kh k;
-    for i = 0 to k - 1 do
-      Alcotest.(check bool) "the same root, bit for bit" true (Int64.bits_of_float r.(i) = Int64.bits_of_float rh.(i))
-    done;
-    Alcotest.(check bool) "the same elimination" (Polysolv_high.eliminated wh) (Polysolv.eliminated w)
-  done
-
 let test_dump () =
   let s = Dump.scene (scene (v37 ^ "cubic { <1,0,0,0,0,0,0,0,0,0, 0,0,0,0,0,0,0,0,-1,0> sturm translate y }")) in
   check_contains "dump: the poly" ~sub:"poly { 3, <1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, -1, 0> sturm" s
@@ -254,6 +237,5 @@ let tests =
     Alcotest.test_case "crossings against brute force" `Quick test_brute_force;
     Alcotest.test_case "inside, statistics, root elimination" `Quick test_inside_and_stats;
     Alcotest.test_case "Sturm sequences above degree 4" `Quick test_sturm_high;
-    Alcotest.test_case "Polysolv agrees with Polysolv_high" `Quick test_agrees_with_high;
     Alcotest.test_case "dump" `Quick test_dump;
   ]

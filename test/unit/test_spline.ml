@@ -185,14 +185,14 @@ let test_sextic () =
   (* (x − 0.1)(x − 0.2)(x − 0.3)(x − 0.5)(x − 0.7)(x − 0.9), expanded *)
   let roots = [ 0.1; 0.2; 0.3; 0.5; 0.7; 0.9 ] in
   let c = List.fold_left (fun acc r -> let a = Array.append acc [| 0. |] in Array.mapi (fun i x -> x -. (if i > 0 then r *. acc.(i - 1) else 0.)) a) [| 1. |] roots in
-  let w = Polysolv_high.create () and out = Array.make 6 0. in
-  let n = Polysolv_high.solve w c 6 ~sturm:false ~eps:0. out in
+  let w = Polysolv.create () and out = Array.make 6 0. in
+  let n = Polysolv.solve w c 6 ~sturm:false ~eps:0. out in
   Alcotest.(check int) "six roots" 6 n;
   List.iter2 (fun e a -> float_eq ~eps:1e-9 "sextic root" e a) roots (List.sort compare (Array.to_list out));
   (* a quartic goes to Polysolv unchanged (small leading coefficients dropped first) *)
   let q = [| 0.; 1e-12; 1.; -10.; 35.; -50.; 24. |] and q4 = [| 1.; -10.; 35.; -50.; 24. |] in
   let a = Array.make 6 0. and b = Array.make 4 0. in
-  let na = Polysolv_high.solve w q 6 ~sturm:false ~eps:0. a and nb = Polysolv.solve (Polysolv.create ()) q4 4 ~sturm:false ~eps:0. b in
+  let na = Polysolv.solve w q 6 ~sturm:false ~eps:0. a and nb = Polysolv.solve (Polysolv.create ()) q4 4 ~sturm:false ~eps:0. b in
   Alcotest.(check int) "same count" nb na;
   Alcotest.(check (list (float 0.))) "same roots, bit for bit" (Array.to_list (Array.sub b 0 nb)) (Array.to_list (Array.sub a 0 na))
 

@@ -189,14 +189,14 @@ let test_dump () =
 
 (* polysolve at degree 6 and 10: the roots of products of known factors *)
 let test_high_degree () =
-  let w = Polysolv_high.create () in
+  let w = Polysolv.create () in
   let mul a b = Array.init (Array.length a + Array.length b - 1) (fun k -> let s = ref 0. in Array.iteri (fun i x -> let j = k - i in if j >= 0 && j < Array.length b then s := !s +. (x *. b.(j))) a; !s) in
   let poly roots = List.fold_left (fun acc r -> mul acc [| 1.; -.r |]) [| 1. |] roots in
   let check name rs =
     let c = poly rs in
     let n = Array.length c - 1 in
     let out = Array.make n 0. in
-    let k = Polysolv_high.solve w c n ~sturm:true ~eps:1e-10 out in
+    let k = Polysolv.solve w c n ~sturm:true ~eps:1e-10 out in
     let got = List.sort compare (Array.to_list (Array.sub out 0 k)) in
     let want = List.sort compare (List.filter (fun r -> r >= 0.) rs) in
     Alcotest.(check int) (name ^ ": count") (List.length want) (List.length got);
