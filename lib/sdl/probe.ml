@@ -89,3 +89,60 @@ let extent st (o : V.obj) =
   let b = if Array.length b = 0 then [| -1e10; -1e10; -1e10; 2e10; 2e10; 2e10 |] else b in
   let f32 = Precision.f32 in
   (Vec.make b.(0) b.(1) b.(2), Vec.make (f32 (b.(0) +. b.(3))) (f32 (b.(1) +. b.(4))) (f32 (b.(2) +. b.(5))))
+
+(* The calls: trace(OBJECT, A, B [, N]), inside(OBJECT, P), min_extent(OBJECT), max_extent(OBJECT).
+   trace's optional last argument is a vector identifier that receives the normal at the hit
+   (<0,0,0> on a miss); max_extent of an image map pigment is the image's size. *)
+let parse st name ~vector:parse_vector =
+  advance st;
+  expect st LParen (Printf.sprintf "'(' after '%s'" name);
+  let oloc = peek_loc st in
+  let target =
+    match peek st with
+    | Ident s -> (
+        match cur_value st s with
+        | Some (V.Object o) -> advance st; `Object o
+        | Some (V.Pigment p) -> advance st; `Pigment p
+        | Some (V.Unsupported u) -> unsupported_use oloc s u.what u.at
+        | _ -> `None)
+    | _ -> `None
+  in
+  let of_vec (v : Vec.t) = V.Vector [| v.x; v.y; v.z |] in
+  let result =
+    match (name, target) with
+    | "max_extent", `Pigment (Scene.Pattern { pattern = Bitmap b; _ }) ->
+        V.Vector [| float_of_int b.image.width; float_of_int b.image.height; 0. |]
+    | "max_extent", `Pigment _ -> Error.raise_at oloc "The parameter to max_extent must be an image map pigment identifier"
+    | ("min_extent" | "max_extent"), `Object o ->
+        let lo, hi = extent st o in
+        of_vec (if name = "min_extent" then lo else hi)
+    | ("min_extent" | "max_extent"), (`None | `Pigment _) -> Error.raise_at oloc "'%s' needs an object identifier" name
+    | "inside", `Object o ->
+        if Csg_build.patch o then Error.raise_at oloc "Solid object identifier expected.";
+        expect st Comma "',' after the object of 'inside'";
+        let p = parse_vector st in
+        V.Float (if inside st o p then 1. else 0.)
+    | _, `Object o ->
+        expect st Comma "',' after the object of 'trace'";
+        let origin = parse_vector st in
+        expect st Comma "',' after the start of 'trace'";
+        let dir = parse_vector st in
+        let hit = trace st o origin dir in
+        if accept st Comma then begin
+          let nloc = peek_loc st in
+          let nrm = match hit with Some (_, n) -> n | None -> Vec.zero in
+          match peek st with
+          | Ident s -> (
+              match (cur_value st s, st.cur_elem) with
+              | Some (V.Vector _), Some (a, i) -> advance st; a.cells.(i) <- Some (of_vec nrm)
+              | Some (V.Vector _), None -> (
+                  advance st;
+                  match lookup_cell st s with Some cell -> cell := of_vec nrm | None -> ())
+              | _ -> Error.raise_at nloc "trace's fourth argument must be a declared vector identifier (it receives the normal)")
+          | _ -> Error.raise_at nloc "trace's fourth argument must be a declared vector identifier (it receives the normal)"
+        end;
+        of_vec (match hit with Some (p, _) -> p | None -> Vec.zero)
+    | _, (`None | `Pigment _) -> Error.raise_at oloc "Object identifier expected."
+  in
+  expect st RParen (Printf.sprintf "')' closing the arguments of '%s'" name);
+  result

@@ -17,3 +17,11 @@ val extent : Reader.st -> Value.obj -> Vec.t * Vec.t
 (** [extent st o] is [o]'s bounding box as POV-Ray stores it: the lower corner and the lower corner
     plus the lengths, added in single precision (min_extent, max_extent); POV-Ray's huge box
     ±1e10 for an unbounded object. *)
+
+val parse : Reader.st -> string -> vector:(Reader.st -> Vec.t) -> Value.t
+(** [parse st name ~vector] reads the call of [name] (one of the four; the name is the current
+    token) and is its value: trace's point (its optional last argument, a declared vector
+    identifier, receives the normal, <0,0,0> on a miss), inside's 1 or 0, an extent vector; the
+    vectors are read by [vector]. max_extent of an image map pigment is the image's size. Errors:
+    "Object identifier expected.", "Solid object identifier expected." (inside of a patch), an
+    unsupported object's located "not supported yet". *)

@@ -374,18 +374,21 @@ Mathematical and string errors:
         |                ^
   [1]
 
-Declared values that povml cannot render yet are an error only where they are used: Bicorn in
-shapesq.inc is a quartic; in the main file the declaration also warns.
+Declared values that povml cannot render yet are an error only where they are used: Blobby in
+an include file is an isosurface; in the main file the declaration also warns.
 
+  $ cat > iso.inc <<'POV'
+  > #declare Blobby = isosurface { function { x*x + y*y + z*z - 1 } }
+  > POV
   $ cat > jade.pov <<'POV'
-  > #include "shapesq.inc"
-  > object { Bicorn }
+  > #include "iso.inc"
+  > object { Blobby }
   > POV
   $ povml --dump jade.pov
-  jade.pov:2:10: error: not supported yet: 'quartic' (used through 'Bicorn')
-      2 | object { Bicorn }
+  jade.pov:2:10: error: not supported yet: 'isosurface' (used through 'Blobby')
+      2 | object { Blobby }
         |          ^
-  /usr/share/povray-3.7/include/shapesq.inc:30:2: note: 'Bicorn' was declared here
+  iso.inc:1:19: note: 'Blobby' was declared here
   [1]
   $ cat > unsup3.pov <<'POV'
   > #version 3.7;
