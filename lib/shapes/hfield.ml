@@ -199,6 +199,35 @@ let found r depth x z tri =
     r.bpart <- part
   end
 
+(* triangle: triangle [part] (0 the one at corner (x, z), 1 the one at (x + 1, z + 1)) of cell
+   (x, z) at ([fx], [fz]), its corner's height [y], the other two corners' heights between [min23]
+   and [max23]: tried when its height range meets [height1, height2]; its plane through
+   ([px], [y], [pz]) with normal <[nx], 1, [nz]>; a hit inside the triangle is recorded *)
+let[@inline] triangle r x z fx fz height1 height2 y min23 max23 nx nz px pz part =
+  if fmax y max23 >= height1 && fmin y min23 <= height2 then begin
+    let stats = r.w.stats in
+    stats.hfield_triangle_tests <- stats.hfield_triangle_tests + 1;
+    let dot = (nx *. r.dx) +. r.dy +. (nz *. r.dz) in
+    if dot > epsilon || dot < -.epsilon then begin
+      let depth = ((nx *. (px -. r.ox)) +. (y -. r.oy) +. (nz *. (pz -. r.oz))) /. dot in
+      if depth >= r.mindist && depth <= r.maxdist then begin
+        let s = r.ox +. (depth *. r.dx) -. fx and t = r.oz +. (depth *. r.dz) -. fz in
+        let inside =
+          if part = 0 then s >= -0.0001 && t >= -0.0001 && s +. t <= 1.0001 else s <= 1.0001 && t <= 1.0001 && s +. t >= 0.9999
+        in
+        if inside then begin
+          stats.hfield_triangle_hits <- stats.hfield_triangle_hits + 1;
+          found r depth x z part;
+          true
+        end
+        else false
+      end
+      else false
+    end
+    else false
+  end
+  else false
+
 (* intersect_pixel: the cell's two triangles, each tried when its height range meets the ray's
    [height1, height2] over the cell *)
 let intersect_pixel r x z height1 height2 =
@@ -214,43 +243,12 @@ let intersect_pixel r x z height1 height2 =
   if max_height < height1 || min_height > height2 then false
   else begin
     stats.hfield_cell_hits <- stats.hfield_cell_hits + 1;
-    let hit = ref false in
     let fx = float_of_int x and fz = float_of_int z in
     (* the first triangle: (x, y1, z) with N = <y1 − y2, 1, y1 − y3> *)
-    if fmax y1 max23 >= height1 && fmin y1 min23 <= height2 then begin
-      stats.hfield_triangle_tests <- stats.hfield_triangle_tests + 1;
-      let nx = y1 -. y2 and nz = y1 -. y3 in
-      let dot = (nx *. r.dx) +. r.dy +. (nz *. r.dz) in
-      if dot > epsilon || dot < -.epsilon then begin
-        let depth = ((nx *. (fx -. r.ox)) +. (y1 -. r.oy) +. (nz *. (fz -. r.oz))) /. dot in
-        if depth >= r.mindist && depth <= r.maxdist then begin
-          let s = r.ox +. (depth *. r.dx) -. fx and t = r.oz +. (depth *. r.dz) -. fz in
-          if s >= -0.0001 && t >= -0.0001 && s +. t <= 1.0001 then begin
-            stats.hfield_triangle_hits <- stats.hfield_triangle_hits + 1;
-            found r depth x z 0;
-            hit := true
-          end
-        end
-      end
-    end;
+    let hit1 = triangle r x z fx fz height1 height2 y1 min23 max23 (y1 -. y2) (y1 -. y3) fx fz 0 in
     (* the second: (x + 1, y4, z + 1) with N = <y3 − y4, 1, y2 − y4> *)
-    if fmax y4 max23 >= height1 && fmin y4 min23 <= height2 then begin
-      stats.hfield_triangle_tests <- stats.hfield_triangle_tests + 1;
-      let nx = y3 -. y4 and nz = y2 -. y4 in
-      let dot = (nx *. r.dx) +. r.dy +. (nz *. r.dz) in
-      if dot > epsilon || dot < -.epsilon then begin
-        let depth = ((nx *. (fx +. 1. -. r.ox)) +. (y4 -. r.oy) +. (nz *. (fz +. 1. -. r.oz))) /. dot in
-        if depth >= r.mindist && depth <= r.maxdist then begin
-          let s = r.ox +. (depth *. r.dx) -. fx and t = r.oz +. (depth *. r.dz) -. fz in
-          if s <= 1.0001 && t <= 1.0001 && s +. t >= 0.9999 then begin
-            stats.hfield_triangle_hits <- stats.hfield_triangle_hits + 1;
-            found r depth x z 1;
-            hit := true
-          end
-        end
-      end
-    end;
-    !hit
+    let hit2 = triangle r x z fx fz height1 height2 y4 min23 max23 (y3 -. y4) (y2 -. y4) (fx +. 1.) (fz +. 1.) 1 in
+    hit1 || hit2
   end
 
 let[@inline] sign x = if x >= 0. then 1 else -1
