@@ -88,13 +88,12 @@ let locate st loc fmt name =
 
 let not_with loc what = Error.raise_at loc "'%s' cannot be used with a non color-mapped image" what
 
-(* the block after [keyword], up to its '}' (a material_map: up to its first texture) *)
-let read st keyword =
-  let block = match keyword with "image_map" -> Image_map | "bump_map" -> Bump_map | "material_map" -> Material_map | _ -> Image_pattern in
-  open_block st keyword;
+(* load_file: the file name, its gamma and premultiplied options (after the name, in any order),
+   and the image decoded at once with the options [block] reads images with; the image and its
+   name as written *)
+let load_file st block =
   let file_loc = peek_loc st in
   let fmt, name = parse_file st in
-  (* gamma and premultiplied follow the name, in any order *)
   let rec file_options gamma premultiply =
     match peek st with
     | Ident "gamma" -> advance st; file_options (Some (parse_gamma st)) premultiply
@@ -106,11 +105,15 @@ let read st keyword =
   if options.gamma_correct && (not options.gamma_override) && fmt = Png && ((not st.version_set) || st.version < 370) then
     warn st file_loc "PNG input image default gamma handling has changed for pre POV-Ray 3.7 scenes; results may differ from original intention";
   let path = locate st file_loc fmt name in
-  let image =
-    match Image_read.read fmt options path with
-    | Ok img -> img
-    | Error msg -> Error.raise_at file_loc "cannot read the image file \"%s\": %s" name msg
-  in
+  match Image_read.read fmt options path with
+  | Ok img -> (img, name)
+  | Error msg -> Error.raise_at file_loc "cannot read the image file \"%s\": %s" name msg
+
+(* the block after [keyword], up to its '}' (a material_map: up to its first texture) *)
+let read st keyword =
+  let block = match keyword with "image_map" -> Image_map | "bump_map" -> Bump_map | "material_map" -> Material_map | _ -> Image_pattern in
+  open_block st keyword;
+  let image, name = load_file st block in
   let iw = float_of_int image.width and ih = float_of_int image.height in
   let b =
     {
@@ -201,20 +204,4 @@ let parse_material_map st = snd (read st "material_map")
 
 (* A height field's file: Parse_Image (HF_FILE) as for a bump_map, without gamma correction unless
    [gamma] is given; the image is decoded at once *)
-let height_field_image st =
-  let file_loc = peek_loc st in
-  let fmt, name = parse_file st in
-  let rec file_options gamma premultiply =
-    match peek st with
-    | Ident "gamma" -> advance st; file_options (Some (parse_gamma st)) premultiply
-    | Ident "premultiplied" -> advance st; file_options gamma (Some (Expr.c_int (parse_float st) <> 0.))
-    | _ -> (gamma, premultiply)
-  in
-  let gamma, premultiply = file_options None None in
-  let options = read_options st Bump_map ~gamma ~premultiply in
-  if options.gamma_correct && (not options.gamma_override) && fmt = Png && ((not st.version_set) || st.version < 370) then
-    warn st file_loc "PNG input image default gamma handling has changed for pre POV-Ray 3.7 scenes; results may differ from original intention";
-  let path = locate st file_loc fmt name in
-  match Image_read.read fmt options path with
-  | Ok img -> (img, name)
-  | Error msg -> Error.raise_at file_loc "cannot read the image file \"%s\": %s" name msg
+let height_field_image st = load_file st Bump_map

@@ -199,6 +199,35 @@ let found r depth x z tri =
     r.bpart <- part
   end
 
+(* triangle: triangle [part] (0 the one at corner (x, z), 1 the one at (x + 1, z + 1)) of cell
+   (x, z) at ([fx], [fz]), its corner's height [y], the other two corners' heights between [min23]
+   and [max23]: tried when its height range meets [height1, height2]; its plane through
+   ([px], [y], [pz]) with normal <[nx], 1, [nz]>; a hit inside the triangle is recorded *)
+let[@inline] triangle r x z fx fz height1 height2 y min23 max23 nx nz px pz part =
+  if fmax y max23 >= height1 && fmin y min23 <= height2 then begin
+    let stats = r.w.stats in
+    stats.hfield_triangle_tests <- stats.hfield_triangle_tests + 1;
+    let dot = (nx *. r.dx) +. r.dy +. (nz *. r.dz) in
+    if dot > epsilon || dot < -.epsilon then begin
+      let depth = ((nx *. (px -. r.ox)) +. (y -. r.oy) +. (nz *. (pz -. r.oz))) /. dot in
+      if depth >= r.mindist && depth <= r.maxdist then begin
+        let s = r.ox +. (depth *. r.dx) -. fx and t = r.oz +. (depth *. r.dz) -. fz in
+        let inside =
+          if part = 0 then s >= -0.0001 && t >= -0.0001 && s +. t <= 1.0001 else s <= 1.0001 && t <= 1.0001 && s +. t >= 0.9999
+        in
+        if inside then begin
+          stats.hfield_triangle_hits <- stats.hfield_triangle_hits + 1;
+          found r depth x z part;
+          true
+        end
+        else false
+      end
+      else false
+    end
+    else false
+  end
+  else false
+
 (* intersect_pixel: the cell's two triangles, each tried when its height range meets the ray's
    [height1, height2] over the cell *)
 let intersect_pixel r x z height1 height2 =
@@ -214,46 +243,70 @@ let intersect_pixel r x z height1 height2 =
   if max_height < height1 || min_height > height2 then false
   else begin
     stats.hfield_cell_hits <- stats.hfield_cell_hits + 1;
-    let hit = ref false in
     let fx = float_of_int x and fz = float_of_int z in
     (* the first triangle: (x, y1, z) with N = <y1 − y2, 1, y1 − y3> *)
-    if fmax y1 max23 >= height1 && fmin y1 min23 <= height2 then begin
-      stats.hfield_triangle_tests <- stats.hfield_triangle_tests + 1;
-      let nx = y1 -. y2 and nz = y1 -. y3 in
-      let dot = (nx *. r.dx) +. r.dy +. (nz *. r.dz) in
-      if dot > epsilon || dot < -.epsilon then begin
-        let depth = ((nx *. (fx -. r.ox)) +. (y1 -. r.oy) +. (nz *. (fz -. r.oz))) /. dot in
-        if depth >= r.mindist && depth <= r.maxdist then begin
-          let s = r.ox +. (depth *. r.dx) -. fx and t = r.oz +. (depth *. r.dz) -. fz in
-          if s >= -0.0001 && t >= -0.0001 && s +. t <= 1.0001 then begin
-            stats.hfield_triangle_hits <- stats.hfield_triangle_hits + 1;
-            found r depth x z 0;
-            hit := true
-          end
-        end
-      end
-    end;
+    let hit1 = triangle r x z fx fz height1 height2 y1 min23 max23 (y1 -. y2) (y1 -. y3) fx fz 0 in
     (* the second: (x + 1, y4, z + 1) with N = <y3 − y4, 1, y2 − y4> *)
-    if fmax y4 max23 >= height1 && fmin y4 min23 <= height2 then begin
-      stats.hfield_triangle_tests <- stats.hfield_triangle_tests + 1;
-      let nx = y3 -. y4 and nz = y2 -. y4 in
-      let dot = (nx *. r.dx) +. r.dy +. (nz *. r.dz) in
-      if dot > epsilon || dot < -.epsilon then begin
-        let depth = ((nx *. (fx +. 1. -. r.ox)) +. (y4 -. r.oy) +. (nz *. (fz +. 1. -. r.oz))) /. dot in
-        if depth >= r.mindist && depth <= r.maxdist then begin
-          let s = r.ox +. (depth *. r.dx) -. fx and t = r.oz +. (depth *. r.dz) -. fz in
-          if s <= 1.0001 && t <= 1.0001 && s +. t >= 0.9999 then begin
-            stats.hfield_triangle_hits <- stats.hfield_triangle_hits + 1;
-            found r depth x z 1;
-            hit := true
-          end
-        end
-      end
-    end;
-    !hit
+    let hit2 = triangle r x z fx fz height1 height2 y4 min23 max23 (y3 -. y4) (y2 -. y4) (fx +. 1.) (fz +. 1.) 1 in
+    hit1 || hit2
   end
 
 let[@inline] sign x = if x >= 0. then 1 else -1
+
+(* test_cell: [intersect_pixel] on the cell whose coordinates along the driving and the other axis
+   are [major] and [minor] *)
+let[@inline] test_cell r x_drives major minor y1 y2 =
+  if x_drives then intersect_pixel r major minor y1 y2 else intersect_pixel r minor major y1 y2
+
+(* dda_walk: the cells from cell ([major], [minor]) along the ray, one step along the driving axis
+   (the ray's direction [dmajor] along it, [major0] the start's fraction of its cell) at a time,
+   crossing into the next row of the other axis ([dminor], [minor0]) where the error term says so;
+   [x_drives] tells which axis drives; the walk stays within [majlo..majhi], [minlo..minhi] and
+   the ray's near height within [ylo..yhi] *)
+let[@inline] dda_walk r x_drives sy dmajor dminor major0 minor0 major minor majlo majhi minlo minhi ylo yhi =
+  let found = ref false and stop = ref false in
+  let major = ref major and minor = ref minor in
+  let signmaj = sign dmajor and signmin = sign dminor in
+  let delta = Float.abs (dminor /. dmajor) in
+  let error =
+    ref
+      (if dmajor >= 0. then if dminor >= 0. then minor0 +. (delta *. (1.0 -. major0)) -. 1.0 else -.(minor0 -. (delta *. (1.0 -. major0)))
+       else if dminor >= 0. then minor0 +. (delta *. major0) -. 1.0
+       else -.(minor0 -. (delta *. major0)))
+  in
+  let deltay = r.dy /. Float.abs dmajor in
+  let neary = ref (if dmajor >= 0. then sy -. (major0 *. deltay) else sy -. ((1.0 -. major0) *. deltay)) in
+  let fary = ref (!neary +. deltay) in
+  let continue = ref true in
+  while !continue do
+    let y1 = if !neary < !fary then !neary else !fary and y2 = if !neary < !fary then !fary else !neary in
+    if test_cell r x_drives !major !minor y1 y2 then if r.all then found := true else stop := true;
+    if !stop then continue := false
+    else begin
+      let broke = ref false in
+      if !error > epsilon then begin
+        minor := !minor + signmin;
+        if !minor < minlo || !minor > minhi then broke := true
+        else begin
+          if test_cell r x_drives !major !minor y1 y2 then if r.all then found := true else stop := true;
+          error := !error -. 1.
+        end
+      end
+      else if !error > -.epsilon then begin
+        minor := !minor + signmin;
+        error := !error -. 1.
+      end;
+      if !broke || !stop then continue := false
+      else begin
+        major := !major + signmaj;
+        error := !error +. delta;
+        neary := !fary;
+        fary := !fary +. deltay;
+        continue := !neary >= ylo && !neary <= yhi && !major >= majlo && !major <= majhi && !minor >= minlo && !minor <= minhi
+      end
+    end
+  done;
+  !stop || !found
 
 (* dda_traversal: the cells of block [b] along the ray from [start], stepping along the axis the
    ray moves most along and crossing into the next row where the error term says so *)
@@ -274,98 +327,14 @@ let dda_traversal r sx sy sz b =
   let pz = if Float.is_nan px then nan else legal sz zmin zmax in
   if Float.is_nan px || Float.is_nan pz then false
   else begin
-    let dx = r.dx and dy = r.dy and dz = r.dz in
-    let found = ref false and stop = ref false in
-    let test x z y1 y2 = if intersect_pixel r x z y1 y2 then if r.all then found := true else stop := true in
-    let x = ref (int_of_float px) and z = ref (int_of_float pz) in
     let x0 = px -. Float.floor px and z0 = pz -. Float.floor pz in
-    let signx = sign dx and signz = sign dz in
-    if Float.abs dx >= Float.abs dz then begin
+    if Float.abs r.dx >= Float.abs r.dz then
       (* x drives *)
-      let delta = Float.abs (dz /. dx) in
-      let error =
-        ref
-          (if dx >= 0. then if dz >= 0. then z0 +. (delta *. (1.0 -. x0)) -. 1.0 else -.(z0 -. (delta *. (1.0 -. x0)))
-           else if dz >= 0. then z0 +. (delta *. x0) -. 1.0
-           else -.(z0 -. (delta *. x0)))
-      in
-      let deltay = dy /. Float.abs dx in
-      let neary = ref (if dx >= 0. then sy -. (x0 *. deltay) else sy -. ((1.0 -. x0) *. deltay)) in
-      let fary = ref (!neary +. deltay) in
-      let continue = ref true in
-      while !continue do
-        let y1 = if !neary < !fary then !neary else !fary and y2 = if !neary < !fary then !fary else !neary in
-        test !x !z y1 y2;
-        if !stop then continue := false
-        else begin
-          let broke = ref false in
-          if !error > epsilon then begin
-            z := !z + signz;
-            if !z < zmin || !z > zmax then broke := true
-            else begin
-              test !x !z y1 y2;
-              error := !error -. 1.
-            end
-          end
-          else if !error > -.epsilon then begin
-            z := !z + signz;
-            error := !error -. 1.
-          end;
-          if !broke || !stop then continue := false
-          else begin
-            x := !x + signx;
-            error := !error +. delta;
-            neary := !fary;
-            fary := !fary +. deltay;
-            continue := !neary >= ymin && !neary <= ymax && !x >= xmin && !x <= xmax && !z >= zmin && !z <= zmax
-          end
-        end
-      done
-    end
-    else begin
-      (* z drives *)
-      let delta = Float.abs (dx /. dz) in
-      let error =
-        ref
-          (if dz >= 0. then if dx >= 0. then x0 +. (delta *. (1.0 -. z0)) -. 1.0 else -.(x0 -. (delta *. (1.0 -. z0)))
-           else if dx >= 0. then x0 +. (delta *. z0) -. 1.0
-           else -.(x0 -. (delta *. z0)))
-      in
-      let deltay = dy /. Float.abs dz in
-      let neary = ref (if dz >= 0. then sy -. (z0 *. deltay) else sy -. ((1.0 -. z0) *. deltay)) in
-      let fary = ref (!neary +. deltay) in
-      let continue = ref true in
-      while !continue do
-        let y1 = if !neary < !fary then !neary else !fary and y2 = if !neary < !fary then !fary else !neary in
-        test !x !z y1 y2;
-        if !stop then continue := false
-        else begin
-          let broke = ref false in
-          if !error > epsilon then begin
-            x := !x + signx;
-            if !x < xmin || !x > xmax then broke := true
-            else begin
-              test !x !z y1 y2;
-              error := !error -. 1.
-            end
-          end
-          else if !error > -.epsilon then begin
-            x := !x + signx;
-            error := !error -. 1.
-          end;
-          if !broke || !stop then continue := false
-          else begin
-            z := !z + signz;
-            error := !error +. delta;
-            neary := !fary;
-            fary := !fary +. deltay;
-            continue :=
-              !neary >= ymin -. epsilon && !neary <= ymax +. epsilon && !x >= xmin && !x <= xmax && !z >= zmin && !z <= zmax
-          end
-        end
-      done
-    end;
-    !stop || !found
+      dda_walk r true sy r.dx r.dz x0 z0 (int_of_float px) (int_of_float pz) xmin xmax zmin zmax ymin ymax
+    else
+      (* z drives; its height test is an epsilon wider *)
+      dda_walk r false sy r.dz r.dx z0 x0 (int_of_float pz) (int_of_float px) zmin zmax xmin xmax (ymin -. epsilon)
+        (ymax +. epsilon)
   end
 
 (* block_traversal: a vertical ray tests its one cell; a field of one block is walked cell by
