@@ -2,6 +2,27 @@
    its intersection stack, and the part code that carries a spline hit's segment and parameter to
    the normal. *)
 
+(* the constants the three spline shapes share (prism.cpp, lathe.cpp, sor.cpp) and std::min and
+   std::max: the first argument unless the second is strictly beyond it *)
+module Limits = struct
+  let epsilon = Precision.epsilon
+  let max_distance = 1e7
+  let depth_tolerance = 1e-4
+  let bound_huge = 2e10
+  let cmin a b = if b < a then b else a
+  let cmax a b = if a < b then b else a
+end
+
+(* the near limit of a depth: DEPTH_TOLERANCE, none in the robust mode *)
+let near_limit (w : Scratch.t) = if w.robust then 0. else Limits.depth_tolerance
+
+(* the box of a shape of revolution (lathe, sor): −R2 … R2 across, height1 … height2 along Y *)
+let revolution_box ~radius2 ~height1 ~height2 = [| -.radius2; height1; -.radius2; radius2; height2; radius2 |]
+
+(* Lathe::Compute_BBox and Sor::Compute_BBox: Make_BBox in single precision, mapped *)
+let revolution_pov_box tr ~radius2 ~height1 ~height2 =
+  Pov_box.mapped tr (Array.map Precision.f32 [| -.radius2; height1; -.radius2; 2. *. radius2; height2 -. height1; 2. *. radius2 |])
+
 let add (w : Scratch.t) k t part =
   let g = w.curve in
   if (2 * k) + 2 > Array.length g.room then begin
@@ -13,18 +34,7 @@ let add (w : Scratch.t) k t part =
   g.room.((2 * k) + 1) <- Float.of_int part;
   k + 1
 
-let nearest (w : Scratch.t) k lo =
-  let h = w.curve.room in
-  let best = ref infinity and part = ref 0 in
-  for i = k - 1 downto 0 do
-    let t = h.(2 * i) in
-    if t < !best && t >= lo then begin
-      best := t;
-      part := int_of_float h.((2 * i) + 1)
-    end
-  done;
-  if !best < infinity then w.part <- !part;
-  !best
+let nearest (w : Scratch.t) k lo = Scratch.nearest_pair w w.curve.room k lo
 
 let push (w : Scratch.t) k id o d lo n =
   let h = w.curve.room in

@@ -5,6 +5,40 @@
     [3 + j + (segments + 3)·q] with q = w·2^k rounded, so that w comes back within 2^−41 (far below
     what a normal's 8-bit shading can show). *)
 
+(** The constants of the spline shapes, POV-Ray's. *)
+module Limits : sig
+  val epsilon : float
+  (** [epsilon] is EPSILON ([Precision.epsilon]). *)
+
+  val max_distance : float
+  (** [max_distance] is MAX_DISTANCE (1e7), the farthest depth kept. *)
+
+  val depth_tolerance : float
+  (** [depth_tolerance] is DEPTH_TOLERANCE (1e-4), the nearest depth kept. *)
+
+  val bound_huge : float
+  (** [bound_huge] is BOUND_HUGE (2e10). *)
+
+  val cmin : float -> float -> float
+  (** [cmin a b] is std::min: [a] unless [b] is strictly below it. *)
+
+  val cmax : float -> float -> float
+  (** [cmax a b] is std::max: [a] unless [b] is strictly above it. *)
+end
+
+val near_limit : Scratch.t -> float
+(** [near_limit w] is the nearest depth a crossing may have: [Limits.depth_tolerance], or 0 in
+    the robust mode. *)
+
+val revolution_box : radius2:float -> height1:float -> height2:float -> float array
+(** [revolution_box ~radius2 ~height1 ~height2] is the box (min corner, max corner) of a shape
+    of revolution in its own space: −[radius2] … [radius2] in x and z, [height1] … [height2] in y. *)
+
+val revolution_pov_box : Transform.t -> radius2:float -> height1:float -> height2:float -> float array
+(** [revolution_pov_box tr ~radius2 ~height1 ~height2] is Lathe::Compute_BBox and
+    Sor::Compute_BBox: Make_BBox of that box (corner and lengths in single precision), mapped by
+    [tr] ([Pov_box.mapped]). *)
+
 val add : Scratch.t -> int -> float -> int -> int
 (** [add w k t part] appends the crossing at world depth [t] on [part] after the first [k]; it is
     [k + 1]. *)

@@ -44,16 +44,9 @@ type t = {
   pbox : float array;
 }
 
-let epsilon = Precision.epsilon
-let max_distance = 1e7
-let depth_tolerance = 1e-4
-let bound_huge = 2e10
+include Curve_hits.Limits
 let base_hit = 1
 let cap_hit = 2
-
-(* std::min and std::max: the first argument unless the second is strictly beyond it *)
-let cmin a b = if b < a then b else a
-let cmax a b = if a < b then b else a
 
 (* ------------------------------------------------------------------------------------------ *)
 (* Parsing: the outline's closing rule and the segments (Parse_Prism, Compute_Prism) *)
@@ -282,8 +275,6 @@ let test_rectangle px pz dx dz x1 z1 x2 z2 =
     true
   with Miss -> false
 
-(* the near limit of a depth: DEPTH_TOLERANCE, none in the robust mode *)
-let near_limit (w : Scratch.t) = if w.robust then 0. else depth_tolerance
 
 (* All_Intersections: the crossings written into the scratch's curve room, in POV-Ray's order;
    their number *)
@@ -298,7 +289,7 @@ let crossings (w : Scratch.t) t (o : Vec.t) (d : Vec.t) =
     let s = 1. /. len in
     let dx = dv.x *. s and dy = dv.y *. s and dz = dv.z *. s in
     let px = p.x and py = p.y and pz = p.z in
-    let near = near_limit w in
+    let near = Curve_hits.near_limit w in
     stats.prism_bound_tests <- stats.prism_bound_tests + 1;
     if (dx >= 0. && px > t.x2) || (dx <= 0. && px < t.x1) || (dz >= 0. && pz > t.y2) || (dz <= 0. && pz < t.y1) then 0
     else begin

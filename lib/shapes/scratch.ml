@@ -102,8 +102,7 @@ let push_hit w n t part id px py pz =
 let push_ray w n lo t part id (o : Vec.t) (d : Vec.t) =
   if t >= lo then push_hit w n t part id (o.x +. (t *. d.x)) (o.y +. (t *. d.y)) (o.z +. (t *. d.z)) else n
 
-let nearest_crossing w n lo =
-  let h = w.crossings in
+let nearest_pair w (h : float array) n lo =
   let best = ref infinity and part = ref 0 in
   for i = n - 1 downto 0 do
     let t = h.(2 * i) in
@@ -114,6 +113,8 @@ let nearest_crossing w n lo =
   done;
   if !best < infinity then w.part <- !part;
   !best
+
+let nearest_crossing w n lo = nearest_pair w w.crossings n lo
 
 let report w t (p : Vec.t) (n : Vec.t) =
   let k = 8 * (w.fractal_count land 31) and r = w.fractal_points in

@@ -77,6 +77,11 @@ val push_hit : t -> int -> float -> int -> int -> float -> float -> float -> int
 val push_ray : t -> int -> float -> float -> int -> int -> Vec.t -> Vec.t -> int
 (** [push_ray w n lo t part id o d] is [push_hit] of the point [o + t·d] when [t ≥ lo], else [n]. *)
 
+val nearest_pair : t -> float array -> int -> float -> float
+(** [nearest_pair w h n lo] is the nearest of the first [n] (depth, part) pairs of [h] at least
+    [lo], its part left in [w.part]; or infinity. The pairs are read from the last, keeping a
+    strictly nearer one, so of equal depths the last found wins (POV-Ray's intersection stack). *)
+
 val nearest_crossing : t -> int -> float -> float
 (** [nearest_crossing w n lo] is the nearest of the [n] (depth, part) pairs in [w.crossings] at
     least [lo], its part left in [w.part]; or infinity. POV-Ray takes them from the top of its

@@ -19,16 +19,9 @@ type t = {
   pbox : float array;
 }
 
-let epsilon = Precision.epsilon
-let max_distance = 1e7
-let depth_tolerance = 1e-4
-let bound_huge = 2e10
-let cmin a b = if b < a then b else a
-let cmax a b = if a < b then b else a
+include Curve_hits.Limits
 
-let pov_box t =
-  Pov_box.mapped t.tr
-    (Array.map Precision.f32 [| -.t.radius2; t.height1; -.t.radius2; 2. *. t.radius2; t.height2 -. t.height1; 2. *. t.radius2 |])
+let pov_box t = Curve_hits.revolution_pov_box t.tr ~radius2:t.radius2 ~height1:t.height1 ~height2:t.height2
 
 (* Compute_Sor: segment i through points i+1 and i+2, the slopes from points i and i+3 *)
 let make ~closed ~sturm (p : (float * float) array) =
@@ -98,7 +91,6 @@ let make ~closed ~sturm (p : (float * float) array) =
 let transform t m =
   let t = { t with tr = Transform.compose t.tr m } in
   { t with pbox = pov_box t }
-let near_limit (w : Scratch.t) = if w.robust then 0. else depth_tolerance
 
 let crossings (w : Scratch.t) t ~all (o : Vec.t) (dir : Vec.t) =
   let stats = w.stats in
@@ -108,7 +100,7 @@ let crossings (w : Scratch.t) t ~all (o : Vec.t) (dir : Vec.t) =
   let s = 1. /. len in
   let dx = dv.x *. s and dy = dv.y *. s and dz = dv.z *. s in
   let px = p.x and py = p.y and pz = p.z in
-  let near = near_limit w in
+  let near = Curve_hits.near_limit w in
   stats.sor_bound_tests <- stats.sor_bound_tests + 1;
   if (dy >= 0. && py > t.height2) || (dy <= 0. && py < t.height1) || (dx >= 0. && px > t.radius2) || (dx <= 0. && px < -.t.radius2) then 0
   else begin
@@ -229,7 +221,7 @@ let uv t part (p : Vec.t) =
   in
   Vec.make u v 0.
 
-let box t = [| -.t.radius2; t.height1; -.t.radius2; t.radius2; t.height2; t.radius2 |]
+let box t = Curve_hits.revolution_box ~radius2:t.radius2 ~height1:t.height1 ~height2:t.height2
 let bounds t = Transform.bounds t.tr (box t)
 
 let stats_rows (s : Stats.t) =
