@@ -169,36 +169,32 @@ let element_span (w : Scratch.t) r e px py pz dx dy dz mindist =
   if hit then s.blob_element_hits <- s.blob_element_hits + 1;
   hit
 
-(* insert_hit: the entry and exit of element [idx] put in the sorted list of [cnt] entries *)
-let insert_hit (r : Scratch.blob_room) idx t0 t1 cnt =
-  let bd = r.bounds and mk = r.marks in
-  bd.(cnt) <- t0;
-  mk.(cnt) <- 2 * idx;
-  let k = ref 0 in
-  while t0 > bd.(!k) do
+(* one depth [t] with mark [m] put in the sorted list of [cnt] entries, searched from [from]: it is
+   written at [cnt] first (which stops the search), then moved down to its place, which is
+   returned *)
+let[@inline] place bd mk cnt from t m =
+  bd.(cnt) <- t;
+  mk.(cnt) <- m;
+  let k = ref from in
+  while t > bd.(!k) do
     incr k
   done;
   if !k < cnt then begin
     let k0 = !k in
     Array.blit bd k0 bd (k0 + 1) (cnt - k0);
     Array.blit mk k0 mk (k0 + 1) (cnt - k0);
-    bd.(k0) <- t0;
-    mk.(k0) <- 2 * idx;
-    let cnt = cnt + 1 in
-    bd.(cnt) <- t1;
-    mk.(cnt) <- (2 * idx) + 1;
-    let k = ref (k0 + 1) in
-    while t1 > bd.(!k) do
-      incr k
-    done;
-    if !k < cnt then begin
-      let k1 = !k in
-      Array.blit bd k1 bd (k1 + 1) (cnt - k1);
-      Array.blit mk k1 mk (k1 + 1) (cnt - k1);
-      bd.(k1) <- t1;
-      mk.(k1) <- (2 * idx) + 1
-    end;
-    cnt + 1
+    bd.(k0) <- t;
+    mk.(k0) <- m
+  end;
+  !k
+
+(* insert_hit: the entry and exit of element [idx] put in the sorted list of [cnt] entries *)
+let insert_hit (r : Scratch.blob_room) idx t0 t1 cnt =
+  let bd = r.bounds and mk = r.marks in
+  let k0 = place bd mk cnt 0 t0 (2 * idx) in
+  if k0 < cnt then begin
+    ignore (place bd mk (cnt + 1) (k0 + 1) t1 ((2 * idx) + 1));
+    cnt + 2
   end
   else begin
     bd.(cnt + 1) <- t1;
