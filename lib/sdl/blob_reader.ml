@@ -42,6 +42,14 @@ let component_mods st (c : Blob.component) (tex : Scene.texture option) =
   in
   loop c tex
 
+(* the radius of a sphere or cylinder component, its comma and the optional [strength] keyword
+   that comes before the strength *)
+let radius_before_strength st =
+  let radius = Expr.parse_float st in
+  skip_comma st;
+  ignore (accept_ident st "strength");
+  radius
+
 let parse st =
   (* the components are kept last written first, as POV-Ray links them *)
   let rec items threshold comps texs =
@@ -64,9 +72,7 @@ let parse st =
         open_block st "sphere";
         let centre = Expr.parse_vector st in
         skip_comma st;
-        let radius = Expr.parse_float st in
-        skip_comma st;
-        ignore (accept_ident st "strength");
+        let radius = radius_before_strength st in
         let strength = Expr.parse_float st in
         let c, tex = component_mods st (Blob.sphere_component ~centre ~radius ~strength) None in
         add threshold c tex comps texs
@@ -77,9 +83,7 @@ let parse st =
         skip_comma st;
         let apex = Expr.parse_vector st in
         skip_comma st;
-        let radius = Expr.parse_float st in
-        skip_comma st;
-        ignore (accept_ident st "strength");
+        let radius = radius_before_strength st in
         let sloc = peek_loc st in
         let strength = Expr.parse_float st in
         match Blob.cylinder_component ~base ~apex ~radius ~strength with

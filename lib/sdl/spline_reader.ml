@@ -31,6 +31,19 @@ let rec options st ~sweep (spline, conic) =
 
 let count st = int_of_float (Expr.c_int (Expr.parse_float st))
 
+(* the fewest points a spline needs ([linear], [quadratic], [cubic]: the count and its word), a
+   Bezier one four per segment, as fatal errors at [nloc] in POV-Ray's words; its lathe calls
+   itself a prism in the cubic message, hence [cubic_shape] *)
+let check_count nloc n (spline : Prism.spline) ~shape ~cubic_shape linear quadratic cubic =
+  let least name kind (k, word) =
+    if n < k then Error.raise_at nloc "%s with %s splines must have at least %s points." name kind word
+  in
+  match spline with
+  | Linear -> least shape "linear" linear
+  | Quadratic -> least shape "quadratic" quadratic
+  | Cubic -> least cubic_shape "cubic" cubic
+  | Bezier -> if n land 3 <> 0 then Error.raise_at nloc "%s with Bezier splines must have four points per segment." shape
+
 let prism st loc =
   let spline, conic = options st ~sweep:true (Prism.Linear, false) in
   let h1 = Expr.parse_float st in
@@ -40,11 +53,7 @@ let prism st loc =
   let height1, height2 = if h1 > h2 then (h2, h1) else (h1, h2) in
   let nloc = peek_loc st in
   let n = count st in
-  (match spline with
-  | Linear -> if n < 3 then Error.raise_at nloc "Prism with linear splines must have at least three points."
-  | Quadratic -> if n < 5 then Error.raise_at nloc "Prism with quadratic splines must have at least five points."
-  | Cubic -> if n < 6 then Error.raise_at nloc "Prism with cubic splines must have at least six points."
-  | Bezier -> if n land 3 <> 0 then Error.raise_at nloc "Prism with Bezier splines must have four points per segment.");
+  check_count nloc n spline ~shape:"Prism" ~cubic_shape:"Prism" (3, "three") (5, "five") (6, "six");
   let pts = points st n in
   let closed = not (accept_ident st "open") in
   let pts, state = Prism.close spline pts in
@@ -61,11 +70,7 @@ let lathe st loc =
   let spline, _ = options st ~sweep:false (Prism.Linear, false) in
   let nloc = peek_loc st in
   let n = count st in
-  (match spline with
-  | Linear -> if n < 2 then Error.raise_at nloc "Lathe with linear splines must have at least two points."
-  | Quadratic -> if n < 3 then Error.raise_at nloc "Lathe with quadratic splines must have at least three points."
-  | Cubic -> if n < 4 then Error.raise_at nloc "Prism with cubic splines must have at least four points."
-  | Bezier -> if n land 3 <> 0 then Error.raise_at nloc "Lathe with Bezier splines must have four points per segment.");
+  check_count nloc n spline ~shape:"Lathe" ~cubic_shape:"Prism" (2, "two") (3, "three") (4, "four");
   let pts =
     Array.init n (fun i ->
         skip_comma st;

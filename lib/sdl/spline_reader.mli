@@ -3,6 +3,10 @@
     [Objects]. POV-Ray's checks are fatal errors at the point count or the point, with its
     messages. *)
 
+val uv_vector : Reader.st -> float * float
+(** [uv_vector st] is the ⟨u, v⟩ read next (Parse_UV_Vect): a float stands for both terms; any
+    other value (more than two terms among them) is an error at its location. *)
+
 val prism : Reader.st -> Loc.t -> Scene.shape
 (** [prism st loc] reads [[SPLINE] [SWEEP] H1, H2, N, P1, …, PN [open]] of [prism { … }] at [loc]
     (Parse_Prism): the heights swapped when H1 > H2, N truncated (at least 3, 5 or 6 points for a

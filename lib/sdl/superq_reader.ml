@@ -2,18 +2,9 @@
    (Parse_Sphere_Sweep), after the keyword and its '{'. *)
 
 open Reader
-module V = Value
-
-(* Parse_UV_Vect: <u, v>, or a float standing for both *)
-let uv_vector st =
-  let loc = peek_loc st in
-  match Expr.parse_expr st with
-  | V.Float f -> (f, f)
-  | V.Vector [| u; v |] -> (u, v)
-  | v -> Error.raise_at loc "expected a UV vector <u, v> but found %s" (V.kind_name v)
 
 let superellipsoid st =
-  let e, n = uv_vector st in
+  let e, n = Spline_reader.uv_vector st in
   Scene.Superellipsoid (Superellipsoid.make e n)
 
 (* Parse_Ovus: bottom radius, top radius; a top radius of twice the bottom one or more makes a

@@ -60,27 +60,23 @@ let split_curve a b c d =
   let m = half t12 t21 in
   ([| a; t1; t12; m |], [| m; t21; t22; d |])
 
-let split_left_right p =
-  let left = Array.make 16 Vec.zero and right = Array.make 16 Vec.zero in
+(* the two halves of a patch split along one index: the control point (i, j) of curve i is at
+   [stride_i·i + stride_j·j], in the patch and in both halves *)
+let split_along p ~stride_i ~stride_j =
+  let first = Array.make 16 Vec.zero and second = Array.make 16 Vec.zero in
   for i = 0 to 3 do
-    let l, r = split_curve (at p 0 i) (at p 1 i) (at p 2 i) (at p 3 i) in
+    let base = stride_i * i in
+    let a, b = split_curve p.(base) p.(base + stride_j) p.(base + (2 * stride_j)) p.(base + (3 * stride_j)) in
     for j = 0 to 3 do
-      left.((4 * j) + i) <- l.(j);
-      right.((4 * j) + i) <- r.(j)
+      let k = base + (stride_j * j) in
+      first.(k) <- a.(j);
+      second.(k) <- b.(j)
     done
   done;
-  (left, right)
+  (first, second)
 
-let split_up_down p =
-  let bottom = Array.make 16 Vec.zero and top = Array.make 16 Vec.zero in
-  for i = 0 to 3 do
-    let b, t = split_curve (at p i 0) (at p i 1) (at p i 2) (at p i 3) in
-    for j = 0 to 3 do
-      bottom.((4 * i) + j) <- b.(j);
-      top.((4 * i) + j) <- t.(j)
-    done
-  done;
-  (bottom, top)
+let split_left_right p = split_along p ~stride_i:1 ~stride_j:4
+let split_up_down p = split_along p ~stride_i:4 ~stride_j:1
 
 let length (a : Vec.t) = sqrt (dot a a)
 

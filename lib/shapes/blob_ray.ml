@@ -29,6 +29,17 @@ let set_span (r : Scratch.blob_room) tmin tmax =
   r.acc.(5) <- tmin;
   r.acc.(6) <- tmax
 
+(* the span between the depths [tmax] and [tmin] of a sphere or ellipsoid, each below [mindist]
+   taken as 0, in increasing order: none when the two are equal *)
+let[@inline] clamped_span r mindist tmax tmin =
+  let tmax = if tmax < mindist then 0. else tmax in
+  let tmin = if tmin < mindist then 0. else tmin in
+  if tmax = tmin then false
+  else begin
+    if tmax < tmin then set_span r tmax tmin else set_span r tmin tmax;
+    true
+  end
+
 let sphere_span r e px py pz dx dy dz mindist =
   let vx = px -. e.ox and vy = py -. e.oy and vz = pz -. e.oz in
   let b = (vx *. dx) +. (vy *. dy) +. (vz *. dz) in
@@ -37,15 +48,7 @@ let sphere_span r e px py pz dx dy dz mindist =
   if d < epsilon then false
   else
     let d = sqrt d in
-    let tmax = -.b +. d in
-    let tmax = if tmax < mindist then 0. else tmax in
-    let tmin = -.b -. d in
-    let tmin = if tmin < mindist then 0. else tmin in
-    if tmax = tmin then false
-    else begin
-      if tmax < tmin then set_span r tmax tmin else set_span r tmin tmax;
-      true
-    end
+    clamped_span r mindist (-.b +. d) (-.b -. d)
 
 (* coordinate [k] of the ray in an element's space: 0–2 the point (MInvTransPoint), 3–5 the
    direction (MInvTransDirection), one float at a time so that nothing is allocated *)
@@ -72,15 +75,7 @@ let ellipsoid_span r e px py pz dx dy dz mindist =
   if d < epsilon then false
   else
     let d = sqrt d in
-    let tmax = (-.b +. d) /. len in
-    let tmax = if tmax < mindist then 0. else tmax in
-    let tmin = (-.b -. d) /. len in
-    let tmin = if tmin < mindist then 0. else tmin in
-    if tmax = tmin then false
-    else begin
-      if tmax < tmin then set_span r tmax tmin else set_span r tmin tmax;
-      true
-    end
+    clamped_span r mindist ((-.b +. d) /. len) ((-.b -. d) /. len)
 
 (* intersect_hemisphere: the sphere's span cut by the plane z = 0 (base: the half z ≤ 0) or
    z = len (apex: the half above) *)
@@ -169,36 +164,32 @@ let element_span (w : Scratch.t) r e px py pz dx dy dz mindist =
   if hit then s.blob_element_hits <- s.blob_element_hits + 1;
   hit
 
-(* insert_hit: the entry and exit of element [idx] put in the sorted list of [cnt] entries *)
-let insert_hit (r : Scratch.blob_room) idx t0 t1 cnt =
-  let bd = r.bounds and mk = r.marks in
-  bd.(cnt) <- t0;
-  mk.(cnt) <- 2 * idx;
-  let k = ref 0 in
-  while t0 > bd.(!k) do
+(* one depth [t] with mark [m] put in the sorted list of [cnt] entries, searched from [from]: it is
+   written at [cnt] first (which stops the search), then moved down to its place, which is
+   returned *)
+let[@inline] place (bd : float array) (mk : int array) cnt from (t : float) m =
+  bd.(cnt) <- t;
+  mk.(cnt) <- m;
+  let k = ref from in
+  while t > bd.(!k) do
     incr k
   done;
   if !k < cnt then begin
     let k0 = !k in
     Array.blit bd k0 bd (k0 + 1) (cnt - k0);
     Array.blit mk k0 mk (k0 + 1) (cnt - k0);
-    bd.(k0) <- t0;
-    mk.(k0) <- 2 * idx;
-    let cnt = cnt + 1 in
-    bd.(cnt) <- t1;
-    mk.(cnt) <- (2 * idx) + 1;
-    let k = ref (k0 + 1) in
-    while t1 > bd.(!k) do
-      incr k
-    done;
-    if !k < cnt then begin
-      let k1 = !k in
-      Array.blit bd k1 bd (k1 + 1) (cnt - k1);
-      Array.blit mk k1 mk (k1 + 1) (cnt - k1);
-      bd.(k1) <- t1;
-      mk.(k1) <- (2 * idx) + 1
-    end;
-    cnt + 1
+    bd.(k0) <- t;
+    mk.(k0) <- m
+  end;
+  !k
+
+(* insert_hit: the entry and exit of element [idx] put in the sorted list of [cnt] entries *)
+let insert_hit (r : Scratch.blob_room) idx t0 t1 cnt =
+  let bd = r.bounds and mk = r.marks in
+  let k0 = place bd mk cnt 0 t0 (2 * idx) in
+  if k0 < cnt then begin
+    ignore (place bd mk (cnt + 1) (k0 + 1) t1 ((2 * idx) + 1));
+    cnt + 2
   end
   else begin
     bd.(cnt + 1) <- t1;
