@@ -212,7 +212,10 @@ let parse_declare st ~local dloc =
   let in_main = List.length st.frames = 1 in
   let tables = st.tables in
   let store value = match target with `Name s -> assign ~current:tables st ~local s value | `Element (_, a, i) -> a.cells.(i) <- Some value in
+  let outer = st.in_rvalue in
+  st.in_rvalue <- true;
   let value, needs_semi =
+    Fun.protect ~finally:(fun () -> st.in_rvalue <- outer) @@ fun () ->
     try parse_rvalue ~store st
     with Unsupported (l, what, _) ->
       (* a declaration povml cannot make yet is no error until it is used (issue: include files
@@ -223,9 +226,13 @@ let parse_declare st ~local dloc =
   in
   (* the value is stored before anything after it is read: the next token may be a directive *)
   store value;
-  if needs_semi && not (accept st Semi) then begin
+  (* the ';' is looked for as past any value: a directive or macro call after the value waits *)
+  if peek_follow st = Semi then advance st
+  else if needs_semi then begin
     if st.version >= 350 then
-      warn st (peek_loc st) "all #declares of float, vector, and color require semicolon ';' at end if the language version is 3.5 or higher"
+      Error.raise_at st.cur.loc
+        "all #declares of float, vector, and color require ';' at the end when the language version is 3.5 or higher (add the ';' or set #version 3.1)"
+    else if st.version >= 310 then
+      warn st st.cur.loc "all #version and #declares of float, vector, and color require ';' at the end"
   end
-  else if not needs_semi then ignore (accept st Semi)
 

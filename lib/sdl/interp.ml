@@ -127,7 +127,7 @@ let load_string opts ~file text =
   let st =
     {
       frames = [ { lx = lexer; kind = Main; conds = [] } ];
-      cur = { Token.kind = Eof; loc = Loc.none }; have = false; cur_elem = None; no_expand = false; defer = false; streams = [||];
+      cur = { Token.kind = Eof; loc = Loc.none }; have = false; cur_elem = None; no_expand = false; defer = false; in_rvalue = false; pending_macro = None; streams = [||];
       depth = 0; parens = 0; opts; global; tables = [ global ]; includes = 0; macro_depth = 0;
       macro_calls = 0; iterations = 0; nesting = 0; braces = 0; object_count = 0; probed = None;
       version = 370; version_set = false; charset = Ascii; warnings = [];

@@ -63,9 +63,11 @@ type st = {
   mutable cur : Token.t;  (* the current token, valid when [have] *)
   mutable have : bool;
   mutable cur_elem : (V.array_v * int) option;  (* the current token is this array element *)
-  mutable no_expand : bool;
+  mutable no_expand : bool;  (* reading the argument of defined(): a macro name is not called *)
   mutable defer : bool;  (* reading past a complete value: a directive is kept, not run *)
-  mutable streams : V.stream array;  (* the random streams made by seed() *)  (* reading the argument of defined(): a macro name is not called *)
+  mutable in_rvalue : bool;  (* reading a declaration's value: a macro called past it is kept too *)
+  mutable pending_macro : (V.macro * Loc.t) option;  (* the macro call so kept, the current token *)
+  mutable streams : V.stream array;  (* the random streams made by seed() *)
   mutable depth : int;  (* '{' minus '}' consumed: how a declaration that fails is skipped *)
   mutable parens : int;  (* '(' minus ')' consumed: the same for a macro call's arguments *)
   opts : options;
@@ -306,6 +308,10 @@ and take st f t =
       end
   | Ident s -> (
       match lookup st s with
+      | Some (V.Macro m) when st.defer && st.in_rvalue && not st.no_expand ->
+          (* past a declaration's value a macro is called once the value is stored, as POV-Ray
+             calls none while it looks for the value's end *)
+          st.cur <- t; st.have <- true; st.cur_elem <- None; st.pending_macro <- Some (m, t.loc)
       | Some (V.Macro m) when not st.no_expand ->
           st.invoke st m t.loc;
           if not st.have then fill st
@@ -364,6 +370,14 @@ and end_of_frame st f t =
 (* A directive read while looking past a complete value was kept for later (see [peek_follow]);
    it runs as soon as the parser asks for the next token. *)
 let rec run_pending st =
+  match st.pending_macro with
+  | Some (m, loc) when st.have ->
+      st.pending_macro <- None;
+      st.have <- false;
+      st.invoke st m loc;
+      if not st.have then fill st;
+      run_pending st
+  | _ ->
   match st.cur.kind with
   | Directive d when st.have ->
       st.have <- false;

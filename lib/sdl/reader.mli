@@ -61,6 +61,9 @@ type st = {
   mutable cur_elem : (V.array_v * int) option;
   mutable no_expand : bool;
   mutable defer : bool;
+  mutable in_rvalue : bool;  (** reading a declaration's value *)
+  mutable pending_macro : (V.macro * Loc.t) option;
+      (** a macro named just past a declaration's value, called when the next token is asked for *)
   mutable streams : V.stream array;
   mutable depth : int;  (** '{' minus '}' consumed *)
   mutable parens : int;  (** '(' minus ')' consumed *)

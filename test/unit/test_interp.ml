@@ -517,11 +517,27 @@ let test_warnings_order () =
   (* warnings come in the order they arose *)
   let w = warnings "#version 3.7;\nglobal_settings { assumed_gamma 1 }\nsphere { 0, 1/0 }\nsphere { 0, 2/0 }" in
   Alcotest.(check (list int)) "lines" [ 3; 4 ] (List.map (fun (e : Error.t) -> e.loc.line) w);
-  (* §11.3: a missing ';' after a float #declare warns in a ≥ 3.5 scene *)
-  let w = warnings "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n#declare A = 1\nsphere { 0, A }" in
+  (* §11.3: a missing ';' after a float #declare warns in a 3.1 scene *)
+  let w = warnings "#version 3.1;\nglobal_settings { assumed_gamma 1 }\n#declare A = 1\nsphere { 0, A }" in
   match w with
-  | [ e ] -> check_contains "semicolon warning" ~sub:"semicolon" e.msg
+  | [ e ] -> check_contains "semicolon warning" ~sub:"';' at the end" e.msg; Alcotest.(check int) "at the next token" 4 e.loc.line
   | l -> Alcotest.failf "expected one warning, got %d" (List.length l)
+
+let test_declare_semicolon_required () =
+  (* from 3.5 on it is an error, at the token after the value, as in POV-Ray 3.7 *)
+  expect_error "float" (fun () -> scene "#version 3.7;\n#declare A = 1\nsphere { 0, A }") ~line:3 ~col:1 ~sub:"require ';'";
+  expect_error "vector before a directive" (fun () -> scene "#declare V = <1,2,3>\n#declare B = 2;\nsphere { V, B }") ~line:2 ~col:1 ~sub:"require ';'";
+  expect_error "before a macro call, not run" (fun () -> scene "#macro M() #error \"ran\" #end\n#declare A = 1\nM()") ~line:3 ~col:1 ~sub:"require ';'"
+
+let test_macro_after_declared_texture () =
+  (* looking past a texture for another layer calls no macro: the call after it sees the new
+     identifier (POV-Ray's incdemo/screen.pov) *)
+  let m = "#macro Mk(T) sphere { 0, 2 texture { T } } #end\n" in
+  let colour text = (pigment text).Colour.red in
+  float_eq "one layer" 0.5 (colour (m ^ "#declare T = texture { pigment { rgb 0.5 } }\nMk(T)"));
+  float_eq "the radius" 2. (radius (m ^ "#declare T = texture { pigment { rgb 0.5 } }\nMk(T)"));
+  (* a macro called inside the value is still called where it stands *)
+  float_eq "inside" 3. (radius "#macro R() 3 #end\n#declare A = R();\nsphere { 0, A }")
 
 let tests =
   [
@@ -531,6 +547,8 @@ let tests =
     Alcotest.test_case "directives without '#'" `Quick test_directives_without_hash;
     Alcotest.test_case "array declared without ';'" `Quick test_array_declared_without_semicolon;
     Alcotest.test_case "string declared without ';'" `Quick test_string_declared_without_semicolon;
+    Alcotest.test_case "';' required after a float from 3.5" `Quick test_declare_semicolon_required;
+    Alcotest.test_case "macro call after a declared texture" `Quick test_macro_after_declared_texture;
     Alcotest.test_case "component selectors" `Quick test_components;
     Alcotest.test_case "division by zero" `Quick test_division_by_zero;
     Alcotest.test_case "colours" `Quick test_colours;
