@@ -145,3 +145,16 @@ let read_gif (o : options) s =
     | _ -> bad "cannot find GIF image data block"
   in
   objects (13 + (3 * size))
+
+(* A POT file holds two bytes per height: the right half of the GIF's indices are the low bytes of
+   the left half's. The palette is ignored and no gamma applies. *)
+let read_pot (o : options) s =
+  let img = read_gif o s in
+  match img.pixels with
+  | Indexed { index; _ } ->
+      if img.width land 1 <> 0 then bad "invalid width for POT file";
+      let w = img.width / 2 in
+      let byte x y = Char.code (Bytes.get index (x + (y * img.width))) in
+      let grey = Array.init (w * img.height) (fun i -> (byte (i mod w) (i / w) lsl 8) lor byte ((i mod w) + w) (i / w)) in
+      { width = w; height = img.height; pixels = Grey { max = 65535; grey; alpha = None; lut = None }; premultiplied = false }
+  | Grey _ | Colour _ -> img

@@ -4,7 +4,7 @@
    TryDeferDecoding); palettes hold decoded single-precision colours; 8-bit grey PNG files go
    through a palette into an 8-bit grey image, truncating the decoded values (png.cpp). *)
 
-type format = Png | Jpeg | Gif | Ppm | Pgm | Tga | Iff | Tiff | Bmp | Exr | Hdr
+type format = Png | Jpeg | Gif | Pot | Ppm | Pgm | Tga | Iff | Tiff | Bmp | Exr | Hdr
 
 type options = {
   gamma_correct : bool;
@@ -34,6 +34,7 @@ let format_name = function
   | Png -> "png"
   | Jpeg -> "jpeg"
   | Gif -> "gif"
+  | Pot -> "pot"
   | Ppm -> "ppm"
   | Pgm -> "pgm"
   | Tga -> "tga"

@@ -5,8 +5,9 @@
     single-precision colours), and whether the colour is premultiplied by alpha. The values are
     immutable; the parser's per-index filter and transmit make new images. *)
 
-(** The file formats POV-Ray 3.7 names ([sys] is PNG on Unix). *)
-type format = Png | Jpeg | Gif | Ppm | Pgm | Tga | Iff | Tiff | Bmp | Exr | Hdr
+(** The file formats POV-Ray 3.7 names ([sys] is PNG on Unix; [pot], for height fields only, is
+    a GIF holding 16-bit heights). *)
+type format = Png | Jpeg | Gif | Pot | Ppm | Pgm | Tga | Iff | Tiff | Bmp | Exr | Hdr
 
 (** How the parser asks for the image to be decoded (Image::ReadOptions). *)
 type options = {

@@ -34,6 +34,7 @@ let read fmt o path =
     | Pgm -> Ok (Netpbm_file.read_netpbm ~colour:false o (contents ()))
     | Tga -> Ok (Tga_file.read_tga o (contents ()))
     | Gif -> Ok (Gif_file.read_gif o (contents ()))
+    | Pot -> Ok (Gif_file.read_pot o (contents ()))
     | Jpeg -> Ok (read_jpeg o path)
     | Iff | Tiff | Bmp | Exr | Hdr -> Error (Printf.sprintf "not supported yet: '%s' images" (format_name fmt))
   with

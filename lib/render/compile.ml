@@ -232,7 +232,7 @@ let scene (s : Scene.t) : Compiled.t =
     in
     let shape =
       match o.shape with
-      | Csg { kind; members } ->
+      | Csg { kind; members; box } ->
           incr next;
           let sets_csg =
             match (kind, members) with
@@ -250,7 +250,9 @@ let scene (s : Scene.t) : Compiled.t =
             |> List.filter_map Fun.id
           in
           let members = Array.of_list members in
-          Some (Csg { kind; members; cbox = Shape.pov_box (Csg { kind; members; cbox = [||] }) })
+          (* the box its history gave it, else one made from its members *)
+          let cbox = match box with Some b -> b | None -> Shape.pov_box (Csg { kind; members; cbox = [||] }) in
+          Some (Csg { kind; members; cbox })
       | _ ->
           (* a primitive: [Shape.compile] knows every one *)
           let sh = Shape.compile o.shape in

@@ -62,6 +62,10 @@ let transform_texture (t : Scene.texture) m : Scene.texture =
 let layer t op = transform_layer t (op_transform op)
 let texture t op = transform_texture t (op_transform op)
 
+(* A CSG's box as one modifier maps it (Recompute_BBox): its corners' extent; an unbounded box
+   stays unbounded *)
+let csg_box box op = Option.map (fun b -> if Array.length b = 0 then b else Pov_box.mapped (op_transform op) b) box
+
 let rec shape (s : Scene.shape) op : Scene.shape =
   match s with
   | Sphere { centre; radius; trans = None; uv_trans } -> (
@@ -192,9 +196,10 @@ let rec shape (s : Scene.shape) op : Scene.shape =
       (* Fractal::Translate/Rotate/Scale all call Transform: composed into its Trans, and its
          Compute_BBox clears the inverted flag *)
       Julia (Julia.transform f (op_transform op))
-  | Csg { kind; members } ->
-      (* §16: a CSG's transform moves every member *)
-      Csg { kind; members = List.map (fun (m : Scene.member) -> { m with mobj = { m.mobj with shape = shape m.mobj.shape op; texture = texture m.mobj.texture op } }) members }
+  | Csg { kind; members; box } ->
+      (* §16: a CSG's transform moves every member, and maps the box it has (Recompute_BBox) *)
+      let members = List.map (fun (m : Scene.member) -> { m with mobj = { m.mobj with shape = shape m.mobj.shape op; texture = texture m.mobj.texture op } }) members in
+      Csg { kind; members; box = csg_box box op }
 
 (* ---------------------------------------------------------------------------------------------- *)
 (* The whole scene moved: every object, light and the camera scaled by [scale] about the origin and
@@ -213,7 +218,8 @@ let scene ~scale ~translate (s : Scene.t) : Scene.t =
     in
     let sh =
       match o.shape with
-      | Csg { kind; members } -> Scene.Csg { kind; members = List.map (fun (m : Scene.member) -> { m with mobj = obj m.mobj }) members }
+      | Csg { kind; members; box } ->
+          Scene.Csg { kind; members = List.map (fun (m : Scene.member) -> { m with mobj = obj m.mobj }) members; box = csg_box (csg_box box (Scale sv)) (Translate translate) }
       | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Prism _ | Lathe _ | Sor _ | Julia _ | Bicubic _ ->
           shape (shape o.shape scaling) (Translate translate)
     in

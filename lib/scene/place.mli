@@ -19,6 +19,10 @@ val texture : Scene.texture -> op -> Scene.texture
     {!layer}), or a patterned texture's own pattern, whose entries live in the space that pattern
     sees. *)
 
+val csg_box : float array option -> op -> float array option
+(** [csg_box box op] is a CSG's POV-Ray box (see {!Scene.shape}) after [op]: the extent of its
+    corners mapped by [op], as Recompute_BBox makes it ([[||]], unbounded, stays so). *)
+
 val shape : Scene.shape -> op -> Scene.shape
 (** [shape s op] is [s] after [op]: baked into a sphere, plane or triangle while it has no
     transform of its own, composed into its transform otherwise (§14.4); a mesh's face textures move with it. A degenerate triangle

@@ -384,10 +384,15 @@ type shape =
   | Bicubic of { patch_type : int; u_steps : int; v_steps : int; flatness : float; points : Vec.t array }
       (** bezier.cpp: the 16 control points in world space (row by row, P[i][j] at 4i + j), which
           every modifier moves; type 0 or 1; flat, with no inside *)
-  | Csg of { kind : csg_kind; members : member list }
+  | Csg of { kind : csg_kind; members : member list; box : float array option }
       (** §16: a CSG kept whole (a merge, an intersection or difference, a union with
           [split_union off]); its members are already moved by its transforms and carry the
-          texture passed down to them (§16.5) *)
+          texture passed down to them (§16.5). [box] is POV-Ray's box of a union or merge (and
+          of the intersection an inverted one becomes) as its history made it: the members'
+          single-precision boxes when it was built (CSG::Compute_BBox), then that box's corners
+          mapped by each later modifier (Recompute_BBox), which the members' own boxes after the
+          same modifiers need not equal ({!Pov_box}); [None] for a box made from the members
+          when the CSG is compiled. *)
   | Glyph of { outline : Glyph.outline; depth : float; trans : Transform.t }
       (** §15.9: one letter of a text object (which is a union of its letters): the outline in
           z = 0 extruded to z = [depth], mapped by [trans] (the letter's place in the string, then

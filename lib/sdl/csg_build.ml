@@ -20,15 +20,16 @@ let rec invert (o : V.obj) : V.obj =
   | Prim (Quadric q) -> { o with shape = Prim (Quadric (Quadric.invert q)); inverted = not o.inverted }
   | Csg { members; _ } when List.for_all (function V.Member_light _ -> true | V.Member_obj _ -> false) members ->
       o (* lights only (a light in object position): nothing to invert *)
-  | Csg { kind = (Clipped | Bounded | Boxed) as kind; members = V.Member_obj c :: clips; split } ->
+  | Csg { kind = (Clipped | Bounded | Boxed) as kind; members = V.Member_obj c :: clips; split; box } ->
       (* the object is inverted, its clip or bounding objects are not; the flag (POV-Ray's, on
          the object) leaves it out of an enclosing intersection's box *)
-      { o with shape = Csg { kind; members = V.Member_obj (invert c) :: clips; split }; inverted = not o.inverted }
-  | Csg { kind = (Union | Merge | Intersection | Clipped | Bounded | Boxed) as kind; members; split } ->
+      { o with shape = Csg { kind; members = V.Member_obj (invert c) :: clips; split; box }; inverted = not o.inverted }
+  | Csg { kind = (Union | Merge | Intersection | Clipped | Bounded | Boxed) as kind; members; split; box } ->
       let kind : Scene.csg_kind = match kind with Union | Merge -> Intersection | Intersection | Clipped | Bounded | Boxed -> Merge in
       let members = List.map (function V.Member_obj c -> V.Member_obj (invert c) | V.Member_light _ as l -> l) members in
-      (* the CSG keeps an inverted flag too: an enclosing intersection leaves it out of its box *)
-      { o with shape = Csg { kind; members; split }; inverted = not o.inverted }
+      (* the CSG keeps an inverted flag too: an enclosing intersection leaves it out of its box;
+         the CSG it morphs into keeps its box (Morph copies the object) *)
+      { o with shape = Csg { kind; members; split; box }; inverted = not o.inverted }
 
 (* §2.7: every object gets a texture and an interior; a legacy finish ior (its top layer's) goes
    into the interior. *)
@@ -98,7 +99,7 @@ let rec kept_obj st ~texture ~cut_parent ?interior_texture ~interior (o : V.obj)
   let shown = match texture with Some t -> t | None -> Scene.Cutaway in
   match o.shape with
   | Prim shape -> scene_obj o ~interior_texture shape shown interior
-  | Csg { kind; members; split = _ } ->
+  | Csg { kind; members; split = _; box } ->
       let cut_parent = kind = Intersection && o.cutaway in
       let members =
         List.filter_map
@@ -125,7 +126,7 @@ let rec kept_obj st ~texture ~cut_parent ?interior_texture ~interior (o : V.obj)
         o.no_shadow
         || (match kind with Union -> members <> [] && List.for_all (fun (m : Scene.member) -> m.mobj.no_shadow) members | Merge | Intersection | Clipped | Bounded | Boxed -> false)
       in
-      scene_obj o ~no_shadow ~interior_texture (Csg { kind; members }) shown interior
+      scene_obj o ~no_shadow ~interior_texture (Csg { kind; members; box }) shown interior
 
 (* The object under its clipped_by and bounded_by wrappers: what POV-Ray's object is. *)
 let rec core (o : V.obj) =
@@ -146,10 +147,10 @@ let wrap kind (o : V.obj) objs =
   if objs = [] then o
   else
     match o.shape with
-    | Csg { kind = k; members; split } when k = kind -> { o with shape = Csg { kind; members = members @ objs; split } }
+    | Csg { kind = k; members; split; box } when k = kind -> { o with shape = Csg { kind; members = members @ objs; split; box } }
     | Prim _ | Csg _ ->
         let inner = { o with texture = None; interior = None; no_shadow = false; linked = false } in
-        { o with shape = Csg { kind; members = V.Member_obj inner :: objs; split = false }; inverted = false }
+        { o with shape = Csg { kind; members = V.Member_obj inner :: objs; split = false; box = None }; inverted = false }
 
 (* PATCH_OBJECT, which CSG inherits from its members: a shape without an inside (a triangle, a
    mesh without inside_vector, a bicubic patch) *)
@@ -172,11 +173,11 @@ let bounds_kept (o : V.obj) =
 
 let rec unbound st (o : V.obj) : V.obj =
   match o.shape with
-  | Csg { kind = Bounded; members = V.Member_obj c :: bs; split } when not (bounds_kept c) ->
+  | Csg { kind = Bounded; members = V.Member_obj c :: bs; split; box } when not (bounds_kept c) ->
       warn st o.oloc "Unnecessary bounding object removed.";
-      { o with shape = Csg { kind = Boxed; members = V.Member_obj (unbound st c) :: bs; split } }
-  | Csg { kind = (Clipped | Bounded) as kind; members = V.Member_obj c :: rest; split } ->
-      { o with shape = Csg { kind; members = V.Member_obj (unbound st c) :: rest; split } }
+      { o with shape = Csg { kind = Boxed; members = V.Member_obj (unbound st c) :: bs; split; box } }
+  | Csg { kind = (Clipped | Bounded) as kind; members = V.Member_obj c :: rest; split; box } ->
+      { o with shape = Csg { kind; members = V.Member_obj (unbound st c) :: rest; split; box } }
   | Prim _ | Csg _ -> o
 
 (* A finite union's box: its members' boxes are all finite (no plane, no infinite quadric, no poly) *)
@@ -204,8 +205,8 @@ let rec add_object st (o : V.obj) =
       (* an inverted primitive: the intersection holds its texture and interior, so the camera's
          interior list and the hits name the same interior, as for POV-Ray's one object *)
       let m = V.Member_obj { o with texture = None; interior_texture = None; interior = None } in
-      add_object st { o with shape = Csg { kind = Intersection; members = [ m ]; split = false }; inverted = false }
-  | Csg { kind = Union; members = ms; split = true } ->
+      add_object st { o with shape = Csg { kind = Intersection; members = [ m ]; split = false; box = None }; inverted = false }
+  | Csg { kind = Union; members = ms; split = true; _ } ->
       List.iter
         (function
           | V.Member_light l -> count_object st o.oloc; st.lights <- l :: st.lights
@@ -224,7 +225,7 @@ let rec add_object st (o : V.obj) =
                   looks_like = c.looks_like || o.looks_like;
                 })
         ms
-  | Csg { kind = Union | Merge | Intersection | Clipped | Bounded | Boxed; members = _; split = _ } ->
+  | Csg { kind = Union | Merge | Intersection | Clipped | Bounded | Boxed; members = _; split = _; box = _ } ->
       (match o.shape with
       | Csg { kind = Bounded; members = V.Member_obj ({ shape = Csg { kind = Union; members = ms; _ }; _ } as u) :: _; _ } when finite u && ms <> [] ->
           warn st o.oloc "CSG union unnecessarily bounded."

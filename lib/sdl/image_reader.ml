@@ -21,8 +21,8 @@ let parse_name st =
   | v -> Error.raise_at loc "expected the image file's name (a string) but found %s" (V.kind_name v)
 
 (* The file type keyword or a name whose extension gives it; a name without one is the output
-   type's, PNG in povml *)
-let parse_file st =
+   type's, PNG in povml. A POT file is legal only for a height field [hf]. *)
+let parse_file ~hf st =
   let loc = peek_loc st in
   let typed fmt =
     advance st;
@@ -32,10 +32,12 @@ let parse_file st =
   | Ident ("png" | "sys") -> typed Image_file.Png
   | Ident "jpeg" -> typed Image_file.Jpeg
   | Ident "gif" -> typed Image_file.Gif
+  | Ident "pot" when hf -> typed Image_file.Pot
+  | Ident "pot" -> Error.raise_at loc "file type not supported here: 'pot' images are read only by height fields"
   | Ident "ppm" -> typed Image_file.Ppm
   | Ident "pgm" -> typed Image_file.Pgm
   | Ident "tga" -> typed Image_file.Tga
-  | Ident (("iff" | "tiff" | "bmp" | "exr" | "hdr" | "pot" | "function") as kw) -> not_supported loc (Printf.sprintf "'%s' images" kw)
+  | Ident (("iff" | "tiff" | "bmp" | "exr" | "hdr" | "function") as kw) -> not_supported loc (Printf.sprintf "'%s' images" kw)
   | _ -> (
       let name = parse_name st in
       match Image_file.format_of_extension name with
@@ -78,7 +80,11 @@ let parse_gamma st =
 
 (* the file searched like an include file, the format's extensions tried where the name has none *)
 let locate st loc fmt name =
-  let exts = match fmt with Image_file.Jpeg -> [ ".jpg"; ".JPG"; ".jpeg"; ".JPEG" ] | f -> let e = "." ^ Image_file.format_name f in [ e; String.uppercase_ascii e ] in
+  let exts =
+    match fmt with
+    | Image_file.Jpeg -> [ ".jpg"; ".JPG"; ".jpeg"; ".JPEG" ]
+    | Pot -> [ ".gif"; ".GIF" ]
+    | f -> let e = "." ^ Image_file.format_name f in [ e; String.uppercase_ascii e ] in
   let names = if String.contains name '.' then [ name ] else name :: List.map (fun e -> name ^ e) exts in
   match List.find_map (fun n -> find_file ~inc:false st n) names with
   | Some path ->
@@ -91,9 +97,9 @@ let not_with loc what = Error.raise_at loc "'%s' cannot be used with a non color
 (* load_file: the file name, its gamma and premultiplied options (after the name, in any order),
    and the image decoded at once with the options [block] reads images with; the image and its
    name as written *)
-let load_file st block =
+let load_file ?(hf = false) st block =
   let file_loc = peek_loc st in
-  let fmt, name = parse_file st in
+  let fmt, name = parse_file ~hf st in
   let rec file_options gamma premultiply =
     match peek st with
     | Ident "gamma" -> advance st; file_options (Some (parse_gamma st)) premultiply
@@ -204,4 +210,4 @@ let parse_material_map st = snd (read st "material_map")
 
 (* A height field's file: Parse_Image (HF_FILE) as for a bump_map, without gamma correction unless
    [gamma] is given; the image is decoded at once *)
-let height_field_image st = load_file st Bump_map
+let height_field_image st = load_file ~hf:true st Bump_map

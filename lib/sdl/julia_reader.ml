@@ -91,5 +91,5 @@ let rec set_up loc (o : V.obj) : V.obj =
   | Prim (Julia f) ->
       if not (Julia.supported f.algebra f.func) then Error.raise_at loc "Illegal function: quaternion only supports sqr and cube";
       { o with shape = Prim (Julia (Julia.set_up f)) }
-  | Csg { kind = Clipped; members = V.Member_obj c :: clips; split } -> { o with shape = Csg { kind = Clipped; members = V.Member_obj (set_up loc c) :: clips; split } }
+  | Csg { kind = Clipped; members = V.Member_obj c :: clips; split; box } -> { o with shape = Csg { kind = Clipped; members = V.Member_obj (set_up loc c) :: clips; split; box } }
   | Prim _ | Csg _ -> o

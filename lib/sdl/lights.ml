@@ -34,7 +34,7 @@ let parse st ~object_ ~mods =
         match looks with
         | None -> Lone l
         | Some o ->
-            Shaped (new_obj_of (V.Csg { kind = Union; members = [ V.Member_light l; V.Member_obj o ]; split = true }) lloc))
+            Shaped (new_csg Union [ V.Member_light l; V.Member_obj o ] ~split:true lloc))
     (* §19.2: the object is written about the origin and moved to the centre, then its own
        modifiers apply; it never casts a shadow *)
     | Ident "looks_like" ->

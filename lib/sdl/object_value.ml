@@ -24,6 +24,25 @@ let new_obj_of shape loc =
 
 let new_obj shape loc = new_obj_of (V.Prim shape) loc
 
+(* CSG::Compute_BBox of a union or merge when it is built: its members' POV-Ray boxes as they are
+   then (a member CSG's own box, a primitive's as compiled; a primitive that cannot be compiled
+   is no member of the compiled CSG either). A member CSG without a box of its own leaves the
+   union's to be made when it is compiled. *)
+let built_box (kind : Scene.csg_kind) members =
+  let exception Unknown in
+  match kind with
+  | Union | Merge -> (
+      let box = function
+        | V.Member_light _ -> None
+        | V.Member_obj { shape = Prim s; _ } -> Option.map Shape.pov_box (Shape.compile s)
+        | V.Member_obj { shape = Csg { box = Some b; _ }; _ } -> Some b
+        | V.Member_obj { shape = Csg { box = None; _ }; _ } -> raise Unknown
+      in
+      try Some (Csg.union_box (List.filter_map box members)) with Unknown -> None)
+  | Intersection | Clipped | Bounded | Boxed -> None
+
+let new_csg kind members ~split loc = new_obj_of (V.Csg { kind; members; split; box = built_box kind members }) loc
+
 let move_shape op s = Place.shape s op
 
 (* §14.8: a light's centre and point_at move as points; the direction between them is taken
@@ -39,7 +58,7 @@ let rec move_obj op (o : V.obj) =
   let texture = moved o.texture and interior_texture = moved o.interior_texture in
   match o.shape with
   | Prim s -> { o with shape = Prim (move_shape op s); texture; interior_texture }
-  | Csg c -> { o with shape = Csg { c with members = List.map (move_member op) c.members }; texture; interior_texture }
+  | Csg c -> { o with shape = Csg { c with members = List.map (move_member op) c.members; box = Place.csg_box c.box op }; texture; interior_texture }
 
 and move_member op = function
   | V.Member_obj o -> V.Member_obj (move_obj op o)

@@ -8,6 +8,10 @@ val new_obj_of : Value.shape -> Loc.t -> Value.obj
 val new_obj : Scene.shape -> Loc.t -> Value.obj
 (** [new_obj shape loc] is [new_obj_of] of the primitive [shape]. *)
 
+val new_csg : Scene.csg_kind -> Value.member list -> split:bool -> Loc.t -> Value.obj
+(** [new_csg kind members ~split loc] is [new_obj_of] a CSG of [members] just built: a union or
+    merge gets its POV-Ray box from theirs (CSG::Compute_BBox), which later modifiers map. *)
+
 val move_light : Place.op -> Scene.light -> Scene.light
 (** [move_light op l] is [l] with its centre and point_at moved by [op] as points (§14.8). *)
 

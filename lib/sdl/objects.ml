@@ -24,7 +24,7 @@ let unsupported_rvalue_set = set_of (unsupported_objects @ unsupported_rvalues)
 let unsupported_object_set = set_of unsupported_objects
 
 (* A light where an object may stand: a union of the light alone, dissolved into the scene's lights. *)
-let light_union l = V.Csg { kind = Union; members = [ V.Member_light l ]; split = true }
+let light_union l = V.Csg { kind = Union; members = [ V.Member_light l ]; split = true; box = None }
 
 let rec parse_object st : V.obj =
   let loc = peek_loc st in
@@ -164,7 +164,7 @@ let rec parse_object st : V.obj =
       let o = parse_object_mods st (new_obj (Hfield_reader.parse st) loc) "height_field" in
       let seal (o : V.obj) = match o.shape with Prim (Height_field h) -> { o with shape = Prim (Height_field { h with field = Hfield.seal h.field }) } | Prim _ | Csg _ -> o in
       (match o.shape with
-      | Csg { kind; members = V.Member_obj m :: rest; split } -> { o with shape = Csg { kind; members = V.Member_obj (seal m) :: rest; split } }
+      | Csg { kind; members = V.Member_obj m :: rest; split; box } -> { o with shape = Csg { kind; members = V.Member_obj (seal m) :: rest; split; box } }
       | Csg _ | Prim _ -> seal o)
   | Ident "superellipsoid" ->
       advance st;
@@ -250,7 +250,7 @@ let rec parse_object st : V.obj =
         else List.mapi (fun i m -> match m with V.Member_obj o when i > 0 -> V.Member_obj (invert o) | V.Member_obj _ | V.Member_light _ -> m) ms
       in
       let kind : Scene.csg_kind = match kw with "union" -> Union | "merge" -> Merge | _ -> Intersection in
-      parse_object_mods st { (new_obj_of (V.Csg { kind; members = ms; split = kind = Union }) loc) with difference = kw = "difference" } kw
+      parse_object_mods st { (new_csg kind ms ~split:(kind = Union) loc) with difference = kw = "difference" } kw
   | Ident "light_source" -> (
       match parse_light_source st with Lights.Lone l -> new_obj_of (light_union l) loc | Shaped o -> o)
   | Ident s -> (

@@ -15,9 +15,9 @@ let rec scene_obj st (o : V.obj) : Scene.obj =
   let member (c : V.obj) = { Scene.mobj = scene_obj st { c with inverted = false }; inverted = c.inverted; own_interior = c.interior <> None } in
   match o.shape with
   | Prim shape when not o.inverted -> made shape
-  | Prim _ -> made (Csg { kind = Intersection; members = [ member o ] })
-  | Csg { kind; members; split = _ } ->
-      made (Csg { kind; members = List.filter_map (function V.Member_obj c -> Some (member c) | V.Member_light _ -> None) members })
+  | Prim _ -> made (Csg { kind = Intersection; members = [ member o ]; box = None })
+  | Csg { kind; members; split = _; box } ->
+      made (Csg { kind; members = List.filter_map (function V.Member_obj c -> Some (member c) | V.Member_light _ -> None) members; box })
 
 let parse st loc : Scene.object_test =
   let rec objects acc = match st.read_object st with Some o -> objects (o :: acc) | None -> List.rev acc in

@@ -14,7 +14,7 @@ let scene_object st (o : V.obj) : Scene.obj =
     | Prim _ when o.inverted ->
         (* an inverted primitive alone: the intersection of itself, as it enters the scene *)
         let m = V.Member_obj { o with texture = None; interior_texture = None; interior = None } in
-        { o with shape = Csg { kind = Intersection; members = [ m ]; split = false }; inverted = false }
+        { o with shape = Csg { kind = Intersection; members = [ m ]; split = false; box = None }; inverted = false }
     | Prim _ | Csg _ -> o
   in
   let _, interior = Csg_build.resolved st o in

@@ -83,4 +83,4 @@ let parse st loc =
   in
   (* POV-Ray then turns the whole text by <0.001, 0.001, 0.001> degrees (to avoid cracks
      where an edge lies along an axis), before the modifiers *)
-  move_obj (Place.Rotate (Vec.make 0.001 0.001 0.001)) (new_obj_of (V.Csg { kind = Union; members; split = true }) loc)
+  move_obj (Place.Rotate (Vec.make 0.001 0.001 0.001)) (new_csg Union members ~split:true loc)

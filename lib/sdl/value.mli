@@ -20,8 +20,9 @@ type obj = {
 }
 
 (** A primitive, or a CSG: a union with [split] on is dissolved into its members when it enters
-    the scene (POVRAY-3.7 §16.4); any other CSG is kept whole. *)
-and shape = Prim of Scene.shape | Csg of { kind : Scene.csg_kind; members : member list; split : bool }
+    the scene (POVRAY-3.7 §16.4); any other CSG is kept whole. [box] is {!Scene.shape}'s: POV-Ray's
+    box of a union or merge as its history made it. *)
+and shape = Prim of Scene.shape | Csg of { kind : Scene.csg_kind; members : member list; split : bool; box : float array option }
 
 and member = Member_obj of obj | Member_light of Scene.light
 

@@ -217,6 +217,23 @@ let bounds ~bounds c =
       (* an empty overlap: nothing can be hit; POV-Ray then keeps its unbounded box *)
       Option.bind b (fun b -> if b.(0) > b.(3) || b.(1) > b.(4) || b.(2) > b.(5) then None else Some b)
 
+let union_box boxes =
+  (* the members' single-precision boxes, their upper corners added in double precision; a box
+     longer than CRITICAL_LENGTH (1e6) on any axis is POV-Ray's huge one *)
+  let lo = Array.make 3 2e10 and hi = Array.make 3 (-2e10) in
+  List.iter
+    (fun b ->
+      let b = if Array.length b = 0 then huge_box else b in
+      for i = 0 to 2 do
+        lo.(i) <- Float.min lo.(i) b.(i);
+        hi.(i) <- Float.max hi.(i) (b.(i) +. b.(i + 3))
+      done)
+    boxes;
+  if lo.(0) > hi.(0) || lo.(1) > hi.(1) || lo.(2) > hi.(2) then [||]
+  else
+    let b = Pov_box.of_min_max lo hi in
+    if b.(3) > 1e6 || b.(4) > 1e6 || b.(5) > 1e6 then [||] else b
+
 let pov_box ~bounds:member_bounds ~pov_box c =
   match (c.kind, lone_inverted c) with
   | _, Some m -> pov_box m.shape
@@ -224,22 +241,8 @@ let pov_box ~bounds:member_bounds ~pov_box c =
   | (Bounded | Boxed), None ->
       let b = bounded_box c in
       if b == huge_box then [||] else b
-  | (Union | Merge), None ->
-      (* the members' single-precision boxes, their upper corners added in double precision; a
-         box longer than CRITICAL_LENGTH (1e6) on any axis is POV-Ray's huge one *)
-      let lo = Array.make 3 2e10 and hi = Array.make 3 (-2e10) in
-      Array.iter
-        (fun m ->
-          let b = if Array.length m.pbox = 0 then huge_box else m.pbox in
-          for i = 0 to 2 do
-            lo.(i) <- Float.min lo.(i) b.(i);
-            hi.(i) <- Float.max hi.(i) (b.(i) +. b.(i + 3))
-          done)
-        c.members;
-      if lo.(0) > hi.(0) || lo.(1) > hi.(1) || lo.(2) > hi.(2) then [||]
-      else
-        let b = Pov_box.of_min_max lo hi in
-        if b.(3) > 1e6 || b.(4) > 1e6 || b.(5) > 1e6 then [||] else b
+  | (Union | Merge), None when Array.length c.cbox > 0 -> c.cbox
+  | (Union | Merge), None -> union_box (Array.to_list (Array.map (fun m -> m.pbox) c.members))
   | (Intersection | Clipped), None -> (
       match bounds ~bounds:member_bounds c with None -> [||] | Some b -> Pov_box.of_min_max (Array.sub b 0 3) (Array.sub b 3 3))
 

@@ -58,10 +58,15 @@ val lone_inverted : Compiled.csg -> Compiled.obj option
 
 val pov_box :
   bounds:(Compiled.shape -> float array option) -> pov_box:(Compiled.shape -> float array) -> Compiled.csg -> float array
-(** [pov_box ~bounds ~pov_box c] is CSG::Compute_BBox from the members' boxes, after the CSG's
-    transforms (POV-Ray maps the box computed before them: a difference in equal-depth ties only),
-    rounded as POV-Ray stores it; [[||]] when unbounded. An inverted primitive written alone keeps
-    its own POV-Ray box. *)
+(** [pov_box ~bounds ~pov_box c] is the CSG's POV-Ray box, rounded as POV-Ray stores it; [[||]]
+    when unbounded. A union or merge with a [cbox] has that box: POV-Ray computes it when the CSG
+    is built and maps it by each later transform (the history kept in {!Scene.shape}'s [box]).
+    Otherwise it is CSG::Compute_BBox from the members' boxes as they are now. An inverted
+    primitive written alone keeps its own POV-Ray box. *)
+
+val union_box : float array list -> float array
+(** [union_box boxes] is a union's or merge's box from its members' POV-Ray boxes ([[||]] for an
+    unbounded one): their extent, [[||]] when longer than CRITICAL_LENGTH on any axis. *)
 
 val magnitude : Compiled.csg -> float
 (** [magnitude c] is the largest magnitude of its members. *)

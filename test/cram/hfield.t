@@ -29,3 +29,23 @@ The function form is not read yet; a missing file and a missing number are locat
       1 | height_field { pgm "hf.pgm" water_level }
         |                                         ^
   [1]
+
+A POT file (Fractint's continuous potential) is a GIF twice as wide as its heights; only height
+fields read it, and its width must be even:
+
+  $ printf 'GIF89a\001\000\001\000\200\000\000\377\377\377\000\000\000,\000\000\000\000\001\000\001\000\000\002\002D\001\000;' > odd.gif
+  $ printf 'height_field { pot "odd.gif" }\n' > odd.pov
+  $ povml odd.pov +W10 +H10 -D
+  odd.pov:1:16: error: cannot read the image file "odd.gif": invalid width for POT file
+      1 | height_field { pot "odd.gif" }
+        |                ^
+  [1]
+  $ printf 'plane { y, 0 pigment { image_map { pot "odd.gif" } } }\n' > im.pov
+  $ povml im.pov +W10 +H10 -D
+  im.pov:1:36: error: file type not supported here: 'pot' images are read only by height fields
+      1 | plane { y, 0 pigment { image_map { pot "odd.gif" } } }
+        |                                    ^
+  [1]
+  $ printf 'height_field { pot "mtmand.pot" }\n' > mt.pov
+  $ povml --dump mt.pov 2>/dev/null | grep height_field
+  height_field { // 160 x 120 heights 256 … 65024, box y 255.999 … 65024.001, 12 x 10 blocks

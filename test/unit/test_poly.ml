@@ -30,7 +30,7 @@ let sextic = coeffs 6 [ ((6, 0, 0), 1.); ((0, 6, 0), 1.); ((0, 0, 6), 1.); ((0, 
 let rec poly_of (o : Scene.obj) =
   match o.shape with
   | Poly p -> (p, false)
-  | Csg { kind = Intersection; members = [ m ] } ->
+  | Csg { kind = Intersection; members = [ m ]; _ } ->
       let p, inv = poly_of m.mobj in
       (p, inv <> m.inverted)
   | _ ->

@@ -13,6 +13,8 @@ let decls =
    #declare C = cylinder { 0, y, 1 rotate 30*z };\n\
    #declare Pl = plane { y, 0 };\n\
    #declare T = text { ttf \"timrom.ttf\" \"o\" 0.2, 0 };\n\
+   #declare H = union { sphere { 0, 1 } sphere { <2,0,0>, 1 } rotate 45*z };\n\
+   #declare H2 = union { object { H } box { 0, 0.5 } rotate 30*y translate 1 };\n\
    #declare N = <7,7,7>;\n"
 
 (* the centres of the spheres [body] makes, in order; POV-Ray's 16 printed decimals are within
@@ -51,13 +53,20 @@ let extents () =
   vec_eq ~eps:1e-15 "rotated cylinder max" (v 0.8660254478454590 1.3660254478454590 1.) (one "sphere { max_extent(C), 1 }");
   vec_eq ~eps:1e-15 "plane: the huge box" (v (-1e10) (-1e10) (-1e10)) (one "sphere { min_extent(Pl), 1 }");
   vec_eq ~eps:1e-15 "text min" (v (-0.0000081839489212) (-0.0100034903734922) (-0.0000088888882601)) (one "sphere { min_extent(T), 1 }");
-  vec_eq ~eps:1e-15 "text max" (v 0.4420036673545837 0.4690077304840088 0.2000091820955276) (one "sphere { max_extent(T), 1 }")
+  vec_eq ~eps:1e-15 "text max" (v 0.4420036673545837 0.4690077304840088 0.2000091820955276) (one "sphere { max_extent(T), 1 }");
+  (* a union's box is made when it is built and mapped by each later transform, not remade *)
+  vec_eq ~eps:1e-15 "rotated union min" (v (-1.4142135381698608) (-1.4142135381698608) (-1.)) (one "sphere { min_extent(H), 1 }");
+  vec_eq ~eps:1e-15 "rotated union max" (v 2.8284268379211426 2.8284268379211426 1.) (one "sphere { max_extent(H), 1 }");
+  vec_eq ~eps:1e-15 "union of a rotated union, rotated: min" (v (-0.7247447967529297) (-0.4142135381698608) (-1.2802388668060303))
+    (one "sphere { min_extent(H2), 1 }");
+  vec_eq ~eps:1e-15 "union of a rotated union, rotated: max" (v 3.9494895935058594 3.8284268379211426 2.5731322765350342)
+    (one "sphere { max_extent(H2), 1 }")
 
 let errors () =
-  expect_scene_error "trace needs an object" (decls ^ "#declare P = trace(N, x, y);") ~line:9 ~col:20 ~sub:"Object identifier expected";
-  expect_scene_error "inside needs a solid" (decls ^ "#declare Tr = triangle { 0, x, y }\n#declare P = inside(Tr, x);") ~line:10 ~col:21
+  expect_scene_error "trace needs an object" (decls ^ "#declare P = trace(N, x, y);") ~line:11 ~col:20 ~sub:"Object identifier expected";
+  expect_scene_error "inside needs a solid" (decls ^ "#declare Tr = triangle { 0, x, y }\n#declare P = inside(Tr, x);") ~line:12 ~col:21
     ~sub:"Solid object identifier expected";
-  expect_scene_error "the normal goes to a vector" (decls ^ "#declare P = trace(S, x, y, Q);") ~line:9 ~col:29 ~sub:"declared vector identifier"
+  expect_scene_error "the normal goes to a vector" (decls ^ "#declare P = trace(S, x, y, Q);") ~line:11 ~col:29 ~sub:"declared vector identifier"
 
 let tests =
   [

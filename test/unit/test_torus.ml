@@ -14,7 +14,7 @@ let v37 = "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"
 let rec torus_of (o : Scene.obj) =
   match o.shape with
   | Torus { major; minor; sturm; trans } -> (major, minor, sturm, false, trans)
-  | Csg { kind = Intersection; members = [ m ] } ->
+  | Csg { kind = Intersection; members = [ m ]; _ } ->
       let major, minor, sturm, inverse, trans = torus_of m.mobj in
       (major, minor, sturm, inverse <> m.inverted, trans)
   | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Csg _ | Glyph _ | Polygon _ | Quadric _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Prism _ | Lathe _ | Sor _ | Julia _ | Bicubic _ -> Alcotest.fail "expected a torus"
