@@ -16,8 +16,9 @@ type t = {
   walk_limit : float array;
 }
 
-let make ?(robust = false) (scene : Compiled.t) stats =
-  let slots = 2 * max 1 (Array.length scene.lights) in
+let shadow_cache (scene : Compiled.t) = Array.make (2 * max 1 (Array.length scene.lights)) (-1)
+
+let make ?(robust = false) ?shadow_cache:cache (scene : Compiled.t) stats =
   {
     scene;
     stats;
@@ -25,7 +26,7 @@ let make ?(robust = false) (scene : Compiled.t) stats =
     stack = Array.make 512 0.;
     min_depth = (if robust then 0. else Precision.min_isect_depth);
     robust;
-    shadow_cache = Array.make slots (-1);
+    shadow_cache = (match cache with Some c -> c | None -> shadow_cache scene);
     found = { id = -1; part = -1 };
     reach = { depth = 0.; least = 0.; inv_dx = 0.; inv_dy = 0.; inv_dz = 0. };
     walk_limit = [| 0. |];

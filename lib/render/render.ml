@@ -268,9 +268,16 @@ let render opts (sc : Compiled.t) (gamma : Scene.gamma) : Image.t * Stats.t =
   let enc x = if g = 1. then Float.pow (Float.max x 0.) inv else Float.pow (Float.pow (Float.max x 0.) g) inv in
   let bl = blocks opts in
   let total = List.length bl in
+  (* crand's stream runs through the blocks in order: one worker, as one POV-Ray thread *)
+  let workers = if sc.uses_crand then 1 else opts.workers in
+  (* One worker renders the blocks in order as POV-Ray's one render thread does, whose shadow
+     cache carries from block to block. With more workers (POV-Ray's threads take blocks as they
+     come, so which cache a block starts with varies from run to run) every block starts with an
+     empty cache, so that the image does not depend on which worker renders which block. *)
+  let carried = if workers = 1 then Some (Context.shadow_cache sc) else None in
   let work (i, b) =
     let stats = Stats.create () in
-    let ctx = Trace.make_ctx ~robust:opts.robust sc stats in
+    let ctx = Trace.make_ctx ~robust:opts.robust ?shadow_cache:carried sc stats in
     let px = render_block ctx opts enc b in
     (* blocks finish in about this order whichever worker renders them *)
     if opts.progress then Printf.eprintf "\rRendering block %d of %d %!" (i + 1) total;
@@ -284,8 +291,7 @@ let render opts (sc : Compiled.t) (gamma : Scene.gamma) : Image.t * Stats.t =
   Gc.set { gc with space_overhead = 10_000 };
   let results =
     Fun.protect ~finally:(fun () -> Gc.set gc) (fun () ->
-        (* crand's stream runs through the blocks in order: one worker, as one POV-Ray thread *)
-        Pool.map ~workers:(if sc.uses_crand then 1 else opts.workers) work bl)
+        Pool.map ~workers work bl)
   in
   if opts.progress then prerr_string "\r\027[K";
   let img = Image.create opts.width opts.height in
