@@ -45,7 +45,7 @@ let[@inline] fmax (a : float) b = if a < b then b else a
 
 (* HField::normalize of (x, y, z) into [out]: the vector over its length, or <0, 1, 0> for a
    length within EPSILON *)
-let normalize_into out x y z =
+let[@inline] normalize_into out x y z =
   let len = sqrt ((x *. x) +. (y *. y) +. (z *. z)) in
   if Float.abs len > epsilon then begin
     let k = 1. /. len in
@@ -61,45 +61,48 @@ let normalize_into out x y z =
 
 (* smooth_height_field: each vertex's normal is the sum of the unit normals of the (up to four)
    triangles of its neighbours, each turned upwards, normalised and stored as shorts *)
-let vertex_normals width height (map : f32s) =
+(* add_single_normal: adds the upward unit normal of the triangle (x0, z0), (x1, z1), (x2, z2) to
+   [sum] and is 1 when the triangle is within the field, else 0 (a function of its own, so that its
+   floats stay unboxed) *)
+let add_normal (map : f32s) width xsize zsize sum nt x0 z0 x1 z1 x2 z2 =
+  if x0 < 0 || z0 < 0 || x1 < 0 || z1 < 0 || x2 < 0 || z2 < 0 || x0 > xsize || z0 > zsize || x1 > xsize || z1 > zsize || x2 > xsize
+     || z2 > zsize
+  then 0
+  else begin
+    let h x z = Array1.unsafe_get map ((z * width) + x) [@@inline] in
+    let v0x = float_of_int x0 and v0y = h x0 z0 and v0z = float_of_int z0 in
+    let t0x = float_of_int x2 -. v0x and t0y = h x2 z2 -. v0y and t0z = float_of_int z2 -. v0z in
+    let t1x = float_of_int x1 -. v0x and t1y = h x1 z1 -. v0y and t1z = float_of_int z1 -. v0z in
+    (* Nt = t0 × t1, normalised, turned upwards (times −1) *)
+    normalize_into nt ((t0y *. t1z) -. (t0z *. t1y)) ((t0z *. t1x) -. (t0x *. t1z)) ((t0x *. t1y) -. (t0y *. t1x));
+    if nt.(1) < 0. then for a = 0 to 2 do nt.(a) <- nt.(a) *. -1. done;
+    for a = 0 to 2 do sum.(a) <- sum.(a) +. nt.(a) done;
+    1
+  end
+
+(* the normal of vertex (j, i), stored into [out] (three floats at 3 · (i · width + j)) *)
+let vertex_normal (map : f32s) width height (out : f32s) j i =
   let xsize = width - 1 and zsize = height - 1 in
-  let out = Array1.create float32 c_layout (3 * width * height) in
-  let h x z = Array1.unsafe_get map ((z * width) + x) in
   let sum = [| 0.; 0.; 0. |] and nt = [| 0.; 0.; 0. |] in
-  (* add_single_normal: 1 when the triangle (x0, z0), (x1, z1), (x2, z2) is within the field *)
-  let add x0 z0 x1 z1 x2 z2 =
-    if x0 < 0 || z0 < 0 || x1 < 0 || z1 < 0 || x2 < 0 || z2 < 0 || x0 > xsize || z0 > zsize || x1 > xsize || z1 > zsize || x2 > xsize
-       || z2 > zsize
-    then 0
-    else begin
-      let v0x = float_of_int x0 and v0y = h x0 z0 and v0z = float_of_int z0 in
-      let t0x = float_of_int x2 -. v0x and t0y = h x2 z2 -. v0y and t0z = float_of_int z2 -. v0z in
-      let t1x = float_of_int x1 -. v0x and t1y = h x1 z1 -. v0y and t1z = float_of_int z1 -. v0z in
-      (* Nt = t0 × t1, normalised, turned upwards (times −1) *)
-      normalize_into nt ((t0y *. t1z) -. (t0z *. t1y)) ((t0z *. t1x) -. (t0x *. t1z)) ((t0x *. t1y) -. (t0y *. t1x));
-      if nt.(1) < 0. then for a = 0 to 2 do nt.(a) <- nt.(a) *. -1. done;
-      for a = 0 to 2 do sum.(a) <- sum.(a) +. nt.(a) done;
-      1
-    end
-  in
-  for i = 0 to zsize do
-    for j = 0 to xsize do
-      sum.(0) <- 0.;
-      sum.(1) <- 0.;
-      sum.(2) <- 0.;
-      (* in this order: the sum's rounding depends on it *)
-      let k1 = add j i (j + 1) i j (i + 1) in
-      let k2 = add j i j (i + 1) (j - 1) i in
-      let k3 = add j i (j - 1) i j (i - 1) in
-      let k4 = add j i j (i - 1) (j + 1) i in
-      let k = k1 + k2 + k3 + k4 in
-      if k = 0 then failwith "Failed to find any normals at.";
-      normalize_into nt sum.(0) sum.(1) sum.(2);
-      let o = 3 * ((i * width) + j) in
-      (* (short)(32767·N): truncated *)
-      for a = 0 to 2 do Array1.unsafe_set out (o + a) (float_of_int (int_of_float (32767. *. nt.(a)))) done
-    done
-  done;
+  (* in this order: the sum's rounding depends on it *)
+  let k1 = add_normal map width xsize zsize sum nt j i (j + 1) i j (i + 1) in
+  let k2 = add_normal map width xsize zsize sum nt j i j (i + 1) (j - 1) i in
+  let k3 = add_normal map width xsize zsize sum nt j i (j - 1) i j (i - 1) in
+  let k4 = add_normal map width xsize zsize sum nt j i j (i - 1) (j + 1) i in
+  if k1 + k2 + k3 + k4 = 0 then failwith "Failed to find any normals at.";
+  normalize_into nt sum.(0) sum.(1) sum.(2);
+  let o = 3 * ((i * width) + j) in
+  (* (short)(32767·N): truncated *)
+  for a = 0 to 2 do Array1.unsafe_set out (o + a) (float_of_int (int_of_float (32767. *. nt.(a)))) done
+
+(* The vertex normals, each made when it is first asked for ([vertex_normal]): NaN until then.
+   POV-Ray makes them all when the field is built; a render needs those of the cells its rays
+   meet, which in a large field seen from near are far fewer. A vertex has no normal only when the
+   field is one vertex wide or deep, which is refused at once, as POV-Ray does. *)
+let vertex_normals width height =
+  if width < 2 || height < 2 then failwith "Failed to find any normals at.";
+  let out = Array1.create float32 c_layout (3 * width * height) in
+  Array1.fill out Float.nan;
   out
 
 (* build_hfield_blocks: about √n blocks along each axis, each with the height range of its
@@ -148,7 +151,7 @@ let make ~width ~height ~heights ~water ~smooth =
   let max_y = Array.fold_left (fun m (h : int) -> if h > m then h else m) 0 heights in
   let lo_y = fmax (float_of_int min_y) water -. hfield_offset in
   let hi_y = float_of_int max_y +. hfield_offset in
-  let normals = if smooth then vertex_normals width height map else Array1.create float32 c_layout 0 in
+  let normals = if smooth then vertex_normals width height else Array1.create float32 c_layout 0 in
   let nbx, nbz, wbx, wbz, blocks, block_y = blocks_of ~hierarchy:true width height map lo_y hi_y in
   { width; height; map; min_y; max_y; water; lo_y; hi_y; smooth; normals; hierarchy = true; nbx; nbz; wbx; wbz; blocks; block_y; sealed = false }
 
@@ -509,6 +512,7 @@ let smooth_normal t (p : Vec.t) =
   let corner i j =
     let o = 3 * ((j * f.width) + i) in
     let n = f.normals in
+    if Float.is_nan (Array1.unsafe_get n o) then vertex_normal f.map f.width f.height n i j;
     Transform.normalize (Transform.normal t.tr (Vec.make (Array1.unsafe_get n o) (Array1.unsafe_get n (o + 1)) (Array1.unsafe_get n (o + 2))))
   in
   let n0 = corner px pz and n1 = corner (px + 1) pz and n2 = corner px (pz + 1) and n3 = corner (px + 1) (pz + 1) in

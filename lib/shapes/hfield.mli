@@ -18,7 +18,9 @@ type field = private {
   lo_y : float;  (** the box's bottom: max(min_y, water) − 0.001 (HFIELD_OFFSET) *)
   hi_y : float;  (** the box's top: max_y + 0.001 *)
   smooth : bool;  (** [smooth]: normals blended from the vertex normals *)
-  normals : f32s;  (** smooth: 3 per vertex, as POV-Ray stores them (shorts, 32767·N truncated) *)
+  normals : f32s;
+      (** smooth: 3 per vertex, as POV-Ray stores them (shorts, 32767·N truncated); each vertex's
+          made when a normal first needs it (NaN until then), a cache that changes no result *)
   hierarchy : bool;  (** the block grid is built (POV-Ray's default); off: one block *)
   nbx : int;  (** blocks along x *)
   nbz : int;  (** blocks along z *)

@@ -7,7 +7,8 @@
 # The large scenes are generated into scenes/bench/generated/ by the generators in
 # scenes/bench/gen/ (a 1,000,000-triangle mesh2 terrain, a 100,000-smooth-triangle mesh, sphere
 # fields, a field of mixed shapes: boxes, cylinders, cones, discs, tori; with scenes/bench/gen_hfield.sh
-# the 1024×1024 16-bit height map of scenes/bench/hfield.pov). RUNS (default 3) and
+# the 1024×1024 16-bit height map of scenes/bench/hfield.pov). Both programs get +L of the scene's
+# directory (POV-Ray does not look there for image files). RUNS (default 3) and
 # THREADS (default 2) can be set in the environment; ONLY=PATTERN runs only the cases whose scene
 # path contains PATTERN (e.g. ONLY=shapes).
 set -euo pipefail
@@ -66,9 +67,9 @@ for c in "${CASES[@]}"; do
   scene=${c%%|*}; sw=${c#*|}
   case $scene in *"${ONLY:-}"*) ;; *) continue ;; esac
   # shellcheck disable=SC2086
-  measure "$tmp/ml" "Parse Time" "Bounding Time" "Render Time" $POVML +I"$scene" +O"$tmp/ml.png" $sw -D +WT"$THREADS"
+  measure "$tmp/ml" "Parse Time" "Bounding Time" "Render Time" $POVML +I"$scene" +L"$(dirname "$scene")" +O"$tmp/ml.png" $sw -D +WT"$THREADS"
   # shellcheck disable=SC2086
-  measure "$tmp/pov" "Parse Time" "Bounding Time" "Trace Time" povray +I"$scene" +O"$tmp/pov.png" $sw -D -V +WT"$THREADS"
+  measure "$tmp/pov" "Parse Time" "Bounding Time" "Trace Time" povray +I"$scene" +L"$(dirname "$scene")" +O"$tmp/pov.png" $sw -D -V +WT"$THREADS"
   tm=$(col 4 "$tmp/ml"); tp=$(col 4 "$tmp/pov")
   ratio=$(awk -v a="$tm" -v b="$tp" 'BEGIN {printf "%.2f", a/b}')
   printf '| %s | %s | povml | %.3f | %.3f | %.3f | %.3f | %.0f | **%s** |\n' "$(basename "$scene")" "$sw" \
