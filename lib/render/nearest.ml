@@ -5,16 +5,15 @@ open Context
 
 (* Whether [ob], hit at exactly the depth of the current best [cur], replaces it: POV-Ray keeps the
    first of equal depths it meets. Without its bounding hierarchy it tests the objects in scene
-   order. With it, it tests planes first, then bounded objects in the order the ray enters their
-   boxes; so of two bounded objects the one whose box is entered first wins. (Among planes, the
-   order of its priority queue is not modelled: the first found is kept.) *)
+   order. With it, the order in which its priority queue hands out the objects' boxes decides
+   (unbounded objects first, then the bounded ones by the depth at which the ray enters their
+   boxes, equal depths as its heap orders them): that search is replayed here, on ties only. *)
 let wins_tie ctx (ob : obj) cur (o : Vec.t) (d : Vec.t) =
   if not ctx.scene.bounding then ob.id < cur
   else
-    (* [cur] may be a CSG member: its top-level object's box counts *)
-    let pb = ctx.scene.objects.(ctx.scene.objects.(cur).top).pbox in
-    if Array.length pb = 0 then false
-    else Array.length ob.pbox = 0 || Pov_box.entry ob.pbox o d < Pov_box.entry pb o d
+    (* [cur] may be a CSG member: its top-level object is what the tree holds *)
+    let top = ctx.scene.objects.(cur).top in
+    top <> ob.id && Slab_tree.met_first (Lazy.force ctx.scene.slabs) o d ob.id top
 
 let tie_tolerance (o : Vec.t) t = 0x1p-36 *. (Float.max (Float.abs o.x) (Float.max (Float.abs o.y) (Float.abs o.z)) +. t)
 
