@@ -365,6 +365,11 @@ let scene (s : Scene.t) : Compiled.t =
   let cam = s.camera.location in
   (* a light's looks_like shape belongs to the light's top-level object (§19.2) *)
   let bounding = List.length (List.filter (fun (o : Scene.obj) -> not o.looks_like) s.objects) + List.length s.lights >= 3 in
+  let slabs =
+    lazy
+      (let finite, infinite = List.partition (fun o -> Array.length o.pbox > 0) tops in
+       Slab_tree.build (List.map (fun o -> (o.id, o.pbox)) finite) (List.map (fun o -> o.id) infinite))
+  in
   (* the list holds interiors: a CSG's members share theirs (§16.5) *)
   let holds o = Interiors.holds stack o cam in
   let holders = List.filter holds tops in
@@ -376,10 +381,7 @@ let scene (s : Scene.t) : Compiled.t =
            order; the order matters only when the camera is inside two or more, and only then is
            the tree built *)
         let candidates =
-          if bounding then
-            let finite, infinite = List.partition (fun o -> Array.length o.pbox > 0) tops in
-            Slab_tree.walk (Slab_tree.build (List.map (fun o -> (o.id, o.pbox)) finite) (List.map (fun o -> o.id) infinite)) (fun b ->
-                Pov_box.contains b cam)
+          if bounding then Slab_tree.walk (Lazy.force slabs) (fun b -> Pov_box.contains b cam)
           else List.map (fun o -> o.id) holders
         in
         List.fold_left (fun acc id -> if holds objects.(id) then objects.(id).iid :: acc else acc) [] candidates
@@ -403,6 +405,7 @@ let scene (s : Scene.t) : Compiled.t =
     start_interiors;
     screen_holders = screen_holders s.camera tops;
     bounding;
+    slabs;
     facets = Normals.facets_cache ();
     crand = [| 0 |];
     uses_crand = Layer_memo.fold (fun (l : Scene.layer) _ acc -> acc || l.finish.crand > 0.) memo false;

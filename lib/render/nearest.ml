@@ -5,18 +5,25 @@ open Context
 
 (* Whether [ob], hit at exactly the depth of the current best [cur], replaces it: POV-Ray keeps the
    first of equal depths it meets. Without its bounding hierarchy it tests the objects in scene
-   order. With it, it tests planes first, then bounded objects in the order the ray enters their
-   boxes; so of two bounded objects the one whose box is entered first wins. (Among planes, the
-   order of its priority queue is not modelled: the first found is kept.) *)
+   order. With it, the order in which its priority queue hands out the objects' boxes decides
+   (unbounded objects first, then the bounded ones by the depth at which the ray enters their
+   boxes, equal depths as its heap orders them): that search is replayed here, on ties only. *)
 let wins_tie ctx (ob : obj) cur (o : Vec.t) (d : Vec.t) =
   if not ctx.scene.bounding then ob.id < cur
   else
-    (* [cur] may be a CSG member: its top-level object's box counts *)
-    let pb = ctx.scene.objects.(ctx.scene.objects.(cur).top).pbox in
-    if Array.length pb = 0 then false
-    else Array.length ob.pbox = 0 || Pov_box.entry ob.pbox o d < Pov_box.entry pb o d
+    (* [cur] may be a CSG member: its top-level object is what the tree holds *)
+    let top = ctx.scene.objects.(cur).top in
+    top <> ob.id && Slab_tree.met_first (Lazy.force ctx.scene.slabs) o d ob.id top
 
 let tie_tolerance (o : Vec.t) t = 0x1p-36 *. (Float.max (Float.abs o.x) (Float.max (Float.abs o.y) (Float.abs o.z)) +. t)
+
+(* How far beyond the best depth [best] found the walk still meets boxes. In the robust mode,
+   by the tie width. Else by a few units in the last place: the slab test multiplies by the
+   direction's reciprocal where a shape divides by the direction, so the entry into the box of
+   an object whose face lies in the best hit's face (a square sunk into a board, its top in the
+   board's) may round just beyond the depth at which that face is hit; the object ties and must
+   be met for the tie rule to decide. *)
+let[@inline] beyond ctx (o : Vec.t) best = if ctx.robust then best +. tie_tolerance o best else best +. (0x1p-48 *. Float.abs best)
 
 (* Whether POV-Ray's bounding tree would never have tested [ob], nearer than the current best
    [best] by rounding only: it takes objects in the order the ray enters their single-precision
@@ -98,7 +105,7 @@ let visit_bounded st i =
       (* a costly shape is tried only when the ray meets its own box before the limit, as
          it would meet the box of a leaf holding the shape alone *)
       let best = r.depth in
-      let lim = if ctx.robust && f.id >= 0 then best +. tie_tolerance o best else best in
+      let lim = if f.id >= 0 then beyond ctx o best else best in
       let idx = r.inv_dx and idy = r.inv_dy and idz = r.inv_dz in
       let tx0 = (x0 -. o.x) *. idx and tx1 = (Array.unsafe_get bx (b + 3) -. o.x) *. idx in
       let ty0 = (Array.unsafe_get bx (b + 1) -. o.y) *. idy and ty1 = (Array.unsafe_get bx (b + 4) -. o.y) *. idy in
@@ -108,8 +115,8 @@ let visit_bounded st i =
       if near <= far then try_obj ctx g.bounded.(i) o d
     end
   end;
-  (* the robust mode still looks for ties just beyond the best depth *)
-  let l = if ctx.robust && f.id >= 0 then r.depth +. tie_tolerance o r.depth else r.depth in
+  (* ties may lie just beyond the best depth *)
+  let l = if f.id >= 0 then beyond ctx o r.depth else r.depth in
   let wl = ctx.walk_limit in
   wl.(0) <- fmin wl.(0) l
 

@@ -70,7 +70,11 @@ let area_table (items : node array) a b areas =
     i := !i + dir
   done
 
-type t = { infinite : int list; root : node option }
+(* [queued] is the tree the priority queue walks: where there are unbounded objects, POV-Ray
+   moves them into a first node of the root and marks that node and the root infinite; an
+   infinite node or leaf has the box [||]. [nodes] counts its nodes and leaves (the queue never
+   holds more). *)
+type t = { infinite : int list; root : node option; queued : node option; nodes : int }
 
 let build (finite : (int * float array) list) (infinite : int list) =
   let items = ref (Array.of_list (List.map (fun (id, b) -> Leaf (id, b)) finite)) in
@@ -120,7 +124,16 @@ let build (finite : (int * float array) list) (infinite : int list) =
       high := !count
     done
   end;
-  { infinite; root = !root }
+  let unbounded = Node (List.map (fun id -> Leaf (id, [||])) infinite, [||]) in
+  let queued =
+    match (!root, infinite) with
+    | r, [] -> r
+    | None, _ :: _ -> Some unbounded
+    | Some (Node (ns, _)), _ :: _ -> Some (Node (unbounded :: ns, [||]))
+    | Some (Leaf _ as l), _ :: _ -> Some (Node ([ unbounded; l ], [||]))
+  in
+  let rec count = function Leaf _ -> 1 | Node (ns, _) -> List.fold_left (fun n c -> n + count c) 1 ns in
+  { infinite; root = !root; queued; nodes = (match queued with None -> 0 | Some q -> count q) }
 
 let walk t in_box =
   let rec go acc = function
@@ -137,3 +150,67 @@ let walk t in_box =
     | Some r -> List.rev (go [] r)
   in
   t.infinite @ finite
+
+(* Priority queue depth of an infinite node or leaf (Check_And_Enqueue: −MAX_DISTANCE) *)
+let infinite_depth = -1e7
+
+(* POV-Ray's binary heap of (entry depth, node), 1-based (priority_queue_insert,
+   Priority_Queue_Delete), with its exact moves: equal depths are ordered by the mechanics of
+   the heap, not by insertion. *)
+type heap = { depths : float array; held : node array; mutable size : int }
+
+let insert h depth n =
+  h.size <- h.size + 1;
+  let i = ref h.size in
+  while !i > 1 && depth < h.depths.(!i / 2) do
+    h.depths.(!i) <- h.depths.(!i / 2);
+    h.held.(!i) <- h.held.(!i / 2);
+    i := !i / 2
+  done;
+  h.depths.(!i) <- depth;
+  h.held.(!i) <- n
+
+let pop h =
+  let top = h.held.(1) in
+  h.depths.(1) <- h.depths.(h.size);
+  h.held.(1) <- h.held.(h.size);
+  h.size <- h.size - 1;
+  let size = h.size in
+  let rec sift i =
+    if 2 * i <= size then begin
+      let j = if 2 * i = size || h.depths.(2 * i) < h.depths.((2 * i) + 1) then 2 * i else (2 * i) + 1 in
+      if h.depths.(i) > h.depths.(j) then begin
+        let d = h.depths.(i) and n = h.held.(i) in
+        h.depths.(i) <- h.depths.(j);
+        h.held.(i) <- h.held.(j);
+        h.depths.(j) <- d;
+        h.held.(j) <- n;
+        sift j
+      end
+    end
+  in
+  sift 1;
+  top
+
+let met_first t (o : Vec.t) (d : Vec.t) a b =
+  match t.queued with
+  | None -> false
+  | Some root ->
+      let h = { depths = Array.make (t.nodes + 1) 0.; held = Array.make (t.nodes + 1) root; size = 0 } in
+      (* Check_And_Enqueue: a node the ray's slabs miss is never queued *)
+      let enqueue n =
+        let bx = box n in
+        let depth = if Array.length bx = 0 then infinite_depth else Pov_box.entry bx o d in
+        if depth < infinity then insert h depth n
+      in
+      enqueue root;
+      let rec next () =
+        if h.size = 0 then false
+        else
+          match pop h with
+          | Leaf (id, _) -> if id = a then true else if id = b then false else next ()
+          | Node (ns, _) ->
+              List.iter enqueue ns;
+              next ()
+      in
+      next ()

@@ -262,6 +262,26 @@ let test_slab_tree () =
   Alcotest.(check (list int)) "in x order" [ 0; 1; 2; 3; 4; 5 ] (Slab_tree.walk t (fun _ -> true));
   Alcotest.(check (list int)) "the first node left out" [ 3; 4; 5 ] (Slab_tree.walk t (fun bx -> not (bx.(0) = 0. && bx.(3) = 21.)))
 
+let test_slab_queue () =
+  (* Intersect_BBox_Tree's priority queue: four boxes in one node, three entered at depth 10 by
+     a ray along z and one at depth 20. They are queued in the node's order 0, 1, 2, 3; the heap
+     hands out 0, moves its last entry (3) to the top and lets it sink under the right child (2)
+     of two equal ones; so 2 comes before 1. *)
+  let b z len = [| 0.; 0.; z; 1.; 1.; len |] in
+  let boxes = [ (0, b 0. 1.); (1, b 0. 2.); (2, b 0. 3.); (3, b 10. 1.) ] in
+  let o = v 0.5 0.5 (-10.) and d = v 0. 0. 1. in
+  let t = Slab_tree.build boxes [] in
+  let first a b = Slab_tree.met_first t o d a b in
+  Alcotest.(check (list bool)) "0, 2, 1, 3" [ true; true; false; true; true ] [ first 0 2; first 2 1; first 1 2; first 1 3; first 0 1 ];
+  (* from within the last box, beyond the others: they are never met *)
+  let first a b = Slab_tree.met_first t (v 0.5 0.5 10.5) d a b in
+  Alcotest.(check (list bool)) "boxes behind the ray are never met" [ true; false; false ] [ first 3 0; first 0 3; first 0 1 ];
+  (* with two planes the root also holds their node, queued at −MAX_DISTANCE: the planes come
+     first, and the moves they cause leave the boxes in the order 0, 2, 1, 3 again *)
+  let t = Slab_tree.build boxes [ 7; 8 ] in
+  let first a b = Slab_tree.met_first t o d a b in
+  Alcotest.(check (list bool)) "7, 8, 0, 2, 1, 3" [ true; true; true; true; false; true ] [ first 7 8; first 8 0; first 0 2; first 2 1; first 1 2; first 1 3 ]
+
 let test_camera_order () =
   (* §6.4: the camera inside a closed glass cylinder (written first) and an open one: POV-Ray's
      tree sorts them along z, the open one (centre z = −1) before the closed one (z = −0.25), so
@@ -331,6 +351,7 @@ let tests =
     Alcotest.test_case "inside" `Quick test_inside;
     Alcotest.test_case "camera's starting interiors" `Quick test_camera_start;
     Alcotest.test_case "POV-Ray's bounding-slab tree" `Quick test_slab_tree;
+    Alcotest.test_case "POV-Ray's bounding-tree queue order" `Quick test_slab_queue;
     Alcotest.test_case "order of the camera's interiors" `Quick test_camera_order;
     Alcotest.test_case "errors" `Quick test_errors;
     Alcotest.test_case "statistics" `Quick test_stats;
