@@ -32,8 +32,8 @@ let rec options st ~sweep (spline, conic) =
 let count st = int_of_float (Expr.c_int (Expr.parse_float st))
 
 (* the fewest points a spline needs ([linear], [quadratic], [cubic]: the count and its word), a
-   Bezier one four per segment, as fatal errors at [nloc] in POV-Ray's words; its lathe calls
-   itself a prism in the cubic message, hence [cubic_shape] *)
+   Bezier one four per segment (and not fewer than none), as fatal errors at [nloc] in POV-Ray's
+   words; its lathe calls itself a prism in the cubic message, hence [cubic_shape] *)
 let check_count nloc n (spline : Prism.spline) ~shape ~cubic_shape linear quadratic cubic =
   let least name kind (k, word) =
     if n < k then Error.raise_at nloc "%s with %s splines must have at least %s points." name kind word
@@ -42,7 +42,12 @@ let check_count nloc n (spline : Prism.spline) ~shape ~cubic_shape linear quadra
   | Linear -> least shape "linear" linear
   | Quadratic -> least shape "quadratic" quadratic
   | Cubic -> least cubic_shape "cubic" cubic
-  | Bezier -> if n land 3 <> 0 then Error.raise_at nloc "%s with Bezier splines must have four points per segment." shape
+  | Bezier ->
+      if n land 3 <> 0 then Error.raise_at nloc "%s with Bezier splines must have four points per segment." shape
+      else if n < 0 then
+        (* a negative multiple of four passes POV-Ray's check; its array of n + 1 points is then
+           one of an enormous size, whose allocation fails *)
+        Error.raise_at nloc "%s with %d points: POV-Ray's array of its points cannot be allocated." shape n
 
 let prism st loc =
   let spline, conic = options st ~sweep:true (Prism.Linear, false) in

@@ -76,6 +76,11 @@ let close spline (pts : (float * float) array) =
       if !closed then (pts, `Closed)
       else if spline = Linear then (Array.append pts [| !p |], `Closing)
       else (pts, `Open)
+  | Bezier when n = 0 ->
+      (* no points (a count below 1): POV-Ray compares the last point, before its array, with
+         its unset first, a read of whatever memory is there; POV-Ray 3.7.0.10 finds them equal
+         (no warning), and the prism has no segments *)
+      (pts, `Closed)
   | Bezier ->
       let closed = ref true and loop_start = ref 0 in
       let i = ref 4 in

@@ -49,7 +49,8 @@ val close : spline -> (float * float) array -> (float * float) array * [ `Closed
 (** [close s pts] is Parse_Prism's closing check of the points as written: [`Closed] when every
     sub-outline ends on its first point; [`Closing] for a linear outline that does not (the last
     outline's first point is appended: POV-Ray's "Linear prism not closed. Closing it."); [`Open]
-    otherwise ("Prism not closed. Ignoring it.": the prism is degenerate). *)
+    otherwise ("Prism not closed. Ignoring it.": the prism is degenerate). A Bezier outline of no
+    points is [`Closed] (POV-Ray reads memory outside its array there, and finds it closed). *)
 
 val make :
   spline:spline -> conic:bool -> height1:float -> height2:float -> closed:bool -> sturm:bool -> degenerate:bool ->
