@@ -89,7 +89,7 @@ let caustic ctx (obj : obj) part (q : Vec.t) (l : Vec.t) =
       match s.bump with
       | Smooth -> raw
       | Bumpy nm ->
-          let uv = if s.needs_uv then Shape.uv obj part q else Vec.zero in
+          let uv = if s.needs_uv then Shape.uv ctx.shapes obj part q else Vec.zero in
           let wn = List.fold_left (fun v ws -> Normals.warp_normal ws ~keep_scale:false v) raw warps in
           let pn = Normals.perturb ~facets:sc.facets sc.noise_generator nm p { Patterns.normal = raw; dir = l; uv } wn in
           List.fold_right (fun ws v -> Normals.unwarp_normal ws ~keep_scale:false v) warps (Normals.layer_normal nm pn)
@@ -107,9 +107,9 @@ let inside_hit (obj : obj) part q l =
 let textured ctx (obj : obj) part (q : Vec.t) (l : Vec.t) t interiors (tex : texture) : Rgb.t =
   let sc = ctx.scene in
   let fades = List.mem obj.iid interiors && obj.fade_power > 0. && Optics.fades obj in
-  let hit (s : surface) = if s.needs_uv then { Patterns.no_hit with uv = Shape.uv obj part q } else Patterns.no_hit in
+  let hit (s : surface) = if s.needs_uv then { Patterns.no_hit with uv = Shape.uv ctx.shapes obj part q } else Patterns.no_hit in
   let caustic = if obj.caustics = 0. then None else Some (caustic ctx obj part q l) in
-  let uv () = Shape.uv obj part q in
+  let uv () = Shape.uv ctx.shapes obj part q in
   let q' = if obj.uv_mapped then uv () else q in
   match tex with
   | Cutaway ->
@@ -161,7 +161,7 @@ let rec walk ctx ~slot (p : Vec.t) (lp : Vec.t) lo first (o : Vec.t) (l : Vec.t)
               match sf.paint with
               | Fixed -> sf.filcol
               | Varying at ->
-                  (at (if sf.needs_uv then { Patterns.no_hit with uv = Shape.uv obj part q } else Patterns.no_hit) q).filcol
+                  (at (if sf.needs_uv then { Patterns.no_hit with uv = Shape.uv ctx.shapes obj part q } else Patterns.no_hit) q).filcol
             in
             if List.mem obj.iid interiors && obj.fade_power > 0. && Optics.fades obj then Optics.fade obj t f else f
         | Plain _ | Layered _ | Blended _ | Uv_mapped _ | Chosen _ | Cutaway -> textured ctx obj part q l t interiors tex

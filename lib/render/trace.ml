@@ -131,7 +131,7 @@ and shade ctx ~reflected obj part depth ~level ~weight ~interiors (o : Vec.t) (d
         (* normal.cpp: a texture's normal bends N before the pigment is evaluated, whose slope and aoi
            patterns see the bent normal [pn]; [sn], the bent normal made unit, shades, reflects and
            refracts, and the raw N keeps the reflected ray on the surface's side (trace.cpp) *)
-        let uv = if s.needs_uv then Shape.uv obj part p else Vec.zero in
+        let uv = if s.needs_uv then Shape.uv ctx.shapes obj part p else Vec.zero in
         let pn = match s.bump with Smooth -> n | Bumpy nm -> Normals.perturb ~facets:sc.facets sc.noise_generator nm p { Patterns.normal = n; dir = d; uv } n in
         let s = match s.paint with Fixed -> s | Varying at -> at { Patterns.normal = pn; dir = d; uv } p in
         let sn = match s.bump with Smooth -> n | Bumpy nm -> Normals.layer_normal nm pn in
@@ -175,7 +175,7 @@ and shade_textured ctx ~reflected obj part tex p n ng e depth ~level ~weight ~in
   let sc = ctx.scene in
   let at = { hobj = obj; hpart = part; hp = p; hn = n; hng = ng; he = e; hd = d; hdepth = depth; hlevel = level; hweight = weight; hinteriors = interiors; hreflected = reflected; memo = Lighting.memo sc; pnormal = n } in
   (* an object's uv_mapping: every texture is evaluated at the hit's (u, v, 0) *)
-  let q = if obj.uv_mapped then Shape.uv obj part p else p in
+  let q = if obj.uv_mapped then Shape.uv ctx.shapes obj part p else p in
   match tex with
   | Cutaway ->
       (* the textures of the members around the point, weighed *)
@@ -206,7 +206,7 @@ and texture_colour ctx at tex q warps : result =
   | Chosen { cwarp; choose; textures; cwarps } ->
       let tq = cwarp q in
       texture_colour ctx at textures.(choose tq) tq (warps @ [ cwarps ])
-  | Uv_mapped { uinner; uwarps } -> texture_colour ctx at uinner (Shape.uv at.hobj at.hpart at.hp) (warps @ [ uwarps ])
+  | Uv_mapped { uinner; uwarps } -> texture_colour ctx at uinner (Shape.uv ctx.shapes at.hobj at.hpart at.hp) (warps @ [ uwarps ])
   | Blended b ->
       let warps = warps @ [ b.nwarps ] in
       let tq = b.warp q in
@@ -250,7 +250,7 @@ and lighted ctx at (ls : surface array) q warps : result =
     if not (i < count && trans > sc.adc_bailout) then (res, filcol, trans, shaded)
     else
       let s = ls.(i) in
-      let uv = if s.needs_uv then Shape.uv obj at.hpart at.hp else Vec.zero in
+      let uv = if s.needs_uv then Shape.uv ctx.shapes obj at.hpart at.hp else Vec.zero in
       (* the layer's normal: bent by its normal pattern, in the space of the patterned textures
          around it *)
       let ln =

@@ -306,8 +306,12 @@ let rec shape = function
       Printf.sprintf "sphere_sweep { %s %d, %s tolerance %s%s" kind (Array.length spheres)
         (String.concat ", " (Array.to_list (Array.map (fun (c, r) -> Printf.sprintf "%s, %s" (vec c) (num r)) spheres)))
         (num tolerance) (trans t)
-  | Bicubic { patch_type; u_steps; v_steps; flatness; points } ->
-      Printf.sprintf "bicubic_patch { type %d flatness %s u_steps %d v_steps %d %s" patch_type (num flatness) u_steps v_steps
+  | Bicubic { patch_type; u_steps; v_steps; flatness; points; uv_vectors = st } ->
+      let uvs =
+        if st = [| 0.; 0.; 1.; 0.; 1.; 1.; 0.; 1. |] then ""
+        else Printf.sprintf "uv_vectors %s " (String.concat ", " (List.map (fun i -> Printf.sprintf "<%s, %s>" (num st.(2 * i)) (num st.((2 * i) + 1))) [ 0; 1; 2; 3 ]))
+      in
+      Printf.sprintf "bicubic_patch { type %d flatness %s u_steps %d v_steps %d %s%s" patch_type (num flatness) u_steps v_steps uvs
         (String.concat ", " (Array.to_list (Array.map vec points)))
   | Julia f ->
       let alg = match f.algebra with Quaternion -> "quaternion" | Hypercomplex -> "hypercomplex" in

@@ -381,9 +381,11 @@ type shape =
   | Julia of Julia.t
       (** fractal.cpp: in fractal space, placed by its own transform (every modifier composes
           into it and clears the fractal's own inverted flag); [inverse] toggles that flag *)
-  | Bicubic of { patch_type : int; u_steps : int; v_steps : int; flatness : float; points : Vec.t array }
+  | Bicubic of { patch_type : int; u_steps : int; v_steps : int; flatness : float; points : Vec.t array; uv_vectors : float array }
       (** bezier.cpp: the 16 control points in world space (row by row, P[i][j] at 4i + j), which
-          every modifier moves; type 0 or 1; flat, with no inside *)
+          every modifier moves; type 0 or 1; flat, with no inside. [uv_vectors]: the texture
+          coordinates of the four corners (u0, v0, …, u3, v3; by default (0, 0), (1, 0), (1, 1),
+          (0, 1)), which uv_mapping sees *)
   | Csg of { kind : csg_kind; members : member list; box : float array option }
       (** §16: a CSG kept whole (a merge, an intersection or difference, a union with
           [split_union off]); its members are already moved by its transforms and carry the

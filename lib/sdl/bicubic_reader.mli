@@ -5,4 +5,4 @@ val bicubic : Reader.st -> Loc.t -> Scene.shape
     [v_steps] (or the old unnamed numbers, with POV-Ray's warning) and [accuracy] (read and
     unused, as POV-Ray does), then the 16 control points: type 2 and above is type 1 with
     POV-Ray's warning, a missing or negative type "Undefined bicubic patch type." at [loc];
-    [uv_vectors] is not supported yet. *)
+    [uv_vectors] (four 2-term vectors, the corners' texture coordinates) ends the options. *)

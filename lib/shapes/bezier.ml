@@ -10,7 +10,7 @@ type node =
   | Leaf of { lc : Vec.t; lr2 : float; corners : Vec.t array; u0 : float; u1 : float; v0 : float; v1 : float }
   | Interior of { ic : Vec.t; ir2 : float; children : node array }
 
-type t = { patch_type : int; u_steps : int; v_steps : int; flatness : float; cp : Vec.t array; tree : node option }
+type t = { patch_type : int; u_steps : int; v_steps : int; flatness : float; cp : Vec.t array; st : float array; tree : node option }
 
 (* ---------------------------------------------------------------------------------------------- *)
 (* vector arithmetic in POV-Ray's order *)
@@ -174,7 +174,7 @@ let invert3 (a : Vec.t) (b : Vec.t) (c : Vec.t) =
     Some (Vec.make (o0x *. k) (o0y *. k) (o0z *. k), Vec.make (o1x *. k) (o1y *. k) (o1z *. k), Vec.make (o2x *. k) (o2y *. k) (o2z *. k))
 
 (* intersect_subpatch: the triangle (v0, v1, v2) with the patch parameters (uu, vv) at its
-   corners: the depth and the interpolated unit normal *)
+   corners: the depth, the point, the interpolated unit normal and patch parameters (u, v) *)
 let triangle b (o : Vec.t) (d : Vec.t) v0 v1 v2 (uu0, uu1, uu2) (vv0, vv1, vv2) =
   let b0 = sub v1 v0 and b1 = sub v2 v0 in
   let b2 = cross b0 b1 in
@@ -203,14 +203,25 @@ let triangle b (o : Vec.t) (d : Vec.t) v0 v1 v2 (uu0, uu1, uu2) (vv0, vv1, vv2) 
               and nz = 0. +. (n0.z *. r) +. (n1.z *. a) +. (n2.z *. c) in
               let n = Vec.make nx ny nz in
               let t = dot n n in
+              let u = (r *. uu0) +. (a *. uu1) +. (c *. uu2) and v = (r *. vv0) +. (a *. vv1) +. (c *. vv2) in
               let n = if t > bezier_epsilon then scale n (1.0 /. sqrt t) else Vec.make 1. 0. 0. in
-              Some (depth, p, n)
+              Some (depth, p, n, u, v)
 
 (* the two triangles of a flat subpatch, (P00, P03, P33) then (P00, P33, P30), each crossing
    given to [emit] in POV-Ray's push order *)
 let quad b o d c00 c03 c33 c30 u0 u1 v0 v1 emit =
-  (match triangle b o d c00 c03 c33 (u0, u0, u1) (v0, v1, v1) with Some (t, p, n) -> emit t p n | None -> ());
-  match triangle b o d c00 c33 c30 (u0, u1, u1) (v0, v1, v0) with Some (t, p, n) -> emit t p n | None -> ()
+  (match triangle b o d c00 c03 c33 (u0, u0, u1) (v0, v1, v1) with Some (t, p, n, u, v) -> emit t p n u v | None -> ());
+  match triangle b o d c00 c33 c30 (u0, u1, u1) (v0, v1, v0) with Some (t, p, n, u, v) -> emit t p n u v | None -> ()
+
+(* Compute_Texture_UV: the patch parameters (u, v) mapped into the quadrilateral of the four
+   uv_vectors [st] (u0, v0, …, u3, v3), the parameter v running from the first edge to the second
+   and u from the first corner to the last *)
+let texture_uv b u v =
+  let st = b.st in
+  let p0 = v and p1 = u in
+  let u10 = st.(0) +. (p0 *. (st.(2) -. st.(0))) and u11 = st.(1) +. (p0 *. (st.(3) -. st.(1))) in
+  let u20 = st.(6) +. (p0 *. (st.(4) -. st.(6))) and u21 = st.(7) +. (p0 *. (st.(5) -. st.(7))) in
+  (u10 +. (p1 *. (u20 -. u10)), u11 +. (p1 *. (u21 -. u11)))
 
 (* bezier_subdivider (type 0) *)
 let rec subdivide b o d p u0 u1 v0 v1 depth emit =
@@ -273,8 +284,8 @@ let rec walk b o d node emit =
   | Leaf { lc; lr2; corners; u0; u1; v0; v1 } ->
       if sphere_check o d lc lr2 then quad b o d corners.(0) corners.(1) corners.(2) corners.(3) u0 u1 v0 v1 emit
 
-let make ~patch_type ~u_steps ~v_steps ~flatness cp =
-  let b = { patch_type; u_steps; v_steps; flatness; cp; tree = None } in
+let make ~patch_type ~u_steps ~v_steps ~flatness ~st cp =
+  let b = { patch_type; u_steps; v_steps; flatness; cp; st; tree = None } in
   if patch_type = 1 then { b with tree = Some (build b cp 0.0 1.0 0.0 1.0 0) } else b
 
 (* All_Intersections: every crossing, in POV-Ray's push order, to [emit] *)
@@ -282,9 +293,10 @@ let crossings (w : Scratch.t) b o d emit =
   let stats = w.stats in
   stats.bicubic_tests <- stats.bicubic_tests + 1;
   let found = ref false in
-  let emit t p n =
+  let emit t p n u v =
     found := true;
-    emit t p n
+    let tu, tv = texture_uv b u v in
+    emit t p n tu tv
   in
   (match b.tree with None -> subdivide b o d b.cp 0.0 1.0 0.0 1.0 0 emit | Some node -> walk b o d node emit);
   if !found then stats.bicubic_hits <- stats.bicubic_hits + 1
@@ -292,8 +304,8 @@ let crossings (w : Scratch.t) b o d emit =
 let depth (w : Scratch.t) b o d lo =
   let best = w.depths in
   best.(0) <- infinity;
-  crossings w b o d (fun t p n ->
-      Scratch.report w t p n;
+  crossings w b o d (fun t p n u v ->
+      Scratch.report_uv w t p n u v;
       (* POV-Ray takes them off its stack from the top, keeping a strictly nearer one: of equal
          depths the last pushed *)
       if t >= lo && t <= best.(0) then best.(0) <- t);
@@ -301,12 +313,14 @@ let depth (w : Scratch.t) b o d lo =
 
 let hits (w : Scratch.t) b id o d lo n =
   let count = ref n in
-  crossings w b o d (fun t p nn ->
-      Scratch.report w t p nn;
+  crossings w b o d (fun t p nn u v ->
+      Scratch.report_uv w t p nn u v;
       if t >= lo then count := Scratch.push_hit w !count t (-1) id p.x p.y p.z);
   !count
 
 let hit_normal (w : Scratch.t) p = match Scratch.reported_normal w p with Some n -> n | None -> Vec.make 1. 0. 0.
+
+let uv (w : Scratch.t) (p : Vec.t) = match Scratch.reported_uv w p with Some uv -> uv | None -> Vec.make p.x p.y 0.
 
 let min_max b =
   let huge = 2e10 in

@@ -16,12 +16,21 @@ type t = {
   v_steps : int;  (** the most splits in u and in v *)
   flatness : float;  (** a subpatch is flat when its control points are nearer than this to its plane *)
   cp : Vec.t array;  (** P[i][j] at 4i + j, i with u, j with v *)
+  st : float array;  (** the four uv_vectors (u0, v0, …, u3, v3): the texture coordinates of the corners *)
   tree : node option;  (** type 1's tree (bezier_tree_builder); None for type 0 *)
 }
 
-val make : patch_type:int -> u_steps:int -> v_steps:int -> flatness:float -> Vec.t array -> t
-(** [make ~patch_type ~u_steps ~v_steps ~flatness cp] is the patch of the 16 points [cp], with its
-    tree built for type 1 (Precompute_Patch_Values). *)
+val make : patch_type:int -> u_steps:int -> v_steps:int -> flatness:float -> st:float array -> Vec.t array -> t
+(** [make ~patch_type ~u_steps ~v_steps ~flatness ~st cp] is the patch of the 16 points [cp] with
+    the uv_vectors [st], its tree built for type 1 (Precompute_Patch_Values). *)
+
+val texture_uv : t -> float -> float -> float * float
+(** [texture_uv b u v] is Compute_Texture_UV: the patch parameters [(u, v)] of a crossing mapped
+    into the quadrilateral of the uv_vectors: [(v, u)] with the default ones. *)
+
+val uv : Scratch.t -> Vec.t -> Vec.t
+(** [uv w p] is BicubicPatch::UVCoord at the hit [p]: the texture coordinates (u, v, 0) reported
+    with the crossing (the world point's x and y when none was). *)
 
 val patch_normal : t -> float -> float -> Vec.t
 (** [patch_normal b u v] is bezier_value's normal at (u, v): the unit cross product of the

@@ -46,6 +46,9 @@ type t = {
 
 let hit_width = 6
 
+(* a reported crossing: depth, point, normal, texture (u, v) *)
+let report_width = 9
+
 (* A cylinder or cone has at most 4 crossings listed (two on the side, the two ends), a disc one,
    a torus 4 depths, a quadric 2, a polygon 1. *)
 let max_crossings = 8
@@ -78,7 +81,7 @@ let create ~robust stats =
     lathe_quadratic = Array.make 3 0.;
     lathe_quadratic_roots = Array.make 2 0.;
     fractal_stack = { room = Array.make 84 0. };
-    fractal_points = Array.make (8 * 32) nan;
+    fractal_points = Array.make (report_width * 32) nan;
     fractal_count = 0;
     poly_room = Array.make 512 0.;
   }
@@ -116,8 +119,8 @@ let nearest_pair w (h : float array) n lo =
 
 let nearest_crossing w n lo = nearest_pair w w.crossings n lo
 
-let report w t (p : Vec.t) (n : Vec.t) =
-  let k = 8 * (w.fractal_count land 31) and r = w.fractal_points in
+let report_uv w t (p : Vec.t) (n : Vec.t) u v =
+  let k = report_width * (w.fractal_count land 31) and r = w.fractal_points in
   r.(k) <- t;
   r.(k + 1) <- p.x;
   r.(k + 2) <- p.y;
@@ -125,13 +128,17 @@ let report w t (p : Vec.t) (n : Vec.t) =
   r.(k + 4) <- n.x;
   r.(k + 5) <- n.y;
   r.(k + 6) <- n.z;
+  r.(k + 7) <- u;
+  r.(k + 8) <- v;
   w.fractal_count <- w.fractal_count + 1
+
+let report w t p n = report_uv w t p n 0. 0.
 
 (* the slot of the latest report whose field [at] (0: the depth, 1: the point's x) is [key], or −1 *)
 let slot w at key =
   let found = ref (-1) and i = ref 0 in
   while !found < 0 && !i < 32 && !i < w.fractal_count do
-    let k = 8 * ((w.fractal_count - 1 - !i) land 31) in
+    let k = report_width * ((w.fractal_count - 1 - !i) land 31) in
     if w.fractal_points.(k + at) = key then found := k;
     incr i
   done;
@@ -144,6 +151,10 @@ let reported_point w t =
 let reported_normal w (p : Vec.t) =
   let k = slot w 1 p.x and r = w.fractal_points in
   if k >= 0 && r.(k + 2) = p.y && r.(k + 3) = p.z then Some (Vec.make r.(k + 4) r.(k + 5) r.(k + 6)) else None
+
+let reported_uv w (p : Vec.t) =
+  let k = slot w 1 p.x and r = w.fractal_points in
+  if k >= 0 && r.(k + 2) = p.y && r.(k + 3) = p.z then Some (Vec.make r.(k + 7) r.(k + 8) 0.) else None
 
 let nearest_depth w n lo =
   let best = ref infinity in

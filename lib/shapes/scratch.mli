@@ -53,8 +53,8 @@ type t = {
       (** a julia fractal's iteration stack, 4 floats (x, y, z, w) per iteration; like POV-Ray's
           per-thread stack it keeps what deeper iterations left beyond the last one *)
   fractal_points : float array;
-      (** the last 32 crossings julia fractals and bicubic patches reported ([report]), 8 floats
-          each (depth, point, normal, 0): POV-Ray shades a fractal at the point its march found,
+      (** the last 32 crossings julia fractals and bicubic patches reported ([report]), 9 floats
+          each (depth, point, normal, texture u and v): POV-Ray shades a fractal at the point its march found,
           and both with the normal computed at the crossing (the fractal's from the iteration
           stack as the march left it, the patch's interpolated over its triangle), which neither
           the depth nor the point alone gives back *)
@@ -90,11 +90,19 @@ val nearest_crossing : t -> int -> float -> float
 val report : t -> float -> Vec.t -> Vec.t -> unit
 (** [report w t p n] records the crossing at depth [t], point [p], normal [n] in [fractal_points]. *)
 
+val report_uv : t -> float -> Vec.t -> Vec.t -> float -> float -> unit
+(** [report_uv w t p n u v] is [report w t p n] with the crossing's texture coordinates [(u, v)]
+    (a bicubic patch's Iuv). *)
+
 val reported_point : t -> float -> Vec.t option
 (** [reported_point w t] is the point of the latest crossing reported at depth [t], if any. *)
 
 val reported_normal : t -> Vec.t -> Vec.t option
 (** [reported_normal w p] is the normal of the latest crossing reported at the point [p], if any. *)
+
+val reported_uv : t -> Vec.t -> Vec.t option
+(** [reported_uv w p] is the texture coordinates (u, v, 0) of the latest crossing reported at the
+    point [p], if any. *)
 
 val nearest_depth : t -> int -> float -> float
 (** [nearest_depth w n lo] is the nearest of the [n] plain depths in [w.crossings] at least [lo],

@@ -38,7 +38,8 @@ let compile (s : Scene.shape) =
   | Lathe l -> Some (Lathe l)
   | Sor s -> Some (Sor s)
   | Julia f -> Some (Julia f)
-  | Bicubic { patch_type; u_steps; v_steps; flatness; points } -> Some (Bicubic (Bezier.make ~patch_type ~u_steps ~v_steps ~flatness points))
+  | Bicubic { patch_type; u_steps; v_steps; flatness; points; uv_vectors } ->
+      Some (Bicubic (Bezier.make ~patch_type ~u_steps ~v_steps ~flatness ~st:uv_vectors points))
   | Poly p -> Some (Poly p)
   | Csg _ -> None
 
@@ -230,8 +231,9 @@ let refine obj p =
 (* Every shape's UVCoord in POV-Ray 3.7: spheres, boxes, tori and meshes have their own; every
    other shape (planes, triangles, cones and cylinders, discs, polygons, quadrics, letters) the
    default ObjectBase::UVCoord, the world point's x and y as they are *)
-let uv obj part (p : Vec.t) =
+let uv w obj part (p : Vec.t) =
   match obj.shape with
+  | Bicubic _ -> Bezier.uv w p
   | Sphere s -> Sphere.uv s p
   | Sphere_placed s -> Sphere.placed_uv s p
   | Ellipsoid e -> Sphere.ellipsoid_uv e p
@@ -243,7 +245,7 @@ let uv obj part (p : Vec.t) =
   | Lathe l -> Lathe.uv l part p
   | Sor s -> Sor.uv s part p
   | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Cone _ | Disc _ | Glyph _ | Polygon _ | Quadric _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Sphere_sweep _ | Prism _
-  | Julia _ | Bicubic _ | Csg _ ->
+  | Julia _ | Csg _ ->
       Vec.make p.x p.y 0.
 
 let rec bounds = function

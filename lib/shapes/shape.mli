@@ -32,12 +32,13 @@ val geometric_normal : Compiled.obj -> int -> Vec.t -> Vec.t
 (** [geometric_normal obj part p] is the flat normal of the surface at [p]: a smooth triangle's or
     face's own plane, else [normal]. The robust mode lifts secondary rays along it. *)
 
-val uv : Compiled.obj -> int -> Vec.t -> Vec.t
-(** [uv obj part p] is the UV coordinates (u, v, 0) of [obj] at its world surface point [p]
+val uv : Scratch.t -> Compiled.obj -> int -> Vec.t -> Vec.t
+(** [uv w obj part p] is the UV coordinates (u, v, 0) of [obj] at its world surface point [p]
     ([part] as [depth] left it: the box side, the mesh face), as POV-Ray 3.7's UVCoord methods
     compute them, in the shape's own space: spheres (in the frame of every modifier they got),
-    boxes, tori and meshes (their uv_vectors blended); every other shape has POV-Ray's default,
-    the world point's x and y. *)
+    boxes, tori, lathes, sors, ovus and meshes (their uv_vectors blended), bicubic patches (the
+    coordinates their crossing reported to [w]); every other shape has POV-Ray's default, the
+    world point's x and y. *)
 
 val hit_normal : Scratch.t -> Compiled.obj -> int -> Vec.t -> Vec.t
 (** [hit_normal w obj part p] is [normal obj part p] for every shape but the julia fractal, whose

@@ -15,7 +15,7 @@ let points =
 
 let patch_of (o : Scene.obj) =
   match o.shape with
-  | Bicubic { patch_type; u_steps; v_steps; flatness; points } -> Bezier.make ~patch_type ~u_steps ~v_steps ~flatness points
+  | Bicubic { patch_type; u_steps; v_steps; flatness; points; uv_vectors } -> Bezier.make ~patch_type ~u_steps ~v_steps ~flatness ~st:uv_vectors points
   | _ ->
       Alcotest.fail "expected a bicubic patch"
 
@@ -113,8 +113,21 @@ let test_no_inside () =
   let o = c.objects.(0) in
   Alcotest.(check bool) "no inside" false (Shape.inside (Array.make 512 0.) o.shape (v 0. 0.3 0.))
 
+(* Compute_Texture_UV: the default uv_vectors give (v, u); the corners map to the uv_vectors *)
+let test_texture_uv () =
+  let pair msg (eu, ev) (u, v) = float_eq (msg ^ " u") eu u; float_eq (msg ^ " v") ev v in
+  let d = parse ("bicubic_patch { type 1 u_steps 1 v_steps 1 " ^ points ^ " }") in
+  pair "default" (0.75, 0.25) (Bezier.texture_uv d 0.25 0.75);
+  let b = parse ("bicubic_patch { type 1 u_steps 1 v_steps 1 uv_vectors <0.1, 0.2>, <2, 0.3>, <1.8, 1.9>, 0.4 " ^ points ^ " }") in
+  pair "u = v = 0: the first" (0.1, 0.2) (Bezier.texture_uv b 0. 0.);
+  pair "v = 1: the second" (2., 0.3) (Bezier.texture_uv b 0. 1.);
+  pair "u = v = 1: the third" (1.8, 1.9) (Bezier.texture_uv b 1. 1.);
+  pair "u = 1: the fourth (a float for both terms)" (0.4, 0.4) (Bezier.texture_uv b 1. 0.);
+  pair "the middle" ((0.1 +. 2. +. 1.8 +. 0.4) /. 4., (0.2 +. 0.3 +. 1.9 +. 0.4) /. 4.) (Bezier.texture_uv b 0.5 0.5)
+
 let tests =
   [
+    Alcotest.test_case "uv_vectors" `Quick test_texture_uv;
     Alcotest.test_case "reader" `Quick test_reader;
     Alcotest.test_case "trace() points and normals" `Quick test_trace;
     Alcotest.test_case "crossings by sampling" `Quick test_sampling;
