@@ -26,12 +26,31 @@ let unsupported_object_set = set_of unsupported_objects
 (* A light where an object may stand: a union of the light alone, dissolved into the scene's lights. *)
 let light_union l = V.Csg { kind = Union; members = [ V.Member_light l ]; split = true; box = None }
 
+(* An object identifier just inside a shape's braces: POV-Ray's Parse_Object_Id makes the shape a
+   copy of that object (whatever its kind) with the modifiers that follow, as 'object' would. *)
+exception Copied of V.obj * string
+
+(* The '{' of the shape [kw], and the copy of an object named right after it *)
+let open_shape st kw =
+  open_block st kw;
+  match peek st with
+  | Ident s when not (is_keyword s) -> (
+      match cur_value st s with
+      | Some (V.Object o) ->
+          advance st;
+          raise (Copied (o, kw))
+      | Some _ | None -> ())
+  | _ -> ()
+
 let rec parse_object st : V.obj =
   let loc = peek_loc st in
+  try parse_shape st loc with Copied (o, kw) -> parse_object_mods st { o with oloc = loc } kw
+
+and parse_shape st loc : V.obj =
   match peek st with
   | Ident ("triangle" | "smooth_triangle" as kw) ->
       advance st;
-      open_block st kw;
+      open_shape st kw;
       let smooth = kw = "smooth_triangle" in
       let p1, p2, p3, ns = Mesh_reader.triangle_corners st ~smooth in
       let shape : Scene.shape =
@@ -56,7 +75,7 @@ let rec parse_object st : V.obj =
       parse_object_mods st (new_obj shape loc) "mesh2"
   | Ident "sphere" ->
       advance st;
-      open_block st "sphere";
+      open_shape st "sphere";
       let centre = parse_vector st in
       ignore (accept st Comma) (* POV-Ray accepts the comma as optional *);
       let rloc = peek_loc st in
@@ -66,7 +85,7 @@ let rec parse_object st : V.obj =
   | Ident "box" ->
       (* §15.1: the corners are sorted per axis; a flat or empty box is accepted silently *)
       advance st;
-      open_block st "box";
+      open_shape st "box";
       let a = parse_vector st in
       ignore (accept st Comma);
       let b = parse_vector st in
@@ -77,7 +96,7 @@ let rec parse_object st : V.obj =
   | Ident "cylinder" ->
       (* §15.2: cylinder { P1, P2, r [open] } *)
       advance st;
-      open_block st "cylinder";
+      open_shape st "cylinder";
       let p1 = parse_vector st in
       skip_comma st;
       let p2 = parse_vector st in
@@ -92,7 +111,7 @@ let rec parse_object st : V.obj =
   | Ident "cone" ->
       (* §15.3: cone { P1, r1, P2, r2 [open] } *)
       advance st;
-      open_block st "cone";
+      open_shape st "cone";
       let p1 = parse_vector st in
       skip_comma st;
       let r1 = parse_float st in
@@ -109,7 +128,7 @@ let rec parse_object st : V.obj =
   | Ident "disc" ->
       (* §15.4: disc { C, N, R [, H] } *)
       advance st;
-      open_block st "disc";
+      open_shape st "disc";
       let centre = parse_vector st in
       skip_comma st;
       let nloc = peek_loc st in
@@ -123,7 +142,7 @@ let rec parse_object st : V.obj =
   | Ident "torus" ->
       (* §15.5: torus { R, r } (the comma optional), then its modifiers *)
       advance st;
-      open_block st "torus";
+      open_shape st "torus";
       let major = parse_float st in
       ignore (accept st Comma);
       let minor = parse_float st in
@@ -132,7 +151,7 @@ let rec parse_object st : V.obj =
   | Ident "blob" ->
       (* Parse_Blob: threshold and components, then the object's modifiers, then Make_Blob *)
       advance st;
-      open_block st "blob";
+      open_shape st "blob";
       (match peek st with
       | Ident s when (match cur_value st s with Some (V.Object _) -> true | _ -> false) -> (
           (* Parse_Object_Id: an object identifier first makes it object { … } *)
@@ -144,7 +163,7 @@ let rec parse_object st : V.obj =
           Blob_reader.finish (parse_object_mods st (new_obj shape loc) "blob"))
   | Ident ("poly" | "cubic" | "quartic" | "polynomial" as kw) ->
       advance st;
-      open_block st kw;
+      open_shape st kw;
       let shape =
         match kw with
         | "cubic" -> Shape_reader.poly st ~order:3
@@ -155,7 +174,7 @@ let rec parse_object st : V.obj =
       parse_object_mods st (new_obj shape loc) kw
   | Ident ("polygon" | "quadric" as kw) ->
       advance st;
-      open_block st kw;
+      open_shape st kw;
       parse_object_mods st (new_obj (if kw = "polygon" then Shape_reader.polygon st loc else Shape_reader.quadric st) loc) kw
   | Ident "height_field" ->
       (* Parse_HField: the image and its options, then the modifiers; the field's blocks are built
@@ -168,28 +187,28 @@ let rec parse_object st : V.obj =
       | Csg _ | Prim _ -> seal o)
   | Ident "superellipsoid" ->
       advance st;
-      open_block st "superellipsoid";
+      open_shape st "superellipsoid";
       parse_object_mods st (new_obj (Superq_reader.superellipsoid st) loc) "superellipsoid"
   | Ident "ovus" ->
       advance st;
-      open_block st "ovus";
+      open_shape st "ovus";
       parse_object_mods st (new_obj (Superq_reader.ovus st loc) loc) "ovus"
   | Ident "sphere_sweep" ->
       advance st;
-      open_block st "sphere_sweep";
+      open_shape st "sphere_sweep";
       parse_object_mods st (new_obj (Superq_reader.sphere_sweep st) loc) "sphere_sweep"
   | Ident ("prism" | "lathe" | "sor" as kw) ->
       advance st;
-      open_block st kw;
+      open_shape st kw;
       let shape = match kw with "prism" -> Spline_reader.prism st loc | "lathe" -> Spline_reader.lathe st loc | _ -> Spline_reader.sor st loc in
       parse_object_mods st (new_obj shape loc) kw
   | Ident "bicubic_patch" ->
       advance st;
-      open_block st "bicubic_patch";
+      open_shape st "bicubic_patch";
       parse_object_mods st (new_obj (Bicubic_reader.bicubic st loc) loc) "bicubic_patch"
   | Ident "julia_fractal" ->
       advance st;
-      open_block st "julia_fractal";
+      open_shape st "julia_fractal";
       let shape = Julia_reader.julia st in
       Julia_reader.set_up loc (parse_object_mods st (new_obj shape loc) "julia_fractal")
   | Ident "text" ->
@@ -200,7 +219,7 @@ let rec parse_object st : V.obj =
       parse_object_mods st text "text"
   | Ident "plane" ->
       advance st;
-      open_block st "plane";
+      open_shape st "plane";
       let nloc = peek_loc st in
       let n = parse_vector st in
       ignore (accept st Comma);

@@ -539,8 +539,18 @@ let test_macro_after_declared_texture () =
   (* a macro called inside the value is still called where it stands *)
   float_eq "inside" 3. (radius "#macro R() 3 #end\n#declare A = R();\nsphere { 0, A }")
 
+(* Parse_Object_Id: an object identifier right inside a shape's braces makes the shape a copy of
+   that object with the modifiers that follow, whatever the keyword *)
+let test_shape_of_identifier () =
+  let dumps text = List.map Povml.Dump.obj (scene ("#version 3.7;\n#declare S = sphere { 0, 1 pigment { rgb x } }\n" ^ text)).objects in
+  let as_object = dumps "object { S translate x scale 2 }" in
+  Alcotest.(check (list string)) "sphere { S ... }" as_object (dumps "sphere { S translate x scale 2 }");
+  Alcotest.(check (list string)) "box { S ... }: still the sphere" as_object (dumps "box { S translate x scale 2 }");
+  Alcotest.(check (list string)) "superellipsoid { S ... }" as_object (dumps "superellipsoid { S translate x scale 2 }")
+
 let tests =
   [
+    Alcotest.test_case "a shape made of an object identifier" `Quick test_shape_of_identifier;
     Alcotest.test_case "promotion and operators" `Quick test_promotion;
     Alcotest.test_case "functions" `Quick test_functions;
     Alcotest.test_case "optional commas in vectors" `Quick test_optional_vector_commas;
