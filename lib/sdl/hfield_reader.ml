@@ -21,7 +21,7 @@ let heights_of_image (img : Image_file.t) =
           else int_of_float (((r *. 256.) +. g) *. 255.))
 
 let parse st =
-  open_block st "height_field";
+  open_shape st "height_field";
   let loc = peek_loc st in
   (match peek st with Ident "function" -> not_supported loc "'function'" | _ -> ());
   let image, _name = Image_reader.height_field_image st in

@@ -123,7 +123,7 @@ let parse_texture_in_block st =
 (* mesh { triangle {…} smooth_triangle {…} … [inside_vector V] modifiers } (§2.6), read up to the
    modifiers. Vertices are kept in single precision; each face is set up from the values as parsed. *)
 let mesh st loc =
-  open_block st "mesh";
+  open_shape st "mesh";
   let verts = Vertex_table.create () and norms = Vertex_table.create () and corners = Growable.create 0. in
   let fv = Growable.create 0 and fn = Growable.create 0 and ftex = Growable.create 0 in
   let textures = ref [] and ntex = ref 0 in
@@ -202,7 +202,7 @@ let mesh st loc =
 (* mesh2 { vertex_vectors normal_vectors texture_list face_indices normal_indices inside_vector … },
    read up to the modifiers *)
 let mesh2 st loc =
-  open_block st "mesh2";
+  open_shape st "mesh2";
   let vertices = ref None and normals = ref None and textures = ref [||] in
   let faces = ref None and nidx = ref None and inside = ref None in
   let uvs = ref None and uvidx = ref None in

@@ -26,25 +26,11 @@ let unsupported_object_set = set_of unsupported_objects
 (* A light where an object may stand: a union of the light alone, dissolved into the scene's lights. *)
 let light_union l = V.Csg { kind = Union; members = [ V.Member_light l ]; split = true; box = None }
 
-(* An object identifier just inside a shape's braces: POV-Ray's Parse_Object_Id makes the shape a
-   copy of that object (whatever its kind) with the modifiers that follow, as 'object' would. *)
-exception Copied of V.obj * string
-
-(* The '{' of the shape [kw], and the copy of an object named right after it *)
-let open_shape st kw =
-  open_block st kw;
-  match peek st with
-  | Ident s when not (is_keyword s) -> (
-      match cur_value st s with
-      | Some (V.Object o) ->
-          advance st;
-          raise (Copied (o, kw))
-      | Some _ | None -> ())
-  | _ -> ()
-
+(* An object; a shape whose braces open on an object identifier is a copy of that object with
+   the modifiers that follow (Reader.open_shape, POV-Ray's Parse_Object_Id) *)
 let rec parse_object st : V.obj =
   let loc = peek_loc st in
-  try parse_shape st loc with Copied (o, kw) -> parse_object_mods st { o with oloc = loc } kw
+  try parse_shape st loc with Object_copy (o, kw) -> parse_object_mods st { o with oloc = loc } kw
 
 and parse_shape st loc : V.obj =
   match peek st with

@@ -465,6 +465,19 @@ let unexpected st what =
 let expect st k what = if peek st == k then advance st else unexpected st what
 let open_block st what = expect st LBrace (Printf.sprintf "'{' after '%s'" what)
 
+exception Object_copy of V.obj * string
+
+let open_shape st kw =
+  open_block st kw;
+  match peek st with
+  | Ident s when not (is_keyword s) -> (
+      match cur_value st s with
+      | Some (V.Object o) ->
+          advance st;
+          raise (Object_copy (o, kw))
+      | Some _ | None -> ())
+  | _ -> ()
+
 let close_block st what = expect st RBrace (Printf.sprintf "'}' closing '%s' or one of its keywords" what)
 
 let accept st k = if peek st == k then (advance st; true) else false

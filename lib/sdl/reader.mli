@@ -199,6 +199,15 @@ val expect : st -> Token.kind -> string -> unit
 val open_block : st -> string -> unit
 (** [open_block st what] consumes the '{' after [what]. *)
 
+exception Object_copy of V.obj * string
+(** Raised by {!open_shape} with the object named and the shape's keyword. *)
+
+val open_shape : st -> string -> unit
+(** [open_shape st kw] is [open_block st kw] for the shape [kw], which then raises {!Object_copy}
+    when an object identifier follows the '{' (consumed): POV-Ray's Parse_Object_Id makes the
+    shape a copy of that object, whatever its kind, with the modifiers that follow, as [object]
+    does. The object parser catches it. *)
+
 val close_block : st -> string -> unit
 (** [close_block st what] consumes the '}' closing [what]. *)
 

@@ -546,7 +546,9 @@ let test_shape_of_identifier () =
   let as_object = dumps "object { S translate x scale 2 }" in
   Alcotest.(check (list string)) "sphere { S ... }" as_object (dumps "sphere { S translate x scale 2 }");
   Alcotest.(check (list string)) "box { S ... }: still the sphere" as_object (dumps "box { S translate x scale 2 }");
-  Alcotest.(check (list string)) "superellipsoid { S ... }" as_object (dumps "superellipsoid { S translate x scale 2 }")
+  Alcotest.(check (list string)) "superellipsoid { S ... }" as_object (dumps "superellipsoid { S translate x scale 2 }");
+  Alcotest.(check (list string)) "mesh2 { S ... }" as_object (dumps "mesh2 { S translate x scale 2 }");
+  Alcotest.(check (list string)) "height_field { S ... }" as_object (dumps "height_field { S translate x scale 2 }")
 
 let tests =
   [
