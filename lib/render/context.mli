@@ -42,4 +42,5 @@ val make : ?robust:bool -> ?shadow_cache:int array -> Compiled.t -> Stats.t -> t
 val cache_slot : level:int -> int -> int
 (** [cache_slot ~level k] is light [k]'s shadow-cache slot for the shadow tests made while
     shading a hit at trace [level]: POV-Ray keeps two per light, one for level 2
-    (lightSourceLevel1ShadowCache) and one for every other level. *)
+    (lightSourceLevel1ShadowCache, the even slot 2k) and one for every other level (2k + 1). A
+    test at level 2 whose slot is empty tries the other one ({!Shadow.feeler}). *)
