@@ -32,4 +32,4 @@ let make ?(robust = false) ?shadow_cache:cache (scene : Compiled.t) stats =
     walk_limit = [| 0. |];
   }
 
-let[@inline] cache_slot ~level k = (2 * k) + if level = 2 then 0 else 1
+let[@inline] cache_slot ~level k = (2 * k) + if level = 1 then 0 else 1

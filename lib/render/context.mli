@@ -41,6 +41,8 @@ val make : ?robust:bool -> ?shadow_cache:int array -> Compiled.t -> Stats.t -> t
 
 val cache_slot : level:int -> int -> int
 (** [cache_slot ~level k] is light [k]'s shadow-cache slot for the shadow tests made while
-    shading a hit at trace [level]: POV-Ray keeps two per light, one for level 2
-    (lightSourceLevel1ShadowCache, the even slot 2k) and one for every other level (2k + 1). A
-    test at level 2 whose slot is empty tries the other one ({!Shadow.feeler}). *)
+    shading a hit at trace [level] (1 for a camera ray's hit): POV-Ray keeps two per light, one
+    for the shadow rays of level-1 hits (lightSourceLevel1ShadowCache, used where its trace level,
+    raised by the shadow ray itself, is 2: the even slot 2k) and one for those of every deeper
+    level (2k + 1). A test from a level-1 hit whose slot is empty tries the other one
+    ({!Shadow.feeler}). *)

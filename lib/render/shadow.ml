@@ -194,8 +194,9 @@ let feeler ctx ~slot (p : Vec.t) (ng : Vec.t) e (l : Vec.t) dist interiors (lc :
         let lo = if ctx.robust then 0. else Precision.shadow_tolerance in
         let o = Robust.origin ctx p ng e l in
         let l, dist = if ctx.robust then aim lp o else (l, dist) in
-        (* a shadow test for a hit at trace level 2 tries that level's cached blocker, or else
-           the one cached at the other levels (Trace::TracePointLightShadowRay) *)
+        (* a shadow test for a camera ray's hit tries the blocker cached for those, or else the
+           one cached for the deeper levels (Trace::TracePointLightShadowRay, where the shadow
+           ray's own trace level is 2) *)
         let cached =
           let c = ctx.shadow_cache.(slot) in
           if c < 0 && slot land 1 = 0 then ctx.shadow_cache.(slot + 1) else c

@@ -160,8 +160,8 @@ let test_shadow_fade () =
 (* §4, TracePointLightShadowRay: the opaque object that last blocked a light is tested first, with
    hits from 1e-4 (not 1e-3) counting. A sheet 5e-4 above a platform does not shadow it (closer
    than the 1e-3 shadow tolerance) — unless the previous shadow test of that light, at the same
-   kind of trace level (or, for a hit at level 2 with nothing cached there, at the others), was
-   blocked by the sheet. *)
+   kind of trace level (or, for a camera ray's hit with nothing cached for those, at the deeper
+   levels), was blocked by the sheet. *)
 let test_shadow_cache () =
   let c =
     compile
@@ -185,16 +185,16 @@ let test_shadow_cache () =
   let ctx = fresh () in
   dark "floor first" (shoot ctx floor);
   dark "then the platform: the cached sheet is hit at 5e-4" (shoot ctx platform);
-  (* a hit shaded at trace level 2 tries the blocker cached at that level, or else the one cached
-     at the other levels; hits at the other levels never try level 2's *)
+  (* the shadow rays of a camera ray's hit (trace level 1) have a slot of their own, and try the
+     deeper levels' blocker when it is empty; levels 2 and beyond share one slot *)
   let ctx = fresh () in
   dark "floor, level 1" (shoot ctx floor);
-  dark "platform shaded at level 2, its own slot empty: level 1's sheet" (shoot ~level:1 ctx platform);
-  dark "platform shaded at level 1" (shoot ctx platform);
+  lit "platform shaded at level 2: level 1's sheet is not tried" (shoot ~level:1 ctx platform);
+  dark "platform shaded at level 1: its own slot" (shoot ctx platform);
   let ctx = fresh () in
   dark "floor shaded at level 2" (shoot ~level:1 ctx floor);
-  lit "platform shaded at level 1: level 2's sheet is not tried" (shoot ctx platform);
-  dark "platform shaded at level 2: its own slot" (shoot ~level:1 ctx platform)
+  dark "platform shaded at level 3: the slot of level 2" (shoot ~level:2 ctx platform);
+  dark "platform shaded at level 1, its own slot empty: the deeper levels' sheet" (shoot ctx platform)
 
 (* §2.1, §13.22: of equal depths the object POV-Ray meets first wins. A = P1 P2 P3 and
    B = P1 P2 Q with Q − P2 = 2(P3 − P2) lie in the plane z = 2 + x with bit-identical normals and
