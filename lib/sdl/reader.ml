@@ -465,6 +465,12 @@ let unexpected st what =
 let expect st k what = if peek st == k then advance st else unexpected st what
 let open_block st what = expect st LBrace (Printf.sprintf "'{' after '%s'" what)
 
+(* the items of a list whose length the scene announced, read one by one (a huge count is then an
+   error at the first item missing, never an allocation of that size) *)
+let read_items n item =
+  let rec go i acc = if i >= n then Array.of_list (List.rev acc) else go (i + 1) (item i :: acc) in
+  go 0 []
+
 exception Object_copy of V.obj * string
 
 let open_shape st kw =

@@ -199,6 +199,11 @@ val expect : st -> Token.kind -> string -> unit
 val open_block : st -> string -> unit
 (** [open_block st what] consumes the '{' after [what]. *)
 
+val read_items : int -> (int -> 'a) -> 'a array
+(** [read_items n item] is [[| item 0; …; item (n − 1) |]], the calls made in order, for a list
+    whose length the scene gives: the array is made from what was read, so a huge count fails at
+    the first item that is not there instead of allocating an array of that size. *)
+
 exception Object_copy of V.obj * string
 (** Raised by {!open_shape} with the object named and the shape's keyword. *)
 

@@ -13,7 +13,7 @@ let uv_vector st =
   | v -> Error.raise_at loc "expected a UV vector <u, v> but found %s" (V.kind_name v)
 
 let points st n =
-  Array.init n (fun _ ->
+  read_items n (fun _ ->
       skip_comma st;
       uv_vector st)
 
@@ -77,7 +77,7 @@ let lathe st loc =
   let n = count st in
   check_count nloc n spline ~shape:"Lathe" ~cubic_shape:"Prism" (2, "two") (3, "three") (4, "four");
   let pts =
-    Array.init n (fun i ->
+    read_items n (fun i ->
         skip_comma st;
         let ploc = peek_loc st in
         let ((x, _) as p) = uv_vector st in
@@ -90,13 +90,15 @@ let sor st loc =
   let nloc = peek_loc st in
   let n = count st in
   if n < 4 then Error.raise_at nloc "Surface of revolution must have at least four points.";
-  let pts = Array.make n (0., 0.) in
-  for i = 0 to n - 1 do
-    skip_comma st;
-    let ploc = peek_loc st in
-    let ((x, y) as p) = uv_vector st in
-    if x < 0. || (i > 1 && i < n - 1 && y <= snd pts.(i - 1)) then Error.raise_at ploc "Incorrect point in surface of revolution.";
-    pts.(i) <- p
-  done;
+  let last_y = ref 0. in
+  let pts =
+    read_items n (fun i ->
+        skip_comma st;
+        let ploc = peek_loc st in
+        let ((x, y) as p) = uv_vector st in
+        if x < 0. || (i > 1 && i < n - 1 && y <= !last_y) then Error.raise_at ploc "Incorrect point in surface of revolution.";
+        last_y := y;
+        p)
+  in
   let closed = not (accept_ident st "open") in
   match Sor.make ~closed ~sturm:false pts with Ok s -> Scene.Sor s | Error msg -> Error.raise_at loc "%s" msg

@@ -35,7 +35,7 @@ let sphere_sweep st =
   let n = Expr.c_int (Expr.parse_float st) in
   if n < 2. || (kind <> Sphere_sweep.Linear && n < 4.) then Error.raise_at nloc "Too few modeling spheres for interpolation type.";
   let spheres =
-    Array.init (int_of_float n) (fun _ ->
+    read_items (int_of_float n) (fun _ ->
         skip_comma st;
         let c = Expr.parse_vector st in
         skip_comma st;

@@ -252,6 +252,15 @@ large for the memory limit. Each stops with a located error before the system wo
         |              ^
   [exit 3, no image]
 
+A count of points far beyond those written (here 2³¹ − 1 spheres of a sphere_sweep) is an error at
+the first one missing, not an array of that size:
+
+  $ sh run.sh huge_count.pov
+  huge_count.pov:6:74: error: expected a numeric expression but found 'pigment'
+      6 | sphere_sweep { linear_spline 2147483647, <-1, 1, 3>, 0.3, <1, 1, 3>, 0.4 pigment { rgb 1 } }
+        |                                                                          ^
+  [exit 1, no image]
+
 An image larger than the pixel limit (--max-pixels, default 8192²) is refused before anything is
 read:
 
