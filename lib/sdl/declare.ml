@@ -11,9 +11,10 @@ open Settings
 
 (* The value of a #declare or of a macro argument (the parser's "rvalue"), and whether a ';' should
    follow it (§11.3: after floats, vectors, colours and strings). *)
-let rec parse_rvalue ?(store = ignore) st : V.t * bool =
+let rec parse_rvalue ?(store = ignore) ?(name = "") st : V.t * bool =
   let loc = peek_loc st in
   match peek st with
+  | Ident "function" -> advance st; (Fn_reader.declaration st ~name ~special:(special_function st), false)
   | Ident "light_source" -> ((match parse_light_source st with Lights.Lone l -> V.Light l | Shaped o -> V.Object o), false)
   | Ident s when Names.mem object_set s -> (V.Object (parse_object st), false)
   | Ident "pigment" -> advance st; (V.Pigment (parse_pigment st (Scene.Solid Colour.black)), false)
@@ -56,6 +57,9 @@ let rec parse_rvalue ?(store = ignore) st : V.t * bool =
       | Some (V.String _) -> (parse_string st, false)
       | _ -> (parse_expr st, true))
   | _ -> (parse_expr st, true)
+
+(* The functions of a pigment, transform, pattern or spline (function.cpp): not yet. *)
+and special_function _st _kw _loc = None
 
 (* A string value, read without looking past it. An arithmetic operator right after it is the
    likely mistake of joining strings with '+': said so at the operator (POV-Ray only says it expected
@@ -216,7 +220,7 @@ let parse_declare st ~local dloc =
   st.in_rvalue <- true;
   let value, needs_semi =
     Fun.protect ~finally:(fun () -> st.in_rvalue <- outer) @@ fun () ->
-    try parse_rvalue ~store st
+    try parse_rvalue ~store ~name st
     with Unsupported (l, what, _) ->
       (* a declaration povml cannot make yet is no error until it is used (issue: include files
          declare much more than a scene uses) *)

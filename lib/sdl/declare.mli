@@ -1,8 +1,9 @@
 (** Declarations (POVRAY-3.7 §11.3): the value of a #declare or a macro argument, arrays, and where
     a value is stored. *)
 
-val parse_rvalue : ?store:(Value.t -> unit) -> Reader.st -> Value.t * bool
-(** [parse_rvalue ~store st] reads a declarable value and whether a ';' should follow it. An array
+val parse_rvalue : ?store:(Value.t -> unit) -> ?name:string -> Reader.st -> Value.t * bool
+(** [parse_rvalue ~store ~name st] reads a declarable value and whether a ';' should follow it
+    ([name] is the identifier declared, which a function's body may not call). An array
     is passed to [store] as soon as its size is known, before its initialiser is looked for, so the
     directives read by that look see it. *)
 

@@ -31,7 +31,7 @@ let function_names =
     "seed"; "rand"; "bitwise_and"; "bitwise_or"; "bitwise_xor"; "vturbulence"; "vrotate"; "vaxis_rotate"; "str"; "vstr";
     "concat"; "substr"; "chr"; "asc"; "strlen"; "strupr"; "strlwr"; "val"; "strcmp"; "file_exists" ]
 
-let unsupported_functions = [ "datetime"; "function" ]
+let unsupported_functions = [ "datetime" ]
 
 let function_set = set_of function_names
 let object_set =
@@ -259,6 +259,7 @@ and parse_ident_value st loc name =
       match cur_value st name with
       | Some ((V.Float _ | V.Vector _ | V.Colour _ | V.String _) as v) -> advance st; v
       | Some (V.Unsupported u) -> unsupported_use loc name u.what u.at
+      | Some (V.Function f) -> Fn_reader.sdl_call st f loc ~parse_float
       | Some v -> Error.raise_at loc "expected a numeric expression but '%s' is %s" name (V.kind_name v)
       | None ->
           if List.mem name unsupported_functions then not_supported loc (Printf.sprintf "the function '%s'" name)
