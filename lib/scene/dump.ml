@@ -116,6 +116,7 @@ let pattern_name (p : pattern) =
   | No_pattern -> "(no pattern)"
   | Bitmap b -> "image_map { " ^ bitmap b ^ " }"
   | Image_pattern b -> "image_pattern { " ^ bitmap b ^ " }"
+  | Function_pattern f -> if f.Fn.name = "" then "function { … }" else Printf.sprintf "function { %s(x, y, z) }" f.Fn.name
 
 let turb (t : turb) =
   Printf.sprintf "turbulence %s octaves %d omega %s lambda %s" (vec t.turbulence) t.octaves (num t.omega) (num t.lambda)

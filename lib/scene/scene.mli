@@ -85,6 +85,9 @@ type pattern =
       (** POV-Ray's BITMAP_PATTERN: an image_map in a pigment (whose colour is the image's,
           its map unused) or a bump_map in a normal (the image's slope); it has no value *)
   | Image_pattern of bitmap  (** image_pattern: the image's grey, index or alpha as the value *)
+  | Function_pattern of Fn.t
+      (** pattern.cpp function_pattern: the function of x y z at the point, reduced modulo 1
+          when above 1 *)
 
 (** The pigment of a [pigment_pattern], reduced to what the pattern needs (as an object
     pattern's object, for the same reason): the grey of its colour at a pattern-space point (0

@@ -292,7 +292,8 @@ let rec pattern_keyword st kind (h : header) : header option =
         if found then Precision.f32 ((0.297 *. c.red) +. (0.589 *. c.green) +. (0.114 *. c.blue)) else 0.
       in
       set (Pigment_pattern { grey; pshown = Dump.pigment p })
-  | Ident (("function" | "density_file") as s) ->
+  | Ident "function" -> advance st; set (Function_pattern (Fn_reader.anonymous st))
+  | Ident ("density_file" as s) ->
       not_supported loc (Printf.sprintf "'%s' as a pattern" s)
   | _ -> None
 

@@ -293,7 +293,8 @@ and perturb_at cache gen ~keep_scale (nm : Scene.normal) (p : Vec.t) (hit : Patt
       | Bitmap b -> own (Image_map.bump b amount)
       | Checker | Gradient _ | Hexagon | Brick _ | Square | Triangular | Cubic | Agate _ | Bozo | Spotted | Granite | Leopard
       | Marble | Wood | Onion | Radial | Cells | Crackle _ | Spiral1 _ | Spiral2 _ | Planar | Boxed | Spherical | Cylindrical
-      | Fractal _ | Pavement _ | Tiling _ | Aoi | Slope _ | Object_pattern _ | Pigment_pattern _ | No_pattern | Image_pattern _ ->
+      | Fractal _ | Pavement _ | Tiling _ | Aoi | Slope _ | Object_pattern _ | Pigment_pattern _ | No_pattern | Image_pattern _
+      | Function_pattern _ ->
           (* the slope of the value: four samples at the corners of a tetrahedron of size
              [accuracy] around the point, each pushing the normal along its corner's direction *)
           let n = warp_normal nm.nwarps ~keep_scale n in

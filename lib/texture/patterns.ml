@@ -50,6 +50,11 @@ let checker (q : Vec.t) =
    the object's own Inside test), else 0 *)
 let object_pattern (t : Scene.object_test) (q : Vec.t) = if t.inside q then 1. else 0.
 
+(* pattern.cpp function_pattern: the function at the point, taken modulo 1 above 1 *)
+let function_pattern f (q : Vec.t) =
+  let v = Fn.at_point f q.x q.y q.z in
+  if v > 1. then Float.rem v 1. else v
+
 (* §17.5: values up to 1 (negatives included) pass unchanged; the wrap of §17.1 does the rest *)
 let gradient (v : Vec.t) (q : Vec.t) =
   let r = (q.x *. v.x) +. (q.y *. v.y) +. (q.z *. v.z) in
@@ -663,5 +668,6 @@ let value_with ~frequency ~phase (p : Scene.pattern) (warps : Scene.warp list) g
   | No_pattern -> 0.
   | Bitmap _ -> invalid_arg "Patterns.value: an image_map or bump_map has a colour or a normal, not a value"
   | Image_pattern b -> Image_map.value b q
+  | Function_pattern f -> function_pattern f q
 
 let value p warps gen hit q = value_with ~frequency:1. ~phase:0. p warps gen hit q
