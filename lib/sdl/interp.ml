@@ -118,7 +118,7 @@ let chain st =
     @ [ (Loc.none, Printf.sprintf "… %d more calls and includes …" (n - 7)) ]
     @ List.filteri (fun i _ -> i >= n - 2) notes
 
-let load_string opts ~file text =
+let reader_state opts ~file text =
   (* the scene may read the files beside it and in the library paths *)
   let access = List.fold_left Access.allow_read opts.access (Filename.dirname file :: opts.library_paths) in
   let opts = { opts with access } in
@@ -144,6 +144,10 @@ let load_string opts ~file text =
   st.index <- parse_index;
   st.read_object <- (fun st -> if object_follows st then Some (parse_object st) else None);
   st.read_pigment <- (fun st -> Materials.parse_pigment st (Scene.Solid Colour.black));
+  st
+
+let load_string opts ~file text =
+  let st = reader_state opts ~file text in
   (* the scene's files are closed when its text has been read, or at its first error *)
   Fun.protect ~finally:(fun () -> User_files.close_all st) (fun () ->
       try parse_statements st with

@@ -24,6 +24,10 @@ val load_string : options -> file:string -> string -> Scene.t * Error.t list
 (** [load_string opts ~file text] interprets [text] (named [file] in locations) and returns the scene
     and the warnings in the order they arose. Raises [Error.Scene_error] on the first error. *)
 
+val reader_state : options -> file:string -> string -> Reader.st
+(** [reader_state opts ~file text] is the reader's state before the first token of [text] (named
+    [file] in locations), as [load_string] starts: for tests of one reader on a piece of text. *)
+
 val load_file : options -> string -> Scene.t * Error.t list
 (** [load_file opts path] reads and interprets the file [path], as [load_string]. *)
 

@@ -29,6 +29,7 @@ let () =
       ("Blob", Test_blob.tests);
       ("Height field", Test_hfield.tests);
       ("Prism, lathe, sor", Test_spline.tests);
+      ("Spline values (spline { })", Test_spline_values.tests);
       ("Julia fractal", Test_julia.tests);
       ("Bicubic patch", Test_bezier.tests);
       ("Poly (poly, cubic, quartic)", Test_poly.tests);
