@@ -57,6 +57,7 @@ let f32_colour (c : Colour.t) =
    Each result carries Compute_Pigment's "colour found": false only for a point off a [once]
    image_map, and for a blend of two entries neither of which found one. *)
 let rec at_pattern_point gen (p : Scene.patterned) hit q =
+  match p.pattern with Average -> (average gen p hit q, true) | _ ->
   let g = if p.noise_generator = 0 then gen else p.noise_generator in
   let v = shape_value ~frequency:p.frequency ~phase:p.phase p.wave (Patterns.value_with ~frequency:p.frequency ~phase:p.phase p.pattern p.warps g hit q) in
   if Array.length p.pigments = 0 then (lookup p.map v, true)
@@ -85,6 +86,22 @@ let rec at_pattern_point gen (p : Scene.patterned) hit q =
             transmit = mix p.transmit c.transmit;
           },
           found_c || found_p )
+
+(* Do_Average_Pigments: the entries' colours weighed by their values and divided by the values'
+   sum, all in single precision as POV-Ray's colours are *)
+and average gen (p : Scene.patterned) hit q =
+  let f = Precision.f32 in
+  let r = ref 0. and g = ref 0. and b = ref 0. and fl = ref 0. and t = ref 0. and total = ref 0. in
+  Array.iter
+    (fun (e : Scene.pigment_entry) ->
+      let c, _ = inner gen e.pigment hit q in
+      let w = e.pvalue in
+      let add acc x = acc := f (!acc +. f (x *. w)) in
+      add r c.red; add g c.green; add b c.blue; add fl c.filter; add t c.transmit;
+      total := f (!total +. w))
+    p.pigments;
+  let d x = f (x /. !total) in
+  { Colour.red = d !r; green = d !g; blue = d !b; filter = d !fl; transmit = d !t }
 
 and inner gen (pg : Scene.pigment) hit q =
   match pg with

@@ -14,6 +14,7 @@ open Settings
 let rec parse_rvalue ?(store = ignore) ?(name = "") st : V.t * bool =
   let loc = peek_loc st in
   match peek st with
+  | Ident "spline" -> advance st; (V.Spline (Spline_decl.read_block_with ~named:named_spline st), false)
   | Ident "function" -> advance st; (Fn_reader.declaration st ~name ~special:(special_function st), false)
   | Ident "light_source" -> ((match parse_light_source st with Lights.Lone l -> V.Light l | Shaped o -> V.Object o), false)
   | Ident s when Names.mem object_set s -> (V.Object (parse_object st), false)
@@ -58,8 +59,20 @@ let rec parse_rvalue ?(store = ignore) ?(name = "") st : V.t * bool =
       | _ -> (parse_expr st, true))
   | _ -> (parse_expr st, true)
 
-(* The functions of a pigment, transform, pattern or spline (function.cpp): not yet. *)
-and special_function _st _kw _loc = None
+and named_spline st s = match cur_value st s with Some (V.Spline sp) -> Some sp | _ -> None
+
+(* The vector functions of a pigment, transform or spline, and pattern functions (function.cpp):
+   the keyword is next. *)
+and special_function st kw loc =
+  match kw with
+  | "spline" ->
+      advance st;
+      let sp = Spline_decl.read_block_with ~named:named_spline st in
+      Some (Fn_special.spline sp loc)
+  | "pigment" -> advance st; Some (Pattern_function.pigment st (parse_pigment st (Scene.Solid Colour.black)) loc)
+  | "transform" -> advance st; Some (Pattern_function.transform (parse_transform st) loc)
+  | "pattern" -> advance st; Some (Pattern_function.pattern st loc)
+  | _ -> None
 
 (* A string value, read without looking past it. An arithmetic operator right after it is the
    likely mistake of joining strings with '+': said so at the operator (POV-Ray only says it expected

@@ -240,7 +240,7 @@ let rec parse_pigment_body st ~close (base : Scene.pigment) : Scene.pigment =
     | Ident "pigment_map" ->
         advance st;
         if is_block g.h.pat then Error.raise_at loc "cannot use pigment_map with this pattern type";
-        loop { g with pigments = parse_pigment_map st }
+        loop { g with pigments = parse_pigment_map ~average:(g.h.pat = Some Average) st }
     | Ident ("quick_color" | "quick_colour") -> advance st; ignore (parse_colour st); loop g
     | Ident _ when started || not (is_pattern_start st) -> (
         match Pattern_reader.modifier st g.h with
@@ -262,13 +262,15 @@ let rec parse_pigment_body st ~close (base : Scene.pigment) : Scene.pigment =
   loop (pig_of p)
 
 (* pigment_map { [v PIGMENT_BODY] … } (§17.3): entries in the order written, values single precision. *)
-and parse_pigment_map st : Scene.pigment_entry array =
+and parse_pigment_map ?(average = false) st : Scene.pigment_entry array =
   let loc = peek_loc st in
   open_block st "pigment_map";
   match ident_of_kind st (function V.Pigment_map m -> Some m | _ -> None) with
   | Some m -> close_block st "pigment_map"; m
   | None ->
-      map_entries st "pigment_map" ~loc ~value:(fun () -> parse_float st) (fun v ->
+      (* an average's entries may omit the value (weight 1) *)
+      let value () = if average && not (float_follows st) then 1. else parse_float st in
+      map_entries st "pigment_map" ~loc ~value (fun v ->
           { Scene.pvalue = v; pigment = parse_pigment_body st ~close:RBracket st.default_texture.pigment })
 
 and parse_pigment st (base : Scene.pigment) : Scene.pigment =

@@ -20,8 +20,8 @@ val is_pattern_start : Reader.st -> bool
 val parse_colour_map : Reader.st -> string -> Scene.map_entry array
 (** [parse_colour_map st kw] reads the block of a [color_map] (written [kw]) after the keyword. *)
 
-val parse_pigment_map : Reader.st -> Scene.pigment_entry array
-(** [parse_pigment_map st] reads the block of a [pigment_map] after the keyword: entries, or a
+val parse_pigment_map : ?average:bool -> Reader.st -> Scene.pigment_entry array
+(** [parse_pigment_map ~average st] (an [average]'s entries may leave their weight out, 1) reads the block of a [pigment_map] after the keyword: entries, or a
     declared map's identifier. *)
 
 val uv_mapped : Scene.pigment -> Scene.pigment

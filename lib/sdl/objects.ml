@@ -17,7 +17,7 @@ let show_vec (v : Vec.t) = Printf.sprintf "<%g, %g, %g>" v.x v.y v.z
 (* Values povml cannot make yet; a declaration of one is kept as [V.Unsupported]. *)
 let unsupported_rvalues =
   [ "normal_map"; "slope_map";
-    "spline"; "media"; "density"; "fog"; "rainbow"; "isosurface" ]
+    "media"; "density"; "fog"; "rainbow"; "isosurface" ]
 
 let unsupported_rvalue_set = set_of (unsupported_objects @ unsupported_rvalues)
 

@@ -148,7 +148,7 @@ let keywords =
   @ [ "srgb"; "srgbf"; "srgbt"; "srgbft"; "acosh"; "asinh"; "atanh"; "asc"; "bitwise_and"; "bitwise_or"; "bitwise_xor";
       "chr"; "clock_on"; "concat"; "cosh"; "defined"; "dimension_size"; "dimensions"; "file_exists"; "now"; "rand";
       "seed"; "sinh"; "str"; "strcmp"; "strlen"; "strlwr"; "strupr"; "substr"; "tanh"; "val"; "vaxis_rotate";
-      "vrotate"; "vstr"; "array"; "ascii"; "utf8"; "sys"; "append"; "deprecated"; "once"; "internal"; "function"; "sint8";
+      "vrotate"; "vstr"; "array"; "ascii"; "utf8"; "sys"; "append"; "deprecated"; "once"; "internal"; "function"; "spline"; "sint8";
       "sint16be"; "sint16le"; "sint32be"; "sint32le"; "uint8"; "uint16be"; "uint16le"; "hf_gray_16"; "mm_per_unit";
       "max_intersections"; "dtag"; "no_radiosity"; "importance"; "target"; "pass_through"; "collect"; "hierarchy";
       "bokeh"; "confidence"; "variance"; "aperture"; "focal_point"; "blur_samples"; "alpha" ]
@@ -170,7 +170,7 @@ let unsupported =
      where POV-Ray reads it in an object, a light_source, a texture or an expression (checked word
      by word with POV-Ray: parser/reswords.cpp) *)
   @ [ "composite"; "mesh_camera"; "adaptive"; "area_illumination"; "circular"; "jitter";
-      "orient"; "media_attenuation"; "media_interaction"; "material_map"; "density"; "density_map"; "spline";
+      "orient"; "media_attenuation"; "media_interaction"; "material_map"; "density"; "density_map";
       "datetime" ]
 
 (* The rest of POV-Ray 3.7's reserved words (parser/reswords.cpp), none of which povml reads: words

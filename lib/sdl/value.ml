@@ -78,6 +78,7 @@ type t =
   | Pigment_map of Scene.pigment_entry array  (** a declared [pigment_map] (§17.3) *)
   | Texture_map of Scene.texture_entry array  (** a declared [texture_map] *)
   | Material of material  (** a declared [material] *)
+  | Spline of Spline.t  (** a declared [spline] (§11.5) *)
   | Function of Fn.t  (** a declared [function] (a float function, or a vector function of a pigment, transform or spline) *)
 
 (** An array: its dimensions and its elements in row-major order, [None] until assigned. *)
@@ -106,19 +107,20 @@ let kind_name = function
   | Pigment_map _ -> "a pigment_map"
   | Texture_map _ -> "a texture_map"
   | Material _ -> "a material"
+  | Spline _ -> "a spline"
   | Function f -> if f.Fn.size = 0 then "a function" else "a vector function"
 
 let terms = function
   | Float _ -> 1
   | Vector a | Colour a -> Array.length a
-  | String _ | Pigment _ | Normal _ | Sky _ | Finish _ | Texture _ | Interior _ | Object _ | Light _ | Camera _ | Array _ | Macro _ | Transform _ | Unsupported _ | File _ | Colour_map _ | Pigment_map _ | Texture_map _ | Material _ | Function _ -> 0
+  | String _ | Pigment _ | Normal _ | Sky _ | Finish _ | Texture _ | Interior _ | Object _ | Light _ | Camera _ | Array _ | Macro _ | Transform _ | Unsupported _ | File _ | Colour_map _ | Pigment_map _ | Texture_map _ | Material _ | Spline _ | Function _ -> 0
 
 (* POVRAY-3.7 §11.2: a float is replicated into every term, a shorter vector is padded with zeros. *)
 let promote v n =
   match v with
   | Float f -> Array.make n f
   | Vector a | Colour a -> Array.init n (fun i -> if i < Array.length a then a.(i) else 0.)
-  | String _ | Pigment _ | Normal _ | Sky _ | Finish _ | Texture _ | Interior _ | Object _ | Light _ | Camera _ | Array _ | Macro _ | Transform _ | Unsupported _ | File _ | Colour_map _ | Pigment_map _ | Texture_map _ | Material _ | Function _ -> invalid_arg "Value.promote"
+  | String _ | Pigment _ | Normal _ | Sky _ | Finish _ | Texture _ | Interior _ | Object _ | Light _ | Camera _ | Array _ | Macro _ | Transform _ | Unsupported _ | File _ | Colour_map _ | Pigment_map _ | Texture_map _ | Material _ | Spline _ | Function _ -> invalid_arg "Value.promote"
 
 let numeric v = terms v > 0
 
@@ -137,4 +139,4 @@ let map f = function
   | Float x -> Some (Float (f x))
   | Vector a -> Some (Vector (Array.map f a))
   | Colour a -> Some (Colour (Array.map f a))
-  | String _ | Pigment _ | Normal _ | Sky _ | Finish _ | Texture _ | Interior _ | Object _ | Light _ | Camera _ | Array _ | Macro _ | Transform _ | Unsupported _ | File _ | Colour_map _ | Pigment_map _ | Texture_map _ | Material _ | Function _ -> None
+  | String _ | Pigment _ | Normal _ | Sky _ | Finish _ | Texture _ | Interior _ | Object _ | Light _ | Camera _ | Array _ | Macro _ | Transform _ | Unsupported _ | File _ | Colour_map _ | Pigment_map _ | Texture_map _ | Material _ | Spline _ | Function _ -> None

@@ -80,6 +80,7 @@ type t =
   | Pigment_map of Scene.pigment_entry array  (** a declared [pigment_map] (§17.3) *)
   | Texture_map of Scene.texture_entry array  (** a declared [texture_map] *)
   | Material of material  (** a declared [material] *)
+  | Spline of Spline.t  (** a declared [spline] (§11.5) *)
   | Function of Fn.t  (** a declared [function] (a float function, or a vector function of a pigment, transform or spline) *)
 
 (** An array: its dimensions and its elements in row-major order, [None] until assigned. *)
