@@ -69,10 +69,8 @@ and special_function st kw loc =
       advance st;
       let sp = Spline_decl.read_block_with ~named:named_spline st in
       Some (Fn_special.spline sp loc)
-  | "pigment" -> advance st; Some (Pattern_function.pigment st (parse_pigment st (Scene.Solid Colour.black)) loc)
-  | "transform" -> advance st; Some (Pattern_function.transform (parse_transform st) loc)
   | "pattern" -> advance st; Some (Pattern_function.pattern st loc)
-  | _ -> None
+  | _ -> Fn_special.special st ~parse_transform kw loc
 
 (* A string value, read without looking past it. An arithmetic operator right after it is the
    likely mistake of joining strings with '+': said so at the operator (POV-Ray only says it expected

@@ -1,4 +1,6 @@
-(* Vector functions of splines, pigments and transforms, and pattern functions. *)
+(* Vector functions of splines, pigments and transforms. *)
+
+open Reader
 
 let terms_value t = if Array.length t = 5 then Value.Colour t else Value.Vector t
 
@@ -8,3 +10,27 @@ let spline s floc =
   { Fn.name = ""; params = [| "t" |]; frame = 1; size = n; eval = (fun fr -> (veval fr).(0)); veval; floc }
 
 let spline_value s t = terms_value (Array.sub (Spline.eval s t) 0 (Spline.terms s))
+
+let vector_fn ~size ~veval floc =
+  { Fn.name = ""; params = [| "x"; "y"; "z" |]; frame = 3; size; eval = (fun fr -> (veval fr).(0)); veval; floc }
+
+let point fr = Vec.make fr.(0) fr.(1) fr.(2)
+
+let pigment st p floc =
+  let f = Precision.f32 in
+  let veval fr =
+    let c = Pigment.colour_at st.noise_generator p Patterns.no_hit (point fr) in
+    [| f c.red; f c.green; f c.blue; f c.filter; f c.transmit |]
+  in
+  vector_fn ~size:5 ~veval floc
+
+let transform t floc =
+  let veval fr = let q = Transform.point t (point fr) in [| q.x; q.y; q.z |] in
+  vector_fn ~size:3 ~veval floc
+
+
+let special st ~parse_transform kw loc =
+  match kw with
+  | "pigment" -> advance st; Some (pigment st (st.read_pigment st) loc)
+  | "transform" -> advance st; Some (transform (parse_transform st) loc)
+  | _ -> None

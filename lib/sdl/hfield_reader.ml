@@ -22,8 +22,6 @@ let heights_of_image (img : Image_file.t) =
 
 let parse st =
   open_shape st "height_field";
-  let loc = peek_loc st in
-  (match peek st with Ident "function" -> not_supported loc "'function'" | _ -> ());
   let image, _name = Image_reader.height_field_image st in
   let rec options water smooth =
     match peek st with

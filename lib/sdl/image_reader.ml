@@ -97,7 +97,8 @@ let not_with loc what = Error.raise_at loc "'%s' cannot be used with a non color
 (* load_file: the file name, its gamma and premultiplied options (after the name, in any order),
    and the image decoded at once with the options [block] reads images with; the image and its
    name as written *)
-let load_file ?(hf = false) st block =
+let rec load_file ?(hf = false) st block =
+  if is_ident st "function" then (function_image st, "function") else
   let file_loc = peek_loc st in
   let fmt, name = parse_file ~hf st in
   let rec file_options gamma premultiply =
@@ -114,6 +115,58 @@ let load_file ?(hf = false) st block =
   match Image_read.read fmt options path with
   | Ok img -> (img, name)
   | Error msg -> Error.raise_at file_loc "cannot read the image file \"%s\": %s" name msg
+
+(* function W, H { … } (Make_Pattern_Image): an image of W × H pixels made by a float function (a
+   16-bit grey image) or a pigment function (a 16-bit RGBA image, not premultiplied) over the unit
+   square, pixel (j, i) at x = j / (W − 1), y = i / (H − 1), z = 0; each value stored as the
+   integer part of value × 65535 in single precision, wrapped to 16 bits as the C cast does *)
+and function_image st : Image_file.t =
+  let loc = peek_loc st in
+  advance st;
+  let size () = int_of_float (Expr.c_int (parse_float st +. 0.5)) in
+  let width = size () in
+  skip_comma st;
+  let height = size () in
+  if width < 1 || height < 1 then Error.raise_at loc "a function image needs a width and a height of at least 1";
+  if peek st != LBrace then unexpected st "'{' after the size of the function image";
+  let f =
+    match Fn_reader.declaration st ~name:"" ~special:(Fn_special.special st ~parse_transform) with
+    | V.Function f -> f
+    | _ -> Error.raise_at loc "a function image needs a function"
+  in
+  let sample v = int_of_float (Expr.c_int (Precision.f32 (Precision.f32 v *. 65535.))) land 0xffff in
+  let fr = Fn.frame f in
+  let at i j =
+    fr.(0) <- float_of_int j /. float_of_int (width - 1);
+    fr.(1) <- float_of_int i /. float_of_int (height - 1);
+    fr.(2) <- 0.
+  in
+  let n = width * height in
+  if f.size = 0 then begin
+    let grey = Array.make n 0 in
+    for i = 0 to height - 1 do
+      for j = 0 to width - 1 do
+        at i j;
+        grey.((i * width) + j) <- sample (f.eval fr)
+      done
+    done;
+    { width; height; pixels = Grey { max = 65535; grey; alpha = None; lut = None }; premultiplied = false }
+  end
+  else if f.size = 5 then begin
+    let rgb = Array.make (3 * n) 0 and alpha = Array.make n 0 in
+    for i = 0 to height - 1 do
+      for j = 0 to width - 1 do
+        at i j;
+        let c = f.veval fr and k = (i * width) + j in
+        rgb.(3 * k) <- sample c.(0);
+        rgb.((3 * k) + 1) <- sample c.(1);
+        rgb.((3 * k) + 2) <- sample c.(2);
+        alpha.(k) <- sample (Precision.f32 (1. -. Precision.f32 c.(4)))
+      done
+    done;
+    { width; height; pixels = Colour { max = 65535; rgb; alpha = Some alpha; lut = None }; premultiplied = false }
+  end
+  else Error.raise_at loc "unsupported function type in a function image (a float function or a pigment function is needed)"
 
 (* the block after [keyword], up to its '}' (a material_map: up to its first texture) *)
 let read st keyword =

@@ -1,26 +1,6 @@
-(* Functions of pigments, transforms and patterns. *)
+(* Pattern functions. *)
 
 open Reader
-
-let vector_fn ~size ~veval floc =
-  { Fn.name = ""; params = [| "x"; "y"; "z" |]; frame = 3; size; eval = (fun fr -> (veval fr).(0)); veval; floc }
-
-let point fr = Vec.make fr.(0) fr.(1) fr.(2)
-
-(* the scene's noise generator when the function runs: global_settings may come later *)
-let generator st = st.noise_generator
-
-let pigment st p floc =
-  let f = Precision.f32 in
-  let veval fr =
-    let c = Pigment.colour_at (generator st) p Patterns.no_hit (point fr) in
-    [| f c.red; f c.green; f c.blue; f c.filter; f c.transmit |]
-  in
-  vector_fn ~size:5 ~veval floc
-
-let transform t floc =
-  let veval fr = let q = Transform.point t (point fr) in [| q.x; q.y; q.z |] in
-  vector_fn ~size:3 ~veval floc
 
 (* the pattern keyword (a block pattern's too, without its list), then the modifiers *)
 let header st loc =
@@ -35,6 +15,8 @@ let header st loc =
   let rec loop h = match Pattern_reader.modifier st h with Some h -> loop h | None -> h in
   Pattern_reader.finish st loc (loop h)
 
+let point fr = Vec.make fr.(0) fr.(1) fr.(2)
+
 let pattern st floc =
   open_block st "pattern";
   let loc = peek_loc st in
@@ -42,7 +24,7 @@ let pattern st floc =
   close_block st "pattern";
   let pat = Option.get h.pat in
   let eval fr =
-    let gen = if h.noise = 0 then generator st else h.noise in
+    let gen = if h.noise = 0 then st.noise_generator else h.noise in
     let q = Warp.point h.warps pat (point fr) in
     Pigment.shape_value ~frequency:h.frequency ~phase:h.phase h.wave
       (Patterns.value_with ~frequency:h.frequency ~phase:h.phase pat h.warps gen Patterns.no_hit q)
