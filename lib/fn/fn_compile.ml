@@ -11,6 +11,7 @@ type env = {
   counters : (string * int) list;
   next_slot : int ref;  (** the next free frame slot for a counter *)
   warn : Loc.t -> string -> unit;
+  floc : Loc.t;  (** where the function starts, for errors at constants (which have no location) *)
 }
 
 let c_int x = if Float.is_nan x || Float.abs x >= 2147483648. then -2147483648. else Float.trunc x
@@ -84,19 +85,19 @@ and step env (acc : code) (op, e) : code =
   | Sub, Const c -> if c <> 0. then fun fr -> acc fr -. c else acc
   | Mul, Const c -> if c <> 1. then fun fr -> acc fr *. c else acc
   | Div, Const c ->
-      if c = 0. then Error.raise_at (expr_loc e) "division by zero in a function"
+      if c = 0. then Error.raise_at (expr_loc env e) "division by zero in a function"
       else if c <> 1. then let k = 1. /. c in fun fr -> acc fr *. k
       else acc
   | Pow, Const 0. ->
-      env.warn (expr_loc e) "zero power optimised to constant 1.0";
+      env.warn (expr_loc env e) "zero power optimised to constant 1.0";
       fun _ -> 1.
   | Pow, Const n when power acc n <> None -> Option.get (power acc n)
   | _ -> binop op acc (code env e)
 
-and expr_loc = function
+and expr_loc env = function
   | Var (_, loc) | Builtin (_, _, loc) | Call (_, _, loc) | Member (_, _, _, loc) -> loc
-  | Paren e | Neg e | Chain (e, _) -> expr_loc e
-  | Const _ -> Loc.none
+  | Paren e | Neg e | Chain (e, _) -> expr_loc env e
+  | Const _ -> env.floc
 
 and builtin env f args loc : code =
   let one g = match args with [ a ] -> let a = code env a in fun fr -> g (a fr) | _ -> Error.raise_at loc "this function takes one parameter" in
@@ -216,6 +217,6 @@ and member env f args m : code =
 let no_vector _ = [||]
 
 let compile ~name ~params ~loc ~warn body =
-  let env = { params; counters = []; next_slot = ref (Array.length params); warn } in
+  let env = { params; counters = []; next_slot = ref (Array.length params); warn; floc = loc } in
   let eval = code env (Fn_optimise.optimise body) in
   { name; params; frame = !(env.next_slot); size = 0; eval; veval = no_vector; floc = loc }

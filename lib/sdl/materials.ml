@@ -269,7 +269,7 @@ and parse_pigment_map ?(average = false) st : Scene.pigment_entry array =
   | Some m -> close_block st "pigment_map"; m
   | None ->
       (* an average's entries may omit the value (weight 1) *)
-      let value () = if average && not (float_follows st) then 1. else parse_float st in
+      let value () = if average && not (float_follows st || is_colour_start st) then 1. else parse_float st in
       map_entries st "pigment_map" ~loc ~value (fun v ->
           { Scene.pvalue = v; pigment = parse_pigment_body st ~close:RBracket st.default_texture.pigment })
 

@@ -11,10 +11,10 @@ modifiers:
 
 The function form is not read yet; a missing file and a missing number are located errors:
 
-  $ printf 'height_field { function 4, 4 { x } }\n' > fn.pov
+  $ printf 'height_field { tiff "x.tif" }\n' > fn.pov
   $ povml fn.pov +W10 +H10 -D
-  fn.pov:1:16: error: not supported yet: 'function'
-      1 | height_field { function 4, 4 { x } }
+  fn.pov:1:16: error: not supported yet: 'tiff' images
+      1 | height_field { tiff "x.tif" }
         |                ^
   [1]
   $ printf 'height_field { "nofile.png" }\n' > nf.pov

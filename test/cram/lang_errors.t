@@ -393,17 +393,17 @@ an include file is an isosurface; in the main file the declaration also warns.
   $ cat > unsup3.pov <<'POV'
   > #version 3.7;
   > global_settings { assumed_gamma 1 }
-  > #declare P = pigment { function { x } }
+  > #declare P = pigment { density_file df3 "x.df3" }
   > #declare Q = pigment { rgb 1 }
   > sphere { 0, 1 pigment { Q } }
   > POV
   $ povml --dump unsup3.pov > /dev/null
-  unsup3.pov:3:1: warning: 'P' uses 'function' as a pattern, which povml does not support yet; using it will be an error
-      3 | #declare P = pigment { function { x } }
+  unsup3.pov:3:1: warning: 'P' uses 'density_file' as a pattern, which povml does not support yet; using it will be an error
+      3 | #declare P = pigment { density_file df3 "x.df3" }
         | ^
   $ echo 'sphere { 0, 1 pigment { P } }' >> unsup3.pov
   $ povml --dump unsup3.pov
-  unsup3.pov:6:25: error: not supported yet: 'function' as a pattern (used through 'P')
+  unsup3.pov:6:25: error: not supported yet: 'density_file' as a pattern (used through 'P')
       6 | sphere { 0, 1 pigment { P } }
         |                         ^
   unsup3.pov:3:24: note: 'P' was declared here
@@ -433,17 +433,17 @@ textures/pigments/blkhole.pov calls Correct_Pigment_Gamma(pigment { DMFWood4 …
   > #version 3.7;
   > global_settings { assumed_gamma 1 }
   > #macro M(P, G) pigment { P } #end
-  > #declare Tree = M(pigment { function { x } }, 2.2)
+  > #declare Tree = M(pigment { density_file df3 "x.df3" }, 2.2)
   > sphere { 0, 1 pigment { rgb 1 } }
   > POV
   $ povml --dump macroarg.pov | tail -1
-  macroarg.pov:4:1: warning: 'Tree' uses 'function' as a pattern, which povml does not support yet; using it will be an error
-      4 | #declare Tree = M(pigment { function { x } }, 2.2)
+  macroarg.pov:4:1: warning: 'Tree' uses 'density_file' as a pattern, which povml does not support yet; using it will be an error
+      4 | #declare Tree = M(pigment { density_file df3 "x.df3" }, 2.2)
         | ^
   // 1 objects, 0 lights
   $ echo 'sphere { 0, 1 pigment { Tree } }' >> macroarg.pov
   $ povml --dump macroarg.pov
-  macroarg.pov:6:25: error: not supported yet: 'function' as a pattern (used through 'Tree')
+  macroarg.pov:6:25: error: not supported yet: 'density_file' as a pattern (used through 'Tree')
       6 | sphere { 0, 1 pigment { Tree } }
         |                         ^
   macroarg.pov:4:29: note: 'Tree' was declared here

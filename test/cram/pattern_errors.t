@@ -63,18 +63,18 @@ brick_size and mortar belong to brick; gradient needs a direction:
 
 A pattern povml does not read yet, directly and through a declaration:
 
-  $ printf 'plane { y, 0 pigment { function { x } } }\n' > wood.pov
+  $ printf 'plane { y, 0 pigment { density_file df3 "x.df3" } }\n' > wood.pov
   $ povml wood.pov +W10 +H10 -D
-  wood.pov:1:24: error: not supported yet: 'function' as a pattern
-      1 | plane { y, 0 pigment { function { x } } }
+  wood.pov:1:24: error: not supported yet: 'density_file' as a pattern
+      1 | plane { y, 0 pigment { density_file df3 "x.df3" } }
         |                        ^
   [1]
   $ cat > turb.pov <<'POV'
-  > #declare P = pigment { function { x } warp { turbulence 0.5 } }
+  > #declare P = pigment { density_file df3 "x.df3" warp { turbulence 0.5 } }
   > plane { y, 0 pigment { P } }
   > POV
   $ povml turb.pov +W10 +H10 -D
-  turb.pov:2:24: error: not supported yet: 'function' as a pattern (used through 'P')
+  turb.pov:2:24: error: not supported yet: 'density_file' as a pattern (used through 'P')
       2 | plane { y, 0 pigment { P } }
         |                        ^
   turb.pov:1:24: note: 'P' was declared here
