@@ -163,8 +163,9 @@ let internal st ~name ~written loc =
   let k = match peek st with Num k -> advance st; k | _ -> unexpected st "the number of an internal function" in
   expect st RParen "')' after the number of the internal function";
   let k = int_of_float k in
-  match if k >= 0 && k < Fn_internal.count then Fn_internal.make ~noise_generator:(noise_generator st) k else None with
-  | None -> Error.raise_at kloc "function 'internal(%d)' does not exist" k
+  if k < 0 || k >= Fn_internal.count then Error.raise_at kloc "function 'internal(%d)' does not exist" k;
+  match Fn_internal.make ~noise_generator:(noise_generator st) k with
+  | None -> not_supported kloc (Printf.sprintf "the internal function '%s' (internal(%d))" (Fn_internal.name k) k)
   | Some eval ->
       ignore written;
       let n = Fn_internal.arity k in

@@ -168,7 +168,7 @@ let test_parse () =
   Alcotest.(check bool) "smooth" true h.field.smooth;
   Alcotest.(check int) "one block" 1 h.field.nbx;
   float_eq "translated" 1. h.tr.m31;
-  expect_scene_error "function" "height_field { function 10, 10 { x } }" ~line:1 ~col:16 ~sub:"not supported yet: 'function'";
+  expect_scene_error "function" "height_field { tiff \"x.tif\" }" ~line:1 ~col:16 ~sub:"not supported yet: 'tiff' images";
   expect_scene_error "missing file" "height_field { png \"no_such.png\" }" ~line:1 ~col:16 ~sub:"cannot find the image file"
 
 let tests =

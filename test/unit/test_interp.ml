@@ -660,14 +660,14 @@ let test_lone_hash () =
    these (it has wood and datetime). *)
 let test_unsupported_macro_argument () =
   let m = "#macro M(P, G) pigment { P } #end\n#macro F(A) A #end\n#declare S = sphere { 0, 1 }\n" in
-  let s, w = load (m ^ "#declare Tree = M(pigment { function { x } }, 2.2)\n#declare X = F(strlen(datetime(now))) * 2;\nsphere { 0, 1 }") in
+  let s, w = load (m ^ "#declare Tree = M(pigment { density_file df3 \"x.df3\" }, 2.2)\n#declare X = F(strlen(datetime(now))) * 2;\nsphere { 0, 1 }") in
   Alcotest.(check int) "the sphere after the declarations is read" 1 (List.length s.objects);
   Alcotest.(check (list int)) "a warning for each declaration" [ 4; 5 ]
     (List.map (fun (e : Error.t) -> e.loc.line) (List.filter (fun (e : Error.t) -> e.loc.line > 0) w));
-  expect_scene_error "used" (m ^ "#declare Tree = M(pigment { function { x } }, 2.2)\nsphere { 0, 1 pigment { Tree } }") ~line:5 ~col:25
-    ~sub:"not supported yet: 'function' as a pattern (used through 'Tree')";
-  expect_scene_error "outside a declaration" (m ^ "sphere { 0, 1 M(pigment { function { x } }, 2.2) }") ~line:4 ~col:27
-    ~sub:"not supported yet: 'function' as a pattern"
+  expect_scene_error "used" (m ^ "#declare Tree = M(pigment { density_file df3 \"x.df3\" }, 2.2)\nsphere { 0, 1 pigment { Tree } }") ~line:5 ~col:25
+    ~sub:"not supported yet: 'density_file' as a pattern (used through 'Tree')";
+  expect_scene_error "outside a declaration" (m ^ "sphere { 0, 1 M(pigment { density_file df3 \"x.df3\" }, 2.2) }") ~line:4 ~col:27
+    ~sub:"not supported yet: 'density_file' as a pattern"
 
 (* A directive read while a declaration looks past its value (array[3] with no initialiser looks
    for a '{') is no part of the value: an unsupported value in its condition is the error, there
@@ -680,8 +680,8 @@ let test_unsupported_in_directive () =
   expect_scene_error "#if inside a declared pigment" (d ^ "#declare P = pigment { #if (FW > 1) rgb 1 #else rgb 0 #end }\nsphere { 0, 1 }")
     ~line:3 ~col:29 ~sub:"not supported yet: the function 'datetime'";
   expect_scene_error "a macro call after array[3]"
-    ("#macro M(P) sphere { 0, 1 pigment { P } } #end\n#declare A = array[3]\nM(pigment { function { x } })") ~line:3 ~col:13
-    ~sub:"not supported yet: 'function' as a pattern"
+    ("#macro M(P) sphere { 0, 1 pigment { P } } #end\n#declare A = array[3]\nM(pigment { density_file df3 \"x.df3\" })") ~line:3 ~col:13
+    ~sub:"not supported yet: 'density_file' as a pattern"
 
 let source_rules =
   [
