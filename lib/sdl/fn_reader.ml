@@ -21,14 +21,20 @@ let members =
 let noise_generator st = st.noise_generator
 
 (* One precedence level: operands of [next] joined by the operators of [ops], left to right. *)
+let max_chain = 65536
+
 let level ops next st name =
   let first = next st name in
-  let rec more acc =
+  let rec more acc n =
     match List.assq_opt (peek st) ops with
-    | Some op -> advance st; more ((op, next st name) :: acc)
+    | Some op ->
+        (* a chain is evaluated by nested closures: its length is bounded to keep the stack safe *)
+        if n >= max_chain then Error.limit_at (peek_loc st) "a function has more than %s operators in a row, povml's limit" (commas max_chain);
+        advance st;
+        more ((op, next st name) :: acc) (n + 1)
     | None -> List.rev acc
   in
-  match more [] with [] -> first | rest -> Fn.Chain (first, rest)
+  match more [] 0 with [] -> first | rest -> Fn.Chain (first, rest)
 
 let rec expr st name = level [ (Bar, Fn.Or) ] conj st name
 and conj st name = level [ (Amp, Fn.And) ] compare st name
@@ -98,6 +104,10 @@ and identifier st name loc s =
       Fn.Var (s, loc)
 
 and arguments st name what =
+  let loc = peek_loc st in
+  nest st loc (fun () -> arguments_in st name what)
+
+and arguments_in st name what =
   expect st LParen (Printf.sprintf "'(' after '%s'" what);
   let rec more acc =
     let a = expr st name in

@@ -382,6 +382,30 @@ Inputs the fuzzer found (`make fuzz`, test/fuzz) that crashed povml or took too 
         |                ^
   [exit 1, no image]
 
+Functions: a body nested too deep or too long is a limit, located; arithmetic that overflows or
+leaves a function's domain gives IEEE infinities and NaNs, as POV-Ray 3.7's VM does (it reports no
+floating-point exception), never a crash; a call with the wrong number of parameters is located:
+
+  $ sh run.sh function_deep.pov
+  function_deep.pov:5:40028: error: this is nested more than 10,000 levels deep (parentheses, vectors, signs and unions together), povml's limit (raise it with --max-nesting N)
+      5 | …(sin(sin(sin(sin(sin(sin(sin(sin(sin(sin(sin(sin(sin(sin(sin(sin(sin(sin(sin(sin(sin(sin(sin(sin(sin(sin(sin(sin(sin(sin(sin(sin(sin(sin(sin(sin(sin(sin(sin(sin…
+        |                                                                                  ^
+  [exit 3, no image]
+  $ sh run.sh function_long.pov
+  function_long.pov:5:262171: error: a function has more than 65,536 operators in a row, povml's limit
+      5 | …+ x + x + x + x + x + x + x + x + x + x + x + x + x + x + x + x + x + x + x + x + x + x + x + x + x + x + x + x + x + x + x + x + x + x + x + x + x + x + x + x …
+        |                                                                                  ^
+  [exit 3, no image]
+  $ sh run.sh function_runaway.pov
+  -nan -nan
+  [exit 0, image written]
+  $ sh run.sh function_arity.pov
+  function_arity.pov:6:36: error: the function 'F' takes 2 parameters, but 1 was given
+      6 | sphere { 0, 1 pigment { function { F(x) } } }
+        |                                    ^
+  function_arity.pov:5:22: note: 'F' is declared here
+  [exit 1, no image]
+
 Every scene in this directory and in fuzz/ has its case above:
 
   $ for f in *.pov fuzz/*.pov; do grep -q "run.sh $f" bad.t 2>/dev/null || grep -q "> $f" bad.t 2>/dev/null || echo "no case for $f"; done
