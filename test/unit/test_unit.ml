@@ -44,6 +44,7 @@ let () =
       ("pattern values (surface)", Test_pattern_values.surface_tests);
       ("pattern values (noise)", Test_pattern_values.noise_tests);
       ("Noise", Test_noise.tests);
+      ("Internal functions (functions.inc)", Test_fn_internal.tests);
       ("Warp", Test_warp.tests);
       ("Trace", Test_trace.tests);
       ("Render", Test_render.tests);
