@@ -260,32 +260,13 @@ and parse_ident_value st loc name =
       | Some ((V.Float _ | V.Vector _ | V.Colour _ | V.String _) as v) -> advance st; v
       | Some (V.Unsupported u) -> unsupported_use loc name u.what u.at
       | Some (V.Function f) -> Fn_reader.sdl_call st f loc ~parse_float
-      | Some (V.Spline sp) -> spline_call st sp
+      | Some (V.Spline sp) -> Fn_special.spline_call st sp ~parse_float
       | Some v -> Error.raise_at loc "expected a numeric expression but '%s' is %s" name (V.kind_name v)
       | None ->
           if List.mem name unsupported_functions then not_supported loc (Printf.sprintf "the function '%s'" name)
           else if is_unsupported name then not_supported loc (Printf.sprintf "'%s'" name)
           else if is_keyword name then Error.raise_at loc "expected a numeric expression but found '%s'" name
           else unknown_identifier st loc name)
-
-(* S(t) and S(t, kind) of a declared spline (Parse_Spline_Call) *)
-and spline_call st sp =
-  advance st;
-  expect st LParen "'(' and the time after a spline identifier";
-  let t = parse_float st in
-  let sp =
-    if accept st Comma then
-      let kloc = peek_loc st in
-      match peek st with
-      | Ident "linear_spline" -> advance st; Spline.with_kind sp Spline.Linear
-      | Ident "quadratic_spline" -> advance st; Spline.with_kind sp Spline.Quadratic
-      | Ident "cubic_spline" -> advance st; Spline.with_kind sp Spline.Cubic
-      | Ident "natural_spline" -> advance st; Spline.with_kind sp Spline.Natural
-      | _ -> Error.raise_at kloc "expected linear_spline, quadratic_spline, natural_spline, or cubic_spline"
-    else sp
-  in
-  expect st RParen "')' after the spline's time";
-  Fn_special.spline_value sp t
 
 (* trace(), inside(), min_extent(), max_extent(): Probe reads them, its vectors read here *)
 and parse_probe st name = Probe.parse st name ~vector:parse_vector

@@ -11,6 +11,26 @@ let spline s floc =
 
 let spline_value s t = terms_value (Array.sub (Spline.eval s t) 0 (Spline.terms s))
 
+(* S(t) and S(t, kind) of a declared spline (Parse_Spline_Call) *)
+let spline_call st sp ~parse_float =
+  advance st;
+  expect st LParen "'(' and the time after a spline identifier";
+  let t = parse_float st in
+  let sp =
+    if accept st Comma then
+      let kloc = peek_loc st in
+      match peek st with
+      | Ident "linear_spline" -> advance st; Spline.with_kind sp Spline.Linear
+      | Ident "quadratic_spline" -> advance st; Spline.with_kind sp Spline.Quadratic
+      | Ident "cubic_spline" -> advance st; Spline.with_kind sp Spline.Cubic
+      | Ident "natural_spline" -> advance st; Spline.with_kind sp Spline.Natural
+      | _ -> Error.raise_at kloc "expected linear_spline, quadratic_spline, natural_spline, or cubic_spline"
+    else sp
+  in
+  expect st RParen "')' after the spline's time";
+  spline_value sp t
+
+
 let vector_fn ~size ~veval floc =
   { Fn.name = ""; params = [| "x"; "y"; "z" |]; frame = 3; size; eval = (fun fr -> (veval fr).(0)); veval; floc }
 

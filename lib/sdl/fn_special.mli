@@ -22,3 +22,7 @@ val transform : Transform.t -> Loc.t -> Fn.t
 val special : Reader.st -> parse_transform:(Reader.st -> Transform.t) -> string -> Loc.t -> Fn.t option
 (** [special st ~parse_transform kw loc] reads the pigment or transform function after its keyword [kw] (the
     declaration's [special] for {!Fn_reader.declaration}); None for other keywords. *)
+
+val spline_call : Reader.st -> Spline.t -> parse_float:(Reader.st -> float) -> Value.t
+(** [spline_call st s ~parse_float] reads [S(t)] or [S(t, kind)] after the spline's identifier
+    (Parse_Spline_Call) and is the spline's value there. *)
