@@ -107,6 +107,7 @@ type shape =
   | Lathe of Lathe.t  (** lathe.cpp: through its transform *)
   | Sor of Sor.t  (** sor.cpp: through its transform *)
   | Julia of Julia.t  (** fractal.cpp: the ray taken into fractal space, its direction renormalised *)
+  | Parametric of Parametric.t  (** fpmetric.cpp: the ray taken into parametric space, not renormalised *)
   | Bicubic of Bezier.t  (** bezier.cpp: in world space, type 1 with its tree of bounding spheres *)
   | Poly of Poly.t  (** poly.cpp: poly, cubic, quartic, through its transform; unbounded *)
 

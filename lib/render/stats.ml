@@ -79,6 +79,10 @@ type t = {
   mutable bicubic_hits : int;
   mutable poly_tests : int;
   mutable poly_hits : int;
+  mutable parametric_tests : int;
+  mutable parametric_hits : int;
+  mutable parametric_bound_tests : int;
+  mutable parametric_bound_hits : int;
 }
 
 let create () =
@@ -98,6 +102,7 @@ let create () =
     prism_tests = 0; prism_hits = 0; prism_bound_tests = 0; prism_bound_hits = 0; lathe_tests = 0; lathe_hits = 0; lathe_bound_tests = 0; lathe_bound_hits = 0; sor_tests = 0; sor_hits = 0; sor_bound_tests = 0; sor_bound_hits = 0;
     fractal_tests = 0; fractal_hits = 0; bicubic_tests = 0; bicubic_hits = 0;
     poly_tests = 0; poly_hits = 0;
+    parametric_tests = 0; parametric_hits = 0; parametric_bound_tests = 0; parametric_bound_hits = 0;
   }
 
 let merge a b =
@@ -180,6 +185,10 @@ let merge a b =
     bicubic_hits = a.bicubic_hits + b.bicubic_hits;
     poly_tests = a.poly_tests + b.poly_tests;
     poly_hits = a.poly_hits + b.poly_hits;
+    parametric_tests = a.parametric_tests + b.parametric_tests;
+    parametric_hits = a.parametric_hits + b.parametric_hits;
+    parametric_bound_tests = a.parametric_bound_tests + b.parametric_bound_tests;
+    parametric_bound_hits = a.parametric_bound_hits + b.parametric_bound_hits;
   }
 
 type row = { name : string; tests : int; hits : int }

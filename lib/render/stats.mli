@@ -79,6 +79,10 @@ type t = {
   mutable bicubic_hits : int;  (** tests that found a crossing beyond 1e-5 *)
   mutable poly_tests : int;  (** polys, cubics and quartics tested *)
   mutable poly_hits : int;  (** tests that found a root, whatever its depth *)
+  mutable parametric_tests : int;  (** parametric surfaces searched (their container met) *)
+  mutable parametric_hits : int;  (** searches that found a crossing before the container's far side *)
+  mutable parametric_bound_tests : int;  (** containers tested (POV-Ray's "Parametric Bound") *)
+  mutable parametric_bound_hits : int;  (** of which the ray met the container *)
 }
 
 val create : unit -> t

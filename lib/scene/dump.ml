@@ -330,6 +330,23 @@ let rec shape = function
       Printf.sprintf "julia_fractal { <%s, %s, %s, %s> %s %s max_iteration %d precision %s slice <%s, %s, %s, %s>, %s%s // radius %s, exit %s%s"
         (num f.p0) (num f.p1) (num f.p2) (num f.p3) alg fn f.iterations (num (1. /. f.precision)) (num f.s0) (num f.s1) (num f.s2)
         (num f.s3) (num f.slice_dist) (if f.inverted then " inverted" else "") (num f.radius) (num f.exit_value) (trans f.trans)
+  | Parametric m ->
+      let fn (f : Fn.t) = if f.name = "" then "function { … }" else Printf.sprintf "function { %s(u, v) }" f.name in
+      let container =
+        match m.container with
+        | Box_container b -> Printf.sprintf "box { <%s, %s, %s>, <%s, %s, %s> }" (num b.x0) (num b.y0) (num b.z0) (num b.x1) (num b.y1) (num b.z1)
+        | Sphere_container { centre; radius } -> Printf.sprintf "sphere { %s, %s }" (vec centre) (num radius)
+      in
+      let pre =
+        match m.precomputed with
+        | None -> ""
+        | Some p ->
+            let axes = List.filteri (fun j _ -> Array.length p.low.(j) > 0) [ "x"; "y"; "z" ] in
+            Printf.sprintf " precompute %d %s" p.levels (String.concat ", " axes)
+      in
+      Printf.sprintf "parametric { %s, %s, %s <%s, %s>, <%s, %s> contained_by { %s } accuracy %s max_gradient %s%s%s" (fn m.fx) (fn m.fy) (fn m.fz)
+        (num m.umin) (num m.vmin) (num m.umax) (num m.vmax) container (num m.accuracy) (num m.max_gradient) pre
+        (trans (if Transform.is_identity m.trans then None else Some m.trans))
   | Csg { kind; members } ->
       let member (m : member) =
         String.concat "\n  " (String.split_on_char '\n' (String.trim (obj m.mobj)))

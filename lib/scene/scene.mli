@@ -384,6 +384,9 @@ type shape =
   | Julia of Julia.t
       (** fractal.cpp: in fractal space, placed by its own transform (every modifier composes
           into it and clears the fractal's own inverted flag); [inverse] toggles that flag *)
+  | Parametric of Parametric.t
+      (** fpmetric.cpp: three functions of (u, v) within a container, placed by the transform every
+          modifier composes into; flat, with no inside ([inverse] does nothing) *)
   | Bicubic of { patch_type : int; u_steps : int; v_steps : int; flatness : float; points : Vec.t array; uv_vectors : float array }
       (** bezier.cpp: the 16 control points in world space (row by row, P[i][j] at 4i + j), which
           every modifier moves; type 0 or 1; flat, with no inside. [uv_vectors]: the texture

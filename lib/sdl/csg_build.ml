@@ -16,6 +16,7 @@ let rec invert (o : V.obj) : V.obj =
   | Prim (Poly _) -> { o with inverted = not o.inverted } (* Poly::Invert toggles its flag *)
   | Prim (Polygon _) -> o (* Polygon::Invert does nothing, not even the flag *)
   | Prim (Bicubic _) -> o (* BicubicPatch::Invert does nothing *)
+  | Prim (Parametric _) -> o (* Parametric::Invert does nothing *)
   | Prim (Julia f) -> { o with shape = Prim (Julia (Julia.invert f)) } (* Fractal::Invert: its own flag, not INVERTED_FLAG *)
   | Prim (Quadric q) -> { o with shape = Prim (Quadric (Quadric.invert q)); inverted = not o.inverted }
   | Csg { members; _ } when List.for_all (function V.Member_light _ -> true | V.Member_obj _ -> false) members ->
@@ -156,7 +157,7 @@ let wrap kind (o : V.obj) objs =
    mesh without inside_vector, a bicubic patch) *)
 let rec patch (o : V.obj) =
   match o.shape with
-  | Prim (Triangle _ | Smooth_triangle _ | Bicubic _) -> true
+  | Prim (Triangle _ | Smooth_triangle _ | Bicubic _ | Parametric _) -> true
   | Prim (Mesh { mesh; _ }) -> mesh.inside_vector = None
   | Prim _ -> false
   | Csg { members; _ } -> List.exists (function V.Member_obj c -> patch c | V.Member_light _ -> false) members

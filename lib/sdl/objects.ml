@@ -10,7 +10,7 @@ open Csg_build
 
 (* Objects povml does not render yet: inside a union they are reported as "not supported yet". *)
 let unsupported_objects =
-  [ "isosurface"; "parametric"; "composite" ]
+  [ "isosurface"; "composite" ]
 
 let show_vec (v : Vec.t) = Printf.sprintf "<%g, %g, %g>" v.x v.y v.z
 
@@ -197,6 +197,11 @@ and parse_shape st loc : V.obj =
       open_shape st "julia_fractal";
       let shape = Julia_reader.julia st in
       Julia_reader.set_up loc (parse_object_mods st (new_obj shape loc) "julia_fractal")
+  | Ident "parametric" ->
+      advance st;
+      open_shape st "parametric";
+      let shape, pre = Parametric_reader.parametric st in
+      Parametric_reader.finish pre (parse_object_mods st (new_obj shape loc) "parametric")
   | Ident "text" ->
       (* §15.9: a union of one extruded glyph per character, then the modifiers, which move every
          letter *)
@@ -245,7 +250,11 @@ and parse_shape st loc : V.obj =
               warn st (peek_loc st) "a light_source (a patch object) is not allowed in an %s; it is kept as a light" kw;
             let m = match parse_light_source st with Lights.Lone l -> V.Member_light l | Shaped o -> V.Member_obj o in
             members (m :: acc)
-        | _ when object_follows st -> members (V.Member_obj (parse_object st) :: acc)
+        | _ when object_follows st ->
+            let o = parse_object st in
+            (* Parse_CSG warns of a patch object (one without an inside) in an intersection *)
+            if (kw = "intersection" || kw = "difference") && patch o then warn st o.oloc "Patch objects not allowed in intersection.";
+            members (V.Member_obj o :: acc)
         | _ -> List.rev acc
       in
       let ms = nest st loc (fun () -> members []) in

@@ -128,7 +128,7 @@ let keywords =
     "parallel"; "point_at"; "radius"; "tightness"; "orthographic"; "looks_like"; "cylinder"; "cone"; "disc";
     "open"; "torus"; "union"; "merge"; "intersection"; "difference"; "inverse"; "split_union"; "clipped_by"; "text"; "ttf"; "polygon"; "quadric";
     "quartic"; "poly"; "polynomial";
-    "blob"; "height_field"; "superellipsoid"; "ovus"; "sphere_sweep"; "prism"; "lathe"; "sor"; "julia_fractal"; "reciprocal"; "bicubic_patch";
+    "blob"; "height_field"; "superellipsoid"; "ovus"; "sphere_sweep"; "prism"; "lathe"; "sor"; "julia_fractal"; "reciprocal"; "bicubic_patch"; "parametric";
     "material"; "texture_map"; "interior_texture"; "tiles"; "irid"; "uv_mapping"; "crand"; "image_map"; "bump_map"; "image_pattern"; "caustics"; "cutaway_textures"; "pigment_pattern";
     "bounded_by"; "trace"; "inside"; "min_extent"; "max_extent" ]
   (* pigment patterns (POVRAY-3.7 §17) *)
@@ -156,7 +156,7 @@ let keywords =
 (* POV-Ray keywords that a later povml will read; meeting one is a located "not supported yet". *)
 let unsupported =
   [ "isosurface";
-    "parametric"; "rotate"; "scale"; "matrix"; "transform";
+    "rotate"; "scale"; "matrix"; "transform";
     "area_light";
     "projected_through"; "fisheye"; "panoramic"; "ultra_wide_angle"; "omnimax";
     "radiosity"; "photons";

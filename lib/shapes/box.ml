@@ -12,10 +12,8 @@ let make (lo : Vec.t) (hi : Vec.t) = { x0 = lo.x; y0 = lo.y; z0 = lo.z; x1 = hi.
    it, unless the ray is steeper towards the new side. Sides are 1–6 (0: none yet). Whether the
    box is hit (the far crossing beyond the near limit); the crossings and their sides are left in
    [w.slab], [w.side_near] and [w.side_far]. The near crossing counts beyond the near limit, the
-   far one always. *)
-let slabs (w : Scratch.t) (b : t) px py pz vx vy vz =
-  let stats = w.stats in
-  stats.box_tests <- stats.box_tests + 1;
+   far one always. Box::Intersect itself counts nothing: [slabs] counts a box test. *)
+let crossed (w : Scratch.t) (b : t) px py pz vx vy vz =
   let box_close = w.lim.close in
   let tmin = ref 0. and tmax = ref 2e10 and smin = ref 0 and smax = ref 0 and miss = ref false in
   if vx < -.epsilon || vx > epsilon then begin
@@ -69,6 +67,10 @@ let slabs (w : Scratch.t) (b : t) px py pz vx vy vz =
   w.side_near <- !smin;
   w.side_far <- !smax;
   not (!miss || !tmax < w.lim.near)
+
+let slabs (w : Scratch.t) b px py pz vx vy vz =
+  w.stats.box_tests <- w.stats.box_tests + 1;
+  crossed w b px py pz vx vy vz
 
 let depth_along (w : Scratch.t) b px py pz vx vy vz lo =
   if not (slabs w b px py pz vx vy vz) then infinity

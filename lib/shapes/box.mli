@@ -24,6 +24,13 @@ val hits : Scratch.t -> t -> int -> Vec.t -> Vec.t -> float -> int -> int
 val moved_hits : Scratch.t -> moved -> int -> Vec.t -> Vec.t -> float -> int -> int
 (** [moved_hits] is [hits] through the transform. *)
 
+val crossed : Scratch.t -> t -> float -> float -> float -> float -> float -> float -> bool
+(** [crossed w b px py pz vx vy vz] is Box::Intersect of the ray from (px, py, pz) along (vx, vy,
+    vz) (in the box's space, not renormalised): whether it meets the box with its far crossing
+    beyond the near limit, the crossings left in [w.slab] (the near one 0 when the ray starts
+    inside), the sides in [w.side_near] and [w.side_far]. It counts nothing (the containers of
+    other shapes use it). *)
+
 val side_normal : int -> Vec.t
 (** [side_normal side] is the outward axis of the side (1–6). *)
 

@@ -38,6 +38,7 @@ let compile (s : Scene.shape) =
   | Lathe l -> Some (Lathe l)
   | Sor s -> Some (Sor s)
   | Julia f -> Some (Julia f)
+  | Parametric m -> Some (Parametric m)
   | Bicubic { patch_type; u_steps; v_steps; flatness; points; uv_vectors } ->
       Some (Bicubic (Bezier.make ~patch_type ~u_steps ~v_steps ~flatness ~st:uv_vectors points))
   | Poly p -> Some (Poly p)
@@ -72,6 +73,7 @@ let rec depth w shape o d lo =
   | Lathe l -> Lathe.depth w l o d lo
   | Sor s -> Sor.depth w s o d lo
   | Julia f -> Julia.depth w f o d lo
+  | Parametric m -> Parametric.depth w m o d lo
   | Bicubic b -> Bezier.depth w b o d lo
   | Poly p -> Poly.depth w p o d lo
 
@@ -102,6 +104,7 @@ and all_hits w ob o d lo n =
   | Lathe l -> Lathe.hits w l id o d lo n
   | Sor s -> Sor.hits w s id o d lo n
   | Julia f -> Julia.hits w f id o d lo n
+  | Parametric m -> Parametric.hits w m id o d lo n
   | Bicubic b -> Bezier.hits w b id o d lo n
   | Poly p -> Poly.hits w p id o d lo n
 
@@ -131,7 +134,7 @@ and inside stack shape p =
   | Lathe l -> Lathe.inside l p
   | Sor s -> Sor.inside s p
   | Julia f -> Julia.inside stack f p
-  | Bicubic _ -> false
+  | Bicubic _ | Parametric _ -> false (* Parametric::Inside is always false *)
   | Poly pl -> Poly.inside pl p
 
 and inside_member stack (m : obj) p =
@@ -147,7 +150,7 @@ and inside_member stack (m : obj) p =
       (* Fractal::Invert toggles the fractal's own flag, which its Inside holds *)
       inside stack m.shape p
   | Sphere _ | Sphere_placed _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _
-  | Disc _ | Torus _ | Glyph _ | Polygon _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Prism _ | Lathe _ | Sor _ | Bicubic _ ->
+  | Disc _ | Torus _ | Glyph _ | Polygon _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Prism _ | Lathe _ | Sor _ | Bicubic _ | Parametric _ ->
       inside stack m.shape p <> m.inverted
 
 (* Spheres, ellipsoids, boxes, planes, triangles and polys answer every box test of POV-Ray's
@@ -156,7 +159,7 @@ let rec box_test_free = function
   | Sphere _ | Sphere_placed _ | Ellipsoid _ | Box _ | Box_trans _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Poly _ -> true
   | Csg { kind = Clipped | Bounded | Boxed; members; _ } when Array.length members > 0 -> box_test_free members.(0).shape
   | Csg _ | Mesh _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _
-  | Prism _ | Lathe _ | Sor _ | Julia _ | Bicubic _ ->
+  | Prism _ | Lathe _ | Sor _ | Julia _ | Bicubic _ | Parametric _ ->
       false
 
 let cached_depth w shape o d lo =
@@ -193,7 +196,7 @@ let normal obj part p =
   | Lathe l -> Lathe.normal l part p
   | Sor s -> Sor.normal s part p
   | Julia f -> Julia.normal f p
-  | Bicubic _ -> Vec.make 1. 0. 0. (* its normal is the crossing's: hit_normal *)
+  | Bicubic _ | Parametric _ -> Vec.make 1. 0. 0. (* its normal is the crossing's: hit_normal *)
   | Poly pl -> Poly.normal pl p
 
 let geometric_normal obj part p =
@@ -201,13 +204,14 @@ let geometric_normal obj part p =
   | Smooth_triangle t -> Triangle.flat_normal t
   | Mesh m -> Mesh.placed_face_normal m part
   | Sphere _ | Sphere_placed _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _
-  | Quadric _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Csg _ | Prism _ | Lathe _ | Sor _ | Julia _ | Bicubic _ ->
+  | Quadric _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Csg _ | Prism _ | Lathe _ | Sor _ | Julia _ | Bicubic _ | Parametric _ ->
       normal obj part p
 
 let hit_normal (w : Scratch.t) obj part p =
   match obj.shape with
   | Julia f -> Julia.hit_normal w f p
   | Bicubic _ -> Bezier.hit_normal w p
+  | Parametric m -> Parametric.hit_normal w m p
   | Sphere _ | Sphere_placed _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _
   | Torus _ | Glyph _ | Polygon _ | Quadric _ | Csg _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Prism _ | Lathe _ | Sor _ ->
       normal obj part p
@@ -217,7 +221,7 @@ let hit_point w obj o depth d =
   | Poly pl -> Poly.hit_point w pl o d depth
   | Julia _ -> Julia.point w depth (Vec.madd o depth d)
   | Sphere _ | Sphere_placed _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _
-  | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Prism _ | Lathe _ | Sor _ | Bicubic _ | Csg _ ->
+  | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Prism _ | Lathe _ | Sor _ | Bicubic _ | Parametric _ | Csg _ ->
       Vec.madd o depth d
 
 let refine obj p =
@@ -225,7 +229,7 @@ let refine obj p =
   | Sphere s | Sphere_placed { ps = s; _ } -> Sphere.refine s p
   | Ellipsoid e -> Sphere.ellipsoid_refine e p
   | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _
-  | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Julia _ | Bicubic _ | Csg _ | Prism _ | Lathe _ | Sor _ ->
+  | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Julia _ | Bicubic _ | Parametric _ | Csg _ | Prism _ | Lathe _ | Sor _ ->
       p
 
 (* Every shape's UVCoord in POV-Ray 3.7: spheres, boxes, tori and meshes have their own; every
@@ -234,6 +238,7 @@ let refine obj p =
 let uv w obj part (p : Vec.t) =
   match obj.shape with
   | Bicubic _ -> Bezier.uv w p
+  | Parametric _ -> Parametric.uv w p
   | Sphere s -> Sphere.uv s p
   | Sphere_placed s -> Sphere.placed_uv s p
   | Ellipsoid e -> Sphere.ellipsoid_uv e p
@@ -272,6 +277,7 @@ let rec bounds = function
   | Lathe l -> Some (Lathe.bounds l)
   | Sor s -> Some (Sor.bounds s)
   | Julia f -> Some (Julia.bounds f)
+  | Parametric m -> Some (Parametric.bounds m)
   | Bicubic b -> Some (Bezier.bounds b)
   | Poly _ -> None (* POV-Ray's BOUND_HUGE box: an infinite object *)
 
@@ -285,7 +291,7 @@ let magnitude shape =
   | _, Polygon p -> Polygon.magnitude p
   | _, Quadric q -> Quadric.magnitude q
   | None, Poly _ -> 0.
-  | None, (Sphere _ | Sphere_placed _ | Ellipsoid _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Prism _ | Lathe _ | Sor _ | Julia _ | Bicubic _) -> 0.
+  | None, (Sphere _ | Sphere_placed _ | Ellipsoid _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Prism _ | Lathe _ | Sor _ | Julia _ | Parametric _ | Bicubic _) -> 0.
 
 let rec pov_box shape =
   match shape with
@@ -311,29 +317,30 @@ let rec pov_box shape =
   | Lathe l -> Lathe.pov_box l
   | Sor s -> Sor.pov_box s
   | Julia f -> Julia.pov_box f
+  | Parametric m -> Parametric.pov_box m
   | Bicubic b -> Bezier.pov_box b
   | Poly _ -> [||]
   | Csg c -> Csg.pov_box ~bounds ~pov_box c
 
 let costly = function
-  | Ellipsoid _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Prism _ | Lathe _ | Sor _ | Julia _ | Bicubic _ -> true
+  | Ellipsoid _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Prism _ | Lathe _ | Sor _ | Julia _ | Bicubic _ | Parametric _ -> true
   | Sphere _ | Sphere_placed _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Csg _ -> false
 
 let as_sphere = function
   | Sphere s | Sphere_placed { ps = s; _ } -> Some s
   | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _
-  | Quadric _ | Julia _ | Bicubic _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Csg _ | Prism _ | Lathe _ | Sor _ ->
+  | Quadric _ | Julia _ | Bicubic _ | Parametric _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Csg _ | Prism _ | Lathe _ | Sor _ ->
       None
 
 let face_texture obj part =
   match obj.shape with
   | Mesh m when part >= 0 -> Mesh.texture m.mesh part
   | Sphere _ | Sphere_placed _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _
-  | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Julia _ | Bicubic _ | Csg _ | Prism _ | Lathe _ | Sor _ ->
+  | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Julia _ | Bicubic _ | Parametric _ | Csg _ | Prism _ | Lathe _ | Sor _ ->
       -1
 
 let stats_rows s =
   List.concat
-    [ Blob.stats_rows s; Bezier.stats_rows s; Box.stats_rows s; Cone.stats_rows s; Disc.stats_rows s; Csg.stats_rows s; Hfield.stats_rows s; Lathe.stats_rows s; Julia.stats_rows s; Plane.stats_rows s; Polygon.stats_rows s; Prism.stats_rows s; Quadric.stats_rows s; Poly.stats_rows s;
+    [ Blob.stats_rows s; Bezier.stats_rows s; Box.stats_rows s; Cone.stats_rows s; Disc.stats_rows s; Csg.stats_rows s; Hfield.stats_rows s; Lathe.stats_rows s; Julia.stats_rows s; Plane.stats_rows s; Polygon.stats_rows s; Prism.stats_rows s; Parametric.stats_rows s; Quadric.stats_rows s; Poly.stats_rows s;
       Triangle.stats_rows s;
       Mesh.stats_rows s; Ovus.stats_rows s; Sphere.stats_rows s; Sphere_sweep.stats_rows s; Superellipsoid.stats_rows s; Sor.stats_rows s; Torus.stats_rows s; Glyph.stats_rows s; Csg.bound_rows s ]

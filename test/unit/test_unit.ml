@@ -32,6 +32,7 @@ let () =
       ("Spline values (spline { })", Test_spline_values.tests);
       ("Julia fractal", Test_julia.tests);
       ("Bicubic patch", Test_bezier.tests);
+      ("Parametric surface", Test_parametric.tests);
       ("Poly (poly, cubic, quartic)", Test_poly.tests);
       ("UV coordinates and uv_mapping", Test_uv.tests);
       ("Sphere normal", Test_sphere_normal.tests);
