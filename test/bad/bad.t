@@ -195,13 +195,14 @@ include files; povml at 64, --max-include-depth):
   [exit 3, no image]
 
 Loops and macros that never end stop at a limit, located at the loop or the call: 10,000,000 loop
-iterations (all loops together, --max-iterations; this loop takes about 3 s), 10,000 nested macro
-calls (--max-macro-depth; POV-Ray stops at 98), 3,000,000 macro calls (--max-macro-calls; a macro
-calling itself twice 64 deep would make 2^65 calls — here the limit is lowered to 1,000,000 to keep
-the test short: the default takes about 9 s on the 2-core test machine).
+iterations (all loops together, --max-iterations), 10,000 nested macro calls (--max-macro-depth;
+POV-Ray stops at 98), 3,000,000 macro calls (--max-macro-calls; a macro calling itself twice 64 deep
+would make 2^65 calls). Here the loop and call limits are lowered to 1,000,000 and 300,000 to keep
+the tests short and far from run.sh's 10 s timeout on a busy machine: at the defaults the empty loop
+takes about 5 s and the doubling macro about 11 s on the 2-core test machine.
 
-  $ sh run.sh infinite_while.pov
-  infinite_while.pov:5:1: error: the scene's loops have run 10,000,000 times, povml's limit (does this loop never end? raise the limit with --max-iterations N)
+  $ sh run.sh infinite_while.pov --max-iterations 1000000
+  infinite_while.pov:5:1: error: the scene's loops have run 1,000,000 times, povml's limit (does this loop never end? raise the limit with --max-iterations N)
       5 | #while (true)
         | ^
   [exit 3, no image]
@@ -218,16 +219,16 @@ the test short: the default takes about 9 s on the 2-core test machine).
   recursive_macro.pov:5:19: note: in macro 'Forever' called from here
   recursive_macro.pov:6:1: note: in macro 'Forever' called from here
   [exit 3, no image]
-  $ sh run.sh exponential_macro.pov --max-macro-calls 1000000
-  exponential_macro.pov:5:29: error: the scene has called macros 1,000,000 times, povml's limit (raise it with --max-macro-calls N)
+  $ sh run.sh exponential_macro.pov --max-macro-calls 300000
+  exponential_macro.pov:5:29: error: the scene has called macros 300,000 times, povml's limit (raise it with --max-macro-calls N)
       5 | #macro Twice(N) #if (N > 0) Twice(N - 1) Twice(N - 1) #end #end
         |                             ^
+  exponential_macro.pov:5:29: note: in macro 'Twice' called from here
   exponential_macro.pov:5:42: note: in macro 'Twice' called from here
   exponential_macro.pov:5:29: note: in macro 'Twice' called from here
+  exponential_macro.pov:5:42: note: in macro 'Twice' called from here
   exponential_macro.pov:5:29: note: in macro 'Twice' called from here
-  exponential_macro.pov:5:29: note: in macro 'Twice' called from here
-  exponential_macro.pov:5:29: note: in macro 'Twice' called from here
-  note: … 56 more calls and includes …
+  note: … 57 more calls and includes …
   exponential_macro.pov:5:29: note: in macro 'Twice' called from here
   exponential_macro.pov:6:1: note: in macro 'Twice' called from here
   [exit 3, no image]
