@@ -81,6 +81,7 @@ let print_stats (r : Pipeline.result) (o : Render.options) =
   Printf.eprintf "%s\n" line;
   if s.roots_tested > 0 then
     Printf.eprintf "Roots tested:%22d   eliminated:%21d\n" s.roots_tested s.roots_eliminated;
+  if s.iso_roots > 0 then Printf.eprintf "Isosurface roots:          %11d\n" s.iso_roots;
   Printf.eprintf "Camera Rays:               %11d\n" s.camera_rays;
   Printf.eprintf "Shadow Ray Tests:          %11d\n" s.shadow_rays;
   Printf.eprintf "Reflected Rays:            %11d\n" s.reflected_rays;

@@ -106,6 +106,7 @@ type shape =
   | Prism of Prism.t  (** prism.cpp: through its transform *)
   | Lathe of Lathe.t  (** lathe.cpp: through its transform *)
   | Sor of Sor.t  (** sor.cpp: through its transform *)
+  | Isosurface of Isosurface.compiled  (** isosurf.cpp: searched in its own space, with the worker's cache *)
   | Julia of Julia.t  (** fractal.cpp: the ray taken into fractal space, its direction renormalised *)
   | Parametric of Parametric.t  (** fpmetric.cpp: the ray taken into parametric space, not renormalised *)
   | Bicubic of Bezier.t  (** bezier.cpp: in world space, type 1 with its tree of bounding spheres *)

@@ -18,11 +18,11 @@ type t = {
 
 let shadow_cache (scene : Compiled.t) = Array.make (2 * max 1 (Array.length scene.lights)) (-1)
 
-let make ?(robust = false) ?shadow_cache:cache (scene : Compiled.t) stats =
+let make ?(robust = false) ?shadow_cache:cache ?iso (scene : Compiled.t) stats =
   {
     scene;
     stats;
-    shapes = Scratch.create ~robust stats;
+    shapes = Scratch.create ~robust ?iso stats;
     stack = Array.make 512 0.;
     min_depth = (if robust then 0. else Precision.min_isect_depth);
     robust;

@@ -34,10 +34,11 @@ val shadow_cache : Compiled.t -> int array
 (** [shadow_cache scene] is an empty shadow cache for [scene] (as at the start of a POV-Ray render
     thread). *)
 
-val make : ?robust:bool -> ?shadow_cache:int array -> Compiled.t -> Stats.t -> t
-(** [make ?robust ?shadow_cache scene stats] is a context for one render worker, with the shadow
-    cache [shadow_cache] (default a new empty one), which it updates; [robust] (default false)
-    selects the robust mode's limits instead of POV-Ray's. The render loop makes one per block. *)
+val make : ?robust:bool -> ?shadow_cache:int array -> ?iso:Scratch.iso_room -> Compiled.t -> Stats.t -> t
+(** [make ?robust ?shadow_cache ?iso scene stats] is a context for one render worker, with the shadow
+    cache [shadow_cache] and the isosurfaces' state [iso] (default new empty ones), which it
+    updates; [robust] (default false) selects the robust mode's limits instead of POV-Ray's.
+    The render loop makes one per block. *)
 
 val cache_slot : level:int -> int -> int
 (** [cache_slot ~level k] is light [k]'s shadow-cache slot for the shadow tests made while

@@ -42,7 +42,7 @@ let rec shape (s : Scene.shape) : Compiled.shape option =
         List.filter_map (fun (m : Scene.member) -> Option.map (member ~inverted:m.inverted) (shape m.mobj.shape)) members
       in
       Some (Csg { kind; members = Array.of_list members; cbox = [||] })
-  | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Polygon _ | Quadric _ | Poly _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Glyph _ | Blob _ | Height_field _ | Prism _ | Lathe _ | Sor _ | Julia _ | Parametric _ | Bicubic _ ->
+  | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Polygon _ | Quadric _ | Poly _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Glyph _ | Blob _ | Height_field _ | Prism _ | Lathe _ | Sor _ | Julia _ | Isosurface _ | Parametric _ | Bicubic _ ->
       Shape.compile s
 
 let of_object (o : Scene.obj) =

@@ -12,6 +12,16 @@ type result = {
   render_seconds : float;
 }
 
+(* DispatchShutdownMessages: POV-Ray's word on the max_gradient of each top-level isosurface that
+   is not a copy, at its function *)
+let shutdown_warnings (scene : Scene.t) stats =
+  List.filter_map
+    (fun (o : Scene.obj) ->
+      match o.shape with
+      | Isosurface s when not s.copy -> Option.map (Error.warning s.fn.floc) (Isosurface.warning s stats)
+      | _ -> None)
+    scene.objects
+
 let run ?interp ?move (opts : Render.options) path =
   let t0 = Unix.gettimeofday () in
   let iopts = match interp with Some i -> i | None -> Interp.default_options ~width:opts.width ~height:opts.height in
@@ -25,4 +35,5 @@ let run ?interp ?move (opts : Render.options) path =
   let img, stats = Render.render opts compiled scene.gamma in
   let image = Encode.image scene.gamma img in
   let t3 = Unix.gettimeofday () in
+  let warnings = warnings @ shutdown_warnings scene stats in
   { image; raw = img; stats; warnings; scene; includes = List.rev !includes; parse_seconds = t1 -. t0; build_seconds = t2 -. t1; render_seconds = t3 -. t2 }

@@ -273,11 +273,13 @@ let render opts (sc : Compiled.t) (gamma : Scene.gamma) : Image.t * Stats.t =
   (* One worker renders the blocks in order as POV-Ray's one render thread does, whose shadow
      cache carries from block to block. With more workers (POV-Ray's threads take blocks as they
      come, so which cache a block starts with varies from run to run) every block starts with an
-     empty cache, so that the image does not depend on which worker renders which block. *)
+     empty cache, so that the image does not depend on which worker renders which block. The
+     isosurfaces' cache of the last missed root search is carried the same way. *)
   let carried = if workers = 1 then Some (Context.shadow_cache sc) else None in
+  let carried_iso = if workers = 1 then Some (Scratch.iso_room ()) else None in
   let work (i, b) =
     let stats = Stats.create () in
-    let ctx = Trace.make_ctx ~robust:opts.robust ?shadow_cache:carried sc stats in
+    let ctx = Trace.make_ctx ~robust:opts.robust ?shadow_cache:carried ?iso:carried_iso sc stats in
     let px = render_block ctx opts enc b in
     (* blocks finish in about this order whichever worker renders them *)
     if opts.progress then Printf.eprintf "\rRendering block %d of %d %!" (i + 1) total;

@@ -175,7 +175,7 @@ let rec walk ctx ~slot (p : Vec.t) (lp : Vec.t) lo first (o : Vec.t) (l : Vec.t)
         let l, remaining = aim lp next in
         walk ctx ~slot p lp lo false next l remaining interiors lc
 
-let feeler ctx ~slot (p : Vec.t) (ng : Vec.t) e (l : Vec.t) dist interiors (lc : Rgb.t) : Rgb.t =
+let feeler_ray ctx ~slot (p : Vec.t) (ng : Vec.t) e (l : Vec.t) dist interiors (lc : Rgb.t) : Rgb.t =
   let sc = ctx.scene in
   ctx.stats.shadow_rays <- ctx.stats.shadow_rays + 1;
   (* a light at an infinite distance (a coordinate beyond the float range) has no direction: a
@@ -206,8 +206,15 @@ let feeler ctx ~slot (p : Vec.t) (ng : Vec.t) e (l : Vec.t) dist interiors (lc :
           &&
           let shape = sc.objects.(cached).shape in
           (if ctx.robust then Shape.depth ctx.shapes shape o l lo < dist -. robust_margin p lp dist
-           else Shape.cached_depth ctx.shapes shape p l Precision.min_isect_depth < dist)
+           else Shape.cached_depth ctx.shapes shape p l Precision.min_isect_depth dist < dist)
           (* a cached CSG shadows only if the member hit is opaque *)
           && ((not (Csg.is_csg shape)) || sc.objects.(ctx.shapes.leaf).opaque)
         in
         if in_cache then Rgb.black else walk ctx ~slot p lp lo true o l dist interiors lc
+
+(* the shapes know the rays they meet here for shadow rays (an isosurface leaves no cache for them) *)
+let feeler ctx ~slot p ng e l dist interiors lc =
+  ctx.shapes.shadow_test <- true;
+  let c = feeler_ray ctx ~slot p ng e l dist interiors lc in
+  ctx.shapes.shadow_test <- false;
+  c

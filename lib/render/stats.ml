@@ -83,7 +83,17 @@ type t = {
   mutable parametric_hits : int;
   mutable parametric_bound_tests : int;
   mutable parametric_bound_hits : int;
+  mutable iso_tests : int;
+  mutable iso_hits : int;
+  mutable iso_bound_tests : int;
+  mutable iso_bound_hits : int;
+  mutable iso_cache_tests : int;
+  mutable iso_cache_hits : int;
+  mutable iso_roots : int;
+  mutable iso_found : float array;
 }
+
+let iso_width = 5
 
 let create () =
   {
@@ -103,7 +113,27 @@ let create () =
     fractal_tests = 0; fractal_hits = 0; bicubic_tests = 0; bicubic_hits = 0;
     poly_tests = 0; poly_hits = 0;
     parametric_tests = 0; parametric_hits = 0; parametric_bound_tests = 0; parametric_bound_hits = 0;
+    iso_tests = 0; iso_hits = 0; iso_bound_tests = 0; iso_bound_hits = 0; iso_cache_tests = 0; iso_cache_hits = 0; iso_roots = 0;
+    iso_found = [||];
   }
+
+(* the room of isosurface [key], the array grown (with zeros) when it is too short *)
+let iso_slot s key =
+  let need = (key + 1) * iso_width in
+  if Array.length s.iso_found < need then begin
+    let a = Array.make (max need (2 * Array.length s.iso_found)) 0. in
+    Array.blit s.iso_found 0 a 0 (Array.length s.iso_found);
+    s.iso_found <- a
+  end;
+  key * iso_width
+
+(* the per-isosurface values of two workers: largest gradients and variation, summed counts *)
+let merge_found a b =
+  let n = max (Array.length a) (Array.length b) in
+  let get x i = if i < Array.length x then x.(i) else 0. in
+  Array.init n (fun i ->
+      let x = get a i and y = get b i in
+      match i mod iso_width with 2 | 3 -> x +. y | _ -> if x < y then y else x)
 
 let merge a b =
   {
@@ -189,6 +219,14 @@ let merge a b =
     parametric_hits = a.parametric_hits + b.parametric_hits;
     parametric_bound_tests = a.parametric_bound_tests + b.parametric_bound_tests;
     parametric_bound_hits = a.parametric_bound_hits + b.parametric_bound_hits;
+    iso_tests = a.iso_tests + b.iso_tests;
+    iso_hits = a.iso_hits + b.iso_hits;
+    iso_bound_tests = a.iso_bound_tests + b.iso_bound_tests;
+    iso_bound_hits = a.iso_bound_hits + b.iso_bound_hits;
+    iso_cache_tests = a.iso_cache_tests + b.iso_cache_tests;
+    iso_cache_hits = a.iso_cache_hits + b.iso_cache_hits;
+    iso_roots = a.iso_roots + b.iso_roots;
+    iso_found = merge_found a.iso_found b.iso_found;
   }
 
 type row = { name : string; tests : int; hits : int }

@@ -83,13 +83,33 @@ type t = {
   mutable parametric_hits : int;  (** searches that found a crossing before the container's far side *)
   mutable parametric_bound_tests : int;  (** containers tested (POV-Ray's "Parametric Bound") *)
   mutable parametric_bound_hits : int;  (** of which the ray met the container *)
+  mutable iso_tests : int;  (** isosurfaces searched: the ray crossed their container by at least the accuracy *)
+  mutable iso_hits : int;  (** of which the search kept a crossing *)
+  mutable iso_bound_tests : int;  (** isosurfaces tested (their container first: POV-Ray's "Isosurface Container") *)
+  mutable iso_bound_hits : int;  (** of which the ray crossed the container *)
+  mutable iso_cache_tests : int;  (** root searches that asked the cache of the last missed segment *)
+  mutable iso_cache_hits : int;  (** of which the cache answered "no root" *)
+  mutable iso_roots : int;  (** root searches (POV-Ray's "Isosurface roots") *)
+  mutable iso_found : float array;
+      (** what the searches found, [iso_width] floats per isosurface ({!iso_slot}): the largest
+          gradient met (IsoSurface::gradient), then what [evaluate] found (ISO_Max_Gradient):
+          the largest max_gradient it used, the searches that found a root, the sum of the
+          max_gradient they ended with, the largest change of max_gradient in one search *)
 }
+
+val iso_width : int
+(** [iso_width] is 5, the floats per isosurface in [iso_found]. *)
+
+val iso_slot : t -> int -> int
+(** [iso_slot s key] is where the values of the isosurface numbered [key] start in
+    [s.iso_found], which it grows first if needed (new values are 0). *)
 
 val create : unit -> t
 (** [create ()] is a fresh record with every counter at 0. *)
 
 val merge : t -> t -> t
-(** [merge a b] is a new record with the counters of [a] and [b] added (max_level: the larger). *)
+(** [merge a b] is a new record with the counters of [a] and [b] added (max_level: the larger;
+    in [iso_found] the counts and sums added, the others the larger). *)
 
 type row = { name : string; tests : int; hits : int }
 (** One line of the "Ray->Shape Intersection" table: a shape's name as POV-Ray prints it, its

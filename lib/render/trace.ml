@@ -20,9 +20,9 @@ type nonrec ctx = Context.t
 
 (* A context for one block. POV-Ray's facets cache belongs to a render thread, and a block is
    rendered as by a fresh thread: the scene's cache is emptied first. *)
-let make_ctx ?robust ?shadow_cache (sc : Compiled.t) stats =
+let make_ctx ?robust ?shadow_cache ?iso (sc : Compiled.t) stats =
   Normals.reset_facets sc.facets;
-  Context.make ?robust ?shadow_cache sc stats
+  Context.make ?robust ?shadow_cache ?iso sc stats
 
 let black = Traced.black
 

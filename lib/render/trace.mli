@@ -7,8 +7,8 @@ type result = Traced.t = { r : float; g : float; b : float; tr : float }
 type nonrec ctx = Context.t
 (** What a trace reads and writes: one render worker's context. *)
 
-val make_ctx : ?robust:bool -> ?shadow_cache:int array -> Compiled.t -> Stats.t -> ctx
-(** [make_ctx ?robust ?shadow_cache scene stats] is [Context.make]: a context for one block of one
+val make_ctx : ?robust:bool -> ?shadow_cache:int array -> ?iso:Scratch.iso_room -> Compiled.t -> Stats.t -> ctx
+(** [make_ctx ?robust ?shadow_cache ?iso scene stats] is [Context.make]: a context for one block of one
     render worker, with the scene's facets cache emptied (POV-Ray keeps it per render thread). *)
 
 val black : result

@@ -314,6 +314,17 @@ let rec shape = function
       in
       Printf.sprintf "bicubic_patch { type %d flatness %s u_steps %d v_steps %d %s%s" patch_type (num flatness) u_steps v_steps uvs
         (String.concat ", " (Array.to_list (Array.map vec points)))
+  | Isosurface i ->
+      let container =
+        match i.container with
+        | Box_container { lo; hi } -> Printf.sprintf "box { %s, %s }" (vec lo) (vec hi)
+        | Sphere_container { centre; radius } -> Printf.sprintf "sphere { %s, %s }" (vec centre) (num radius)
+      in
+      let evaluate = match i.evaluate with None -> "" | Some e -> Printf.sprintf " evaluate %s, %s, %s" (num e.p0) (num e.p1) (num e.p2) in
+      Printf.sprintf "isosurface { function { … } // written at line %d\n  contained_by { %s } threshold %s accuracy %s max_gradient %s%s max_trace %d%s%s%s"
+        i.fn.floc.Loc.line container (num i.threshold) (num i.accuracy) (num i.max_gradient) evaluate i.max_trace
+        (if i.closed then "" else " open") (if i.copy then " // a copy" else "")
+        (trans (if Transform.is_identity i.trans then None else Some i.trans))
   | Julia f ->
       let alg = match f.algebra with Quaternion -> "quaternion" | Hypercomplex -> "hypercomplex" in
       let fn =

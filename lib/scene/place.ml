@@ -192,6 +192,9 @@ let rec shape (s : Scene.shape) op : Scene.shape =
         | Rotate _ | Transform _ -> Transform.point (op_transform op) q
       in
       Bicubic { b with points = Array.map mv b.points }
+  | Isosurface i ->
+      (* IsoSurface::Translate/Rotate/Scale all call Transform: composed into its Trans *)
+      Isosurface (Isosurface.transform i (op_transform op))
   | Julia f ->
       (* Fractal::Translate/Rotate/Scale all call Transform: composed into its Trans, and its
          Compute_BBox clears the inverted flag *)
@@ -215,13 +218,13 @@ let scene ~scale ~translate (s : Scene.t) : Scene.t =
     let scaling =
       match o.shape with
       | Smooth_triangle _ -> Transform (Transform.scale sv)
-      | Sphere _ | Plane _ | Triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Csg _ | Glyph _ | Polygon _ | Quadric _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Prism _ | Lathe _ | Sor _ | Julia _ | Parametric _ | Bicubic _ -> Scale sv
+      | Sphere _ | Plane _ | Triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Csg _ | Glyph _ | Polygon _ | Quadric _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Prism _ | Lathe _ | Sor _ | Julia _ | Isosurface _ | Parametric _ | Bicubic _ -> Scale sv
     in
     let sh =
       match o.shape with
       | Csg { kind; members; box } ->
           Scene.Csg { kind; members = List.map (fun (m : Scene.member) -> { m with mobj = obj m.mobj }) members; box = csg_box (csg_box box (Scale sv)) (Translate translate) }
-      | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Prism _ | Lathe _ | Sor _ | Julia _ | Parametric _ | Bicubic _ ->
+      | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Prism _ | Lathe _ | Sor _ | Julia _ | Isosurface _ | Parametric _ | Bicubic _ ->
           shape (shape o.shape scaling) (Translate translate)
     in
     let texture = texture (texture o.texture (Scale sv)) (Translate translate) in

@@ -381,6 +381,9 @@ type shape =
           modifier composes into it) *)
   | Lathe of Lathe.t  (** lathe.cpp: the rotated spline's segments, placed by its transform *)
   | Sor of Sor.t  (** sor.cpp: the cubic segments of radius², placed by its transform *)
+  | Isosurface of Isosurface.t
+      (** isosurf.cpp: the function's level set within its container, placed by its transform
+          (every modifier composes into it); [inverse] is CSG's (docs/isosurface.md) *)
   | Julia of Julia.t
       (** fractal.cpp: in fractal space, placed by its own transform (every modifier composes
           into it and clears the fractal's own inverted flag); [inverse] toggles that flag *)

@@ -14,6 +14,7 @@ let rec invert (o : V.obj) : V.obj =
   | Prim (Superellipsoid _ | Ovus _ | Sphere_sweep _) -> { o with inverted = not o.inverted }
   | Prim (Prism _ | Lathe _ | Sor _) -> { o with inverted = not o.inverted } (* Invert_Flag of INVERTED_FLAG *)
   | Prim (Poly _) -> { o with inverted = not o.inverted } (* Poly::Invert toggles its flag *)
+  | Prim (Isosurface _) -> { o with inverted = not o.inverted } (* IsoSurface::Invert: Invert_Flag of INVERTED_FLAG *)
   | Prim (Polygon _) -> o (* Polygon::Invert does nothing, not even the flag *)
   | Prim (Bicubic _) -> o (* BicubicPatch::Invert does nothing *)
   | Prim (Parametric _) -> o (* Parametric::Invert does nothing *)

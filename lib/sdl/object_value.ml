@@ -76,6 +76,18 @@ let rec set_double_illuminate b (o : V.obj) =
    stands *)
 let is_poly (o : V.obj) = match o.shape with Prim (Poly _) -> true | Prim _ | Csg _ -> false
 
+(* IsoSurface::Copy marks the copy (its max_gradient is never reported); a CSG's copy copies its
+   members *)
+let rec copied (o : V.obj) : V.obj =
+  let rec scene_shape : Scene.shape -> Scene.shape = function
+    | Isosurface s -> Isosurface (Isosurface.mark_copy s)
+    | Csg c -> Csg { c with members = List.map (fun (m : Scene.member) -> { m with mobj = { m.mobj with shape = scene_shape m.mobj.shape } }) c.members }
+    | s -> s
+  in
+  match o.shape with
+  | Prim s -> { o with shape = Prim (scene_shape s) }
+  | Csg c -> { o with shape = Csg { c with members = List.map (function V.Member_obj m -> V.Member_obj (copied m) | V.Member_light _ as l -> l) c.members } }
+
 let set_poly_sturm on (o : V.obj) =
   match o.shape with Prim (Poly p) -> { o with shape = Prim (Poly { p with sturm = on }) } | Prim _ | Csg _ -> o
 

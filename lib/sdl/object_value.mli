@@ -23,6 +23,10 @@ val set_double_illuminate : bool -> Value.obj -> Value.obj
 (** [set_double_illuminate b o] is [o] with double_illuminate [b] on itself and every member at
     any depth (§16.5). *)
 
+val copied : Value.obj -> Value.obj
+(** [copied o] is [o] as POV-Ray's Copy_Object leaves it, for an object made from an identifier:
+    its isosurfaces, members' included, marked as copies. *)
+
 val is_poly : Value.obj -> bool
 (** [is_poly o] holds when [o] is a poly, cubic or quartic, which take [sturm] too. *)
 

@@ -10,14 +10,14 @@ open Csg_build
 
 (* Objects povml does not render yet: inside a union they are reported as "not supported yet". *)
 let unsupported_objects =
-  [ "isosurface"; "composite" ]
+  [ "composite" ]
 
 let show_vec (v : Vec.t) = Printf.sprintf "<%g, %g, %g>" v.x v.y v.z
 
 (* Values povml cannot make yet; a declaration of one is kept as [V.Unsupported]. *)
 let unsupported_rvalues =
   [ "normal_map"; "slope_map";
-    "media"; "density"; "fog"; "rainbow"; "isosurface" ]
+    "media"; "density"; "fog"; "rainbow" ]
 
 let unsupported_rvalue_set = set_of (unsupported_objects @ unsupported_rvalues)
 
@@ -30,7 +30,7 @@ let light_union l = V.Csg { kind = Union; members = [ V.Member_light l ]; split 
    the modifiers that follow (Reader.open_shape, POV-Ray's Parse_Object_Id) *)
 let rec parse_object st : V.obj =
   let loc = peek_loc st in
-  try parse_shape st loc with Object_copy (o, kw) -> parse_object_mods st { o with oloc = loc } kw
+  try parse_shape st loc with Object_copy (o, kw) -> parse_object_mods st { (copied o) with oloc = loc } kw
 
 and parse_shape st loc : V.obj =
   match peek st with
@@ -142,7 +142,7 @@ and parse_shape st loc : V.obj =
       | Ident s when (match cur_value st s with Some (V.Object _) -> true | _ -> false) -> (
           (* Parse_Object_Id: an object identifier first makes it object { … } *)
           match cur_value st s with
-          | Some (V.Object o) -> advance st; parse_object_mods st { o with oloc = loc } "blob"
+          | Some (V.Object o) -> advance st; parse_object_mods st { (copied o) with oloc = loc } "blob"
           | _ -> unexpected st "an object identifier")
       | _ ->
           let shape = Blob_reader.parse st in
@@ -192,6 +192,10 @@ and parse_shape st loc : V.obj =
       advance st;
       open_shape st "bicubic_patch";
       parse_object_mods st (new_obj (Bicubic_reader.bicubic st loc) loc) "bicubic_patch"
+  | Ident "isosurface" ->
+      advance st;
+      open_shape st "isosurface";
+      parse_object_mods st (new_obj (Iso_reader.isosurface st) loc) "isosurface"
   | Ident "julia_fractal" ->
       advance st;
       open_shape st "julia_fractal";
@@ -227,7 +231,7 @@ and parse_shape st loc : V.obj =
         | Ident s when Names.mem object_set s -> parse_object st
         | Ident s -> (
             match cur_value st s with
-            | Some (V.Object o) -> advance st; { o with oloc = loc }
+            | Some (V.Object o) -> advance st; { (copied o) with oloc = loc }
             | Some (V.Light l) -> advance st; { (new_obj_of (light_union l) loc) with oloc = loc }
             | Some (V.Unsupported u) -> unsupported_use iloc s u.what u.at
             | Some v -> Error.raise_at iloc "'%s' is %s, not an object" s (V.kind_name v)
@@ -269,7 +273,7 @@ and parse_shape st loc : V.obj =
       match parse_light_source st with Lights.Lone l -> new_obj_of (light_union l) loc | Shaped o -> o)
   | Ident s -> (
       match cur_value st s with
-      | Some (V.Object o) -> advance st; { o with oloc = loc }
+      | Some (V.Object o) -> advance st; { (copied o) with oloc = loc }
       | Some (V.Light l) -> advance st; new_obj_of (light_union l) loc
       | Some (V.Unsupported u) -> unsupported_use loc s u.what u.at
       | _ -> unexpected st "an object")

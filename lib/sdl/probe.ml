@@ -56,7 +56,7 @@ let trace st (o : V.obj) (origin : Vec.t) (dir : Vec.t) =
   let sc = compiled st o in
   let ob = top sc in
   let d = Vec.normalize dir in
-  let w = Scratch.create ~robust:false (Stats.create ()) in
+  let w = Scratch.create ~robust:false ~iso:st.probe_iso (Stats.create ()) in
   (* Find_Intersection: the object's box (which spheres, boxes, planes and triangles never
      test), then every hit at MIN_ISECT_DEPTH or beyond, popped from the stack: the first of the
      nearest wins *)

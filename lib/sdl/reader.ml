@@ -80,6 +80,8 @@ type st = {
   mutable nesting : int;  (* open parentheses, vectors, unary operators and unions being read *)
   mutable braces : int;  (* POV-Ray's count of nested blocks, for its warning past 200 *)
   mutable object_count : int;  (* objects and lights that entered the scene *)
+  mutable isosurfaces : int;  (* isosurfaces read: the next one's number *)
+  probe_iso : Scratch.iso_room;  (* the isosurfaces' cache of trace() calls, POV-Ray's parser thread's *)
   mutable probed : (V.obj * Compiled.t) option;  (* the object trace(), inside() or an extent function compiled last, and its compiled scene *)
   mutable version : int;  (* languageVersion × 100 *)
   mutable version_set : bool;
@@ -128,7 +130,7 @@ let keywords =
     "parallel"; "point_at"; "radius"; "tightness"; "orthographic"; "looks_like"; "cylinder"; "cone"; "disc";
     "open"; "torus"; "union"; "merge"; "intersection"; "difference"; "inverse"; "split_union"; "clipped_by"; "text"; "ttf"; "polygon"; "quadric";
     "quartic"; "poly"; "polynomial";
-    "blob"; "height_field"; "superellipsoid"; "ovus"; "sphere_sweep"; "prism"; "lathe"; "sor"; "julia_fractal"; "reciprocal"; "bicubic_patch"; "parametric";
+    "blob"; "height_field"; "superellipsoid"; "ovus"; "sphere_sweep"; "prism"; "lathe"; "sor"; "julia_fractal"; "reciprocal"; "bicubic_patch"; "parametric"; "isosurface";
     "material"; "texture_map"; "interior_texture"; "tiles"; "irid"; "uv_mapping"; "crand"; "image_map"; "bump_map"; "image_pattern"; "caustics"; "cutaway_textures"; "pigment_pattern";
     "bounded_by"; "trace"; "inside"; "min_extent"; "max_extent" ]
   (* pigment patterns (POVRAY-3.7 §17) *)
@@ -155,8 +157,7 @@ let keywords =
 
 (* POV-Ray keywords that a later povml will read; meeting one is a located "not supported yet". *)
 let unsupported =
-  [ "isosurface";
-    "rotate"; "scale"; "matrix"; "transform";
+  [ "rotate"; "scale"; "matrix"; "transform";
     "area_light";
     "projected_through"; "fisheye"; "panoramic"; "ultra_wide_angle"; "omnimax";
     "radiosity"; "photons";
@@ -174,8 +175,8 @@ let unsupported =
       "datetime" ]
 
 (* The rest of POV-Ray 3.7's reserved words (parser/reswords.cpp), none of which povml reads: words
-   inside blocks povml does not read yet (a fog's fog_type, an isosurface's accuracy, the sums and
-   products of a user function …). They cannot
+   inside blocks povml does not read yet, or reads only where they belong (a fog's fog_type, an
+   isosurface's accuracy, the sums and products of a user function …). They cannot
    be declared, as in POV-Ray; found out of place they are the user's error, as they are POV-Ray's
    (POV-Ray lets sred, sgreen, sblue and global be declared: they are not in this list). *)
 let reserved =

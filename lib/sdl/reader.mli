@@ -77,6 +77,9 @@ type st = {
   mutable nesting : int;  (** parentheses, vectors, signs and unions open in the reader *)
   mutable braces : int;  (** POV-Ray's count of nested blocks, for its warning past 200 *)
   mutable object_count : int;  (** objects and lights that entered the scene *)
+  mutable isosurfaces : int;  (** isosurfaces read: the next one's number ({!Isosurface.t}'s key) *)
+  probe_iso : Scratch.iso_room;
+      (** the isosurfaces' cache of the parse-time trace() calls (POV-Ray's parser has one thread's) *)
   mutable probed : (V.obj * Compiled.t) option;  (** the object trace(), inside() or an extent function compiled last, and its compiled scene *)
   mutable version : int;
   mutable version_set : bool;

@@ -53,3 +53,24 @@ let contains (b : float array) (p : Vec.t) =
   Array.length b = 0
   || not
        (p.x < b.(0) || p.y < b.(1) || p.z < b.(2) || p.x > b.(0) +. b.(3) || p.y > b.(1) +. b.(4) || p.z > b.(2) +. b.(5))
+
+(* Intersect_BBox_Dir with FindIntersection's arguments: the origin and the reciprocal
+   direction in single precision, the slabs in single precision, mind MIN_ISECT_DEPTH and maxd
+   the depth asked for *)
+let met (b : float array) (o : Vec.t) (d : Vec.t) ~within =
+  Array.length b = 0
+  ||
+  let slab k on dn =
+    let inv = f32 (1. /. dn) and lo = b.(k) and hi = f32 (b.(k) +. b.(k + 3)) and on = f32 on in
+    let near, far = if inv < 0. then (hi, lo) else (lo, hi) in
+    (f32 (f32 (near -. on) *. inv), f32 (f32 (far -. on) *. inv))
+  in
+  let tmin, tmax = slab 0 o.x d.x and tymin, tymax = slab 1 o.y d.y in
+  (not (tmin > tymax || tymin > tmax))
+  &&
+  let tmin = if tymin > tmin then tymin else tmin and tmax = if tymax < tmax then tymax else tmax in
+  let tzmin, tzmax = slab 2 o.z d.z in
+  (not (tmin > tzmax || tzmin > tmax))
+  &&
+  let tmin = if tzmin > tmin then tzmin else tmin and tmax = if tzmax < tmax then tzmax else tmax in
+  tmin < f32 within && tmax > f32 Precision.min_isect_depth

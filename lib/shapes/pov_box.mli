@@ -18,3 +18,8 @@ val entry : float array -> Vec.t -> Vec.t -> float
 val contains : float array -> Vec.t -> bool
 (** [contains b p] is Inside_BBox: whether [p] is in the box [b], faces included; an unbounded
     object's box ([[||]]) holds every point. *)
+
+val met : float array -> Vec.t -> Vec.t -> within:float -> bool
+(** [met b o d ~within] is ObjectBase::Intersect_BBox as FindIntersection asks it of one object
+    (a cached shadow blocker, a trace() target): whether the ray from [o] along [d] crosses the
+    box [b] between MIN_ISECT_DEPTH and [within], in single precision; an unbounded box always. *)

@@ -12,6 +12,37 @@ type blob_room = {
   acc : float array;
 }
 
+type iso_search = {
+  mutable px : float;
+  mutable py : float;
+  mutable pz : float;
+  mutable dx : float;
+  mutable dy : float;
+  mutable dz : float;
+  mutable inv3 : float;
+  mutable maxg : float;
+  mutable fmax : float;
+  mutable tl : float;
+  mutable vlength : float;
+  mutable bx : float;
+  mutable by : float;
+  mutable bz : float;
+  mutable ex : float;
+  mutable ey : float;
+  mutable ez : float;
+}
+
+type iso_room = { mutable cached : bool; mutable owner : float array; at : iso_search }
+
+let iso_room () =
+  {
+    cached = false;
+    owner = [||];
+    at =
+      { px = 0.; py = 0.; pz = 0.; dx = 0.; dy = 0.; dz = 0.; inv3 = 1.; maxg = 0.; fmax = 0.; tl = 0.; vlength = 0.; bx = 0.; by = 0.; bz = 0.;
+        ex = 0.; ey = 0.; ez = 0. };
+  }
+
 type t = {
   stats : Stats.t;
   lim : Limits.t;
@@ -42,6 +73,9 @@ type t = {
   fractal_points : float array;
   mutable fractal_count : int;
   poly_room : float array;
+  iso : iso_room;
+  iso_hits : float array;
+  mutable shadow_test : bool;
 }
 
 let hit_width = 6
@@ -53,7 +87,7 @@ let report_width = 9
    a torus 4 depths, a quadric 2, a polygon 1. *)
 let max_crossings = 8
 
-let create ~robust stats =
+let create ~robust ?iso stats =
   {
     stats;
     lim = (if robust then Limits.robust else Limits.pov);
@@ -84,6 +118,9 @@ let create ~robust stats =
     fractal_points = Array.make (report_width * 32) nan;
     fractal_count = 0;
     poly_room = Array.make 512 0.;
+    iso = (match iso with Some r -> r | None -> iso_room ());
+    iso_hits = Array.make 32 0.;
+    shadow_test = false;
   }
 
 let push_hit w n t part id px py pz =

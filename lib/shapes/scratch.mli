@@ -19,6 +19,41 @@ type blob_room = {
 }
 (** The room of a blob's intersection (shape/blob.cpp), grown to its number of elements. *)
 
+type iso_search = {
+  mutable px : float;
+  mutable py : float;
+  mutable pz : float;  (** the ray searched, in the isosurface's space: its origin … *)
+  mutable dx : float;
+  mutable dy : float;
+  mutable dz : float;  (** … and its direction, not renormalised *)
+  mutable inv3 : float;  (** 1 or −1: the sign the function is searched with (ISO_ThreadData.Inv3) *)
+  mutable maxg : float;  (** the max_gradient of this search, which [evaluate] changes *)
+  mutable fmax : float;  (** the least value the search met *)
+  mutable tl : float;  (** the root found *)
+  mutable vlength : float;  (** the length of the direction *)
+  mutable bx : float;
+  mutable by : float;
+  mutable bz : float;  (** where the last segment without a root began … *)
+  mutable ex : float;
+  mutable ey : float;
+  mutable ez : float;  (** … and ended *)
+}
+(** An isosurface's root search in progress, and what the last one without a root leaves for
+    the cache (POV-Ray's ISO_ThreadData). *)
+
+type iso_room = {
+  mutable cached : bool;  (** the last root search found none, and was not a shadow ray's *)
+  mutable owner : float array;
+      (** the isosurface that search was for, by its function frame (each compiled isosurface
+          has its own) *)
+  at : iso_search;
+}
+(** The state POV-Ray's isosurfaces keep per render thread: it carries from ray to ray, and a
+    root search may answer from it (shape/isosurf.cpp). *)
+
+val iso_room : unit -> iso_room
+(** [iso_room ()] is the state of a thread that has searched nothing yet. *)
+
 type t = {
   stats : Stats.t;  (** the worker's counters *)
   lim : Limits.t;  (** the depths shapes accept (POV-Ray's, or the robust mode's) *)
@@ -60,11 +95,17 @@ type t = {
           the depth nor the point alone gives back *)
   mutable fractal_count : int;  (** how many crossings were written there (modulo 32 is the next slot) *)
   poly_room : float array;  (** a poly's powers of the ray, its polynomial in t, roots and depths *)
+  iso : iso_room;  (** the isosurfaces' per-thread state, which may carry from block to block *)
+  iso_hits : float array;  (** one isosurface's crossings as (depth, side) pairs, 11 at most *)
+  mutable shadow_test : bool;
+      (** the ray being tested is a shadow ray (Ray::IsShadowTestRay): an isosurface does not
+          leave its misses in the cache for it *)
 }
 
-val create : robust:bool -> Stats.t -> t
-(** [create ~robust stats] is fresh scratch for one worker counting into [stats], with POV-Ray's
-    depth limits or, when [robust], the robust mode's. *)
+val create : robust:bool -> ?iso:iso_room -> Stats.t -> t
+(** [create ~robust ?iso stats] is fresh scratch for one worker counting into [stats], with POV-Ray's
+    depth limits or, when [robust], the robust mode's; [iso] is the isosurfaces' state carried
+    from an earlier scratch (else a fresh one). *)
 
 val hit_width : int
 (** [hit_width] is the number of floats per hit in [hits]: depth, part, the member's id, and the

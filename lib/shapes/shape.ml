@@ -38,6 +38,7 @@ let compile (s : Scene.shape) =
   | Lathe l -> Some (Lathe l)
   | Sor s -> Some (Sor s)
   | Julia f -> Some (Julia f)
+  | Isosurface i -> Some (Isosurface (Isosurface.compile i))
   | Parametric m -> Some (Parametric m)
   | Bicubic { patch_type; u_steps; v_steps; flatness; points; uv_vectors } ->
       Some (Bicubic (Bezier.make ~patch_type ~u_steps ~v_steps ~flatness ~st:uv_vectors points))
@@ -73,6 +74,7 @@ let rec depth w shape o d lo =
   | Lathe l -> Lathe.depth w l o d lo
   | Sor s -> Sor.depth w s o d lo
   | Julia f -> Julia.depth w f o d lo
+  | Isosurface i -> Isosurface.depth w i o d lo
   | Parametric m -> Parametric.depth w m o d lo
   | Bicubic b -> Bezier.depth w b o d lo
   | Poly p -> Poly.depth w p o d lo
@@ -104,6 +106,7 @@ and all_hits w ob o d lo n =
   | Lathe l -> Lathe.hits w l id o d lo n
   | Sor s -> Sor.hits w s id o d lo n
   | Julia f -> Julia.hits w f id o d lo n
+  | Isosurface i -> Isosurface.hits w i id o d lo n
   | Parametric m -> Parametric.hits w m id o d lo n
   | Bicubic b -> Bezier.hits w b id o d lo n
   | Poly p -> Poly.hits w p id o d lo n
@@ -134,6 +137,7 @@ and inside stack shape p =
   | Lathe l -> Lathe.inside l p
   | Sor s -> Sor.inside s p
   | Julia f -> Julia.inside stack f p
+  | Isosurface i -> Isosurface.inside i p
   | Bicubic _ | Parametric _ -> false (* Parametric::Inside is always false *)
   | Poly pl -> Poly.inside pl p
 
@@ -150,7 +154,7 @@ and inside_member stack (m : obj) p =
       (* Fractal::Invert toggles the fractal's own flag, which its Inside holds *)
       inside stack m.shape p
   | Sphere _ | Sphere_placed _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _
-  | Disc _ | Torus _ | Glyph _ | Polygon _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Prism _ | Lathe _ | Sor _ | Bicubic _ | Parametric _ ->
+  | Disc _ | Torus _ | Glyph _ | Polygon _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Prism _ | Lathe _ | Sor _ | Isosurface _ | Parametric _ | Bicubic _ ->
       inside stack m.shape p <> m.inverted
 
 (* Spheres, ellipsoids, boxes, planes, triangles and polys answer every box test of POV-Ray's
@@ -159,12 +163,13 @@ let rec box_test_free = function
   | Sphere _ | Sphere_placed _ | Ellipsoid _ | Box _ | Box_trans _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Poly _ -> true
   | Csg { kind = Clipped | Bounded | Boxed; members; _ } when Array.length members > 0 -> box_test_free members.(0).shape
   | Csg _ | Mesh _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _
-  | Prism _ | Lathe _ | Sor _ | Julia _ | Bicubic _ | Parametric _ ->
+  | Prism _ | Lathe _ | Sor _ | Julia _ | Isosurface _ | Parametric _ | Bicubic _ ->
       false
 
-let cached_depth w shape o d lo =
+let cached_depth w shape o d lo hi =
   match shape with
   | Csg c when box_test_free shape -> Csg.depth_unboxed ~all_hits ~inside:inside_member w c o d lo
+  | Isosurface i when not (Pov_box.met i.box o d ~within:hi) -> infinity (* FindIntersection's box test *)
   | _ -> depth w shape o d lo
 
 let hit_object (w : Scratch.t) ob = if Csg.is_csg ob.shape then w.leaf else ob.id
@@ -196,6 +201,7 @@ let normal obj part p =
   | Lathe l -> Lathe.normal l part p
   | Sor s -> Sor.normal s part p
   | Julia f -> Julia.normal f p
+  | Isosurface i -> Isosurface.normal i part p
   | Bicubic _ | Parametric _ -> Vec.make 1. 0. 0. (* its normal is the crossing's: hit_normal *)
   | Poly pl -> Poly.normal pl p
 
@@ -204,7 +210,7 @@ let geometric_normal obj part p =
   | Smooth_triangle t -> Triangle.flat_normal t
   | Mesh m -> Mesh.placed_face_normal m part
   | Sphere _ | Sphere_placed _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _
-  | Quadric _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Csg _ | Prism _ | Lathe _ | Sor _ | Julia _ | Bicubic _ | Parametric _ ->
+  | Quadric _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Csg _ | Prism _ | Lathe _ | Sor _ | Julia _ | Isosurface _ | Parametric _ | Bicubic _ ->
       normal obj part p
 
 let hit_normal (w : Scratch.t) obj part p =
@@ -213,7 +219,8 @@ let hit_normal (w : Scratch.t) obj part p =
   | Bicubic _ -> Bezier.hit_normal w p
   | Parametric m -> Parametric.hit_normal w m p
   | Sphere _ | Sphere_placed _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _
-  | Torus _ | Glyph _ | Polygon _ | Quadric _ | Csg _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Prism _ | Lathe _ | Sor _ ->
+  | Torus _ | Glyph _ | Polygon _ | Quadric _ | Csg _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Prism _ | Lathe _ | Sor _
+  | Isosurface _ ->
       normal obj part p
 
 let hit_point w obj o depth d =
@@ -221,7 +228,7 @@ let hit_point w obj o depth d =
   | Poly pl -> Poly.hit_point w pl o d depth
   | Julia _ -> Julia.point w depth (Vec.madd o depth d)
   | Sphere _ | Sphere_placed _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _
-  | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Prism _ | Lathe _ | Sor _ | Bicubic _ | Parametric _ | Csg _ ->
+  | Isosurface _ | Parametric _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Prism _ | Lathe _ | Sor _ | Bicubic _ | Csg _ ->
       Vec.madd o depth d
 
 let refine obj p =
@@ -229,7 +236,7 @@ let refine obj p =
   | Sphere s | Sphere_placed { ps = s; _ } -> Sphere.refine s p
   | Ellipsoid e -> Sphere.ellipsoid_refine e p
   | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _
-  | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Julia _ | Bicubic _ | Parametric _ | Csg _ | Prism _ | Lathe _ | Sor _ ->
+  | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Julia _ | Isosurface _ | Parametric _ | Bicubic _ | Csg _ | Prism _ | Lathe _ | Sor _ ->
       p
 
 (* Every shape's UVCoord in POV-Ray 3.7: spheres, boxes, tori and meshes have their own; every
@@ -250,7 +257,7 @@ let uv w obj part (p : Vec.t) =
   | Lathe l -> Lathe.uv l part p
   | Sor s -> Sor.uv s part p
   | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Cone _ | Disc _ | Glyph _ | Polygon _ | Quadric _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Sphere_sweep _ | Prism _
-  | Julia _ | Csg _ ->
+  | Julia _ | Isosurface _ | Csg _ ->
       Vec.make p.x p.y 0.
 
 let rec bounds = function
@@ -277,6 +284,7 @@ let rec bounds = function
   | Lathe l -> Some (Lathe.bounds l)
   | Sor s -> Some (Sor.bounds s)
   | Julia f -> Some (Julia.bounds f)
+  | Isosurface i -> Some (Isosurface.bounds i.iso)
   | Parametric m -> Some (Parametric.bounds m)
   | Bicubic b -> Some (Bezier.bounds b)
   | Poly _ -> None (* POV-Ray's BOUND_HUGE box: an infinite object *)
@@ -291,7 +299,7 @@ let magnitude shape =
   | _, Polygon p -> Polygon.magnitude p
   | _, Quadric q -> Quadric.magnitude q
   | None, Poly _ -> 0.
-  | None, (Sphere _ | Sphere_placed _ | Ellipsoid _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Prism _ | Lathe _ | Sor _ | Julia _ | Parametric _ | Bicubic _) -> 0.
+  | None, (Sphere _ | Sphere_placed _ | Ellipsoid _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Prism _ | Lathe _ | Sor _ | Julia _ | Isosurface _ | Parametric _ | Bicubic _) -> 0.
 
 let rec pov_box shape =
   match shape with
@@ -317,30 +325,31 @@ let rec pov_box shape =
   | Lathe l -> Lathe.pov_box l
   | Sor s -> Sor.pov_box s
   | Julia f -> Julia.pov_box f
+  | Isosurface i -> Isosurface.pov_box i.iso
   | Parametric m -> Parametric.pov_box m
   | Bicubic b -> Bezier.pov_box b
   | Poly _ -> [||]
   | Csg c -> Csg.pov_box ~bounds ~pov_box c
 
 let costly = function
-  | Ellipsoid _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Prism _ | Lathe _ | Sor _ | Julia _ | Bicubic _ | Parametric _ -> true
+  | Ellipsoid _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Prism _ | Lathe _ | Sor _ | Julia _ | Isosurface _ | Parametric _ | Bicubic _ -> true
   | Sphere _ | Sphere_placed _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Csg _ -> false
 
 let as_sphere = function
   | Sphere s | Sphere_placed { ps = s; _ } -> Some s
   | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _
-  | Quadric _ | Julia _ | Bicubic _ | Parametric _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Csg _ | Prism _ | Lathe _ | Sor _ ->
+  | Quadric _ | Julia _ | Isosurface _ | Parametric _ | Bicubic _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Csg _ | Prism _ | Lathe _ | Sor _ ->
       None
 
 let face_texture obj part =
   match obj.shape with
   | Mesh m when part >= 0 -> Mesh.texture m.mesh part
   | Sphere _ | Sphere_placed _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _
-  | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Julia _ | Bicubic _ | Parametric _ | Csg _ | Prism _ | Lathe _ | Sor _ ->
+  | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Julia _ | Isosurface _ | Parametric _ | Bicubic _ | Csg _ | Prism _ | Lathe _ | Sor _ ->
       -1
 
 let stats_rows s =
   List.concat
-    [ Blob.stats_rows s; Bezier.stats_rows s; Box.stats_rows s; Cone.stats_rows s; Disc.stats_rows s; Csg.stats_rows s; Hfield.stats_rows s; Lathe.stats_rows s; Julia.stats_rows s; Plane.stats_rows s; Polygon.stats_rows s; Prism.stats_rows s; Parametric.stats_rows s; Quadric.stats_rows s; Poly.stats_rows s;
+    [ Blob.stats_rows s; Bezier.stats_rows s; Box.stats_rows s; Cone.stats_rows s; Disc.stats_rows s; Csg.stats_rows s; Hfield.stats_rows s; Isosurface.stats_rows s; Lathe.stats_rows s; Julia.stats_rows s; Plane.stats_rows s; Polygon.stats_rows s; Prism.stats_rows s; Parametric.stats_rows s; Quadric.stats_rows s; Poly.stats_rows s;
       Triangle.stats_rows s;
       Mesh.stats_rows s; Ovus.stats_rows s; Sphere.stats_rows s; Sphere_sweep.stats_rows s; Superellipsoid.stats_rows s; Sor.stats_rows s; Torus.stats_rows s; Glyph.stats_rows s; Csg.bound_rows s ]

@@ -91,10 +91,11 @@ val face_texture : Compiled.obj -> int -> int
 val stats_rows : Stats.t -> Stats.row list
 (** [stats_rows s] is every shape's statistics rows, in the order POV-Ray prints them. *)
 
-val cached_depth : Scratch.t -> Compiled.shape -> Vec.t -> Vec.t -> float -> float
-(** [cached_depth w s o d lo] is Trace::FindIntersection of the one object [s] (the shadow cache's
-    test): [depth], but a sphere, box, plane or triangle under clipped_by or bounded_by skips the
-    wrapper's box test, as POV-Ray's Intersect_BBox of those shapes always passes. *)
+val cached_depth : Scratch.t -> Compiled.shape -> Vec.t -> Vec.t -> float -> float -> float
+(** [cached_depth w s o d lo hi] is Trace::FindIntersection of the one object [s] (the shadow cache's
+    test) up to the depth [hi]: [depth], but a sphere, box, plane or triangle under clipped_by or
+    bounded_by skips the wrapper's box test, as POV-Ray's Intersect_BBox of those shapes always
+    passes, and an isosurface is tried only when the ray meets its box before [hi]. *)
 
 val box_test_free : Compiled.shape -> bool
 (** [box_test_free s] holds for a sphere, ellipsoid, box, plane or triangle, and such a shape under

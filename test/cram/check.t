@@ -56,9 +56,9 @@ POV-Ray missing: a clear message and exit status 4.
 A renderer that fails (here povml, on an object it does not support yet) gives its message and
 exit status 3:
 
-  $ printf '#version 3.7;\nisosurface { function { x } }\n' > iso.pov
-  $ povml check iso.pov
-  povml check: error: povml failed (exit status 1): iso.pov:2:1: error: not supported yet: 'isosurface'
+  $ printf '#version 3.7;\ncomposite { sphere { 0, 1 } }\n' > comp.pov
+  $ povml check comp.pov
+  povml check: error: povml failed (exit status 1): comp.pov:2:1: error: not supported yet: 'composite'
   [3]
 
 Usage errors (exit status 2):

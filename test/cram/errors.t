@@ -70,10 +70,10 @@ A zero plane normal is refused, as POV-Ray refuses it:
 
 Features of later versions are named:
 
-  $ printf 'isosurface { function { x } }\n' > iso.pov
-  $ povml iso.pov +W10 +H10 -D
-  iso.pov:1:1: error: not supported yet: 'isosurface'
-      1 | isosurface { function { x } }
+  $ printf 'composite { sphere { 0, 1 } }\n' > comp.pov
+  $ povml comp.pov +W10 +H10 -D
+  comp.pov:1:1: error: not supported yet: 'composite'
+      1 | composite { sphere { 0, 1 } }
         | ^
   [1]
 

@@ -375,20 +375,20 @@ Mathematical and string errors:
   [1]
 
 Declared values that povml cannot render yet are an error only where they are used: Blobby in
-an include file is an isosurface; in the main file the declaration also warns.
+an include file is a composite; in the main file the declaration also warns.
 
-  $ cat > iso.inc <<'POV'
-  > #declare Blobby = isosurface { function { x*x + y*y + z*z - 1 } }
+  $ cat > comp.inc <<'POV'
+  > #declare Blobby = composite { sphere { 0, 1 } }
   > POV
   $ cat > jade.pov <<'POV'
-  > #include "iso.inc"
+  > #include "comp.inc"
   > object { Blobby }
   > POV
   $ povml --dump jade.pov
-  jade.pov:2:10: error: not supported yet: 'isosurface' (used through 'Blobby')
+  jade.pov:2:10: error: not supported yet: 'composite' (used through 'Blobby')
       2 | object { Blobby }
         |          ^
-  iso.inc:1:19: note: 'Blobby' was declared here
+  comp.inc:1:19: note: 'Blobby' was declared here
   [1]
   $ cat > unsup3.pov <<'POV'
   > #version 3.7;

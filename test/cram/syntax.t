@@ -98,10 +98,10 @@ source, in a union, in an expression:
       2 | light_source { <0, 5, 0>, rgb 1 area_illumination }
         |                                 ^
   [1]
-  $ printf '#version 3.7;\nunion {\n  sphere { 0, 1 }\n  isosurface { function { x } }\n}\n' > iso.pov
-  $ povml --dump iso.pov
-  iso.pov:4:3: error: not supported yet: 'isosurface'
-      4 |   isosurface { function { x } }
+  $ printf '#version 3.7;\nunion {\n  sphere { 0, 1 }\n  composite { sphere { 0, 1 } }\n}\n' > comp.pov
+  $ povml --dump comp.pov
+  comp.pov:4:3: error: not supported yet: 'composite'
+      4 |   composite { sphere { 0, 1 } }
         |   ^
   [1]
   $ printf '#version 3.7;\nsphere { 0, 1 translate vturbulence(2, 0.5, 6, <1, 2, 3>) }\n' > vturb.pov

@@ -478,7 +478,7 @@ let test_errors () =
   expect_scene_error "unknown identifier" "sphere { Foo, 1 }" ~line:1 ~col:10 ~sub:"unknown identifier 'Foo'";
   expect_scene_error "misspelt declared identifier" "#declare Radius = 1;\nsphere { 0, Radus }" ~line:2 ~col:13
     ~sub:"did you mean 'Radius'";
-  expect_scene_error "isosurface not supported" "isosurface{}" ~line:1 ~col:1 ~sub:"not supported yet";
+  expect_scene_error "composite not supported" "composite{}" ~line:1 ~col:1 ~sub:"not supported yet";
   expect_scene_error "media not supported" "sphere { 0, 1\n interior { media { } } }" ~line:2 ~col:13 ~sub:"not supported yet";
   expect_scene_error "#include of a missing file" "#include \"no_such_file_povml.inc\"" ~line:1 ~col:1 ~sub:"cannot find the include file";
   expect_scene_error "missing radius" "sphere { <0,0,0> ; }" ~line:1 ~col:18 ~sub:"numeric expression";
