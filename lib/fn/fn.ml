@@ -29,7 +29,10 @@ and t = {
 
 let arity f = Array.length f.params
 
-let frame f = Array.make (max f.frame 3) 0.
+let frame f =
+  let fr = Array.create_float (max f.frame 3) in
+  Array.fill fr 0 (Array.length fr) 0.;
+  fr
 
 let fill f args =
   let fr = frame f in
@@ -41,11 +44,14 @@ let call f args = f.eval (fill f args)
 let call_vector f args = f.veval (fill f args)
 
 let at_point f x y z =
-  let fr = frame f in
-  fr.(0) <- x;
-  fr.(1) <- y;
-  fr.(2) <- z;
-  f.eval fr
+  if f.frame <= 3 then f.eval [| x; y; z |]
+  else begin
+    let fr = frame f in
+    fr.(0) <- x;
+    fr.(1) <- y;
+    fr.(2) <- z;
+    f.eval fr
+  end
 
 let red_to_gray = 0.297
 let green_to_gray = 0.589

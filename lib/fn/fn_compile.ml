@@ -185,30 +185,43 @@ and call env f args : code =
   let size = max f.frame 3 in
   let eval = f.eval in
   match a with
-  | [| a0; a1; a2 |] ->
+  | [| a0; a1; a2 |] when size = 3 ->
+      (* a literal array of three floats is allocated in line, without a call into the runtime *)
       fun fr ->
-        let c = Array.make size 0. in
-        c.(0) <- a0 fr;
-        c.(1) <- a1 fr;
-        c.(2) <- a2 fr;
-        eval c
+        let x0 = a0 fr in
+        let x1 = a1 fr in
+        let x2 = a2 fr in
+        eval [| x0; x1; x2 |]
   | _ ->
+      (* Every other call site owns the callee's frame: a function can only call functions declared
+         before it, so a site is never re-entered while its callee runs (and each worker is a
+         process). The arguments are written in order; the slots after them belong to the
+         callee's sum and prod counters, which set them before reading them. *)
+      let c = Array.make size 0. in
       fun fr ->
-        let c = Array.make size 0. in
         for i = 0 to n - 1 do
-          c.(i) <- a.(i) fr
+          Array.unsafe_set c i (a.(i) fr)
         done;
         eval c
+
+(* a fresh frame for the callee: the arguments in order, the rest 0 (Array.create_float, not
+   Array.make, which asks the runtime what kind of value 0. is at every call) *)
+and frame_of a n size fr =
+  let c = Array.create_float size in
+  for i = 0 to n - 1 do
+    Array.unsafe_set c i (a.(i) fr)
+  done;
+  for i = n to size - 1 do
+    Array.unsafe_set c i 0.
+  done;
+  c
 
 and member env f args m : code =
   let a = args_code env args in
   let size = max f.frame 3 in
   let veval = f.veval in
-  let terms fr =
-    let c = Array.make size 0. in
-    Array.iteri (fun i a -> c.(i) <- a fr) a;
-    veval c
-  in
+  let n = Array.length a in
+  let terms fr = veval (frame_of a n size fr) in
   match m with
   | -1 -> fun fr -> let t = terms fr in (t.(0) *. red_to_gray) +. (t.(1) *. green_to_gray) +. (t.(2) *. blue_to_gray)
   | -2 -> let k = 1. /. 255. in fun fr -> let t = terms fr in (t.(0) +. (t.(1) *. k)) *. 0.996093

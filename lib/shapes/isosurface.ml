@@ -47,8 +47,8 @@ let mark_copy s = { s with copy = true }
 
 (* std::min and std::max as <algorithm> has them: the first argument unless the second is
    strictly smaller (larger) *)
-let[@inline] std_min a b = if b < a then b else a
-let[@inline] std_max a b = if a < b then b else a
+let[@inline] std_min (a : float) b = if b < a then b else a
+let[@inline] std_max (a : float) b = if a < b then b else a
 
 (* Evaluate_Function: the function at a point of the isosurface's space *)
 let[@inline] value c x y z =

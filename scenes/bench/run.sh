@@ -7,7 +7,8 @@
 # The large scenes are generated into scenes/bench/generated/ by the generators in
 # scenes/bench/gen/ (a 1,000,000-triangle mesh2 terrain, a 100,000-smooth-triangle mesh, sphere
 # fields, a field of mixed shapes: boxes, cylinders, cones, discs, tori; with scenes/bench/gen_hfield.sh
-# the 1024×1024 16-bit height map of scenes/bench/hfield.pov). Both programs get +L of the scene's
+# the 1024×1024 16-bit height map of scenes/bench/hfield.pov); scenes/bench/isosurface.pov times
+# the compiled functions in isosurfaces' root searches. Both programs get +L of the scene's
 # directory (POV-Ray does not look there for image files). RUNS (default 3) and
 # THREADS (default 2) can be set in the environment; ONLY=PATTERN runs only the cases whose scene
 # path contains PATTERN (e.g. ONLY=shapes).
@@ -43,6 +44,7 @@ CASES=(
   "$OUT/shapes_2000.pov|+W640 +H480 +A0.3"
   "scenes/bench/textures.pov|+W640 +H480 +A0.3"
   "scenes/bench/hfield.pov|+W640 +H480 -A"
+  "scenes/bench/isosurface.pov|+W640 +H480 -A"
 )
 
 median() { sort -g | awk '{a[NR]=$1} END {if (NR%2) print a[(NR+1)/2]; else printf "%.4f\n", (a[NR/2]+a[NR/2+1])/2}'; }
