@@ -16,3 +16,7 @@ val assign : ?current:Value.t ref Reader.Names.t list -> Reader.st -> local:bool
 
 val parse_declare : Reader.st -> local:bool -> Loc.t -> unit
 (** [parse_declare st ~local loc] reads and runs a #declare or #local. *)
+
+val special_function : Reader.st -> string -> Loc.t -> Fn.t option
+(** [special_function st kw loc] reads the function [kw] starts, the keyword next: a pigment,
+    transform, spline or pattern function (function.cpp); None for another keyword. *)

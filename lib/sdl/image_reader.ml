@@ -130,7 +130,7 @@ and function_image st : Image_file.t =
   if width < 1 || height < 1 then Error.raise_at loc "a function image needs a width and a height of at least 1";
   if peek st != LBrace then unexpected st "'{' after the size of the function image";
   let f =
-    match Fn_reader.declaration st ~name:"" ~special:(Fn_special.special st ~parse_transform) with
+    match Fn_reader.declaration st ~name:"" ~special:(st.read_special_function st) with
     | V.Function f -> f
     | _ -> Error.raise_at loc "a function image needs a function"
   in

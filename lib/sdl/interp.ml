@@ -137,6 +137,7 @@ let reader_state opts ~file text =
       directive = (fun _ _ _ -> ()); invoke = (fun _ _ _ -> ()); index = (fun _ _ -> 0); files = [];
       read_object = (fun _ -> None);
       read_pigment = (fun _ -> Scene.Solid Colour.black);
+      read_special_function = (fun _ _ _ -> None);
     }
   in
   st.directive <- directive;
@@ -144,6 +145,7 @@ let reader_state opts ~file text =
   st.index <- parse_index;
   st.read_object <- (fun st -> if object_follows st then Some (parse_object st) else None);
   st.read_pigment <- (fun st -> Materials.parse_pigment st (Scene.Solid Colour.black));
+  st.read_special_function <- special_function;
   st
 
 let load_string opts ~file text =

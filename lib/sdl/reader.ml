@@ -106,6 +106,7 @@ type st = {
   mutable files : V.user_file list;  (* the files #fopen opened, closed when the scene ends *)
   mutable read_object : st -> V.obj option;
   mutable read_pigment : st -> Scene.pigment;  (* Materials' pigment block reader, for pigment patterns *)  (* Objects' parser, for object patterns (Materials) *)
+  mutable read_special_function : st -> string -> Loc.t -> Fn.t option;  (* Declare's pigment, transform, spline and pattern functions, for function images *)
 }
 
 (* ---------------------------------------------------------------------------------------------- *)

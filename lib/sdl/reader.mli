@@ -108,6 +108,10 @@ type st = {
           else None *)
   mutable read_pigment : st -> Scene.pigment;
       (** reads a pigment block after its keyword, from a black pigment (POV-Ray's Create_Pigment): Materials' reader, for [pigment_pattern] *)
+  mutable read_special_function : st -> string -> Loc.t -> Fn.t option;
+      (** reads the function a keyword starts inside [function { … }] ([pigment], [transform],
+          [spline], [pattern]; None for another): Declare's reader, for the function images that
+          Image_reader reads but cannot name (Declare uses the image readers) *)
 }
 
 val keywords : string list
