@@ -49,7 +49,7 @@ let group objs =
       | Some (s : Sphere.t) -> spheres.(4 * i) <- s.cx; spheres.((4 * i) + 1) <- s.cy; spheres.((4 * i) + 2) <- s.cz; spheres.((4 * i) + 3) <- s.r2
       | None -> ())
     bounded;
-  { unbounded = Array.of_list unbounded; bounded; bvh; spheres; boxes }
+  { unbounded = Array.of_list unbounded; bounded; bvh; spheres; boxes; order = None }
 
 (* POV-Ray stores colours in single precision (§8.3); rounding the stored values the same way keeps
    results on the same side of the 8-bit rounding boundaries. *)
@@ -370,6 +370,21 @@ let scene (s : Scene.t) : Compiled.t =
       (let finite, infinite = List.partition (fun o -> Array.length o.pbox > 0) tops in
        Slab_tree.build (List.map (fun o -> (o.id, o.pbox)) finite) (List.map (fun o -> o.id) infinite))
   in
+  (* Isosurfaces share one cache, the last segment on which one found no root: which isosurface
+     was searched last decides what it answers, so a scene with isosurfaces in two or more
+     top-level objects is searched in POV-Ray's order *)
+  let iso_tops =
+    Array.fold_left (fun acc o -> match o.shape with Isosurface _ when not (List.mem o.top acc) -> o.top :: acc | _ -> acc) [] objects
+  in
+  let ordered (g : group) =
+    if not (bounding && List.length iso_tops >= 2) then g
+    else begin
+      let member = Array.make (Array.length objects) false in
+      Array.iter (fun o -> member.(o.id) <- true) g.unbounded;
+      Array.iter (fun o -> member.(o.id) <- true) g.bounded;
+      { g with order = Some { walk = Slab_tree.searcher (Lazy.force slabs); member } }
+    end
+  in
   (* the list holds interiors: a CSG's members share theirs (§16.5) *)
   let holds o = Interiors.holds stack o cam in
   let holders = List.filter holds tops in
@@ -388,10 +403,10 @@ let scene (s : Scene.t) : Compiled.t =
   in
   {
     objects;
-    all;
-    seen = without (fun o -> not o.no_image);
-    mirrored = without (fun o -> not o.no_reflection);
-    occluders = (if List.length occluders = List.length tops then all else group occluders);
+    all = ordered all;
+    seen = ordered (without (fun o -> not o.no_image));
+    mirrored = ordered (without (fun o -> not o.no_reflection));
+    occluders = ordered (if List.length occluders = List.length tops then all else group occluders);
     shadow_mode;
     lights;
     background = s.background;

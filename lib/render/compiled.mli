@@ -189,6 +189,12 @@ type shadow_mode =
   | Any_hit  (** every occluder is opaque: the first surface met decides *)
   | Filtered  (** some occluder is transparent: walk every crossing *)
 
+(** POV-Ray's own order of search, for the scenes whose image depends on it (see [group]). *)
+type order = {
+  walk : Slab_tree.search;  (** POV-Ray's bounding tree over every top-level object *)
+  member : bool array;  (** by object id: whether the group holds the object *)
+}
+
 (** Objects as the tracer searches them: unbounded ones (planes, infinite quadrics, …) one by one, the others through a
     bounding-volume hierarchy whose leaves index [bounded]. *)
 type group = {
@@ -202,6 +208,11 @@ type group = {
       (** 6 per bounded object: the box of a shape costlier to test than a box
           ([Shape.costly]), as its hierarchy leaf would hold it alone (min x, y,
           z, max x, y, z), met by a ray before the shape itself is tried; nan for other shapes *)
+  order : order option;
+      (** Some where the objects must be searched as POV-Ray searches them, through its bounding
+          tree, nearest box first: isosurfaces in two or more top-level objects, whose shared cache
+          of the last segment without a root (isosurf.cpp) answers according to which isosurface
+          was searched last *)
 }
 
 type t = {

@@ -120,12 +120,27 @@ let visit_bounded st i =
   let wl = ctx.walk_limit in
   wl.(0) <- fmin wl.(0) l
 
-let search ctx (g : group) (o : Vec.t) (d : Vec.t) lo hi =
+(* POV-Ray's search (Intersect_BBox_Tree): each object the walk of its tree pops, nearest box
+   first, kept when strictly nearer than the best so far *)
+let pov_search ctx (ord : order) (o : Vec.t) (d : Vec.t) =
   let f = ctx.found and r = ctx.reach in
-  r.depth <- hi;
-  r.least <- lo;
-  f.id <- -1;
-  f.part <- -1;
+  let objects = ctx.scene.objects in
+  Slab_tree.search ord.walk o d
+    (fun () -> r.depth)
+    (fun id ->
+      if ord.member.(id) then begin
+        let ob = objects.(id) in
+        let t = Shape.depth ctx.shapes ob.shape o d r.least in
+        if t < r.depth then begin
+          r.depth <- t;
+          f.id <- Shape.hit_object ctx.shapes ob;
+          f.part <- ctx.shapes.part
+        end
+      end)
+
+(* povml's search: the unbounded objects one by one, then its own hierarchy *)
+let bvh_search ctx (g : group) (o : Vec.t) (d : Vec.t) hi =
+  let r = ctx.reach in
   let un = g.unbounded in
   for k = 0 to Array.length un - 1 do try_obj ctx (Array.unsafe_get un k) o d done;
   r.inv_dx <- recip d.x;
@@ -134,5 +149,13 @@ let search ctx (g : group) (o : Vec.t) (d : Vec.t) lo hi =
   if g.bvh.nodes > 0 then begin
     ctx.walk_limit.(0) <- hi;
     Bvh.walk_with g.bvh ctx.stack o.x o.y o.z d.x d.y d.z ctx.walk_limit visit_bounded { sctx = ctx; sgroup = g; so = o; sd = d }
-  end;
+  end
+
+let search ctx (g : group) (o : Vec.t) (d : Vec.t) lo hi =
+  let f = ctx.found and r = ctx.reach in
+  r.depth <- hi;
+  r.least <- lo;
+  f.id <- -1;
+  f.part <- -1;
+  (match g.order with Some ord when not ctx.robust -> pov_search ctx ord o d | Some _ | None -> bvh_search ctx g o d hi);
   f.id

@@ -192,12 +192,15 @@ let pop h =
   sift 1;
   top
 
-let met_first t (o : Vec.t) (d : Vec.t) a b =
+(* Intersect_BBox_Tree's walk: the root queued, then nodes popped nearest entry first, a node's
+   children queued (Check_And_Enqueue: a node the ray's slabs miss is never queued), a leaf's id
+   handed to [leaf], which says whether to stop; the walk stops too where the heap is empty or the
+   node popped is entered beyond [limit ()]. *)
+let traverse t h (o : Vec.t) (d : Vec.t) limit leaf =
   match t.queued with
-  | None -> false
+  | None -> ()
   | Some root ->
-      let h = { depths = Array.make (t.nodes + 1) 0.; held = Array.make (t.nodes + 1) root; size = 0 } in
-      (* Check_And_Enqueue: a node the ray's slabs miss is never queued *)
+      h.size <- 0;
       let enqueue n =
         let bx = box n in
         let depth = if Array.length bx = 0 then infinite_depth else Pov_box.entry bx o d in
@@ -205,12 +208,27 @@ let met_first t (o : Vec.t) (d : Vec.t) a b =
       in
       enqueue root;
       let rec next () =
-        if h.size = 0 then false
-        else
-          match pop h with
-          | Leaf (id, _) -> if id = a then true else if id = b then false else next ()
-          | Node (ns, _) ->
-              List.iter enqueue ns;
-              next ()
+        if h.size > 0 then begin
+          let depth = h.depths.(1) in
+          if not (depth > limit ()) then
+            match pop h with
+            | Leaf (id, _) -> if not (leaf id) then next ()
+            | Node (ns, _) ->
+                List.iter enqueue ns;
+                next ()
+        end
       in
       next ()
+
+let heap_for t = match t.queued with None -> { depths = [||]; held = [||]; size = 0 } | Some root -> { depths = Array.make (t.nodes + 1) 0.; held = Array.make (t.nodes + 1) root; size = 0 }
+
+let met_first t (o : Vec.t) (d : Vec.t) a b =
+  let found = ref false in
+  traverse t (heap_for t) o d (fun () -> infinity) (fun id -> if id = a then (found := true; true) else id = b);
+  !found
+
+type search = { tree : t; heap : heap }
+
+let searcher tree = { tree; heap = heap_for tree }
+
+let search s o d limit test = traverse s.tree s.heap o d limit (fun id -> test id; false)

@@ -21,3 +21,16 @@ val met_first : t -> Vec.t -> Vec.t -> int -> int -> bool
     boxes (unbounded ones first), so of equal depths the heap's own moves decide. True also when
     it never reaches [b]; false when it reaches neither. Of two objects hit at exactly the same
     depth POV-Ray keeps the one it tests first. *)
+
+type search
+(** A walk of the tree in POV-Ray's order with its own heap, reused from ray to ray (each render
+    worker is a process; a walk never starts while another runs). *)
+
+val searcher : t -> search
+(** [searcher t] walks [t]. *)
+
+val search : search -> Vec.t -> Vec.t -> (unit -> float) -> (int -> unit) -> unit
+(** [search s o d limit test] is POV-Ray's search of the ray from [o] along [d] through its
+    bounding tree (Intersect_BBox_Tree): [test id] for every object whose leaf it pops, nodes
+    popped nearest entry first (unbounded ones first), until the heap is empty or the node popped
+    is entered beyond [limit ()], the best depth so far. *)
