@@ -196,14 +196,15 @@ let pop h =
    children queued (Check_And_Enqueue: a node the ray's slabs miss is never queued), a leaf's id
    handed to [leaf], which says whether to stop; the walk stops too where the heap is empty or the
    node popped is entered beyond [limit ()]. *)
-let traverse t h (o : Vec.t) (d : Vec.t) limit leaf =
+let traverse t h ri (o : Vec.t) (d : Vec.t) limit leaf =
   match t.queued with
   | None -> ()
   | Some root ->
       h.size <- 0;
+      Pov_box.set_ray ri o d;
       let enqueue n =
         let bx = box n in
-        let depth = if Array.length bx = 0 then infinite_depth else Pov_box.entry bx o d in
+        let depth = if Array.length bx = 0 then infinite_depth else Pov_box.entry_from ri bx in
         if depth < infinity then insert h depth n
       in
       enqueue root;
@@ -224,11 +225,11 @@ let heap_for t = match t.queued with None -> { depths = [||]; held = [||]; size 
 
 let met_first t (o : Vec.t) (d : Vec.t) a b =
   let found = ref false in
-  traverse t (heap_for t) o d (fun () -> infinity) (fun id -> if id = a then (found := true; true) else id = b);
+  traverse t (heap_for t) (Pov_box.ray_info ()) o d (fun () -> infinity) (fun id -> if id = a then (found := true; true) else id = b);
   !found
 
-type search = { tree : t; heap : heap }
+type search = { tree : t; heap : heap; ray : Pov_box.ray_info }
 
-let searcher tree = { tree; heap = heap_for tree }
+let searcher tree = { tree; heap = heap_for tree; ray = Pov_box.ray_info () }
 
-let search s o d limit test = traverse s.tree s.heap o d limit (fun id -> test id; false)
+let search s o d limit test = traverse s.tree s.heap s.ray o d limit (fun id -> test id; false)

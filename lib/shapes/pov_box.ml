@@ -49,6 +49,95 @@ let entry (b : float array) (o : Vec.t) (d : Vec.t) =
     fst (narrow ~last:true r (slab b.(2) b.(5) o.z d.z))
   with Miss -> infinity
 
+(* The same entry with the ray's Rayinfo computed once: per axis whether the direction is not 0,
+   the origin in single precision and the reciprocal direction in single precision. *)
+type ray_info = {
+  ri : float array;  (** x, y, z: origin (0–2), reciprocal direction (3–5); 6–7: dmin, dmax *)
+  mutable nonzero : int;  (** bit k: the direction's axis k is not 0 *)
+  mutable positive : int;  (** bit k: it is positive *)
+}
+
+let ray_info () = { ri = Array.make 8 0.; nonzero = 0; positive = 0 }
+
+let set_ray i (o : Vec.t) (d : Vec.t) =
+  let r = i.ri in
+  r.(0) <- f32 o.x;
+  r.(1) <- f32 o.y;
+  r.(2) <- f32 o.z;
+  let axis k dn =
+    if dn <> 0. then begin
+      r.(3 + k) <- f32 (1. /. dn);
+      i.nonzero <- i.nonzero lor (1 lsl k);
+      if dn > 0. then i.positive <- i.positive lor (1 lsl k)
+    end
+  in
+  i.nonzero <- 0;
+  i.positive <- 0;
+  axis 0 d.x;
+  axis 1 d.y;
+  axis 2 d.z
+
+(* one of the Y and Z slabs narrowing [dmin, dmax] (kept in ri.(6), ri.(7)); false on a miss *)
+let[@inline] narrow i (b : float array) k ~last =
+  let r = i.ri in
+  let ll = b.(k) and len = b.(k + 3) and sn = r.(k) in
+  if i.nonzero land (1 lsl k) <> 0 then begin
+    let sd = r.(3 + k) in
+    let near = f32 (f32 (ll -. sn) *. sd) in
+    let span = f32 (len *. sd) in
+    let pos = i.positive land (1 lsl k) <> 0 in
+    let tmin = if pos then near else near +. span and tmax = if pos then near +. span else near in
+    let dmin = r.(6) and dmax = r.(7) in
+    if tmax < dmax then begin
+      if tmax < epsilon then false
+      else if tmin > dmin then
+        if tmin > tmax then false
+        else begin
+          r.(6) <- tmin;
+          if not last then r.(7) <- tmax;
+          true
+        end
+      else if dmin > tmax then false
+      else begin
+        if not last then r.(7) <- tmax;
+        true
+      end
+    end
+    else if tmin > dmin then
+      if tmin > dmax then false
+      else begin
+        r.(6) <- tmin;
+        true
+      end
+    else true
+  end
+  else not (sn < ll || sn > f32 (len +. ll))
+
+let entry_from i (b : float array) =
+  let r = i.ri in
+  let x_ok =
+    if i.nonzero land 1 <> 0 then begin
+      let sd = r.(3) in
+      let near = f32 (f32 (b.(0) -. r.(0)) *. sd) in
+      let span = f32 (b.(3) *. sd) in
+      let pos = i.positive land 1 <> 0 in
+      let lo = if pos then near else near +. span and hi = if pos then near +. span else near in
+      if hi < epsilon || lo > hi then false
+      else begin
+        r.(6) <- lo;
+        r.(7) <- hi;
+        true
+      end
+    end
+    else begin
+      let sn = r.(0) in
+      r.(6) <- -2e10;
+      r.(7) <- 2e10;
+      not (sn < b.(0) || sn > f32 (b.(3) +. b.(0)))
+    end
+  in
+  if x_ok && narrow i b 1 ~last:false && narrow i b 2 ~last:true then r.(6) else infinity
+
 let contains (b : float array) (p : Vec.t) =
   Array.length b = 0
   || not

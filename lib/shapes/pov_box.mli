@@ -15,6 +15,19 @@ val entry : float array -> Vec.t -> Vec.t -> float
     the ray as its Rayinfo holds it: origin and reciprocal direction in single precision, the slab
     arithmetic in single precision too), or infinity when it misses the box. *)
 
+type ray_info
+(** A ray as Check_And_Enqueue's Rayinfo holds it, set once for the many boxes it is tested
+    against. *)
+
+val ray_info : unit -> ray_info
+(** [ray_info ()] is a fresh record, to be set by [set_ray]. *)
+
+val set_ray : ray_info -> Vec.t -> Vec.t -> unit
+(** [set_ray i o d] makes [i] the ray from [o] along [d]. *)
+
+val entry_from : ray_info -> float array -> float
+(** [entry_from i b] is [entry b o d] for the ray [i] was set to, the same float. *)
+
 val contains : float array -> Vec.t -> bool
 (** [contains b p] is Inside_BBox: whether [p] is in the box [b], faces included; an unbounded
     object's box ([[||]]) holds every point. *)

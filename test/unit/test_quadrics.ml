@@ -282,6 +282,32 @@ let test_slab_queue () =
   let first a b = Slab_tree.met_first t o d a b in
   Alcotest.(check (list bool)) "7, 8, 0, 2, 1, 3" [ true; true; true; true; false; true ] [ first 7 8; first 8 0; first 0 2; first 2 1; first 1 2; first 1 3 ]
 
+let test_slab_search () =
+  (* the search in POV-Ray's order: the same boxes and ray as above, every leaf popped while
+     the best depth stays beyond them; with the best at 15 the walk ends before box 3 (entered at
+     20); Pov_box.entry_from, the Rayinfo computed once, gives entry's floats on random rays *)
+  let b z len = [| 0.; 0.; z; 1.; 1.; len |] in
+  let t = Slab_tree.build [ (0, b 0. 1.); (1, b 0. 2.); (2, b 0. 3.); (3, b 10. 1.) ] [ 7 ] in
+  let s = Slab_tree.searcher t in
+  let seen limit =
+    let l = ref [] in
+    Slab_tree.search s (v 0.5 0.5 (-10.)) (v 0. 0. 1.) (fun () -> limit) (fun id -> l := id :: !l);
+    List.rev !l
+  in
+  Alcotest.(check (list int)) "7, 0, 2, 1, 3" [ 7; 0; 2; 1; 3 ] (seen infinity);
+  Alcotest.(check (list int)) "ends at the best depth" [ 7; 0; 2; 1 ] (seen 15.);
+  let rng = Random.State.make [| 20 |] in
+  let r () = Random.State.float rng 8. -. 4. in
+  let ri = Pov_box.ray_info () in
+  for _ = 1 to 2000 do
+    let bx = Pov_box.of_min_max [| r (); r (); r () |] [| 4.5; 4.5; 4.5 |] in
+    let o = v (r ()) (r ()) (r ()) in
+    let d = Vec.normalize (v (if Random.State.bool rng then 0. else r ()) (r ()) (r ())) in
+    Pov_box.set_ray ri o d;
+    let e = Pov_box.entry bx o d and f = Pov_box.entry_from ri bx in
+    if not (Int64.equal (Int64.bits_of_float e) (Int64.bits_of_float f)) then Alcotest.failf "entry %h, entry_from %h" e f
+  done
+
 let test_camera_order () =
   (* §6.4: the camera inside a closed glass cylinder (written first) and an open one: POV-Ray's
      tree sorts them along z, the open one (centre z = −1) before the closed one (z = −0.25), so
@@ -352,6 +378,7 @@ let tests =
     Alcotest.test_case "camera's starting interiors" `Quick test_camera_start;
     Alcotest.test_case "POV-Ray's bounding-slab tree" `Quick test_slab_tree;
     Alcotest.test_case "POV-Ray's bounding-tree queue order" `Quick test_slab_queue;
+    Alcotest.test_case "POV-Ray's search through its tree" `Quick test_slab_search;
     Alcotest.test_case "order of the camera's interiors" `Quick test_camera_order;
     Alcotest.test_case "errors" `Quick test_errors;
     Alcotest.test_case "statistics" `Quick test_stats;
