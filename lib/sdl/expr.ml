@@ -609,11 +609,13 @@ let parse_rgb st what =
     | (V.Vector _ | V.Colour _) as v -> let a = V.promote v 3 in Rgb.make a.(0) a.(1) a.(2)
     | v -> Error.raise_at loc "expected a colour for %s but found %s" what (V.kind_name v)
 
-(* Does the next token start a float expression (for optional values such as [metallic [M]])? *)
+(* Does the next token start a float expression (for optional values such as [metallic [M]])?
+   POV-Ray's CASE_FLOAT: a number, '(', '+', '-', '!', a float identifier or built-in, a function
+   identifier; not a vector identifier. *)
 let float_follows st =
   match peek st with
-  | Num _ | LParen | Minus | Plus -> true
-  | Ident s -> ( match cur_value st s with Some (V.Float _) -> true | _ -> Names.mem function_set s || List.mem s [ "pi"; "true"; "false"; "yes"; "no"; "on"; "off"; "clock"; "version"; "image_width"; "image_height" ])
+  | Num _ | LParen | Minus | Plus | Bang -> true
+  | Ident s -> ( match cur_value st s with Some (V.Float _ | V.Function _) -> true | _ -> Names.mem function_set s || List.mem s [ "pi"; "true"; "false"; "yes"; "no"; "on"; "off"; "clock"; "version"; "image_width"; "image_height" ])
   | _ -> false
 
 let parse_bool_opt st = if float_follows st then truth (parse_float st) else true

@@ -274,7 +274,8 @@ let mesh2 st loc =
               indices st l nv "vertex" fv;
               (* an optional texture index (three would interpolate, which is not read yet) *)
               let tex =
-                let index_follows () = accept st Comma && (match peek st with Lt | RBrace -> false | _ -> true) in
+                (* POV-Ray's CASE_FLOAT: a vector identifier starts the next face *)
+                let index_follows () = accept st Comma && Expr.float_follows st in
                 if index_follows () then begin
                   let tl = peek_loc st in
                   let t = parse_float st in

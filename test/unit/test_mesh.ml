@@ -243,6 +243,18 @@ let test_textures () =
   Alcotest.(check int) "face 0: texture 1" 1 (Mesh.texture m 0);
   Alcotest.(check int) "face 1: none" (-1) (Mesh.texture m 1);
   Alcotest.(check int) "face 2: texture 0" 0 (Mesh.texture m 2);
+  (* a face written as a vector expression that starts with a vector identifier is the next face,
+     not a texture index (POV-Ray's CASE_FLOAT; shapes.inc's HF macros write F1+A, F2+A); a float
+     identifier is an index *)
+  let m, _, _ =
+    mesh_of
+      "#declare F1 = <0,1,2>; #declare F2 = <1,3,2>; #declare A = 0; #declare T = 1;\n\
+      \  mesh2 { vertex_vectors { 4, <0,0,0>, <1,0,0>, <0,1,0>, <1,1,0> }\n\
+      \  texture_list { 2, texture { pigment { rgb <1,0,0> } } texture { pigment { rgb <0,1,0> } } }\n\
+      \  face_indices { 3, F1+A, F2+A, T, <0,1,3> } }"
+  in
+  Alcotest.(check int) "three faces" 3 m.faces;
+  Alcotest.(check (list int)) "textures: none, T, none" [ -1; 1; -1 ] [ Mesh.texture m 0; Mesh.texture m 1; Mesh.texture m 2 ];
   (* without a texture_list every face uses the mesh's own *)
   let m, _, textures = mesh_of "mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0> } face_indices { 1, <0,1,2> } }" in
   Alcotest.(check int) "no list" 0 (Array.length textures);
