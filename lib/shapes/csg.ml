@@ -167,6 +167,40 @@ let bounded_box (c : csg) =
   let volume b = f32 (f32 (b.(3) *. b.(4)) *. b.(5)) in
   if volume box < volume own then box else own
 
+(* CSG::Compute_BBox of an intersection: the overlap of its members' boxes ([member_box]), the
+   inverted members and height fields left out, the quadrics taken last *)
+let intersection_bounds ~member_box c =
+  let overlap a b = Array.init 6 (fun i -> if i < 3 then Float.max a.(i) b.(i) else Float.min a.(i) b.(i)) in
+  let is_quadric m = match m.shape with Quadric _ -> true | _ -> false in
+  (* CSG::Compute_BBox leaves an intersection's height fields out too *)
+  let is_hfield m = match (c.kind, m.shape) with Intersection, Height_field _ -> true | _ -> false in
+  let b =
+    Array.fold_left
+      (fun acc m ->
+        match (m.inverted || is_quadric m || is_hfield m, acc, member_box m) with
+        | false, None, Some b -> Some b
+        | false, Some a, Some b -> Some (overlap a b)
+        | false, acc, None | true, acc, _ -> acc)
+      None c.members
+  in
+  (* CSG::Compute_BBox takes the quadrics last, each bounded within the others' box
+     (Quadric::Compute_BBox with that box as its clip); clipped_by does the same *)
+  let b =
+    Array.fold_left
+      (fun acc m ->
+        match (m.inverted, m.shape) with
+        | false, Quadric q -> (
+            let lo, hi = match acc with Some a -> (Array.sub a 0 3, Array.sub a 3 3) | None -> (Array.make 3 (-2e10), Array.make 3 2e10) in
+            match (acc, Quadric.bounds_within q lo hi) with
+            | _, None -> acc
+            | None, Some qb -> Some qb
+            | Some a, Some qb -> Some (overlap a qb))
+        | _ -> acc)
+      b c.members
+  in
+  (* an empty overlap: nothing can be hit; POV-Ray then keeps its unbounded box *)
+  Option.bind b (fun b -> if b.(0) > b.(3) || b.(1) > b.(4) || b.(2) > b.(5) then None else Some b)
+
 let bounds ~bounds c =
   match (c.kind, lone_inverted c) with
   | _, Some m -> bounds m.shape
@@ -185,37 +219,7 @@ let bounds ~bounds c =
         (Some [| infinity; infinity; infinity; neg_infinity; neg_infinity; neg_infinity |])
         c.members
       |> Option.map (fun b -> if b.(0) > b.(3) then [| 0.; 0.; 0.; 0.; 0.; 0. |] else b)
-  | (Intersection | Clipped), None ->
-      let overlap a b = Array.init 6 (fun i -> if i < 3 then Float.max a.(i) b.(i) else Float.min a.(i) b.(i)) in
-      let is_quadric m = match m.shape with Quadric _ -> true | _ -> false in
-      (* CSG::Compute_BBox leaves an intersection's height fields out too *)
-      let is_hfield m = match (c.kind, m.shape) with Intersection, Height_field _ -> true | _ -> false in
-      let b =
-        Array.fold_left
-          (fun acc m ->
-            match (m.inverted || is_quadric m || is_hfield m, acc, bounds m.shape) with
-            | false, None, Some b -> Some b
-            | false, Some a, Some b -> Some (overlap a b)
-            | false, acc, None | true, acc, _ -> acc)
-          None c.members
-      in
-      (* CSG::Compute_BBox takes the quadrics last, each bounded within the others' box
-         (Quadric::Compute_BBox with that box as its clip); clipped_by does the same *)
-      let b =
-        Array.fold_left
-          (fun acc m ->
-            match (m.inverted, m.shape) with
-            | false, Quadric q -> (
-                let lo, hi = match acc with Some a -> (Array.sub a 0 3, Array.sub a 3 3) | None -> (Array.make 3 (-2e10), Array.make 3 2e10) in
-                match (acc, Quadric.bounds_within q lo hi) with
-                | _, None -> acc
-                | None, Some qb -> Some qb
-                | Some a, Some qb -> Some (overlap a qb))
-            | _ -> acc)
-          b c.members
-      in
-      (* an empty overlap: nothing can be hit; POV-Ray then keeps its unbounded box *)
-      Option.bind b (fun b -> if b.(0) > b.(3) || b.(1) > b.(4) || b.(2) > b.(5) then None else Some b)
+  | (Intersection | Clipped), None -> intersection_bounds ~member_box:(fun m -> bounds m.shape) c
 
 let union_box boxes =
   (* the members' single-precision boxes, their upper corners added in double precision; a box
@@ -234,7 +238,7 @@ let union_box boxes =
     let b = Pov_box.of_min_max lo hi in
     if b.(3) > 1e6 || b.(4) > 1e6 || b.(5) > 1e6 then [||] else b
 
-let pov_box ~bounds:member_bounds ~pov_box c =
+let pov_box ~pov_box c =
   match (c.kind, lone_inverted c) with
   | _, Some m -> pov_box m.shape
   | (Bounded | Boxed), None when Array.length c.members = 0 -> [||]
@@ -244,7 +248,15 @@ let pov_box ~bounds:member_bounds ~pov_box c =
   | (Union | Merge), None when Array.length c.cbox > 0 -> c.cbox
   | (Union | Merge), None -> union_box (Array.to_list (Array.map (fun m -> m.pbox) c.members))
   | (Intersection | Clipped), None -> (
-      match bounds ~bounds:member_bounds c with None -> [||] | Some b -> Pov_box.of_min_max (Array.sub b 0 3) (Array.sub b 3 3))
+      (* the members' POV-Ray boxes, as POV-Ray keeps them (not the tighter ones povml's own
+         hierarchy uses) *)
+      let member_box m =
+        let b = m.pbox in
+        if Array.length b = 0 then None else Some [| b.(0); b.(1); b.(2); b.(0) +. b.(3); b.(1) +. b.(4); b.(2) +. b.(5) |]
+      in
+      match intersection_bounds ~member_box c with
+      | None -> [||]
+      | Some b -> Pov_box.of_min_max (Array.sub b 0 3) (Array.sub b 3 3))
 
 let magnitude c = Array.fold_left (fun m o -> Float.max m o.mag) 0. c.members
 

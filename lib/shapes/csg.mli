@@ -56,13 +56,13 @@ val lone_inverted : Compiled.csg -> Compiled.obj option
 (** [lone_inverted c] is the member of an intersection that holds one inverted primitive alone (an
     inverted primitive written by itself), whose own box POV-Ray keeps. *)
 
-val pov_box :
-  bounds:(Compiled.shape -> float array option) -> pov_box:(Compiled.shape -> float array) -> Compiled.csg -> float array
-(** [pov_box ~bounds ~pov_box c] is the CSG's POV-Ray box, rounded as POV-Ray stores it; [[||]]
+val pov_box : pov_box:(Compiled.shape -> float array) -> Compiled.csg -> float array
+(** [pov_box ~pov_box c] is the CSG's POV-Ray box, rounded as POV-Ray stores it; [[||]]
     when unbounded. A union or merge with a [cbox] has that box: POV-Ray computes it when the CSG
     is built and maps it by each later transform (the history kept in {!Scene.shape}'s [box]).
-    Otherwise it is CSG::Compute_BBox from the members' boxes as they are now. An inverted
-    primitive written alone keeps its own POV-Ray box. *)
+    Otherwise it is CSG::Compute_BBox from the members' POV-Ray boxes as they are now (for an
+    intersection, their overlap: not the tighter boxes of [bounds]). An inverted primitive written
+    alone keeps its own POV-Ray box. *)
 
 val union_box : float array list -> float array
 (** [union_box boxes] is a union's or merge's box from its members' POV-Ray boxes ([[||]] for an

@@ -329,7 +329,7 @@ let rec pov_box shape =
   | Parametric m -> Parametric.pov_box m
   | Bicubic b -> Bezier.pov_box b
   | Poly _ -> [||]
-  | Csg c -> Csg.pov_box ~bounds ~pov_box c
+  | Csg c -> Csg.pov_box ~pov_box c
 
 let costly = function
   | Ellipsoid _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Prism _ | Lathe _ | Sor _ | Julia _ | Isosurface _ | Parametric _ | Bicubic _ -> true
