@@ -133,11 +133,13 @@ type options = {
   width : int;  (** +W: image width in pixels *)
   height : int;  (** +H: image height in pixels *)
   antialias : float option;  (** +A: the antialiasing threshold; [None] without +A *)
+  aa_threshold : float option;  (** an ini file's Antialias_Threshold: the threshold, without turning antialiasing on *)
   no_antialias : bool;  (** -A *)
   sampling_method : int;  (** +AM: the antialiasing method, as given *)
   aa_depth : int;  (** +R: the supersampling depth, as given *)
   jitter : float;  (** +J: the jitter amount, as given *)
   no_jitter : bool;  (** -J *)
+  jitter_amount : float option;  (** an ini file's Jitter_Amount: the amount, without turning jitter on *)
   aa_gamma : float;  (** +AG: the gamma of the antialiasing colour comparison *)
   library_paths : string list;  (** +L: the include directories, in order *)
   threads : int;  (** +WT: render processes, as given *)
@@ -159,11 +161,11 @@ type options = {
   limits : Scene_limits.t;  (** the --max-… limits *)
 }
 
-let make_options input scene output width height antialias no_antialias sampling_method aa_depth jitter
-    no_jitter aa_gamma library_paths threads start_row end_row start_column end_column block_size format
+let make_options input scene output width height antialias aa_threshold no_antialias sampling_method aa_depth jitter
+    no_jitter jitter_amount aa_gamma library_paths threads start_row end_row start_column end_column block_size format
     display verbose clock dump robust scene_scale scene_translate allow_read allow_write limits =
-  { input; scene; output; width; height; antialias; no_antialias; sampling_method; aa_depth; jitter; no_jitter;
-    aa_gamma; library_paths; threads; start_row; end_row; start_column; end_column; block_size; format;
+  { input; scene; output; width; height; antialias; aa_threshold; no_antialias; sampling_method; aa_depth; jitter; no_jitter;
+    jitter_amount; aa_gamma; library_paths; threads; start_row; end_row; start_column; end_column; block_size; format;
     display; verbose; clock; dump; robust; scene_scale; scene_translate; allow_read; allow_write; limits }
 
 let run (args : options) =
@@ -205,7 +207,11 @@ let run (args : options) =
         else
           (* POV-Ray clips the method to 0 … 2, and method 0 is no antialiasing *)
           let method_ = args.sampling_method in
-          let antialias = if args.no_antialias || method_ <= 0 then None else args.antialias in
+          let antialias =
+            if args.no_antialias || method_ <= 0 then None
+            else Option.map (fun t -> Option.value args.aa_threshold ~default:t) args.antialias
+          in
+          let jitter = Option.value args.jitter_amount ~default:args.jitter in
           let opts =
             {
               Render.width;
@@ -213,7 +219,7 @@ let run (args : options) =
               antialias = Option.map (fun t -> Float.min 1. (Float.max 0. t)) antialias;
               aa_method = (if method_ >= 2 then Render.Adaptive else Render.Non_adaptive);
               aa_depth = max 1 (min 9 args.aa_depth);
-              jitter = (if args.no_jitter then 0. else Float.min 1. (Float.max 0. args.jitter));
+              jitter = (if args.no_jitter then 0. else Float.min 1. (Float.max 0. jitter));
               aa_gamma = args.aa_gamma;
               area;
               block_size = max 4 (min (max width height) args.block_size);
@@ -294,6 +300,14 @@ let cmd =
   let antialias =
     Arg.(value & opt ~vopt:(Some 0.3) (some float) None & info [ "antialias" ] ~docv:"THRESHOLD" ~docs
            ~doc:"+A[threshold]: antialias; a pixel is supersampled when it differs from a neighbour by at least THRESHOLD (default 0.3).")
+  in
+  let aa_threshold =
+    Arg.(value & opt (some float) None & info [ "antialias-threshold" ] ~docv:"T" ~docs
+           ~doc:"Antialias_Threshold of an ini file: the threshold of $(b,--antialias), without turning antialiasing on.")
+  in
+  let jitter_amount =
+    Arg.(value & opt (some float) None & info [ "jitter-amount" ] ~docv:"J" ~docs
+           ~doc:"Jitter_Amount of an ini file: the jitter amount, without turning jitter on.")
   in
   let no_aa = Arg.(value & flag & info [ "no-antialias" ] ~docs ~doc:"-A: no antialiasing (the default).") in
   let method_ = Arg.(value & opt int 1 & info [ "sampling-method" ] ~docv:"N" ~docs ~doc:"+AM: antialiasing method: 1 (non-adaptive, the default), 2 (adaptive, recursive); as in POV-Ray, 0 or less means no antialiasing and more than 2 means 2.") in
@@ -383,8 +397,8 @@ let cmd =
   let term =
     let options =
       Term.(
-        const make_options $ input $ positional $ output $ width $ height $ antialias $ no_aa $ method_ $ depth $ jitter
-        $ no_jitter $ aa_gamma $ libs $ threads $ sr $ er $ sc $ ec $ block_size $ format $ display $ verbose $ clock
+        const make_options $ input $ positional $ output $ width $ height $ antialias $ aa_threshold $ no_aa $ method_ $ depth $ jitter
+        $ no_jitter $ jitter_amount $ aa_gamma $ libs $ threads $ sr $ er $ sc $ ec $ block_size $ format $ display $ verbose $ clock
         $ dump $ robust $ scene_scale $ scene_translate $ allow_read $ allow_write $ limits)
     in
     Term.(ret (const run $ options))
@@ -400,6 +414,16 @@ let () =
   (match argv with
   | _ :: (("check" | "report") as sub) :: rest -> exit (Subcommands.main ~translate:translate_switch prog sub rest)
   | _ -> ());
+  (* an ini file, named alone or after +I, stands for the switches it holds, where it is named *)
+  let argv =
+    let expand a =
+      let named = if String.length a > 2 && (a.[0] = '+' || a.[0] = '-') && Char.uppercase_ascii a.[1] = 'I' then Some (String.sub a 2 (String.length a - 2)) else if a <> "" && a.[0] <> '-' && a.[0] <> '+' then Some a else None in
+      match named with Some f when Ini.is_ini f -> Ini.switches ~warn:print_warning f | Some _ | None -> [ a ]
+    in
+    match List.concat_map expand (List.tl argv) with
+    | exception Error.Scene_error e -> print_error e; exit (Exits.scene_error e.kind)
+    | args -> prog :: args
+  in
   let bad = ref None in
   let args =
     List.map

@@ -1,0 +1,194 @@
+(* POV-Ray's .ini files (processoptions.cpp ParseFile) read into the switches they stand for. *)
+
+(* What an ini option becomes: a switch povml reads, or nothing yet (a warning names it). *)
+type meaning = Switch of (string -> string option) | Include | Not_yet
+
+let bool_of s =
+  match String.lowercase_ascii s with
+  | "on" | "true" | "yes" | "1" -> Some true
+  | "off" | "false" | "no" | "0" -> Some false
+  | _ -> None
+
+let valued sw v = Some (sw ^ v)
+let int_v sw v = Option.map (fun _ -> sw ^ v) (int_of_string_opt (String.trim v))
+let float_v sw v = Option.map (fun _ -> sw ^ v) (float_of_string_opt (String.trim v))
+let flag sw v = Option.map (fun b -> (if b then "+" else "-") ^ sw) (bool_of v)
+
+(* The ini keys of POV-Ray 3.7 (RenderOptions_INI_Table), lowercased, with what povml makes of
+   each; a key not listed is not one of POV-Ray's *)
+let table =
+  [ ("input_file_name", Switch (valued "+I")); ("output_file_name", Switch (valued "+O"));
+    ("width", Switch (int_v "+W")); ("height", Switch (int_v "+H"));
+    ("antialias", Switch (flag "A")); ("antialias_threshold", Switch (float_v "--antialias-threshold="));
+    ("sampling_method", Switch (int_v "+AM")); ("antialias_depth", Switch (int_v "+R"));
+    ("antialias_gamma", Switch (float_v "+AG")); ("jitter", Switch (flag "J"));
+    ("jitter_amount", Switch (float_v "--jitter-amount=")); ("library_path", Switch (valued "+L"));
+    ("clock", Switch (float_v "+K")); ("start_row", Switch (float_v "+SR")); ("end_row", Switch (float_v "+ER"));
+    ("start_column", Switch (float_v "+SC")); ("end_column", Switch (float_v "+EC"));
+    ("work_threads", Switch (int_v "+WT")); ("render_block_size", Switch (int_v "+BS"));
+    ("display", Switch (flag "D")); ("verbose", Switch (flag "V"));
+    ("output_file_type", Switch (fun v -> match String.uppercase_ascii v with "N" | "N8" -> Some "+FN" | "P" -> Some "+FP" | _ -> None));
+    ("include_ini", Include) ]
+  @ List.map
+      (fun k -> (String.lowercase_ascii k, Not_yet))
+      [ "All_Console"; "All_File"; "Append_File"; "Bits_Per_Color"; "Bits_Per_Colour"; "Bounding"; "Bounding_Method";
+        "Bounding_Threshold"; "BSP_BaseAccessCost"; "BSP_ChildAccessCost"; "BSP_ISectCost"; "BSP_MaxDepth";
+        "BSP_MissChance"; "Buffer_Output"; "Buffer_Size"; "Clockless_Animation"; "Compression"; "Continue_Trace";
+        "Create_Histogram"; "Create_Ini"; "Cyclic_Animation"; "Debug_Console"; "Debug_File"; "Declare";
+        "Display_Gamma"; "Dither"; "Dither_Method"; "Draw_Vistas"; "Fatal_Console"; "Fatal_Error_Command";
+        "Fatal_Error_Return"; "Fatal_File"; "Field_Render"; "File_Gamma"; "Final_Clock"; "Final_Frame"; "Frame_Step";
+        "Grayscale_Output"; "High_Reproducibility"; "Histogram_Name"; "Histogram_Grid_Size"; "Histogram_Type";
+        "Initial_Clock"; "Initial_Frame"; "Include_Header"; "Light_Buffer"; "Max_Image_Buffer_Memory"; "Odd_Field";
+        "Output_Alpha"; "Output_To_File"; "Palette"; "Pause_When_Done"; "Post_Frame_Command"; "Post_Frame_Return";
+        "Post_Scene_Command"; "Post_Scene_Return"; "Preview_End_Size"; "Preview_Start_Size"; "Pre_Frame_Command";
+        "Pre_Frame_Return"; "Pre_Scene_Command"; "Pre_Scene_Return"; "Quality"; "Radiosity_File_Name";
+        "Radiosity_From_File"; "Radiosity_To_File"; "Radiosity_Vain_Pretrace"; "Real_Time_Raytracing";
+        "Remove_Bounds"; "Render_Block_Step"; "Render_Console"; "Render_File"; "Render_Pattern"; "Split_Unions";
+        "Statistic_Console"; "Statistic_File"; "Subset_End_Frame"; "Subset_Start_Frame"; "Test_Abort";
+        "Test_Abort_Count"; "User_Abort_Command"; "User_Abort_Return"; "Version"; "Video_Mode"; "Vista_Buffer";
+        "Warning_Console"; "Warning_File"; "Warning_Level" ]
+
+let is_ini name =
+  let base = match String.index_opt name '[' with Some i -> String.sub name 0 i | None -> name in
+  Filename.check_suffix (String.lowercase_ascii base) ".ini"
+
+(* "file.ini[Section]": the file and the section (Parse_INI_Specification) *)
+let specification loc spec =
+  match String.index_opt spec '[' with
+  | None -> (spec, None)
+  | Some i -> (
+      match String.index_from_opt spec i ']' with
+      | None -> Error.raise_at loc "'%s': a section name opened with '[' needs its ']'" spec
+      | Some j -> (String.sub spec 0 i, Some (String.sub spec (i + 1) (j - i - 1))))
+
+(* A cursor over one file's text, with the line and column it has reached. *)
+type cursor = { file : string; text : string; mutable pos : int; mutable line : int; mutable bol : int }
+
+let peek c = if c.pos < String.length c.text then Some c.text.[c.pos] else None
+let here c = { Loc.file = c.file; line = c.line; col = c.pos - c.bol + 1 }
+
+let advance c =
+  (match peek c with
+  | Some '\n' -> c.line <- c.line + 1; c.bol <- c.pos + 1
+  | Some '\r' when not (c.pos + 1 < String.length c.text && c.text.[c.pos + 1] = '\n') -> c.line <- c.line + 1; c.bol <- c.pos + 1
+  | Some _ | None -> ());
+  c.pos <- c.pos + 1
+
+let rec skip_blanks c = match peek c with Some (' ' | '\t') -> advance c; skip_blanks c | _ -> ()
+let rec skip_space c = match peek c with Some (' ' | '\t' | '\n' | '\r') -> advance c; skip_space c | _ -> ()
+let rec skip_line c = match peek c with None -> () | Some '\n' -> advance c | Some _ -> advance c; skip_line c
+
+(* Parse_INI_String: up to a space, ',', ';', '#', a quote (and for a key '[', ']', '='), or up to
+   [stop]; a value with spaces in it reads on to the end of the line or a comment when it is
+   followed by more than one word and no '=' (POV-Ray's "smart mode", for unquoted paths) *)
+let word ?stop ?(key = false) c =
+  let b = Buffer.create 16 in
+  let rec go () =
+    match (peek c, stop) with
+    | None, _ -> ()
+    | Some ch, Some s -> advance c; if ch <> s then (Buffer.add_char b ch; go ())
+    | Some (' ' | '\t' | '\n' | '\r' | ',' | ';' | '#' | '"' | '\''), None -> ()
+    | Some ('[' | ']' | '='), None when key -> ()
+    | Some ch, None -> Buffer.add_char b ch; advance c; go ()
+  in
+  go ();
+  Buffer.contents b
+
+let value c =
+  match peek c with
+  | Some (('"' | '\'') as q) -> advance c; word ~stop:q c
+  | _ ->
+      let first = word c in
+      (* an unquoted path with spaces: the rest of the line up to a comment, when no '=' follows *)
+      let save = (c.pos, c.line, c.bol) in
+      skip_blanks c;
+      let rest_start = c.pos in
+      let rec to_end () = match peek c with None | Some ('\n' | '\r' | ';' | '#') -> () | Some _ -> advance c; to_end () in
+      to_end ();
+      let rest = String.trim (String.sub c.text rest_start (c.pos - rest_start)) in
+      if rest <> "" && first <> "" && (not (String.contains rest '=')) && rest.[0] <> ',' then first ^ " " ^ rest
+      else begin
+        let p, l, bl = save in
+        c.pos <- p; c.line <- l; c.bol <- bl;
+        first
+      end
+
+let read_file loc file =
+  match open_in_bin file with
+  | exception Sys_error _ -> Error.raise_at loc "cannot open the ini file \"%s\"" file
+  | ic -> Fun.protect ~finally:(fun () -> close_in_noerr ic) (fun () -> really_input_string ic (in_channel_length ic))
+
+let rec expand ~warn ~depth loc spec =
+  if depth > 16 then Error.raise_at loc "ini files include each other more than 16 deep";
+  let file, section = specification loc spec in
+  let c = { file; text = read_file loc file; pos = 0; line = 1; bol = 0 } in
+  let out = ref [] in
+  let emit s = out := s :: !out in
+  (* the lines before the first section always count; a named section only when it was asked for *)
+  let active = ref true in
+  let rec lines () =
+    skip_space c;
+    match peek c with
+    | None -> ()
+    | Some '[' ->
+        advance c;
+        let name = word ~stop:']' c in
+        active := (match section with Some s -> String.lowercase_ascii s = String.lowercase_ascii name | None -> false);
+        lines ()
+    | Some _ when not !active -> skip_line c; lines ()
+    | Some (';' | '#') -> skip_line c; lines ()
+    | Some ('+' | '-') ->
+        let sw = word c in
+        let sw = match peek c with Some (('"' | '\'') as q) -> advance c; sw ^ word ~stop:q c | _ -> sw in
+        emit sw;
+        lines ()
+    | Some ch when ch = '_' || (Char.code ch < 128 && (match ch with 'a' .. 'z' | 'A' .. 'Z' | '0' .. '9' -> true | _ -> false)) ->
+        let l = here c in
+        let k = word ~key:true c in
+        skip_blanks c;
+        if peek c <> Some '=' then begin
+          (* a plain word: another ini file, or the scene (ProcessUnknownString) *)
+          let plain = k ^ word c in
+          if is_ini plain then List.iter emit (List.rev (expand ~warn ~depth:(depth + 1) l (relative file plain)))
+          else emit ("+I" ^ plain);
+          lines ()
+        end
+        else begin
+          advance c;
+          skip_blanks c;
+          let values = ref [ value c ] in
+          skip_blanks c;
+          while peek c = Some ',' do
+            advance c;
+            skip_blanks c;
+            values := value c :: !values;
+            skip_blanks c
+          done;
+          (match List.assoc_opt (String.lowercase_ascii k) table with
+          | None -> Error.raise_at l "unknown ini option '%s' (POV-Ray 3.7 has no such key)" k
+          | Some Not_yet -> warn (Error.warning l (Printf.sprintf "the ini option '%s' is not supported yet; ignored" k))
+          | Some Include -> List.iter (fun v -> List.iter emit (List.rev (expand ~warn ~depth:(depth + 1) l (relative file v)))) (List.rev !values)
+          | Some (Switch make) ->
+              List.iter
+                (fun v ->
+                  match make v with
+                  | Some s -> emit s
+                  | None -> Error.raise_at l "'%s' is not a value of the ini option '%s'" v k)
+                (List.rev !values));
+          skip_line c;
+          lines ()
+        end
+    | Some ch -> Error.raise_at (here c) "unexpected '%c' in an ini file: expected an option (Key=Value), a switch or a section" ch
+  in
+  lines ();
+  List.rev !out
+
+(* POV-Ray opens an ini file named by another as given, from the current directory; povml also
+   looks beside the naming file when the name is relative and not found *)
+and relative from name =
+  let base = match String.index_opt name '[' with Some i -> String.sub name 0 i | None -> name in
+  if Filename.is_relative base && (not (Sys.file_exists base)) && Sys.file_exists (Filename.concat (Filename.dirname from) base) then
+    Filename.concat (Filename.dirname from) name
+  else name
+
+let switches ~warn spec = expand ~warn ~depth:0 Loc.none spec

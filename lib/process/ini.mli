@@ -1,0 +1,20 @@
+(** POV-Ray's .ini files (POVRAY's processoptions.cpp, ParseFile): [Key=Value] options,
+    command-line switches, comments after [;] or [#], sections ([\[Name\]]), further ini files
+    and the scene named on a line of their own. Each option becomes the POV-Ray switch it stands
+    for, so an ini file and the command line mix in one list, later ones winning. *)
+
+val is_ini : string -> bool
+(** [is_ini name] is whether [name] (perhaps with a [\[Section\]] after it) names an ini file: it
+    ends in [.ini], in any case. *)
+
+val switches : warn:(Error.t -> unit) -> string -> string list
+(** [switches ~warn spec] reads the ini file [spec] ([file.ini] or [file.ini\[Section\]]) into
+    switches, in the file's order: [Width=640] is ["+W640"], [Antialias=on] ["+A"], a switch line
+    itself, [Include_Ini] and a plain ini file name the switches of that file, a plain other name
+    ["+I"] of it. The lines before the first section always count; a named section only when it is
+    [spec]'s. POV-Ray's options povml does not read yet (animation, declares, file outputs …)
+    are passed to [warn], located, and dropped. [Antialias_Threshold] and [Jitter_Amount] set the
+    value without turning the feature on, as ["--antialias-threshold=T"] and
+    ["--jitter-amount=J"].
+    @raise Error.Scene_error on a file that cannot be read, a key POV-Ray does not have, a value
+    an option cannot take, or a line that is none of the above. *)
