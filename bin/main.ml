@@ -40,7 +40,14 @@ let translate_switch arg =
     else if starts "H" && up <> "H" then valued "height" "H"
     else if starts "R" then valued "aa-depth" "R"
     else if starts "L" then valued "library-path" "L"
+    else if starts "KFI" then valued "initial-frame" "KFI"
+    else if starts "KFF" then valued "final-frame" "KFF"
+    else if starts "KI" then valued "initial-clock" "KI"
+    else if starts "KF" then valued "final-clock" "KF"
+    else if up = "KC" then `Use (if on then "--cyclic" else "--no-cyclic")
     else if starts "K" && up <> "K" then valued "clock" "K"
+    else if starts "SF" then valued "subset-start" "SF"
+    else if starts "EF" then valued "subset-end" "EF"
     else if arg = "-h" then `Keep arg
     else `Bad
 
@@ -151,7 +158,8 @@ type options = {
   format : [ `Png | `Ppm ];  (** +FN or +FP *)
   display : bool;  (** +D or -D: accepted, without effect *)
   verbose : bool;  (** +V or -V: accepted, without effect *)
-  clock : float;  (** +K: the value of [clock] in the scene *)
+  clock : float option;  (** +K: the value of [clock] in the scene *)
+  animation : Animation.settings;  (** +KFI, +KFF, +KI, +KF, +KC, +SF, +EF, Frame_Step *)
   dump : bool;  (** --dump: print the evaluated scene instead of rendering it *)
   robust : bool;  (** --robust: robust intersection limits instead of POV-Ray's *)
   scene_scale : float;  (** --scene-scale: the scene scaled about the origin *)
@@ -163,10 +171,10 @@ type options = {
 
 let make_options input scene output width height antialias aa_threshold no_antialias sampling_method aa_depth jitter
     no_jitter jitter_amount aa_gamma library_paths threads start_row end_row start_column end_column block_size format
-    display verbose clock dump robust scene_scale scene_translate allow_read allow_write limits =
+    display verbose clock animation dump robust scene_scale scene_translate allow_read allow_write limits =
   { input; scene; output; width; height; antialias; aa_threshold; no_antialias; sampling_method; aa_depth; jitter; no_jitter;
     jitter_amount; aa_gamma; library_paths; threads; start_row; end_row; start_column; end_column; block_size; format;
-    display; verbose; clock; dump; robust; scene_scale; scene_translate; allow_read; allow_write; limits }
+    display; verbose; clock; animation; dump; robust; scene_scale; scene_translate; allow_read; allow_write; limits }
 
 let run (args : options) =
   let { width; height; limits; _ } = args in
@@ -177,7 +185,15 @@ let run (args : options) =
       let access = List.fold_left Access.allow_read Access.default args.allow_read in
       let access = List.fold_left Access.allow_write access args.allow_write in
       let iopts =
-        { (Interp.default_options ~width ~height) with clock = args.clock; library_paths = args.library_paths; access; limits }
+        {
+          (Interp.default_options ~width ~height) with
+          (* POV-Ray keeps the clock in single precision *)
+          clock = Precision.f32 (Option.value args.clock ~default:0.);
+          animation = Animation.still ~clock_on:(args.clock <> None);
+          library_paths = args.library_paths;
+          access;
+          limits;
+        }
       in
       if width < 1 || height < 1 then usage_error "width and height must be at least 1"
       else if width > limits.pixels / height then
@@ -235,6 +251,7 @@ let run (args : options) =
           if not (scene_scale > 0. && Float.is_finite scene_scale) then usage_error "--scene-scale must be a positive number"
           else
           let () = Interrupt.install () in
+          let render_to iopts output =
           match Pipeline.run ~interp:iopts ?move opts input with
           | exception Error.Scene_error e -> fail e
           | exception Pool.Worker_failed msg ->
@@ -252,6 +269,34 @@ let run (args : options) =
                   print_stats r opts;
                   Printf.eprintf "Wrote %s (%dx%d)\n" output width height;
                   `Ok 0)
+          in
+          match Animation.plan args.animation with
+          | None -> render_to iopts output
+          | Some plan ->
+              (* one image per frame, the scene read anew for each, named as POV-Ray names them:
+                 the output name without its extension (or the scene's name), the frame number
+                 padded to the final frame's digits, the extension *)
+              let ext = match fmt with Png_fmt -> ".png" | Ppm_fmt -> ".ppm" in
+              let base =
+                match args.output with
+                | Some o when not (Sys.file_exists o && Sys.is_directory o) ->
+                    if Filename.check_suffix o ext then Filename.chop_suffix o ext
+                    else if o <> "" && o.[String.length o - 1] = '.' then String.sub o 0 (String.length o - 1)
+                    else o
+                | Some _ | None -> Filename.remove_extension output
+              in
+              let total = List.length plan.frames in
+              let rec frames i = function
+                | [] -> `Ok 0
+                | (f : Animation.frame) :: rest -> (
+                    Printf.eprintf "Frame %d of %d: frame_number %d, clock %s\n%!" i total f.values.frame_number
+                      (Printf.sprintf "%.9g" f.clock);
+                    let iopts = { iopts with clock = f.clock; animation = f.values } in
+                    match render_to iopts (Animation.numbered base ~frame:f.values.frame_number ~digits:plan.digits ^ ext) with
+                    | `Ok 0 -> frames (i + 1) rest
+                    | r -> r)
+              in
+              frames 1 plan.frames
 
 let cmd =
   let doc = "render POV-Ray 3.7 scenes, pixel for pixel as POV-Ray does" in
@@ -328,7 +373,26 @@ let cmd =
   in
   let display = Arg.(value & vflag false [ (true, info [ "display" ] ~docs ~doc:"+D: accepted; povml has no preview window."); (false, info [ "no-display" ] ~docs ~doc:"-D: no preview window.") ]) in
   let verbose = Arg.(value & vflag false [ (true, info [ "verbose" ] ~docs ~doc:"+V: accepted."); (false, info [ "no-verbose" ] ~docs ~doc:"-V: accepted.") ]) in
-  let clock = Arg.(value & opt float 0. & info [ "clock" ] ~docv:"V" ~docs ~doc:"+K: the value of $(b,clock) in the scene (default 0).") in
+  let clock = Arg.(value & opt (some float) None & info [ "clock" ] ~docv:"V" ~docs ~doc:"+K: the value of $(b,clock) in the scene (default 0).") in
+  let animation =
+    let io kind names docv doc = Arg.(value & opt (some kind) None & info names ~docv ~docs ~doc) in
+    let make initial_frame final_frame initial_clock final_clock cyclic no_cyclic subset_start subset_end frame_step =
+      { Animation.initial_frame; final_frame; initial_clock; final_clock; cyclic = cyclic && not no_cyclic; subset_start; subset_end; frame_step }
+    in
+    Term.(
+      const make
+      $ io Arg.int [ "initial-frame" ] "N" "+KFIn, Initial_Frame: the animation's first frame (default 1)."
+      $ io Arg.int [ "final-frame" ] "N"
+          "+KFFn, Final_Frame: the animation's last frame; with frames other than 1 to 1 povml renders an animation, one \
+           image per frame, numbered."
+      $ io Arg.float [ "initial-clock" ] "V" "+KIv, Initial_Clock: the clock of the first frame (default 0)."
+      $ io Arg.float [ "final-clock" ] "V" "+KFv, Final_Clock: the clock of the last frame (default 1)."
+      $ Arg.(value & flag & info [ "cyclic" ] ~docs ~doc:"+KC, Cyclic_Animation: the last frame is not the final clock but one step before it.")
+      $ Arg.(value & flag & info [ "no-cyclic" ] ~docs ~doc:"-KC: not cyclic (the default).")
+      $ io Arg.float [ "subset-start" ] "N" "+SFn, Subset_Start_Frame: render the frames from N (a fraction below 1: that share of them)."
+      $ io Arg.float [ "subset-end" ] "N" "+EFn, Subset_End_Frame: render the frames up to N."
+      $ io Arg.int [ "frame-step" ] "N" "Frame_Step: render every N-th frame.")
+  in
   let dump =
     Arg.(value & flag & info [ "dump" ]
            ~doc:"Print the evaluated scene instead of rendering it: every object after all directives, macros and \
@@ -398,7 +462,7 @@ let cmd =
     let options =
       Term.(
         const make_options $ input $ positional $ output $ width $ height $ antialias $ aa_threshold $ no_aa $ method_ $ depth $ jitter
-        $ no_jitter $ jitter_amount $ aa_gamma $ libs $ threads $ sr $ er $ sc $ ec $ block_size $ format $ display $ verbose $ clock
+        $ no_jitter $ jitter_amount $ aa_gamma $ libs $ threads $ sr $ er $ sc $ ec $ block_size $ format $ display $ verbose $ clock $ animation
         $ dump $ robust $ scene_scale $ scene_translate $ allow_read $ allow_write $ limits)
     in
     Term.(ret (const run $ options))

@@ -28,23 +28,27 @@ let table =
     ("work_threads", Switch (int_v "+WT")); ("render_block_size", Switch (int_v "+BS"));
     ("display", Switch (flag "D")); ("verbose", Switch (flag "V"));
     ("output_file_type", Switch (fun v -> match String.uppercase_ascii v with "N" | "N8" -> Some "+FN" | "P" -> Some "+FP" | _ -> None));
+    ("initial_frame", Switch (int_v "+KFI")); ("final_frame", Switch (int_v "+KFF"));
+    ("initial_clock", Switch (float_v "+KI")); ("final_clock", Switch (float_v "+KF"));
+    ("cyclic_animation", Switch (flag "KC")); ("subset_start_frame", Switch (float_v "+SF"));
+    ("subset_end_frame", Switch (float_v "+EF")); ("frame_step", Switch (int_v "--frame-step="));
     ("include_ini", Include) ]
   @ List.map
       (fun k -> (String.lowercase_ascii k, Not_yet))
       [ "All_Console"; "All_File"; "Append_File"; "Bits_Per_Color"; "Bits_Per_Colour"; "Bounding"; "Bounding_Method";
         "Bounding_Threshold"; "BSP_BaseAccessCost"; "BSP_ChildAccessCost"; "BSP_ISectCost"; "BSP_MaxDepth";
         "BSP_MissChance"; "Buffer_Output"; "Buffer_Size"; "Clockless_Animation"; "Compression"; "Continue_Trace";
-        "Create_Histogram"; "Create_Ini"; "Cyclic_Animation"; "Debug_Console"; "Debug_File"; "Declare";
+        "Create_Histogram"; "Create_Ini"; "Debug_Console"; "Debug_File"; "Declare";
         "Display_Gamma"; "Dither"; "Dither_Method"; "Draw_Vistas"; "Fatal_Console"; "Fatal_Error_Command";
-        "Fatal_Error_Return"; "Fatal_File"; "Field_Render"; "File_Gamma"; "Final_Clock"; "Final_Frame"; "Frame_Step";
+        "Fatal_Error_Return"; "Fatal_File"; "Field_Render"; "File_Gamma";
         "Grayscale_Output"; "High_Reproducibility"; "Histogram_Name"; "Histogram_Grid_Size"; "Histogram_Type";
-        "Initial_Clock"; "Initial_Frame"; "Include_Header"; "Light_Buffer"; "Max_Image_Buffer_Memory"; "Odd_Field";
+        "Include_Header"; "Light_Buffer"; "Max_Image_Buffer_Memory"; "Odd_Field";
         "Output_Alpha"; "Output_To_File"; "Palette"; "Pause_When_Done"; "Post_Frame_Command"; "Post_Frame_Return";
         "Post_Scene_Command"; "Post_Scene_Return"; "Preview_End_Size"; "Preview_Start_Size"; "Pre_Frame_Command";
         "Pre_Frame_Return"; "Pre_Scene_Command"; "Pre_Scene_Return"; "Quality"; "Radiosity_File_Name";
         "Radiosity_From_File"; "Radiosity_To_File"; "Radiosity_Vain_Pretrace"; "Real_Time_Raytracing";
         "Remove_Bounds"; "Render_Block_Step"; "Render_Console"; "Render_File"; "Render_Pattern"; "Split_Unions";
-        "Statistic_Console"; "Statistic_File"; "Subset_End_Frame"; "Subset_Start_Frame"; "Test_Abort";
+        "Statistic_Console"; "Statistic_File"; "Test_Abort";
         "Test_Abort_Count"; "User_Abort_Command"; "User_Abort_Return"; "Version"; "Video_Mode"; "Vista_Buffer";
         "Warning_Console"; "Warning_File"; "Warning_Level" ]
 

@@ -241,11 +241,19 @@ and parse_ident_value st loc name =
   | "image_width" -> advance st; V.Float (float_of_int st.opts.width)
   | "image_height" -> advance st; V.Float (float_of_int st.opts.height)
   | "clock" -> advance st; V.Float st.opts.clock
-  | "clock_delta" -> advance st; V.Float 0.
-  | "clock_on" | "frame_number" | "initial_clock" | "final_clock" | "initial_frame" | "final_frame" ->
+  | "clock_on" -> advance st; V.Float (if st.opts.animation.clock_on then 1. else 0.)
+  | "clock_delta" | "frame_number" | "initial_clock" | "final_clock" | "initial_frame" | "final_frame" ->
       advance st;
-      (* a single still image: frame 0 of no animation, clock from +K *)
-      V.Float (match name with "initial_clock" | "final_clock" -> st.opts.clock | _ -> 0.)
+      (* POV-Ray's front end declares them for every render; a still's are 0 *)
+      let a = st.opts.animation in
+      V.Float
+        (match name with
+        | "clock_delta" -> a.clock_delta
+        | "frame_number" -> float_of_int a.frame_number
+        | "initial_clock" -> a.initial_clock
+        | "final_clock" -> a.final_clock
+        | "initial_frame" -> float_of_int a.initial_frame
+        | _ -> float_of_int a.final_frame)
   | "version" -> advance st; V.Float (float_of_int st.version /. 100.)
   | "now" ->
       advance st;
@@ -279,7 +287,11 @@ and parse_defined_arg st =
       let d =
         match st.cur_elem with
         | Some (a, i) -> a.cells.(i) <> None
-        | None -> lookup st s <> None || List.mem s [ "x"; "y"; "z"; "t"; "u"; "v"; "pi"; "clock"; "version" ]
+        | None ->
+            lookup st s <> None
+            || List.mem s [ "x"; "y"; "z"; "t"; "u"; "v"; "pi"; "clock"; "version" ]
+            (* the identifiers POV-Ray's front end declares for every render *)
+            || List.mem s [ "image_width"; "image_height"; "clock_delta"; "frame_number"; "initial_frame"; "final_frame"; "initial_clock"; "final_clock" ]
       in
       advance st;
       d

@@ -13,6 +13,7 @@ type options = Reader.options = {
   width : int;
   height : int;
   clock : float;
+  animation : Animation.values;
   library_paths : string list;
   debug : string -> unit;
   included : string -> depth:int -> float -> unit;
@@ -175,6 +176,7 @@ let default_options ~width ~height =
     width;
     height;
     clock = 0.;
+    animation = Animation.still ~clock_on:false;
     library_paths = [];
     debug = (fun s -> prerr_string s; flush stderr);
     included = (fun _ ~depth:_ _ -> ());

@@ -4,7 +4,8 @@
 type options = {
   width : int;  (** [image_width] *)
   height : int;  (** [image_height] *)
-  clock : float;  (** [clock], from +K *)
+  clock : float;  (** [clock], from +K or the animation's frame *)
+  animation : Animation.values;  (** [clock_on], [clock_delta], [frame_number] and the other animation identifiers *)
   library_paths : string list;  (** +L directories, searched for include files after the scene's *)
   debug : string -> unit;  (** receives the text of [#debug] as it is read *)
   included : string -> depth:int -> float -> unit;

@@ -12,6 +12,7 @@ type options = {
   width : int;
   height : int;
   clock : float;
+  animation : Animation.values;
   library_paths : string list;
   debug : string -> unit;
   included : string -> depth:int -> float -> unit;
