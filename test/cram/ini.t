@@ -58,11 +58,11 @@ Antialias_Threshold sets the threshold without turning antialiasing on (as POV-R
 
 POV-Ray's options that povml does not read yet are named in a warning and ignored:
 
-  $ printf 'Initial_Frame=1\nFinal_Frame=3\nPause_When_Done=off\n' > anim.ini
-  $ povml s.pov anim.ini +W8 +H6 -D +Oi.png 2>&1 | grep -E 'warning|Wrote'
-  anim.ini:1:1: warning: the ini option 'Initial_Frame' is not supported yet; ignored
-  anim.ini:2:1: warning: the ini option 'Final_Frame' is not supported yet; ignored
-  anim.ini:3:1: warning: the ini option 'Pause_When_Done' is not supported yet; ignored
+  $ printf 'Declare=Size=2\nOutput_Alpha=on\nPause_When_Done=off\n' > more.ini
+  $ povml s.pov more.ini +W8 +H6 -D +Oi.png 2>&1 | grep -E 'warning|Wrote'
+  more.ini:1:1: warning: the ini option 'Declare' is not supported yet; ignored
+  more.ini:2:1: warning: the ini option 'Output_Alpha' is not supported yet; ignored
+  more.ini:3:1: warning: the ini option 'Pause_When_Done' is not supported yet; ignored
   Wrote i.png (8x6)
 
 A key POV-Ray does not have, a value an option cannot take, a file that cannot be read: located
