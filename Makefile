@@ -2,7 +2,7 @@
 # `make render` and `make test` install whatever Debian packages are missing first.
 
 DEB_PACKAGES = libcamlimages-ocaml-dev libalcotest-ocaml-dev \
-               libcmdliner-ocaml-dev libqcheck-ocaml-dev povray povray-includes povray-examples time
+               libcmdliner-ocaml-dev libqcheck-ocaml-dev povray povray-includes povray-examples time parallel
 
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 POVML = ./_build/default/bin/main.exe

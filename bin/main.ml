@@ -261,7 +261,8 @@ let run (args : options) =
           | r -> (
               List.iter print_warning r.warnings;
               let f = match fmt with Png_fmt -> Output.Png | Ppm_fmt -> Output.Ppm in
-              match Interrupt.commit (fun () -> Output.write f output r.image) with
+              let drawn = Merge.to_text { Merge.left = area.left; top = area.top; right = area.right; bottom = area.bottom; block = opts.block_size } in
+              match Interrupt.commit (fun () -> Output.write ~area:drawn f output r.image) with
               | Error msg ->
                   Printf.eprintf "%s: error: cannot write the image: %s\n" output msg;
                   `Ok Exits.cannot_write
@@ -477,6 +478,7 @@ let () =
   let prog = List.hd argv in
   (match argv with
   | _ :: (("check" | "report") as sub) :: rest -> exit (Subcommands.main ~translate:translate_switch prog sub rest)
+  | _ :: "merge" :: rest -> exit (Subcommands.merge prog rest)
   | _ -> ());
   (* an ini file, named alone or after +I, stands for the switches it holds, where it is named *)
   let argv =

@@ -244,3 +244,21 @@ let main ~translate prog sub rest =
       | Ok (`Version | `Help) -> 0
       | Error (`Parse | `Term) -> exit_usage
       | Error `Exn -> exit_render_failed)
+
+(* povml merge OUT PART…: partial renders put back together (Merge) *)
+let merge prog = function
+  | [] | [ _ ] | ("-h" | "--help") :: _ ->
+      Printf.eprintf
+        "usage: %s merge OUT PART...\n\
+        \  joins partial renders (+SR/+ER/+SC/+EC, PNGs written by povml) into OUT, the image one render writes;\n\
+        \  the parts must have one size and cover it without overlap\n"
+        prog;
+      2
+  | out :: parts -> (
+      match Merge.merge ~warn:(Printf.eprintf "povml merge: warning: %s\n") parts with
+      | Error msg -> Printf.eprintf "povml merge: error: %s\n" msg; 1
+      | Ok img -> (
+          let full = Merge.to_text { Merge.left = 0; top = 0; right = img.width - 1; bottom = img.height - 1; block = 32 } in
+          match Output.write ~area:full Output.Png out img with
+          | Error msg -> Printf.eprintf "povml merge: error: cannot write %s: %s\n" out msg; 5
+          | Ok () -> Printf.eprintf "Wrote %s (%dx%d) from %d parts\n" out img.width img.height (List.length parts); 0))

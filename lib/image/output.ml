@@ -22,7 +22,7 @@ let write_png path (img : Encode.t) =
 (* The temporary file is created, and renamed or removed, with SIGINT and SIGTERM held back, so
    that it always has a name to remove by; a signal that came while the image was being encoded
    cancels the rename. *)
-let write fmt path img =
+let write ?area fmt path img =
   let dir = Filename.dirname path in
   Interrupt.hold (fun () ->
       Interrupt.check ();
@@ -34,7 +34,13 @@ let write fmt path img =
       | tmp -> (
           let discard () = try Sys.remove tmp with Sys_error _ -> () in
           match
-            (match fmt with Png -> write_png tmp img | Ppm -> write_ppm tmp img);
+            (match fmt with
+            | Png -> (
+                write_png tmp img;
+                match area with
+                | None -> ()
+                | Some a -> ( match Png_text.add tmp ~key:Png_text.area_key ~value:a with Ok () -> () | Error m -> failwith m))
+            | Ppm -> write_ppm tmp img);
             Interrupt.check ()
           with
           | () -> (

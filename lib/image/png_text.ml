@@ -1,0 +1,63 @@
+(* PNG tEXt chunks: written after a file is saved, found when it is read back. *)
+
+let area_key = "povml-area"
+
+let crc_table =
+  Array.init 256 (fun n ->
+      let c = ref n in
+      for _ = 0 to 7 do
+        c := if !c land 1 <> 0 then 0xedb88320 lxor (!c lsr 1) else !c lsr 1
+      done;
+      !c)
+
+(* CRC-32 of the chunk type and data, as PNG computes it *)
+let crc s =
+  let c = ref 0xffffffff in
+  String.iter (fun ch -> c := crc_table.((!c lxor Char.code ch) land 0xff) lxor (!c lsr 8)) s;
+  !c lxor 0xffffffff
+
+let be32 n = String.init 4 (fun i -> Char.chr ((n lsr (8 * (3 - i))) land 0xff))
+let read32 s i = (Char.code s.[i] lsl 24) lor (Char.code s.[i + 1] lsl 16) lor (Char.code s.[i + 2] lsl 8) lor Char.code s.[i + 3]
+
+let read_all path =
+  let ic = open_in_bin path in
+  Fun.protect ~finally:(fun () -> close_in_noerr ic) (fun () -> really_input_string ic (in_channel_length ic))
+
+(* the chunks after the 8-byte signature: (type, data start, data length), in order *)
+let chunks s =
+  let rec go i acc =
+    if i + 8 > String.length s then List.rev acc
+    else
+      let len = read32 s i in
+      let kind = String.sub s (i + 4) 4 in
+      if i + 12 + len > String.length s then List.rev acc else go (i + 12 + len) ((kind, i + 8, len, i) :: acc)
+  in
+  if String.length s >= 8 && String.sub s 1 3 = "PNG" then go 8 [] else []
+
+let add path ~key ~value =
+  let s = read_all path in
+  match List.find_opt (fun (k, _, _, _) -> k = "IEND") (chunks s) with
+  | None -> Error (path ^ ": not a PNG file")
+  | Some (_, _, _, at) ->
+      let body = "tEXt" ^ key ^ "\000" ^ value in
+      let chunk = be32 (String.length body - 4) ^ body ^ be32 (crc body) in
+      let oc = open_out_bin path in
+      Fun.protect ~finally:(fun () -> close_out_noerr oc) (fun () ->
+          output_string oc (String.sub s 0 at);
+          output_string oc chunk;
+          output_string oc (String.sub s at (String.length s - at)));
+      Ok ()
+
+let find path ~key =
+  match read_all path with
+  | exception Sys_error _ -> None
+  | s ->
+      List.find_map
+        (fun (k, start, len, _) ->
+          if k <> "tEXt" then None
+          else
+            let data = String.sub s start len in
+            match String.index_opt data '\000' with
+            | Some i when String.sub data 0 i = key -> Some (String.sub data (i + 1) (String.length data - i - 1))
+            | Some _ | None -> None)
+        (chunks s)
