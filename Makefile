@@ -2,12 +2,13 @@
 # `make render` and `make test` install whatever Debian packages are missing first.
 
 DEB_PACKAGES = libcamlimages-ocaml-dev libalcotest-ocaml-dev \
-               libcmdliner-ocaml-dev libqcheck-ocaml-dev povray povray-includes povray-examples time parallel
+               libcmdliner-ocaml-dev libqcheck-ocaml-dev povray povray-includes povray-examples time parallel \
+               slurm-wlm munge
 
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 POVML = ./_build/default/bin/main.exe
 
-.PHONY: all deps build install render test fuzz bench report samples references clean
+.PHONY: all deps build install render test test-slurm fuzz bench report samples references clean
 
 all: build
 
@@ -39,6 +40,11 @@ render: build
 test: deps
 	dune build
 	dune test --force
+
+# The README's Slurm recipe on a one-node Slurm started on this machine (test/slurm; needs root).
+test-slurm: deps
+	dune build
+	bash test/slurm/run.sh
 
 # AFL++ on the interpreter and a tiny render for FUZZ_SECONDS (test/fuzz/afl.sh), built instrumented in
 # _build_afl (test/fuzz/afl.workspace); prints the inputs tried and fails on any crash or hang.
