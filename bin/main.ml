@@ -160,6 +160,7 @@ type options = {
   verbose : bool;  (** +V or -V: accepted, without effect *)
   clock : float option;  (** +K: the value of [clock] in the scene *)
   animation : Animation.settings;  (** +KFI, +KFF, +KI, +KF, +KC, +SF, +EF, Frame_Step *)
+  declares : string list;  (** Declare=NAME=VALUE, as given *)
   dump : bool;  (** --dump: print the evaluated scene instead of rendering it *)
   robust : bool;  (** --robust: robust intersection limits instead of POV-Ray's *)
   scene_scale : float;  (** --scene-scale: the scene scaled about the origin *)
@@ -171,10 +172,30 @@ type options = {
 
 let make_options input scene output width height antialias aa_threshold no_antialias sampling_method aa_depth jitter
     no_jitter jitter_amount aa_gamma library_paths threads start_row end_row start_column end_column block_size format
-    display verbose clock animation dump robust scene_scale scene_translate allow_read allow_write limits =
+    display verbose clock animation declares dump robust scene_scale scene_translate allow_read allow_write limits =
   { input; scene; output; width; height; antialias; aa_threshold; no_antialias; sampling_method; aa_depth; jitter; no_jitter;
     jitter_amount; aa_gamma; library_paths; threads; start_row; end_row; start_column; end_column; block_size; format;
-    display; verbose; clock; animation; dump; robust; scene_scale; scene_translate; allow_read; allow_write; limits }
+    display; verbose; clock; animation; declares; dump; robust; scene_scale; scene_translate; allow_read; allow_write; limits }
+
+(* Declare=NAME=VALUE as POV-Ray's front end passes it on: a quoted value is a string, anything
+   else C's atof of it in single precision, written with six significant digits and read back *)
+let declared d =
+  match String.index_opt d '=' with
+  | None -> None
+  | Some i ->
+      let name = String.trim (String.sub d 0 i) and v = String.sub d (i + 1) (String.length d - i - 1) in
+      let value =
+        match String.index_opt v '"' with
+        | Some q ->
+            let rest = String.sub v (q + 1) (String.length v - q - 1) in
+            Value.String (match String.index_opt rest '"' with Some e -> String.sub rest 0 e | None -> rest)
+        | None ->
+            (* atof: the longest prefix that is a number, 0 without one *)
+            let v = String.trim v in
+            let rec longest n = if n = 0 then 0. else match float_of_string_opt (String.sub v 0 n) with Some f -> f | None -> longest (n - 1) in
+            Value.Float (float_of_string (Printf.sprintf "%g" (Precision.f32 (longest (String.length v)))))
+      in
+      if name = "" then None else Some (name, value)
 
 let run (args : options) =
   let { width; height; limits; _ } = args in
@@ -190,6 +211,7 @@ let run (args : options) =
           (* POV-Ray keeps the clock in single precision *)
           clock = Precision.f32 (Option.value args.clock ~default:0.);
           animation = Animation.still ~clock_on:(args.clock <> None);
+          declares = List.filter_map declared args.declares;
           library_paths = args.library_paths;
           access;
           limits;
@@ -375,6 +397,10 @@ let cmd =
   let display = Arg.(value & vflag false [ (true, info [ "display" ] ~docs ~doc:"+D: accepted; povml has no preview window."); (false, info [ "no-display" ] ~docs ~doc:"-D: no preview window.") ]) in
   let verbose = Arg.(value & vflag false [ (true, info [ "verbose" ] ~docs ~doc:"+V: accepted."); (false, info [ "no-verbose" ] ~docs ~doc:"-V: accepted.") ]) in
   let clock = Arg.(value & opt (some float) None & info [ "clock" ] ~docv:"V" ~docs ~doc:"+K: the value of $(b,clock) in the scene (default 0).") in
+  let declares =
+    Arg.(value & opt_all string [] & info [ "declare" ] ~docv:"NAME=VALUE" ~docs
+           ~doc:"Declare=NAME=VALUE: declare the identifier NAME before the scene is read, a float (C's atof, single precision, six significant digits, as POV-Ray passes it) or a string when VALUE is quoted.")
+  in
   let animation =
     let io kind names docv doc = Arg.(value & opt (some kind) None & info names ~docv ~docs ~doc) in
     let make initial_frame final_frame initial_clock final_clock cyclic no_cyclic subset_start subset_end frame_step =
@@ -463,7 +489,7 @@ let cmd =
     let options =
       Term.(
         const make_options $ input $ positional $ output $ width $ height $ antialias $ aa_threshold $ no_aa $ method_ $ depth $ jitter
-        $ no_jitter $ jitter_amount $ aa_gamma $ libs $ threads $ sr $ er $ sc $ ec $ block_size $ format $ display $ verbose $ clock $ animation
+        $ no_jitter $ jitter_amount $ aa_gamma $ libs $ threads $ sr $ er $ sc $ ec $ block_size $ format $ display $ verbose $ clock $ animation $ declares
         $ dump $ robust $ scene_scale $ scene_translate $ allow_read $ allow_write $ limits)
     in
     Term.(ret (const run $ options))
@@ -484,7 +510,10 @@ let () =
   let argv =
     let expand a =
       let named = if String.length a > 2 && (a.[0] = '+' || a.[0] = '-') && Char.uppercase_ascii a.[1] = 'I' then Some (String.sub a 2 (String.length a - 2)) else if a <> "" && a.[0] <> '-' && a.[0] <> '+' then Some a else None in
-      match named with Some f when Ini.is_ini f -> Ini.switches ~warn:print_warning f | Some _ | None -> [ a ]
+      match named with
+      | Some f when Ini.is_ini f -> Ini.switches ~warn:print_warning f
+      | Some f when f == a && Ini.is_option a -> Ini.option ~warn:print_warning a
+      | Some _ | None -> [ a ]
     in
     match List.concat_map expand (List.tl argv) with
     | exception Error.Scene_error e -> print_error e; exit (Exits.scene_error e.kind)
@@ -511,7 +540,7 @@ let () =
     | `Keep a :: rest -> a :: last_wins rest
     | `Switch a :: rest ->
         let k = key a in
-        if k <> "library-path" && List.exists (function `Switch b -> key b = k | `Keep _ -> false) rest then last_wins rest
+        if k <> "library-path" && k <> "declare" && List.exists (function `Switch b -> key b = k | `Keep _ -> false) rest then last_wins rest
         else a :: last_wins rest
   in
   let args = last_wins args in

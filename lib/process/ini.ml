@@ -32,13 +32,14 @@ let table =
     ("initial_clock", Switch (float_v "+KI")); ("final_clock", Switch (float_v "+KF"));
     ("cyclic_animation", Switch (flag "KC")); ("subset_start_frame", Switch (float_v "+SF"));
     ("subset_end_frame", Switch (float_v "+EF")); ("frame_step", Switch (int_v "--frame-step="));
+    ("declare", Switch (fun v -> if String.contains v '=' then Some ("--declare=" ^ v) else None));
     ("include_ini", Include) ]
   @ List.map
       (fun k -> (String.lowercase_ascii k, Not_yet))
       [ "All_Console"; "All_File"; "Append_File"; "Bits_Per_Color"; "Bits_Per_Colour"; "Bounding"; "Bounding_Method";
         "Bounding_Threshold"; "BSP_BaseAccessCost"; "BSP_ChildAccessCost"; "BSP_ISectCost"; "BSP_MaxDepth";
         "BSP_MissChance"; "Buffer_Output"; "Buffer_Size"; "Clockless_Animation"; "Compression"; "Continue_Trace";
-        "Create_Histogram"; "Create_Ini"; "Debug_Console"; "Debug_File"; "Declare";
+        "Create_Histogram"; "Create_Ini"; "Debug_Console"; "Debug_File";
         "Display_Gamma"; "Dither"; "Dither_Method"; "Draw_Vistas"; "Fatal_Console"; "Fatal_Error_Command";
         "Fatal_Error_Return"; "Fatal_File"; "Field_Render"; "File_Gamma";
         "Grayscale_Output"; "High_Reproducibility"; "Histogram_Name"; "Histogram_Grid_Size"; "Histogram_Type";
@@ -125,7 +126,11 @@ let read_file loc file =
 let rec expand ~warn ~depth loc spec =
   if depth > 16 then Error.raise_at loc "ini files include each other more than 16 deep";
   let file, section = specification loc spec in
-  let c = { file; text = read_file loc file; pos = 0; line = 1; bol = 0 } in
+  lines_of ~warn ~depth ~section file (read_file loc file)
+
+(* the switches of an ini file's text *)
+and lines_of ~warn ~depth ~section file text =
+  let c = { file; text; pos = 0; line = 1; bol = 0 } in
   let out = ref [] in
   let emit s = out := s :: !out in
   (* the lines before the first section always count; a named section only when it was asked for *)
@@ -196,3 +201,10 @@ and relative from name =
   else name
 
 let switches ~warn spec = expand ~warn ~depth:0 Loc.none spec
+
+let is_option arg =
+  match String.index_opt arg '=' with
+  | Some i when i > 0 && arg.[0] <> '+' && arg.[0] <> '-' -> List.mem_assoc (String.lowercase_ascii (String.trim (String.sub arg 0 i))) table
+  | Some _ | None -> false
+
+let option ~warn arg = lines_of ~warn ~depth:0 ~section:None "<command line>" arg

@@ -12,9 +12,17 @@ val switches : warn:(Error.t -> unit) -> string -> string list
     switches, in the file's order: [Width=640] is ["+W640"], [Antialias=on] ["+A"], a switch line
     itself, [Include_Ini] and a plain ini file name the switches of that file, a plain other name
     ["+I"] of it. The lines before the first section always count; a named section only when it is
-    [spec]'s. POV-Ray's options povml does not read yet (animation, declares, file outputs …)
+    [spec]'s. [Declare=NAME=VALUE] is ["--declare=NAME=VALUE"]. POV-Ray's options povml does not
+    read yet (file outputs, histograms, shell-outs …)
     are passed to [warn], located, and dropped. [Antialias_Threshold] and [Jitter_Amount] set the
     value without turning the feature on, as ["--antialias-threshold=T"] and
     ["--jitter-amount=J"].
     @raise Error.Scene_error on a file that cannot be read, a key POV-Ray does not have, a value
     an option cannot take, or a line that is none of the above. *)
+
+val is_option : string -> bool
+(** [is_option arg] is whether a command-line argument is an ini option ([Width=640],
+    [Declare=Size=2]): POV-Ray takes those on the command line too. *)
+
+val option : warn:(Error.t -> unit) -> string -> string list
+(** [option ~warn arg] is the switches of the ini option [arg], as [switches] reads a line. *)

@@ -14,6 +14,7 @@ type options = Reader.options = {
   height : int;
   clock : float;
   animation : Animation.values;
+  declares : (string * Value.t) list;
   library_paths : string list;
   debug : string -> unit;
   included : string -> depth:int -> float -> unit;
@@ -151,6 +152,7 @@ let reader_state opts ~file text =
 
 let load_string opts ~file text =
   let st = reader_state opts ~file text in
+  List.iter (fun (name, v) -> Reader.Names.replace st.global name (ref v)) opts.declares;
   (* the scene's files are closed when its text has been read, or at its first error *)
   Fun.protect ~finally:(fun () -> User_files.close_all st) (fun () ->
       try parse_statements st with
@@ -177,6 +179,7 @@ let default_options ~width ~height =
     height;
     clock = 0.;
     animation = Animation.still ~clock_on:false;
+    declares = [];
     library_paths = [];
     debug = (fun s -> prerr_string s; flush stderr);
     included = (fun _ ~depth:_ _ -> ());

@@ -6,6 +6,7 @@ type options = {
   height : int;  (** [image_height] *)
   clock : float;  (** [clock], from +K or the animation's frame *)
   animation : Animation.values;  (** [clock_on], [clock_delta], [frame_number] and the other animation identifiers *)
+  declares : (string * Value.t) list;  (** Declare=NAME=VALUE: global identifiers set before the scene is read, later ones winning *)
   library_paths : string list;  (** +L directories, searched for include files after the scene's *)
   debug : string -> unit;  (** receives the text of [#debug] as it is read *)
   included : string -> depth:int -> float -> unit;

@@ -18,6 +18,7 @@ type options = {
   height : int;
   clock : float;  (** +K *)
   animation : Animation.values;  (** clock_on, frame_number and the other animation identifiers *)
+  declares : (string * V.t) list;  (** Declare=NAME=VALUE: identifiers declared before the scene is read *)
   library_paths : string list;  (** +L, searched in order after the scene's directory and the working directory *)
   debug : string -> unit;  (** where #debug text goes *)
   included : string -> depth:int -> float -> unit;  (** an include file was read: path, nesting, seconds *)

@@ -13,6 +13,7 @@ type options = {
   height : int;
   clock : float;
   animation : Animation.values;
+  declares : (string * V.t) list;
   library_paths : string list;
   debug : string -> unit;
   included : string -> depth:int -> float -> unit;

@@ -58,12 +58,26 @@ Antialias_Threshold sets the threshold without turning antialiasing on (as POV-R
 
 POV-Ray's options that povml does not read yet are named in a warning and ignored:
 
-  $ printf 'Declare=Size=2\nOutput_Alpha=on\nPause_When_Done=off\n' > more.ini
+  $ printf 'Output_Alpha=on\nPause_When_Done=off\n' > more.ini
   $ povml s.pov more.ini +W8 +H6 -D +Oi.png 2>&1 | grep -E 'warning|Wrote'
-  more.ini:1:1: warning: the ini option 'Declare' is not supported yet; ignored
-  more.ini:2:1: warning: the ini option 'Output_Alpha' is not supported yet; ignored
-  more.ini:3:1: warning: the ini option 'Pause_When_Done' is not supported yet; ignored
+  more.ini:1:1: warning: the ini option 'Output_Alpha' is not supported yet; ignored
+  more.ini:2:1: warning: the ini option 'Pause_When_Done' is not supported yet; ignored
   Wrote i.png (8x6)
+
+Declare=NAME=VALUE declares an identifier before the scene is read, as POV-Ray's front end passes
+it: a float in single precision with six significant digits (1.23456789 is 1.23457, as POV-Ray
+prints it), or a string when quoted. Ini options may be given on the command line too:
+
+  $ cat > d.pov <<'POV'
+  > #version 3.7;
+  > #debug concat("Size=", str(Size,0,17), " Name=", Name, "\n")
+  > camera { location -5*z look_at 0 }
+  > sphere { 0, Size pigment { rgb 1 } }
+  > POV
+  $ printf 'Declare=Size=1.23456789\n' > d.ini
+  $ povml d.pov d.ini 'Declare=Name="a name"' Width=16 +H6 -D +Ok.png 2>&1 | grep -E '^(Size|Wrote)'
+  Size=1.23456999999999995 Name=a name
+  Wrote k.png (16x6)
 
 A key POV-Ray does not have, a value an option cannot take, a file that cannot be read: located
 errors, status 1, no image.
