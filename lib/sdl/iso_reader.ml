@@ -6,30 +6,12 @@ open Reader
 (* contained_by { box { A, B } } (corners sorted per axis) or { sphere { C, R } }; an empty block
    keeps the container *)
 let container st (c : Isosurface.container) : Isosurface.container =
-  open_block st "contained_by";
-  let c =
-    match peek st with
-    | Ident "box" ->
-        advance st;
-        open_block st "box";
-        let a = Expr.parse_vector st in
-        skip_comma st;
-        let b = Expr.parse_vector st in
-        close_block st "box";
-        let lo p q = if p > q then q else p and hi p q = if p > q then p else q in
-        Isosurface.Box_container { lo = Vec.make (lo a.x b.x) (lo a.y b.y) (lo a.z b.z); hi = Vec.make (hi a.x b.x) (hi a.y b.y) (hi a.z b.z) }
-    | Ident "sphere" ->
-        advance st;
-        open_block st "sphere";
-        let centre = Expr.parse_vector st in
-        skip_comma st;
-        let radius = Expr.parse_float st in
-        close_block st "sphere";
-        Isosurface.Sphere_container { centre; radius }
-    | _ -> c
-  in
-  close_block st "contained_by";
-  c
+  match Container_reader.read st with
+  | Some (Box (a, b)) ->
+      let lo p q = if p > q then q else p and hi p q = if p > q then p else q in
+      Isosurface.Box_container { lo = Vec.make (lo a.x b.x) (lo a.y b.y) (lo a.z b.z); hi = Vec.make (hi a.x b.x) (hi a.y b.y) (hi a.z b.z) }
+  | Some (Sphere (centre, radius)) -> Isosurface.Sphere_container { centre; radius }
+  | None -> c
 
 (* (short)Parse_Float(): C's conversion to int, then its low 16 bits as a signed number *)
 let short v =

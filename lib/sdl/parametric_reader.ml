@@ -21,29 +21,11 @@ let func st =
 (* contained_by { box { A, B } } (the corners sorted per axis) or { sphere { C, R } }; anything
    else leaves the container as it was *)
 let container st current =
-  open_block st "contained_by";
-  let c =
-    match peek st with
-    | Ident "box" ->
-        advance st;
-        open_block st "box";
-        let a = Expr.parse_vector st in
-        skip_comma st;
-        let b = Expr.parse_vector st in
-        close_block st "box";
-        Parametric.Box_container (Box.make (Vec.make (Float.min a.x b.x) (Float.min a.y b.y) (Float.min a.z b.z)) (Vec.make (Float.max a.x b.x) (Float.max a.y b.y) (Float.max a.z b.z)))
-    | Ident "sphere" ->
-        advance st;
-        open_block st "sphere";
-        let centre = Expr.parse_vector st in
-        skip_comma st;
-        let radius = Expr.parse_float st in
-        close_block st "sphere";
-        Parametric.Sphere_container { centre; radius }
-    | _ -> current
-  in
-  close_block st "contained_by";
-  c
+  match Container_reader.read st with
+  | Some (Box (a, b)) ->
+      Parametric.Box_container (Box.make (Vec.make (Float.min a.x b.x) (Float.min a.y b.y) (Float.min a.z b.z)) (Vec.make (Float.max a.x b.x) (Float.max a.y b.y) (Float.max a.z b.z)))
+  | Some (Sphere (centre, radius)) -> Parametric.Sphere_container { centre; radius }
+  | None -> current
 
 (* precompute DEPTH [,] [x] [,] [y] [,] [z]: the axes in that order, each optional *)
 let precompute st (prev : precompute option) =
