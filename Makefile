@@ -8,7 +8,7 @@ DEB_PACKAGES = libcamlimages-ocaml-dev libalcotest-ocaml-dev \
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 POVML = ./_build/default/bin/main.exe
 
-.PHONY: all deps build install render test test-slurm fuzz bench report samples references clean
+.PHONY: all deps build install render test test-slurm fuzz bench report samples animations references clean
 
 all: build
 
@@ -71,6 +71,11 @@ report: build
 # SAMPLES_JOBS=N scenes at a time (default 2); ONLY=regex for a subset (written under /tmp, not docs/).
 samples: build
 	bash test/samples/run.sh
+
+# POV-Ray's sample animations from their .ini files, frame for frame against POV-Ray (docs/animations.md).
+animations: build
+	dune build --profile release test/tools/imgdiff.exe
+	bash test/samples/animations.sh
 
 references: deps
 	bash reference/regen.sh

@@ -14,7 +14,7 @@ type env = {
   floc : Loc.t;  (** where the function starts, for errors at constants (which have no location) *)
 }
 
-let c_int x = if Float.is_nan x || Float.abs x >= 2147483648. then -2147483648. else Float.trunc x
+let c_int = C_float.int_cast
 
 (* The last parameter named [a] or [b] (compile_parameters loads them in order, later ones win). *)
 let register params a b =

@@ -59,8 +59,8 @@ let srgb_decode ~assumed_gamma x =
   let linear = srgb_to_linear (f x) in
   if Float.abs (1. -. enc) <= 0.01 then linear else f (Float.pow (Float.max linear 0.) enc)
 
-(* C's (int) cast on x86: truncation, and -2147483648 for what does not fit (checked with POV-Ray). *)
-let c_int x = if Float.is_nan x || Float.abs x >= 2147483648. then -2147483648. else Float.trunc x
+(* C's (double)(int)x on x86 (checked with POV-Ray) *)
+let c_int = C_float.int_cast
 
 let rec parse_expr st =
   (* additive level; relational and logical operators only inside parentheses *)

@@ -5,6 +5,11 @@ val c_int : float -> int
 (** [c_int x] is C's [(int)] cast: truncation toward zero; NaN and values out of the 32-bit range
     give INT_MIN (−2³¹), as the x86 conversion does. *)
 
+val int_cast : float -> float
+(** [int_cast x] is C's [(double)(int)x] as POV-Ray's parser and function VM write [int()]:
+    truncation, −2³¹ for NaN and what does not fit, and a zero without a sign ([int_cast (-0.5)] is
+    [0.], not [-0.]). *)
+
 val fmax : float -> float -> float
 (** [fmax a b] is [std::max(a, b)]: [b] when [a < b], else [a] (which decides NaNs and zeros). *)
 

@@ -63,6 +63,12 @@ let test_functions () =
   float_eq "sqrt+pow+abs" 13. (radius "sphere { 0, sqrt(16) + pow(2,3) + abs(-1) }");
   (* int(-2.5) = -2 (truncates), div(-7,2) = -3, mod(-7,2) = -1: -2 - 3 - 1 = -6, negated 6 *)
   float_eq "int/div/mod" 6. (radius "sphere { 0, -(int(-2.5) + div(-7,2) + mod(-7,2)) }");
+  (* int(-0.5) and div(-1, 3) are C's (double)(int) casts: 0 without a sign, so 1/… is +infinity
+     (POV-Ray's str(int(-0.5), 0, 2) prints 0.00, not -0.00: float2.pov's frames) *)
+  Alcotest.(check bool) "int(-0.5) is +0" false (Float.sign_bit (radius "sphere { 0, int(-0.5) }"));
+  Alcotest.(check bool) "div(-1, 3) is +0" false (Float.sign_bit (radius "sphere { 0, div(-1, 3) }"));
+  Alcotest.(check bool) "function int(-0.5) is +0" false
+    (Float.sign_bit (radius "#declare F = function(a) { int(a) }\nsphere { 0, F(-0.5) }"));
   (* vlength(<3,4,12>) = 13; vdot(<1,2,3>,<4,5,6>) = 32 *)
   float_eq "vlength" 13. (radius "sphere { 0, vlength(<3,4,12>) }");
   float_eq "vdot" 32. (radius "sphere { 0, vdot(<1,2,3>,<4,5,6>) }");
