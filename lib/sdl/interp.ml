@@ -83,7 +83,7 @@ let finish_scene st : Scene.t =
   let background =
     match st.background with
     | Some b -> b
-    | None -> if version >= 370 then Colour.black else { Colour.black with transmit = 1. }
+    | None -> Colour.black
   in
   let camera = build_camera st (match st.camera with Some c -> c | None -> empty_camera) in
   {

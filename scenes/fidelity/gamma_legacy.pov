@@ -3,7 +3,7 @@
 //       pitfall §13.1). The four gamma_* scenes share the same geometry; only the header differs.
 // Mode: NO #version and no assumed_gamma: effective version 3.62, gamma OFF (output = clipped
 //       linear value) and the legacy att = 1 - (filter*max(r,g,b) + transmit) (§3.2, §8.1, §8.2).
-//       No background statement: in legacy mode missed rays carry transmit 1 (§8.4, §9.5).
+//       No background statement: missed rays are opaque black (POV-Ray writes no alpha channel).
 // Content: a grey ramp (rgb 0.05, 0.2, 0.45, 0.8) plus a filtered red ball rgbf <0.8,0.3,0.3,0.6>
 // (att 0.4 in 3.7 mode, 0.52 in legacy mode) over a floor.
 global_settings { max_trace_level 5 }

@@ -139,7 +139,7 @@ let test_lights () =
   let c = compile "global_settings { max_trace_level 3 } camera { location <1,2,3> }" in
   Alcotest.(check int) "max_trace_level" 3 c.max_trace_level;
   vec_eq "camera" (v 1. 2. 3.) c.camera.location;
-  colour_eq "background" (colour5 0. 0. 0. 0. 1.) c.background
+  colour_eq "background" Colour.black c.background
 
 let tests =
   [

