@@ -14,13 +14,28 @@ type result = {
 
 (* DispatchShutdownMessages: POV-Ray's word on the max_gradient of each top-level isosurface that
    is not a copy, at its function *)
-let shutdown_warnings (scene : Scene.t) stats =
-  List.filter_map
-    (fun (o : Scene.obj) ->
-      match o.shape with
-      | Isosurface s when not s.copy -> Option.map (Error.warning s.fn.floc) (Isosurface.warning s stats)
-      | _ -> None)
-    scene.objects
+let shutdown_warnings (scene : Scene.t) (stats : Stats.t) =
+  let iso =
+    List.filter_map
+      (fun (o : Scene.obj) ->
+        match o.shape with
+        | Isosurface s when not s.copy -> Option.map (Error.warning s.fn.floc) (Isosurface.warning s stats)
+        | _ -> None)
+      scene.objects
+  in
+  (* povml's own limit on a parametric surface's search, said once, at the first one *)
+  let cut =
+    if stats.parametric_cut = 0 then []
+    else
+      match List.find_map (fun (o : Scene.obj) -> match o.shape with Parametric p -> Some p | _ -> None) scene.objects with
+      | None -> []
+      | Some p ->
+          [ Error.warning p.fx.floc
+              (Printf.sprintf
+                 "povml stopped %d searches of parametric surfaces after %d pieces each (its limit: their u and v ranges are far wider than max_gradient lets the search tell apart); those rays may miss the surface"
+                 stats.parametric_cut Parametric.max_pieces) ]
+  in
+  iso @ cut
 
 let run ?interp ?move (opts : Render.options) path =
   let t0 = Unix.gettimeofday () in

@@ -83,6 +83,7 @@ type t = {
   mutable parametric_hits : int;
   mutable parametric_bound_tests : int;
   mutable parametric_bound_hits : int;
+  mutable parametric_cut : int;
   mutable iso_tests : int;
   mutable iso_hits : int;
   mutable iso_bound_tests : int;
@@ -112,7 +113,7 @@ let create () =
     prism_tests = 0; prism_hits = 0; prism_bound_tests = 0; prism_bound_hits = 0; lathe_tests = 0; lathe_hits = 0; lathe_bound_tests = 0; lathe_bound_hits = 0; sor_tests = 0; sor_hits = 0; sor_bound_tests = 0; sor_bound_hits = 0;
     fractal_tests = 0; fractal_hits = 0; bicubic_tests = 0; bicubic_hits = 0;
     poly_tests = 0; poly_hits = 0;
-    parametric_tests = 0; parametric_hits = 0; parametric_bound_tests = 0; parametric_bound_hits = 0;
+    parametric_tests = 0; parametric_hits = 0; parametric_bound_tests = 0; parametric_bound_hits = 0; parametric_cut = 0;
     iso_tests = 0; iso_hits = 0; iso_bound_tests = 0; iso_bound_hits = 0; iso_cache_tests = 0; iso_cache_hits = 0; iso_roots = 0;
     iso_found = [||];
   }
@@ -219,6 +220,7 @@ let merge a b =
     parametric_hits = a.parametric_hits + b.parametric_hits;
     parametric_bound_tests = a.parametric_bound_tests + b.parametric_bound_tests;
     parametric_bound_hits = a.parametric_bound_hits + b.parametric_bound_hits;
+    parametric_cut = a.parametric_cut + b.parametric_cut;
     iso_tests = a.iso_tests + b.iso_tests;
     iso_hits = a.iso_hits + b.iso_hits;
     iso_bound_tests = a.iso_bound_tests + b.iso_bound_tests;

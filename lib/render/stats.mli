@@ -83,6 +83,7 @@ type t = {
   mutable parametric_hits : int;  (** searches that found a crossing before the container's far side *)
   mutable parametric_bound_tests : int;  (** containers tested (POV-Ray's "Parametric Bound") *)
   mutable parametric_bound_hits : int;  (** of which the ray met the container *)
+  mutable parametric_cut : int;  (** searches povml cut off at [Parametric.max_pieces] pieces *)
   mutable iso_tests : int;  (** isosurfaces searched: the ray crossed their container by at least the accuracy *)
   mutable iso_hits : int;  (** of which the search kept a crossing *)
   mutable iso_bound_tests : int;  (** isosurfaces tested (their container first: POV-Ray's "Isosurface Container") *)

@@ -24,6 +24,11 @@ let epsilon = Precision.epsilon
 (* fpmetric.cpp's Max_intNumber: piece numbers stop doubling there *)
 let max_piece = 10000000
 
+(* pieces one search may test before povml stops it: a search with ranges far wider than its
+   bounds can tell apart would otherwise halve them to the accuracy everywhere (2^depth pieces);
+   a sane surface tests a few hundred *)
+let max_pieces = 20_000
+
 (* how many times the subdivision can halve [range] before it is below [accuracy] *)
 let halvings range accuracy =
   let r = range /. accuracy in
@@ -253,8 +258,9 @@ let limits s =
    a crossing when it is smaller than the accuracy (in u and v, or in the depths it spans), else
    it is halved along its longer side, the lower half pushed on top (numbered 2k), the upper
    half kept below it (2k + 1). The nearest crossing's (u, v) is left in uv. *)
-let subdivide wk (p : Vec.t) (q : Vec.t) (uv : float array) =
+let subdivide (w : Scratch.t) wk (p : Vec.t) (q : Vec.t) (uv : float array) =
   let s = wk.surf and dp = wk.dp and n = wk.surf.room in
+  let budget = ref max_pieces in
   let lu = Array.make n 0. and hu = Array.make n 0. and lv = Array.make n 0. and hv = Array.make n 0. in
   let piece = Array.make n 0 in
   lu.(0) <- s.umin;
@@ -264,6 +270,14 @@ let subdivide wk (p : Vec.t) (q : Vec.t) (uv : float array) =
   piece.(0) <- 1;
   let i = ref 0 in
   while !i >= 0 do
+    decr budget;
+    if !budget = 0 then begin
+      (* povml's limit: a search that has tested this many pieces stops with what it found *)
+      w.stats.parametric_cut <- w.stats.parametric_cut + 1;
+      i := 0
+    end;
+    if !budget <= 0 then decr i
+    else
     let k = !i in
     let ulo = lu.(k) and uhi = hu.(k) and vlo = lv.(k) and vhi = hv.(k) and num = piece.(k) in
     dp.ulo <- ulo;
@@ -324,7 +338,7 @@ let search (w : Scratch.t) s (o : Vec.t) (d : Vec.t) (uv : float array) =
     else begin
       let dp = { xmin = 0.; xmax = 0.; ymin = 0.; ymax = 0.; tpot = 0.; tlen = 0.; d1; d2; best = infinity; ulo = 0.; vlo = 0.; uhi = 0.; vhi = 0. } in
       let wk = { surf = s; fr = frame s; iv = [| 0.; 0. |]; dp; par = { par_x = false; par_y = false }; limits = limits s } in
-      subdivide wk p q uv;
+      subdivide w wk p q uv;
       if dp.best < d2 then begin
         st.parametric_hits <- st.parametric_hits + 1;
         dp.best

@@ -78,3 +78,9 @@ val pov_box : t -> float array
 
 val stats_rows : Stats.t -> Stats.row list
 (** [stats_rows s] is the "Parametric" and "Parametric Bound" rows. *)
+
+val max_pieces : int
+(** [max_pieces] is 20,000: the pieces one search may test before povml stops it with what it
+    found (counted in [Stats.parametric_cut], warned of at the end of the render). A surface whose
+    ranges are far wider than its max_gradient lets the search tell apart would otherwise be
+    halved to the accuracy everywhere; POV-Ray's search, whose stack holds 32 pieces, runs on. *)

@@ -417,7 +417,7 @@ an include file is a composite; in the main file the declaration also warns.
   // version 3.62, no gamma correction
   global_settings { max_trace_level 5 adc_bailout 0.003921568627 ambient_light rgb <1, 1, 1> }
   camera { location <0, 0, 0> direction <0, 0, 1> up <0, 1, 0> right <1.33, 0, 0> }
-  background { rgbft <0, 0, 0, 0, 1> }
+  background { rgb <0, 0, 0> }
   sphere { <0, 0, 0>, 2
     texture { pigment { rgb <0, 0, 0> } normal { bumps 0.5 accuracy 0.01999999955 frequency 1 phase 0 } }
   } // unsup.pov:3:1
