@@ -26,7 +26,7 @@ let max_piece = 10000000
 
 (* pieces one search may test before povml stops it: a search with ranges far wider than its
    bounds can tell apart would otherwise halve them to the accuracy everywhere (2^depth pieces);
-   a sane surface tests a few hundred *)
+   the fidelity scenes never reach it *)
 let max_pieces = 20_000
 
 (* how many times the subdivision can halve [range] before it is below [accuracy] *)
