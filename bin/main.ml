@@ -177,26 +177,6 @@ let make_options input scene output width height antialias aa_threshold no_antia
     jitter_amount; aa_gamma; library_paths; threads; start_row; end_row; start_column; end_column; block_size; format;
     display; verbose; clock; animation; declares; dump; robust; scene_scale; scene_translate; allow_read; allow_write; limits }
 
-(* Declare=NAME=VALUE as POV-Ray's front end passes it on: a quoted value is a string, anything
-   else C's atof of it in single precision, written with six significant digits and read back *)
-let declared d =
-  match String.index_opt d '=' with
-  | None -> None
-  | Some i ->
-      let name = String.trim (String.sub d 0 i) and v = String.sub d (i + 1) (String.length d - i - 1) in
-      let value =
-        match String.index_opt v '"' with
-        | Some q ->
-            let rest = String.sub v (q + 1) (String.length v - q - 1) in
-            Value.String (match String.index_opt rest '"' with Some e -> String.sub rest 0 e | None -> rest)
-        | None ->
-            (* atof: the longest prefix that is a number, 0 without one *)
-            let v = String.trim v in
-            let rec longest n = if n = 0 then 0. else match float_of_string_opt (String.sub v 0 n) with Some f -> f | None -> longest (n - 1) in
-            Value.Float (float_of_string (Printf.sprintf "%g" (Precision.f32 (longest (String.length v)))))
-      in
-      if name = "" then None else Some (name, value)
-
 let run (args : options) =
   let { width; height; limits; _ } = args in
   let input = match (args.input, args.scene) with Some i, _ -> Some i | None, Some p -> Some p | None, None -> None in
@@ -211,7 +191,7 @@ let run (args : options) =
           (* POV-Ray keeps the clock in single precision *)
           clock = Precision.f32 (Option.value args.clock ~default:0.);
           animation = Animation.still ~clock_on:(args.clock <> None);
-          declares = List.filter_map declared args.declares;
+          declares = List.filter_map Ini.declaration args.declares;
           library_paths = args.library_paths;
           access;
           limits;

@@ -47,6 +47,10 @@ val plan : settings -> plan option
     rendered, then every [frame_step]-th while within the subset's end (the final frame, the one
     before it when cyclic). *)
 
+val declared : float -> float
+(** [declared x] is [x] as the front end declares a value to the scene: written with six
+    significant digits ([%g]) and read back (1.6/7 becomes 0.228571). *)
+
 val numbered : string -> frame:int -> digits:int -> string
 (** [numbered base ~frame ~digits] is [base] followed by [frame] padded with zeros to [digits]:
     [numbered "clockd" ~frame:3 ~digits:2] is ["clockd03"]. *)

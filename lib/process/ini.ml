@@ -208,3 +208,23 @@ let is_option arg =
   | Some _ | None -> false
 
 let option ~warn arg = lines_of ~warn ~depth:0 ~section:None "<command line>" arg
+
+(* Declare=NAME=VALUE as POV-Ray's front end passes it on: a quoted value is a string, anything
+   else C's atof of it in single precision, declared as the front end declares its values *)
+let declaration d =
+  match String.index_opt d '=' with
+  | None -> None
+  | Some i ->
+      let name = String.trim (String.sub d 0 i) and v = String.sub d (i + 1) (String.length d - i - 1) in
+      let value =
+        match String.index_opt v '"' with
+        | Some q ->
+            let rest = String.sub v (q + 1) (String.length v - q - 1) in
+            Value.String (match String.index_opt rest '"' with Some e -> String.sub rest 0 e | None -> rest)
+        | None ->
+            (* atof: the longest prefix that is a number, 0 without one *)
+            let v = String.trim v in
+            let rec longest n = if n = 0 then 0. else match float_of_string_opt (String.sub v 0 n) with Some f -> f | None -> longest (n - 1) in
+            Value.Float (Animation.declared (Precision.f32 (longest (String.length v))))
+      in
+      if name = "" then None else Some (name, value)

@@ -26,3 +26,8 @@ val is_option : string -> bool
 
 val option : warn:(Error.t -> unit) -> string -> string list
 (** [option ~warn arg] is the switches of the ini option [arg], as [switches] reads a line. *)
+
+val declaration : string -> (string * Value.t) option
+(** [declaration "NAME=VALUE"] is the identifier and value POV-Ray's front end declares for
+    Declare=NAME=VALUE: a string when VALUE is quoted, else C's atof of it in single precision,
+    written with six significant digits and read back ({!Animation.declared}); None without a name. *)
