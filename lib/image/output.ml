@@ -19,11 +19,25 @@ let write_png path (img : Encode.t) =
   done;
   Png.save path [] (Images.Rgb24 rgb)
 
+(* Whether the image is written through [path] rather than renamed onto it: a device, a pipe, a
+   socket (+O/dev/null) or a symbolic link (/dev/stdout), which a rename would replace. *)
+let written_through path =
+  match (Unix.lstat path).st_kind with
+  | S_REG | S_DIR -> false
+  | S_LNK | S_CHR | S_BLK | S_FIFO | S_SOCK -> true
+  | exception Unix.Unix_error _ -> false
+
+let copy src dst =
+  let text = Png_text.read_all src in
+  let oc = open_out_gen [ Open_wronly; Open_binary ] 0o644 dst in
+  Fun.protect ~finally:(fun () -> close_out_noerr oc) (fun () -> output_string oc text)
+
 (* The temporary file is created, and renamed or removed, with SIGINT and SIGTERM held back, so
    that it always has a name to remove by; a signal that came while the image was being encoded
    cancels the rename. *)
 let write ?area fmt path img =
-  let dir = Filename.dirname path in
+  let through = written_through path in
+  let dir = if through then Filename.get_temp_dir_name () else Filename.dirname path in
   Interrupt.hold (fun () ->
       Interrupt.check ();
       match Filename.temp_file ~temp_dir:dir ".povml-" ".part" with
@@ -43,6 +57,10 @@ let write ?area fmt path img =
             | Ppm -> write_ppm tmp img);
             Interrupt.check ()
           with
+          | () when through -> (
+              match copy tmp path with
+              | () -> discard (); Ok ()
+              | exception Sys_error m -> discard (); Error m)
           | () -> (
               (* the temporary file is private; the image gets ordinary permissions *)
               (try Unix.chmod tmp 0o644 with Unix.Unix_error _ -> ());
