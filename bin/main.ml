@@ -16,7 +16,8 @@ let translate_switch arg =
     let up = String.uppercase_ascii body in
     let starts p = String.length up >= String.length p && String.sub up 0 (String.length p) = p in
     let rest p = String.sub body (String.length p) (String.length body - String.length p) in
-    let valued long p = if rest p = "" then `Bad else `Use (Printf.sprintf "--%s=%s" long (rest p)) in
+    let valued long p = if rest p = "" then `Bad else `Use [ Printf.sprintf "--%s=%s" long (rest p) ] in
+    let either yes no = `Use [ (if on then yes else no) ] in
     if starts "AM" then valued "sampling-method" "AM"
     else if starts "AG" then valued "aa-gamma" "AG"
     else if starts "WT" then valued "threads" "WT"
@@ -25,15 +26,24 @@ let translate_switch arg =
     else if starts "SC" then valued "start-column" "SC"
     else if starts "EC" then valued "end-column" "EC"
     else if starts "BS" then valued "block-size" "BS"
-    else if up = "FN" || up = "FN8" then `Use "--format=png"
-    else if up = "FP" then `Use "--format=ppm"
+    (* +F[type] writes a file (of that type), -F[type] none *)
+    else if up = "F" then either "--output-to-file" "--no-output-to-file"
+    else if up = "FN" || up = "FN8" || up = "FP" then
+      if on then `Use [ (if up = "FP" then "--format=ppm" else "--format=png"); "--output-to-file" ] else `Use [ "--no-output-to-file" ]
     else if starts "F" then `Bad
-    else if up = "D" || (starts "D" && n = 3) then `Use (if on then "--display" else "--no-display")
-    else if up = "V" then `Use (if on then "--verbose" else "--no-verbose")
-    else if up = "A" then `Use (if on then "--antialias" else "--no-antialias")
-    else if starts "A" then if on then valued "antialias" "A" else `Bad
-    else if up = "J" then `Use (if on then "--jitter" else "--no-jitter")
-    else if starts "J" then if on then valued "jitter" "J" else `Bad
+    (* +MB[n]: bounding on (with threshold n); -MB: off *)
+    else if starts "MB" then
+      if not on then `Use [ "--no-bounding" ]
+      else if rest "MB" = "" then `Use [ "--bounding" ]
+      else `Use [ Printf.sprintf "--bounding-threshold=%s" (rest "MB"); "--bounding" ]
+    else if up = "D" || (starts "D" && n = 3) then either "--display" "--no-display"
+    else if up = "V" then either "--verbose" "--no-verbose"
+    (* +A0.2 turns antialiasing on and sets its threshold, -A0.2 sets it and turns it off; the
+       threshold is Antialias_Threshold's too, so the later of the two wins (the same for +J) *)
+    else if starts "A" then
+      `Use ((if on then "--antialias" else "--no-antialias") :: (if rest "A" = "" then [] else [ "--antialias-threshold=" ^ rest "A" ]))
+    else if starts "J" then
+      `Use ((if on then "--jitter" else "--no-jitter") :: (if rest "J" = "" then [] else [ "--jitter-amount=" ^ rest "J" ]))
     else if starts "I" then valued "input" "I"
     else if starts "O" then valued "output" "O"
     else if starts "W" then valued "width" "W"
@@ -44,7 +54,7 @@ let translate_switch arg =
     else if starts "KFF" then valued "final-frame" "KFF"
     else if starts "KI" then valued "initial-clock" "KI"
     else if starts "KF" then valued "final-clock" "KF"
-    else if up = "KC" then `Use (if on then "--cyclic" else "--no-cyclic")
+    else if up = "KC" then either "--cyclic" "--no-cyclic"
     else if starts "K" && up <> "K" then valued "clock" "K"
     else if starts "SF" then valued "subset-start" "SF"
     else if starts "EF" then valued "subset-end" "EF"
@@ -139,14 +149,12 @@ type options = {
   output : string option;  (** +O: the output file, or a directory to write it in *)
   width : int;  (** +W: image width in pixels *)
   height : int;  (** +H: image height in pixels *)
-  antialias : float option;  (** +A: the antialiasing threshold; [None] without +A *)
-  aa_threshold : float option;  (** an ini file's Antialias_Threshold: the threshold, without turning antialiasing on *)
-  no_antialias : bool;  (** -A *)
+  antialias : bool;  (** +A or -A *)
+  aa_threshold : float;  (** +A0.3's value, Antialias_Threshold *)
   sampling_method : int;  (** +AM: the antialiasing method, as given *)
   aa_depth : int;  (** +R: the supersampling depth, as given *)
-  jitter : float;  (** +J: the jitter amount, as given *)
-  no_jitter : bool;  (** -J *)
-  jitter_amount : float option;  (** an ini file's Jitter_Amount: the amount, without turning jitter on *)
+  jitter : bool;  (** +J or -J *)
+  jitter_amount : float;  (** +J0.5's value, Jitter_Amount, as given *)
   aa_gamma : float;  (** +AG: the gamma of the antialiasing colour comparison *)
   library_paths : string list;  (** +L: the include directories, in order *)
   threads : int;  (** +WT: render processes, as given *)
@@ -156,6 +164,8 @@ type options = {
   end_column : float option;  (** +EC *)
   block_size : int;  (** +BS: render block size, as given *)
   format : [ `Png | `Ppm ];  (** +FN or +FP *)
+  output_to_file : bool;  (** +F or -F: whether the image is written *)
+  bounding_threshold : int;  (** +MBn: POV-Ray's Bounding_Threshold, [max_int] with -MB (Bounding=off) *)
   display : bool;  (** +D or -D: accepted, without effect *)
   verbose : bool;  (** +V or -V: accepted, without effect *)
   clock : float option;  (** +K: the value of [clock] in the scene *)
@@ -170,12 +180,12 @@ type options = {
   limits : Scene_limits.t;  (** the --max-… limits *)
 }
 
-let make_options input scene output width height antialias aa_threshold no_antialias sampling_method aa_depth jitter
-    no_jitter jitter_amount aa_gamma library_paths threads start_row end_row start_column end_column block_size format
-    display verbose clock animation declares dump robust scene_scale scene_translate allow_read allow_write limits =
-  { input; scene; output; width; height; antialias; aa_threshold; no_antialias; sampling_method; aa_depth; jitter; no_jitter;
+let make_options input scene output width height antialias aa_threshold sampling_method aa_depth jitter
+    jitter_amount aa_gamma library_paths threads start_row end_row start_column end_column block_size format
+    output_to_file bounding_threshold display verbose clock animation declares dump robust scene_scale scene_translate allow_read allow_write limits =
+  { input; scene; output; width; height; antialias; aa_threshold; sampling_method; aa_depth; jitter;
     jitter_amount; aa_gamma; library_paths; threads; start_row; end_row; start_column; end_column; block_size; format;
-    display; verbose; clock; animation; declares; dump; robust; scene_scale; scene_translate; allow_read; allow_write; limits }
+    output_to_file; bounding_threshold; display; verbose; clock; animation; declares; dump; robust; scene_scale; scene_translate; allow_read; allow_write; limits }
 
 let run (args : options) =
   let { width; height; limits; _ } = args in
@@ -225,11 +235,7 @@ let run (args : options) =
         else
           (* POV-Ray clips the method to 0 … 2, and method 0 is no antialiasing *)
           let method_ = args.sampling_method in
-          let antialias =
-            if args.no_antialias || method_ <= 0 then None
-            else Option.map (fun t -> Option.value args.aa_threshold ~default:t) args.antialias
-          in
-          let jitter = Option.value args.jitter_amount ~default:args.jitter in
+          let antialias = if args.antialias && method_ > 0 then Some args.aa_threshold else None in
           let opts =
             {
               Render.width;
@@ -237,7 +243,7 @@ let run (args : options) =
               antialias = Option.map (fun t -> Float.min 1. (Float.max 0. t)) antialias;
               aa_method = (if method_ >= 2 then Render.Adaptive else Render.Non_adaptive);
               aa_depth = max 1 (min 9 args.aa_depth);
-              jitter = (if args.no_jitter then 0. else Float.min 1. (Float.max 0. jitter));
+              jitter = (if args.jitter then Float.min 1. (Float.max 0. args.jitter_amount) else 0.);
               aa_gamma = args.aa_gamma;
               area;
               block_size = max 4 (min (max width height) args.block_size);
@@ -254,7 +260,7 @@ let run (args : options) =
           else
           let () = Interrupt.install () in
           let render_to iopts output =
-          match Pipeline.run ~interp:iopts ?move opts input with
+          match Pipeline.run ~interp:iopts ?move ~bounding_threshold:args.bounding_threshold opts input with
           | exception Error.Scene_error e -> fail e
           | exception Pool.Worker_failed msg ->
               (* a render process died: not the scene's fault *)
@@ -264,6 +270,8 @@ let run (args : options) =
               List.iter print_warning r.warnings;
               let f = match fmt with Png_fmt -> Output.Png | Ppm_fmt -> Output.Ppm in
               let drawn = Merge.to_text { Merge.left = area.left; top = area.top; right = area.right; bottom = area.bottom; block = opts.block_size } in
+              if not args.output_to_file then begin print_stats r opts; `Ok 0 end
+              else
               match Interrupt.commit (fun () -> Output.write ~area:drawn f output r.image) with
               | Error msg ->
                   Printf.eprintf "%s: error: cannot write the image: %s\n" output msg;
@@ -301,6 +309,9 @@ let run (args : options) =
               in
               frames 1 plan.frames
 
+(* the switch that keeps povml from reading POVINI's file or a povray.ini *)
+let no_povray_ini = "no-povray-ini"
+
 let cmd =
   let doc = "render POV-Ray 3.7 scenes, pixel for pixel as POV-Ray does" in
   let sw = "POV-RAY SWITCHES" in
@@ -313,7 +324,8 @@ let cmd =
       `P "POV-Ray's own switches are accepted as they are and mean the same: $(b,+I)file, $(b,+O)file, \
           $(b,+W)n, $(b,+H)n, $(b,+A)[threshold], $(b,-A), $(b,+AM)n, $(b,+R)n, $(b,+J)[amount], $(b,-J), \
           $(b,+L)dir, $(b,+K)v, $(b,+WT)n, $(b,+SR)/$(b,+ER)/$(b,+SC)/$(b,+EC) (partial render: full-size file, \
-          unrendered pixels black), $(b,+FN) (PNG), $(b,+FP) (PPM), $(b,+D)/$(b,-D), $(b,+V)/$(b,-V). \
+          unrendered pixels black), $(b,+FN) (PNG), $(b,+FP) (PPM), $(b,-F) (no file), $(b,+MB)n/$(b,-MB) (bounding \
+          threshold, or none), $(b,+D)/$(b,-D), $(b,+V)/$(b,-V). \
           Each is shown below with its long form.";
       `P "A scene reads files ($(b,#include), $(b,#fopen), $(b,file_exists)) only under its own directory, \
           the working directory, the $(b,+L) directories, /usr/share/povray-3.7/include and each \
@@ -346,22 +358,26 @@ let cmd =
   let width = Arg.(value & opt int 160 & info [ "width"; "W" ] ~docv:"N" ~docs ~doc:"+W: image width in pixels (POV-Ray's built-in default 160).") in
   let height = Arg.(value & opt int 120 & info [ "height"; "H" ] ~docv:"N" ~docs ~doc:"+H: image height in pixels (default 120).") in
   let antialias =
-    Arg.(value & opt ~vopt:(Some 0.3) (some float) None & info [ "antialias" ] ~docv:"THRESHOLD" ~docs
-           ~doc:"+A[threshold]: antialias; a pixel is supersampled when it differs from a neighbour by at least THRESHOLD (default 0.3).")
+    Arg.(value & vflag false
+           [ (true, info [ "antialias" ] ~docs ~doc:"+A[threshold], Antialias=on: antialias.");
+             (false, info [ "no-antialias" ] ~docs ~doc:"-A: no antialiasing (the default).") ])
   in
   let aa_threshold =
-    Arg.(value & opt (some float) None & info [ "antialias-threshold" ] ~docv:"T" ~docs
-           ~doc:"Antialias_Threshold of an ini file: the threshold of $(b,--antialias), without turning antialiasing on.")
+    Arg.(value & opt float 0.3 & info [ "antialias-threshold" ] ~docv:"T" ~docs
+           ~doc:"+A's value, Antialias_Threshold: a pixel is supersampled when it differs from a neighbour by at least T \
+                 (default 0.3); setting it does not turn antialiasing on.")
   in
   let jitter_amount =
-    Arg.(value & opt (some float) None & info [ "jitter-amount" ] ~docv:"J" ~docs
-           ~doc:"Jitter_Amount of an ini file: the jitter amount, without turning jitter on.")
+    Arg.(value & opt float 1. & info [ "jitter-amount" ] ~docv:"J" ~docs
+           ~doc:"+J's value, Jitter_Amount: how far antialiasing samples are jittered (default 1; POV-Ray's deterministic jitter).")
   in
-  let no_aa = Arg.(value & flag & info [ "no-antialias" ] ~docs ~doc:"-A: no antialiasing (the default).") in
   let method_ = Arg.(value & opt int 1 & info [ "sampling-method" ] ~docv:"N" ~docs ~doc:"+AM: antialiasing method: 1 (non-adaptive, the default), 2 (adaptive, recursive); as in POV-Ray, 0 or less means no antialiasing and more than 2 means 2.") in
   let depth = Arg.(value & opt int 3 & info [ "aa-depth" ] ~docv:"N" ~docs ~doc:"+R: supersampling depth (1 … 9, default 3): N×N samples per supersampled pixel with method 1, at most N−1 subdivisions of a pixel with method 2.") in
-  let jitter = Arg.(value & opt ~vopt:1. float 1. & info [ "jitter" ] ~docv:"AMOUNT" ~docs ~doc:"+J[amount]: jitter antialiasing samples (on by default, amount 1; POV-Ray's deterministic jitter).") in
-  let no_jitter = Arg.(value & flag & info [ "no-jitter" ] ~docs ~doc:"-J: no jitter.") in
+  let jitter =
+    Arg.(value & vflag true
+           [ (true, info [ "jitter" ] ~docs ~doc:"+J[amount], Jitter=on: jitter antialiasing samples (the default).");
+             (false, info [ "no-jitter" ] ~docs ~doc:"-J: no jitter.") ])
+  in
   let aa_gamma = Arg.(value & opt float 2.5 & info [ "aa-gamma" ] ~docv:"G" ~docs ~doc:"+AG: gamma for the antialiasing colour comparison (default 2.5).") in
   let libs = Arg.(value & opt_all string [] & info [ "library-path" ] ~docv:"DIR" ~docs ~doc:"+L: a directory searched for include files (repeatable).") in
   let threads = Arg.(value & opt int 2 & info [ "threads" ] ~docv:"N" ~docs ~doc:"+WT: render processes (default 2). The image is the same for any N.") in
@@ -373,6 +389,19 @@ let cmd =
   let block_size = Arg.(value & opt int 32 & info [ "block-size" ] ~docv:"N" ~docs ~doc:"+BS: render block size (default 32, as POV-Ray; antialiasing depends on it).") in
   let format =
     Arg.(value & opt (enum [ ("png", `Png); ("ppm", `Ppm) ]) `Png & info [ "format" ] ~docv:"FMT" ~docs ~doc:"+FN (png, default) or +FP (ppm): output file type.")
+  in
+  let output_to_file =
+    Arg.(value & vflag true [ (true, info [ "output-to-file" ] ~docs ~doc:"+F: write the image (the default)."); (false, info [ "no-output-to-file" ] ~docs ~doc:"-F: render without writing the image.") ])
+  in
+  let bounding =
+    let on = Arg.(value & vflag true [ (true, info [ "bounding" ] ~docs ~doc:"+MB: use POV-Ray's bounding tree (the default)."); (false, info [ "no-bounding" ] ~docs ~doc:"-MB, Bounding=off: never use it.") ]) in
+    let threshold =
+      Arg.(value & opt int Compile.pov_bounding_threshold & info [ "bounding-threshold" ] ~docv:"N" ~docs
+             ~doc:"+MBn, Bounding_Threshold: POV-Ray builds its bounding tree only for scenes of at least N objects and light \
+                   sources (default 1; Debian's povray.ini sets 3). Without it objects are tested in scene order, and the order \
+                   in which POV-Ray tests objects decides exact ties and the isosurfaces' shared cache, so it shows in the image.")
+    in
+    Term.(const (fun on n -> if on then n else max_int) $ on $ threshold)
   in
   let display = Arg.(value & vflag false [ (true, info [ "display" ] ~docs ~doc:"+D: accepted; povml has no preview window."); (false, info [ "no-display" ] ~docs ~doc:"-D: no preview window.") ]) in
   let verbose = Arg.(value & vflag false [ (true, info [ "verbose" ] ~docs ~doc:"+V: accepted."); (false, info [ "no-verbose" ] ~docs ~doc:"-V: accepted.") ]) in
@@ -468,11 +497,18 @@ let cmd =
   let term =
     let options =
       Term.(
-        const make_options $ input $ positional $ output $ width $ height $ antialias $ aa_threshold $ no_aa $ method_ $ depth $ jitter
-        $ no_jitter $ jitter_amount $ aa_gamma $ libs $ threads $ sr $ er $ sc $ ec $ block_size $ format $ display $ verbose $ clock $ animation $ declares
+        const make_options $ input $ positional $ output $ width $ height $ antialias $ aa_threshold $ method_ $ depth $ jitter
+        $ jitter_amount $ aa_gamma $ libs $ threads $ sr $ er $ sc $ ec $ block_size $ format $ output_to_file $ bounding $ display $ verbose $ clock $ animation $ declares
         $ dump $ robust $ scene_scale $ scene_translate $ allow_read $ allow_write $ limits)
     in
-    Term.(ret (const run $ options))
+    let ignore_ini =
+      Arg.(value & flag & info [ no_povray_ini ]
+             ~doc:"Read no ini file before the command line. Without it povml reads the one POV-Ray reads: the file the \
+                   $(b,POVINI) environment variable names, else the first of ./povray.ini, ~/.povray/3.7/povray.ini, \
+                   /etc/povray/3.7/povray.ini, ~/.povrayrc and /etc/povray.ini (Debian's sets 800×600 and \
+                   Bounding_Threshold=3); the command line's switches come after it and win.")
+    in
+    Term.(ret (const (fun o _ -> run o) $ options $ ignore_ini))
   in
   Cmd.v (Cmd.info "povml" ~version:"0.1.0" ~doc ~man ~exits:[]) term
 
@@ -495,22 +531,35 @@ let () =
       | Some f when f == a && Ini.is_option a -> Ini.option ~warn:print_warning a
       | Some _ | None -> [ a ]
     in
-    match List.concat_map expand (List.tl argv) with
+    (* POV-Ray's Unix front end reads one ini file before the command line (POVINI's, or the
+       first povray.ini it finds) and puts POVINC's directory after every other library path *)
+    let default_ini () =
+      if List.mem ("--" ^ no_povray_ini) argv then []
+      else
+        let readable f = Sys.file_exists f && (not (Sys.is_directory f)) && match open_in_bin f with ic -> close_in ic; true | exception Sys_error _ -> false in
+        let file, warnings = Ini.default_file ~getenv:Sys.getenv_opt ~readable in
+        List.iter print_warning warnings;
+        match file with Some f -> Ini.switches ~warn:print_warning f | None -> []
+    in
+    let povinc = match Sys.getenv_opt "POVINC" with Some d when d <> "" -> [ "+L" ^ d ] | Some _ | None -> [] in
+    match default_ini () @ List.concat_map expand (List.tl argv) @ povinc with
     | exception Error.Scene_error e -> print_error e; exit (Exits.scene_error e.kind)
     | args -> prog :: args
   in
   let bad = ref None in
   let args =
-    List.map
+    List.concat_map
       (fun a ->
         match translate_switch a with
-        | `Keep a -> `Keep a
-        | `Use a -> `Switch a
-        | `Bad -> if !bad = None then bad := Some a; `Keep a)
+        (* a long option with its value (an ini file's --antialias-threshold=0.3) is a switch too *)
+        | `Keep a when String.length a > 2 && String.sub a 0 2 = "--" && String.contains a '=' -> [ `Switch a ]
+        | `Keep a -> [ `Keep a ]
+        | `Use l -> List.map (fun a -> `Switch a) l
+        | `Bad -> if !bad = None then bad := Some a; [ `Keep a ])
       (List.tl argv)
   in
   (* As in POV-Ray, the last of repeated switches wins (+W16 … +W640 is 640 wide; -A … +A0.3
-     antialiases); +L accumulates. *)
+     antialiases); +L, Declare and the --allow-… directories accumulate. *)
   let key a =
     let name = match String.index_opt a '=' with Some i -> String.sub a 2 (i - 2) | None -> String.sub a 2 (String.length a - 2) in
     if String.length name > 3 && String.sub name 0 3 = "no-" then String.sub name 3 (String.length name - 3) else name
@@ -520,7 +569,7 @@ let () =
     | `Keep a :: rest -> a :: last_wins rest
     | `Switch a :: rest ->
         let k = key a in
-        if k <> "library-path" && k <> "declare" && List.exists (function `Switch b -> key b = k | `Keep _ -> false) rest then last_wins rest
+        if (not (List.mem k [ "library-path"; "declare"; "allow-read"; "allow-write" ])) && List.exists (function `Switch b -> key b = k | `Keep _ -> false) rest then last_wins rest
         else a :: last_wins rest
   in
   let args = last_wins args in

@@ -5,7 +5,8 @@
 #   With no arguments every manifest entry is rendered; otherwise only the named entries.
 #
 # Each entry is rendered with the real POV-Ray 3.7 as
-#   povray +I<scene> +O<tmp>/<name>.png -D -V +FN +WT2 <options>
+#   POVINI=reference/povray.ini povray +I<scene> +O<tmp>/<name>.png -D -V +FN +WT2 <options>
+#   (the image tests run povml with the same ini file)
 #   (an entry may ask for one thread, +WT1, where POV-Ray is deterministic only so: crand)
 # into a private directory under /tmp (Debian's povray.conf only lets POV-Ray write under /tmp
 # and the current directory), then copied to reference/<name>.png.
@@ -52,7 +53,7 @@ while IFS=$'\t' read -r name scene options min_identical max_peak reason || [ -n
   fi
   out="$tmp/$name.png"; log="$tmp/$name.log"
   # shellcheck disable=SC2086  # options are deliberately word-split
-  if (cd "$tmp" && povray +I"$src" +L"$(dirname "$src")" +O"$out" -D -V +FN +WT2 $options) >"$log" 2>&1 \
+  if (cd "$tmp" && POVINI="$here/povray.ini" povray +I"$src" +L"$(dirname "$src")" +O"$out" -D -V +FN +WT2 $options) >"$log" 2>&1 \
       && [ -s "$out" ]; then
     cp "$out" "$here/$name.png"
     # POV-Ray's messages: "Parse Error", "Possible Parse Error", "Parse Warning", "Warning: ...".

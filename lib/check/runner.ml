@@ -95,11 +95,11 @@ let failure_message ~join lines =
   in
   if String.length m > 240 then String.sub m 0 237 ^ "..." else m
 
-let environment = function
-  | Povml _ -> Unix.environment ()
-  | Povray _ ->
-      Array.of_list
-        (List.filter (fun v -> not (String.length v >= 7 && String.sub v 0 7 = "POVINI=")) (Array.to_list (Unix.environment ())))
+(* Both renderers read the same empty ini file ([ini]) before the switches: what Debian's
+   povray.ini or the user's would add (a size, a bounding threshold) stays out of the comparison. *)
+let environment ~ini =
+  let others = List.filter (fun v -> not (String.length v >= 7 && String.sub v 0 7 = "POVINI=")) (Array.to_list (Unix.environment ())) in
+  Array.of_list (others @ [ "POVINI=" ^ ini ])
 
 (* libpng warns on stderr about the PNGs POV-Ray writes ("Interlace handling should be turned on")
    when camlimages reads them; the warning says nothing about the image. *)
@@ -129,15 +129,10 @@ let replace_all ~sub ~by s =
     Buffer.contents b
 
 let render ?shown r ~dir ~scene ~out switches =
-  let exe, env =
-    match r with
-    | Povml exe -> (exe, environment r)
-    | Povray exe ->
-        ensure_user_conf ();
-        let ini = Filename.concat dir "clean.ini" in
-        if not (Sys.file_exists ini) then close_out (open_out ini);
-        (exe, Array.append (environment r) [| "POVINI=" ^ ini |])
-  in
+  let exe = match r with Povml exe -> exe | Povray exe -> ensure_user_conf (); exe in
+  let ini = Filename.concat dir "clean.ini" in
+  if not (Sys.file_exists ini) then close_out (open_out ini);
+  let env = environment ~ini in
   let log = Filename.concat dir "render.log" in
   (try Sys.remove out with Sys_error _ -> ());
   let args = Array.of_list (exe :: ("+I" ^ scene) :: ("+O" ^ out) :: switches) in

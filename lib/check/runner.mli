@@ -25,8 +25,8 @@ type outcome = { seconds : float;  (** wall time of the process *) image : (Enco
 
 val render : ?shown:string -> renderer -> dir:string -> scene:string -> out:string -> string list -> outcome
 (** [render ?shown r ~dir ~scene ~out switches] runs [r] on [scene] (an absolute path) with [+O out]
-    and [switches] in the working directory [dir], output to [dir]/render.log; POV-Ray reads an empty
-    ini file (env [POVINI]), not the system's. Ends with the PNG read back, or the failure, whose
+    and [switches] in the working directory [dir], output to [dir]/render.log; both renderers read
+    the same empty ini file (env [POVINI]), not the system's. Ends with the PNG read back, or the failure, whose
     message names the scene [shown] (default [scene]). *)
 
 val median : float list -> float

@@ -1,7 +1,9 @@
 (* POV-Ray's .ini files (processoptions.cpp ParseFile) read into the switches they stand for. *)
 
-(* What an ini option becomes: a switch povml reads, or nothing yet (a warning names it). *)
-type meaning = Switch of (string -> string option) | Include | Not_yet
+(* What an ini option becomes: a switch povml reads; nothing, for the values povml follows
+   in any case, for the values it follows (POV-Ray's defaults: Bounding_Method=1, Split_Unions=off
+   …), other values a warning naming them. *)
+type meaning = Switch of (string -> string option) | Include | Followed of (string -> bool)
 
 let bool_of s =
   match String.lowercase_ascii s with
@@ -13,6 +15,10 @@ let valued sw v = Some (sw ^ v)
 let int_v sw v = Option.map (fun _ -> sw ^ v) (int_of_string_opt (String.trim v))
 let float_v sw v = Option.map (fun _ -> sw ^ v) (float_of_string_opt (String.trim v))
 let flag sw v = Option.map (fun b -> (if b then "+" else "-") ^ sw) (bool_of v)
+let is_on v = bool_of v = Some true
+let is_off v = bool_of v = Some false
+let is x v = String.lowercase_ascii (String.trim v) = x
+let any _ = true
 
 (* The ini keys of POV-Ray 3.7 (RenderOptions_INI_Table), lowercased, with what povml makes of
    each; a key not listed is not one of POV-Ray's *)
@@ -27,31 +33,41 @@ let table =
     ("start_column", Switch (float_v "+SC")); ("end_column", Switch (float_v "+EC"));
     ("work_threads", Switch (int_v "+WT")); ("render_block_size", Switch (int_v "+BS"));
     ("display", Switch (flag "D")); ("verbose", Switch (flag "V"));
-    ("output_file_type", Switch (fun v -> match String.uppercase_ascii v with "N" | "N8" -> Some "+FN" | "P" -> Some "+FP" | _ -> None));
+    ("output_file_type", Switch (fun v -> match String.uppercase_ascii v with "N" | "N8" -> Some "--format=png" | "P" -> Some "--format=ppm" | _ -> None));
+    ("output_to_file", Switch (flag "F")); ("bounding", Switch (flag "MB"));
+    ("bounding_threshold", Switch (int_v "--bounding-threshold="));
     ("initial_frame", Switch (int_v "+KFI")); ("final_frame", Switch (int_v "+KFF"));
     ("initial_clock", Switch (float_v "+KI")); ("final_clock", Switch (float_v "+KF"));
     ("cyclic_animation", Switch (flag "KC")); ("subset_start_frame", Switch (float_v "+SF"));
     ("subset_end_frame", Switch (float_v "+EF")); ("frame_step", Switch (int_v "--frame-step="));
     ("declare", Switch (fun v -> if String.contains v '=' then Some ("--declare=" ^ v) else None));
     ("include_ini", Include) ]
+  (* what povml does in any case: POV-Ray's defaults, the options of features povml has not (a
+     BSP tree, file outputs povml does not write), and what shows only on a display or console *)
   @ List.map
-      (fun k -> (String.lowercase_ascii k, Not_yet))
-      [ "All_Console"; "All_File"; "Append_File"; "Bits_Per_Color"; "Bits_Per_Colour"; "Bounding"; "Bounding_Method";
-        "Bounding_Threshold"; "BSP_BaseAccessCost"; "BSP_ChildAccessCost"; "BSP_ISectCost"; "BSP_MaxDepth";
-        "BSP_MissChance"; "Buffer_Output"; "Buffer_Size"; "Clockless_Animation"; "Compression"; "Continue_Trace";
-        "Create_Histogram"; "Create_Ini"; "Debug_Console"; "Debug_File";
-        "Display_Gamma"; "Dither"; "Dither_Method"; "Draw_Vistas"; "Fatal_Console"; "Fatal_Error_Command";
-        "Fatal_Error_Return"; "Fatal_File"; "Field_Render"; "File_Gamma";
-        "Grayscale_Output"; "High_Reproducibility"; "Histogram_Name"; "Histogram_Grid_Size"; "Histogram_Type";
-        "Include_Header"; "Light_Buffer"; "Max_Image_Buffer_Memory"; "Odd_Field";
-        "Output_Alpha"; "Output_To_File"; "Palette"; "Pause_When_Done"; "Post_Frame_Command"; "Post_Frame_Return";
-        "Post_Scene_Command"; "Post_Scene_Return"; "Preview_End_Size"; "Preview_Start_Size"; "Pre_Frame_Command";
-        "Pre_Frame_Return"; "Pre_Scene_Command"; "Pre_Scene_Return"; "Quality"; "Radiosity_File_Name";
-        "Radiosity_From_File"; "Radiosity_To_File"; "Radiosity_Vain_Pretrace"; "Real_Time_Raytracing";
-        "Remove_Bounds"; "Render_Block_Step"; "Render_Console"; "Render_File"; "Render_Pattern"; "Split_Unions";
-        "Statistic_Console"; "Statistic_File"; "Test_Abort";
-        "Test_Abort_Count"; "User_Abort_Command"; "User_Abort_Return"; "Version"; "Video_Mode"; "Vista_Buffer";
-        "Warning_Console"; "Warning_File"; "Warning_Level" ]
+      (fun (k, follows) -> (String.lowercase_ascii k, Followed follows))
+      [ ("Bounding_Method", is "1"); ("Remove_Bounds", is_on); ("Split_Unions", is_off); ("Continue_Trace", is_off);
+        ("Pause_When_Done", is_off); ("Output_Alpha", is_off); ("Bits_Per_Color", is "8"); ("Bits_Per_Colour", is "8");
+        ("File_Gamma", is "srgb"); ("Dither", is_off); ("Field_Render", is_off); ("Grayscale_Output", is_off);
+        ("Clockless_Animation", is_off); ("Real_Time_Raytracing", is_off); ("High_Reproducibility", is_off);
+        ("Quality", fun v -> match int_of_string_opt (String.trim v) with Some q -> q >= 9 | None -> false);
+        ("Radiosity_From_File", is_off); ("Radiosity_To_File", is_off); ("Radiosity_Vain_Pretrace", is_on);
+        ("Render_Block_Step", is "0"); ("Render_Pattern", is "0"); ("Create_Histogram", is_off); ("Version", is "3.7");
+        ("Include_Header", is "") ]
+  @ List.map
+      (fun k -> (String.lowercase_ascii k, Followed (fun v -> is "" v || is_off v)))
+      [ "All_File"; "Create_Ini"; "Debug_File"; "Fatal_File"; "Render_File"; "Statistic_File"; "Warning_File";
+        "Pre_Scene_Command"; "Pre_Frame_Command"; "Post_Frame_Command"; "Post_Scene_Command"; "Fatal_Error_Command";
+        "User_Abort_Command" ]
+  @ List.map
+      (fun k -> (String.lowercase_ascii k, Followed any))
+      [ "All_Console"; "Debug_Console"; "Fatal_Console"; "Render_Console"; "Statistic_Console"; "Warning_Console";
+        "Warning_Level"; "Append_File"; "Test_Abort"; "Test_Abort_Count"; "Display_Gamma"; "Palette"; "Video_Mode";
+        "Preview_Start_Size"; "Preview_End_Size"; "Draw_Vistas"; "Light_Buffer"; "Vista_Buffer"; "Buffer_Output";
+        "Buffer_Size"; "Max_Image_Buffer_Memory"; "Dither_Method"; "Odd_Field"; "Compression"; "Histogram_Name";
+        "Histogram_Grid_Size"; "Histogram_Type"; "Pre_Scene_Return"; "Pre_Frame_Return"; "Post_Frame_Return";
+        "Post_Scene_Return"; "Fatal_Error_Return"; "User_Abort_Return"; "Radiosity_File_Name"; "BSP_BaseAccessCost";
+        "BSP_ChildAccessCost"; "BSP_ISectCost"; "BSP_MaxDepth"; "BSP_MissChance" ]
 
 let is_ini name =
   let base = match String.index_opt name '[' with Some i -> String.sub name 0 i | None -> name in
@@ -175,7 +191,10 @@ and lines_of ~warn ~depth ~section file text =
           done;
           (match List.assoc_opt (String.lowercase_ascii k) table with
           | None -> Error.raise_at l "unknown ini option '%s' (POV-Ray 3.7 has no such key)" k
-          | Some Not_yet -> warn (Error.warning l (Printf.sprintf "the ini option '%s' is not supported yet; ignored" k))
+          | Some (Followed follows) ->
+              List.iter
+                (fun v -> if not (follows v) then warn (Error.warning l (Printf.sprintf "the ini option '%s=%s' is not supported yet; ignored" k v)))
+                (List.rev !values)
           | Some Include -> List.iter (fun v -> List.iter emit (List.rev (expand ~warn ~depth:(depth + 1) l (relative file v)))) (List.rev !values)
           | Some (Switch make) ->
               List.iter
@@ -228,3 +247,21 @@ let declaration d =
             Value.Float (Animation.declared (Precision.f32 (longest (String.length v))))
       in
       if name = "" then None else Some (name, value)
+
+(* Process_povray_ini of POV-Ray's Unix front end: the file POVINI names, else the first of
+   these that can be read *)
+let default_file ~getenv ~readable =
+  let home = match getenv "HOME" with Some h when h <> "" -> [ h ] | Some _ | None -> [] in
+  let in_home sub = List.map (fun h -> Filename.concat h sub) home in
+  let search =
+    ("./povray.ini" :: in_home ".povray/3.7/povray.ini") @ ("/etc/povray/3.7/povray.ini" :: in_home ".povrayrc") @ [ "/etc/povray.ini" ]
+  in
+  match getenv "POVINI" with
+  | Some f when readable f -> (Some f, [])
+  | named ->
+      let warnings =
+        match named with
+        | Some f -> [ Error.warning Loc.none (Printf.sprintf "the POVINI environment variable names \"%s\", which cannot be read; looking for povray.ini" f) ]
+        | None -> []
+      in
+      (List.find_opt readable search, warnings)

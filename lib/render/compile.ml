@@ -184,7 +184,10 @@ let blended ~noise (tpat : Scene.patterned) values entries : blended =
     nwarps = warps;
   }
 
-let scene (s : Scene.t) : Compiled.t =
+(* POV-Ray's Bounding_Threshold when no ini file sets it (scene.cpp) *)
+let pov_bounding_threshold = 1
+
+let scene ?(bounding_threshold = pov_bounding_threshold) (s : Scene.t) : Compiled.t =
   let legacy = s.version < 370 in
   let memo = Layer_memo.create 16 in
   let noise = s.noise_generator in
@@ -363,8 +366,11 @@ let scene (s : Scene.t) : Compiled.t =
     else group (List.filter_map (fun ((o : Scene.obj), ob) -> if keep o then Some ob else None) visible)
   in
   let cam = s.camera.location in
-  (* a light's looks_like shape belongs to the light's top-level object (§19.2) *)
-  let bounding = List.length (List.filter (fun (o : Scene.obj) -> not o.looks_like) s.objects) + List.length s.lights >= 3 in
+  (* POV-Ray builds its tree when the scene has at least Bounding_Threshold objects, light sources
+     counted (boundingtask.cpp); a light's looks_like shape belongs to the light's top-level
+     object (§19.2) *)
+  let count = List.length (List.filter (fun (o : Scene.obj) -> not o.looks_like) s.objects) + List.length s.lights in
+  let bounding = count > 0 && count >= bounding_threshold in
   let slabs =
     lazy
       (let finite, infinite = List.partition (fun o -> Array.length o.pbox > 0) tops in
@@ -377,13 +383,17 @@ let scene (s : Scene.t) : Compiled.t =
     Array.fold_left (fun acc o -> match o.shape with Isosurface _ when not (List.mem o.top acc) -> o.top :: acc | _ -> acc) [] objects
   in
   let ordered (g : group) =
-    if not (bounding && List.length iso_tops >= 2) then g
-    else begin
+    if List.length iso_tops < 2 then g
+    else if bounding then begin
       let member = Array.make (Array.length objects) false in
       Array.iter (fun o -> member.(o.id) <- true) g.unbounded;
       Array.iter (fun o -> member.(o.id) <- true) g.bounded;
-      { g with order = Some { walk = Slab_tree.searcher (Lazy.force slabs); member } }
+      { g with order = Some (Tree { walk = Slab_tree.searcher (Lazy.force slabs); member }) }
     end
+    else
+      let listed = Array.append g.unbounded g.bounded in
+      Array.sort (fun (a : obj) b -> Int.compare a.id b.id) listed;
+      { g with order = Some (Listed listed) }
   in
   (* the list holds interiors: a CSG's members share theirs (§16.5) *)
   let holds o = Interiors.holds stack o cam in

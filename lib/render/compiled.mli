@@ -190,10 +190,12 @@ type shadow_mode =
   | Filtered  (** some occluder is transparent: walk every crossing *)
 
 (** POV-Ray's own order of search, for the scenes whose image depends on it (see [group]). *)
-type order = {
-  walk : Slab_tree.search;  (** POV-Ray's bounding tree over every top-level object *)
-  member : bool array;  (** by object id: whether the group holds the object *)
-}
+type order =
+  | Tree of {
+      walk : Slab_tree.search;  (** POV-Ray's bounding tree over every top-level object *)
+      member : bool array;  (** by object id: whether the group holds the object *)
+    }  (** with its bounding tree: nearest box first *)
+  | Listed of obj array  (** without it: the group's objects, every one, in scene order *)
 
 (** Objects as the tracer searches them: unbounded ones (planes, infinite quadrics, …) one by one, the others through a
     bounding-volume hierarchy whose leaves index [bounded]. *)
@@ -209,8 +211,8 @@ type group = {
           ([Shape.costly]), as its hierarchy leaf would hold it alone (min x, y,
           z, max x, y, z), met by a ray before the shape itself is tried; nan for other shapes *)
   order : order option;
-      (** Some where the objects must be searched as POV-Ray searches them, through its bounding
-          tree, nearest box first: isosurfaces in two or more top-level objects, whose shared cache
+      (** Some where the objects must be searched as POV-Ray searches them (through its bounding
+          tree, or in scene order without it): isosurfaces in two or more top-level objects, whose shared cache
           of the last segment without a root (isosurf.cpp) answers according to which isosurface
           was searched last *)
 }
@@ -245,9 +247,10 @@ type t = {
       (** orthographic camera: the top-level objects whose box can hold a ray's origin, in scene
           order (§18.4); empty otherwise *)
   bounding : bool;
-      (** POV-Ray builds its bounding hierarchy: the scene has at least 3 top-level objects, light
-          sources and degenerate triangles included (Bounding_Threshold). Without it objects are
-          tested in scene order, which decides exact depth ties. *)
+      (** POV-Ray builds its bounding hierarchy: bounding is on and the scene has at least
+          Bounding_Threshold top-level objects (1 by default, 3 in Debian's povray.ini), light
+          sources and degenerate triangles included. Without it objects are tested in scene order,
+          which decides exact depth ties. *)
   slabs : Slab_tree.t Lazy.t;
       (** POV-Ray's bounding tree over the top-level objects, built only when asked: with
           [bounding] its traversal order decides exact depth ties (§2.1) and the camera's

@@ -120,23 +120,22 @@ let visit_bounded st i =
   let wl = ctx.walk_limit in
   wl.(0) <- fmin wl.(0) l
 
-(* POV-Ray's search (Intersect_BBox_Tree): each object the walk of its tree pops, nearest box
-   first, kept when strictly nearer than the best so far *)
+(* POV-Ray's search: each object the walk of its tree pops, nearest box first
+   (Intersect_BBox_Tree), or without the tree every object in scene order whose box the ray
+   crosses (FindIntersection); an object is kept when strictly nearer than the best so far *)
 let pov_search ctx (ord : order) (o : Vec.t) (d : Vec.t) =
   let f = ctx.found and r = ctx.reach in
-  let objects = ctx.scene.objects in
-  Slab_tree.search ord.walk o d
-    (fun () -> r.depth)
-    (fun id ->
-      if ord.member.(id) then begin
-        let ob = objects.(id) in
-        let t = Shape.depth ctx.shapes ob.shape o d r.least in
-        if t < r.depth then begin
-          r.depth <- t;
-          f.id <- Shape.hit_object ctx.shapes ob;
-          f.part <- ctx.shapes.part
-        end
-      end)
+  let test (ob : obj) =
+    let t = Shape.depth ctx.shapes ob.shape o d r.least in
+    if t < r.depth then begin
+      r.depth <- t;
+      f.id <- Shape.hit_object ctx.shapes ob;
+      f.part <- ctx.shapes.part
+    end
+  in
+  match ord with
+  | Tree { walk; member } -> Slab_tree.search walk o d (fun () -> r.depth) (fun id -> if member.(id) then test ctx.scene.objects.(id))
+  | Listed obs -> Array.iter (fun (ob : obj) -> if Pov_box.met ob.pbox o d ~within:infinity then test ob) obs
 
 (* povml's search: the unbounded objects one by one, then its own hierarchy *)
 let bvh_search ctx (g : group) (o : Vec.t) (d : Vec.t) hi =

@@ -37,7 +37,7 @@ let shutdown_warnings (scene : Scene.t) (stats : Stats.t) =
   in
   iso @ cut
 
-let run ?interp ?move (opts : Render.options) path =
+let run ?interp ?move ?bounding_threshold (opts : Render.options) path =
   let t0 = Unix.gettimeofday () in
   let iopts = match interp with Some i -> i | None -> Interp.default_options ~width:opts.width ~height:opts.height in
   let includes = ref [] in
@@ -45,7 +45,7 @@ let run ?interp ?move (opts : Render.options) path =
   let scene, warnings = Interp.load_file { iopts with width = opts.width; height = opts.height; included } path in
   let scene = match move with None -> scene | Some (scale, translate) -> Place.scene ~scale ~translate scene in
   let t1 = Unix.gettimeofday () in
-  let compiled = Compile.scene scene in
+  let compiled = Compile.scene ?bounding_threshold scene in
   let t2 = Unix.gettimeofday () in
   let img, stats = Render.render opts compiled scene.gamma in
   let image = Encode.image scene.gamma img in

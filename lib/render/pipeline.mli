@@ -12,8 +12,9 @@ type result = {
   render_seconds : float;  (** tracing and encoding *)
 }
 
-val run : ?interp:Interp.options -> ?move:float * Vec.t -> Render.options -> string -> result
-(** [run ?interp ?move opts path] interprets (with [interp], whose size is replaced by [opts]'),
-    moves the whole scene when [move] = (scale, translation) is given ([Place.scene]), compiles,
+val run : ?interp:Interp.options -> ?move:float * Vec.t -> ?bounding_threshold:int -> Render.options -> string -> result
+(** [run ?interp ?move ?bounding_threshold opts path] interprets (with [interp], whose size is
+    replaced by [opts]'), moves the whole scene when [move] = (scale, translation) is given
+    ([Place.scene]), compiles (with POV-Ray's Bounding_Threshold, {!Compile.scene}),
     renders and encodes the scene file [path].
     Raises [Error.Scene_error] for errors in the scene. *)

@@ -56,13 +56,30 @@ Antialias_Threshold sets the threshold without turning antialiasing on (as POV-R
   $ povml d.ini -D +Oh.png 2>&1 | grep Wrote
   Wrote h.png (16x12)
 
-POV-Ray's options that povml does not read yet are named in a warning and ignored:
+POV-Ray's options that povml does not read yet are named in a warning and ignored; those whose
+value is what povml does anyway (POV-Ray's defaults, console and display settings) pass silently:
 
-  $ printf 'Output_Alpha=on\nPause_When_Done=off\n' > more.ini
+  $ printf 'Output_Alpha=on\nPause_When_Done=off\nSplit_Unions=on\nRemove_Bounds=on\nVerbose=on\n' > more.ini
   $ povml s.pov more.ini +W8 +H6 -D +Oi.png 2>&1 | grep -E 'warning|Wrote'
-  more.ini:1:1: warning: the ini option 'Output_Alpha' is not supported yet; ignored
-  more.ini:2:1: warning: the ini option 'Pause_When_Done' is not supported yet; ignored
+  more.ini:1:1: warning: the ini option 'Output_Alpha=on' is not supported yet; ignored
+  more.ini:3:1: warning: the ini option 'Split_Unions=on' is not supported yet; ignored
   Wrote i.png (8x6)
+
+Output_to_File=off (-F) renders without writing the image; Bounding=off (-MB) and
+Bounding_Threshold (+MBn) decide whether POV-Ray's bounding tree is used (fidelity scenes
+bounding_threshold_4, bounding_threshold_5, bounding_off):
+
+  $ printf 'Output_to_File=off\nBounding_Threshold=3\n' > nofile.ini
+  $ povml s.pov nofile.ini +W8 +H6 -D +Onofile.png 2>&1 | grep -E 'warning|Wrote|Render Time'
+  Render Time:    0 hours  0 minutes  0 seconds (0.000 seconds)
+  $ ls nofile.png
+  ls: cannot access 'nofile.png': No such file or directory
+  [2]
+  $ povml s.pov nofile.ini +W8 +H6 -D +F +Onofile.png 2>&1 | grep Wrote
+  Wrote nofile.png (8x6)
+  $ povml s.pov +W8 +H6 -D -MB +MB2 -F 2>&1 | grep -c warning
+  0
+  [1]
 
 Declare=NAME=VALUE declares an identifier before the scene is read, as POV-Ray's front end passes
 it: a float in single precision with six significant digits (1.23456789 is 1.23457, as POV-Ray
@@ -106,3 +123,55 @@ errors, status 1, no image.
   $ ls j.png
   ls: cannot access 'j.png': No such file or directory
   [2]
+
+Before the command line povml reads one ini file, as POV-Ray's Unix front end does: the file the
+POVINI environment variable names, else the first of ./povray.ini, ~/.povray/3.7/povray.ini,
+/etc/povray/3.7/povray.ini, ~/.povrayrc and /etc/povray.ini. (These tests run with POVINI naming
+an empty file, /dev/null.) Its settings come first, so the command line wins:
+
+  $ printf 'Width=20\nHeight=10\nAntialias=on\n' > mine.ini
+  $ POVINI=$PWD/mine.ini povml s.pov -D +Om1.png 2>&1 | grep -E '^(Pixels|Wrote)'
+  Pixels:              200   Samples:             369   Smpls/Pxl: 1.84
+  Wrote m1.png (20x10)
+  $ povml --no-povray-ini s.pov +W20 +H10 +A -D +Om0.png 2>/dev/null; cmp m0.png m1.png && echo "same as +W20 +H10 +A"
+  same as +W20 +H10 +A
+  $ POVINI=$PWD/mine.ini povml s.pov +W8 +H6 -A -D +Om2.png 2>&1 | grep -E '^(Pixels|Wrote)'
+  Pixels:               48   Samples:               0   Smpls/Pxl: 0.00
+  Wrote m2.png (8x6)
+
+--no-povray-ini reads none (POV-Ray's defaults: 160×120):
+
+  $ POVINI=$PWD/mine.ini povml --no-povray-ini s.pov -D +Om3.png 2>&1 | grep Wrote
+  Wrote m3.png (160x120)
+
+A POVINI that names no file is a warning, and the search goes on: here to ./povray.ini, which
+comes before the user's and the system's:
+
+  $ mkdir -p run home/.povray/3.7 && printf 'Width=12\nHeight=9\n' > run/povray.ini && printf 'Width=14\nHeight=7\n' > home/.povray/3.7/povray.ini
+  $ cd run && POVINI=$PWD/none.ini HOME=$PWD/../home povml ../s.pov -D +O../m4.png 2>&1 | grep -E 'warning|Wrote'; cd ..
+  warning: the POVINI environment variable names "$TESTCASE_ROOT/run/none.ini", which cannot be read; looking for povray.ini
+  Wrote ../m4.png (12x9)
+  $ env -u POVINI HOME=$PWD/home povml s.pov -D +Om5.png 2>&1 | grep -E 'warning|Wrote'
+  Wrote m5.png (14x7)
+
+Without any of those, Debian's /etc/povray/3.7/povray.ini (installed with POV-Ray) sets 800×600
+and a bounding threshold of 3, silently:
+
+  $ env -u POVINI HOME=/nonexistent povml s.pov -D +Om6.png 2>&1 | grep -E 'warning|Wrote'
+  Wrote m6.png (800x600)
+
++A and Antialias_Threshold set one threshold, so the later wins, whichever of them it is:
+
+  $ printf 'Antialias_Threshold=0.9\n' > t9.ini
+  $ povml s.pov +W20 +H10 -D t9.ini +A0.01 +Om8.png 2>&1 | grep Samples
+  Pixels:              200   Samples:             369   Smpls/Pxl: 1.84
+  $ povml s.pov +W20 +H10 -D +A0.01 t9.ini +Om9.png 2>&1 | grep Samples
+  Pixels:              200   Samples:             252   Smpls/Pxl: 1.26
+
+The POVINC environment variable names one more include directory, searched after all others:
+
+  $ mkdir inc && printf '#declare R = 0.5;\n' > inc/r.inc && printf '#include "r.inc"\nsphere { 0, R pigment { rgb 1 } }\n' > inc.pov
+  $ povml inc.pov +W8 +H6 -D +Om7.png 2>&1 | grep -E 'error'
+  inc.pov:1:1: error: cannot find the include file "r.inc" (searched ., /usr/share/povray-3.7/include)
+  $ POVINC=$PWD/inc povml inc.pov +W8 +H6 -D +Om7.png 2>&1 | grep -E 'error|Wrote'
+  Wrote m7.png (8x6)

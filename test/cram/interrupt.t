@@ -134,3 +134,15 @@ that does not exist (status 5):
   $ povml ok.pov +W8 +H6 -D +Onowhere/x.png 2>err; echo "exit $?"; grep -v warning err
   exit 5
   nowhere/x.png: error: cannot write the image: nowhere: No such file or directory
+
+A device, a pipe or a symbolic link is written through, never replaced (as root a rename would
+put a file where /dev/null was):
+
+  $ povml ok.pov +W8 +H6 -D +O/dev/null 2>/dev/null; echo "exit $?"; test -c /dev/null && echo "/dev/null is a device"
+  exit 0
+  /dev/null is a device
+  $ povml ok.pov +W8 +H6 -D +O/dev/stdout 2>/dev/null | head -c 4 | od -An -c
+   211   P   N   G
+  $ ln -s b.png link.png; povml ok.pov +W8 +H6 -D +Olink.png 2>/dev/null; test -L link.png && echo "still a link"; cmp link.png b.png && echo "through it"
+  still a link
+  through it

@@ -26,6 +26,9 @@ let read_manifest path =
              }
          | _ -> failwith ("malformed manifest line: " ^ l))
 
+(* povml reads the ini file POV-Ray made the references with, and no other *)
+let () = Unix.putenv "POVINI" (Filename.concat (Sys.getcwd ()) "../../reference/povray.ini")
+
 let run_povml args =
   let cmd = Filename.quote_command !povml args ~stdout:"/dev/null" ~stderr:"/dev/null" in
   Sys.command cmd

@@ -25,7 +25,7 @@ for ini in "$scenes"/animations/*/*.ini; do
   (cd "$work/p" && POVINI=$work/empty.ini timeout 600 povray "$name" -D $size +L"$include_dir" > ../p.log 2>&1)
   t1=$(date +%s.%N)
   # shellcheck disable=SC2086
-  (cd "$work/m" && timeout 600 "$povml" "$name" -D $size --allow-write . > ../m.log 2>&1)
+  (cd "$work/m" && POVINI=$work/empty.ini timeout 600 "$povml" "$name" -D $size --allow-write . > ../m.log 2>&1)
   t2=$(date +%s.%N)
   pf=$(cd "$work/p" && ls ./*.png 2>/dev/null | sort | tr '\n' ' '); mf=$(cd "$work/m" && ls ./*.png 2>/dev/null | sort | tr '\n' ' ')
   np=$(echo "$pf" | wc -w); nm=$(echo "$mf" | wc -w)

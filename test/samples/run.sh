@@ -74,9 +74,11 @@ one_scene() {
   rm -rf "$d"; mkdir -p "$d/povml" "$d/povray"
   local size=(+W160 +H120 -D -V -A +FN +WT1)
 
-  # povml
+  # povml, and POV-Ray below, read the same empty ini file: the system's would add its own size,
+  # display and bounding threshold
+  : >"$d/empty.ini"
   set +e
-  (cd "$d/povml" && nice -n 15 /usr/bin/time -o "$d/povml.time" -f '%U %S %e' \
+  (cd "$d/povml" && POVINI="$d/empty.ini" nice -n 15 /usr/bin/time -o "$d/povml.time" -f '%U %S %e' \
      timeout -k 5 "$limit" "$povml" "+I$scene" "+O$d/povml.png" "${size[@]}" "+L$sdir" \
      --allow-write "$d/povml" </dev/null >"$d/povml.log" 2>&1)
   rc=$?
@@ -89,9 +91,8 @@ one_scene() {
   else status=error; msg=$(povml_message "$d/povml.log")
   fi
 
-  # POV-Ray (an empty ini: the system's would add its own size and display). On a busy machine its
-  # front end may give up "waiting for worker thread startup" at once: then it is run again.
-  : >"$d/empty.ini"
+  # POV-Ray. On a busy machine its front end may give up "waiting for worker thread startup" at
+  # once: then it is run again.
   local attempt
   for attempt in 1 2 3; do
     set +e

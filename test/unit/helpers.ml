@@ -69,8 +69,9 @@ let surf_of (o : Compiled.obj) = match o.tex with Plain s -> s | _ -> Alcotest.f
 
 let pigment_of (o : Scene.obj) = match (layer_of o).pigment with Solid c | Solid_placed { colour = c; _ } -> c | Pattern _ -> Alcotest.fail "a pattern pigment"
 
-(* Tracing one ray through a scene given as text. *)
-let compile text = Compile.scene (scene text)
+(* Tracing one ray through a scene given as text, compiled with the bounding threshold of Debian's
+   povray.ini (3), with which POV-Ray checked these rules (reference/povray.ini) *)
+let compile ?(bounding_threshold = 3) text = Compile.scene ~bounding_threshold (scene text)
 
 let trace_ray ?interiors (c : Compiled.t) origin dir =
   let ctx = Trace.make_ctx c (Stats.create ()) in

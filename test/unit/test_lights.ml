@@ -265,6 +265,12 @@ object { L translate y*3 }") in
   (* the light and its shape count as one top-level object for POV-Ray's bounding threshold *)
   let c = compile (v37 ^ "light_source { 0, rgb 1 looks_like { sphere { 0, 0.5 } } } sphere { x*5, 1 }") in
   Alcotest.(check bool) "two top-level objects: no bounding" false c.bounding;
+  (* POV-Ray's own threshold (no ini file) is 1: the tree even for one object; -MB never *)
+  let two = v37 ^ "light_source { 0, rgb 1 } sphere { x*5, 1 }" in
+  Alcotest.(check bool) "threshold 1: bounding" true (compile ~bounding_threshold:Compile.pov_bounding_threshold two).bounding;
+  Alcotest.(check bool) "threshold 2: bounding" true (compile ~bounding_threshold:2 two).bounding;
+  Alcotest.(check bool) "Bounding=off: none" false (compile ~bounding_threshold:max_int two).bounding;
+  Alcotest.(check bool) "nothing to bound" false (compile ~bounding_threshold:1 v37).bounding;
   (* a camera inside the shape starts inside it (checked against POV-Ray: lights_looks_like_inside) *)
   let c = compile (v37 ^ "camera { location 0 } light_source { 0, rgb 1 looks_like { sphere { 0, 0.5 } } }") in
   Alcotest.(check (list int)) "camera inside the shape" [ 0 ] c.start_interiors;
