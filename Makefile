@@ -3,12 +3,12 @@
 
 DEB_PACKAGES = libcamlimages-ocaml-dev libalcotest-ocaml-dev \
                libcmdliner-ocaml-dev libqcheck-ocaml-dev povray povray-includes povray-examples time parallel \
-               slurm-wlm munge
+               slurm-wlm munge openssh-server rsync
 
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 POVML = ./_build/default/bin/main.exe
 
-.PHONY: all deps build install render test test-slurm fuzz bench report samples animations references clean
+.PHONY: all deps build install render test test-slurm test-ssh fuzz bench report samples animations references clean
 
 all: build
 
@@ -45,6 +45,12 @@ test: deps
 test-slurm: deps
 	dune build
 	bash test/slurm/run.sh
+
+# The README's GNU parallel recipe across machines (--sshlogin) with a second machine made on this
+# one: an sshd on 127.0.0.1 for an account of its own (test/ssh/run.sh; needs root).
+test-ssh: deps
+	dune build
+	bash test/ssh/run.sh
 
 # AFL++ on the interpreter and a tiny render for FUZZ_SECONDS (test/fuzz/afl.sh), built instrumented in
 # _build_afl (test/fuzz/afl.workspace); prints the inputs tried and fails on any crash or hang.
