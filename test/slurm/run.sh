@@ -13,14 +13,7 @@ export SLURM_CONF
 trap 'bash "$here/stop.sh"' EXIT
 work=$(mktemp -d /tmp/povml-slurm-test.XXXXXX)
 cd "$work"
-cat > a.pov <<'POV'
-#version 3.7;
-global_settings { assumed_gamma 1 }
-camera { location <0, 1, -5> look_at 0 }
-light_source { <3, 5, -5>, rgb 1 }
-plane { y, -1 pigment { checker rgb 1, rgb 0.2 } }
-sphere { <clock, 0, 0>, 1 pigment { rgb <1, 0.5, 0.2> } finish { reflection 0.3 } }
-POV
+cp "$here/a.pov" a.pov
 mkdir one split
 "$povml" a.pov +W64 +H48 +A0.3 -D +KFF6 +KI-1 +KF1 +Oone/ 2>/dev/null
 start=$(date +%s.%N)

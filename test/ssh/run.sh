@@ -63,14 +63,7 @@ mkdir "$work/bin" "$work/job"
 ln -s "$povml" "$work/bin/povml"
 export PATH=$work/bin:$PATH
 cd "$work/job"
-cat > a.pov <<'POV'
-#version 3.7;
-global_settings { assumed_gamma 1 }
-camera { location <0, 1, -5> look_at 0 }
-light_source { <3, 5, -5>, rgb 1 }
-plane { y, -1 pigment { checker rgb 1, rgb 0.2 } }
-sphere { <clock, 0, 0>, 1 pigment { rgb <1, 0.5, 0.2> } finish { reflection 0.3 } }
-POV
+cp "$root/test/slurm/a.pov" a.pov
 mkdir one
 povml a.pov +W64 +H48 +A0.3 -D +KFF6 +KI-1 +KF1 +Oone/ 2>/dev/null
 bad=0
