@@ -306,7 +306,8 @@ let scene ?(bounding_threshold = pov_bounding_threshold) (s : Scene.t) : Compile
             old_refract = f32 (match top_finish o.texture with Some f -> f.refraction | None -> 1.);
             opaque;
             mag = Shape.magnitude shape;
-            pbox = Shape.pov_box shape;
+            (* an object POV-Ray flags infinite has no box in its tree *)
+            pbox = (let b = Shape.pov_box shape in if Pov_box.infinite b then [||] else b);
             double_illuminate = o.double_illuminate;
           }
         in
@@ -382,8 +383,22 @@ let scene ?(bounding_threshold = pov_bounding_threshold) (s : Scene.t) : Compile
   let iso_tops =
     Array.fold_left (fun acc o -> match o.shape with Isosurface _ when not (List.mem o.top acc) -> o.top :: acc | _ -> acc) [] objects
   in
+  (* POV-Ray meets an object only if the ray, its origin in single precision, crosses the
+     object's single-precision box. Where coordinates are large against an object (a ball of 1e-3
+     a million units from the origin) that rounding is much larger than the object, and POV-Ray
+     misses parts of it or all of it: such a scene is searched as POV-Ray searches it. *)
+  let coarse =
+    let big (v : Vec.t) = Float.max (Float.abs v.x) (Float.max (Float.abs v.y) (Float.abs v.z)) in
+    let finite = List.filter (fun o -> Array.length o.pbox > 0) tops in
+    let reach (b : float array) = Array.fold_left (fun m k -> Float.max m (Float.abs b.(k) +. b.(k + 3))) 0. [| 0; 1; 2 |] in
+    let extent = List.fold_left (fun m (l : Scene.light) -> Float.max m (big l.position)) (big cam) s.lights in
+    let extent = List.fold_left (fun m o -> Float.max m (reach o.pbox)) extent finite in
+    (* a unit in the last place of single precision at that extent, against each object's size *)
+    let ulp = extent *. 0x1p-24 in
+    List.exists (fun o -> ulp > 1e-3 *. Float.max o.pbox.(3) (Float.max o.pbox.(4) o.pbox.(5))) finite
+  in
   let ordered (g : group) =
-    if List.length iso_tops < 2 then g
+    if List.length iso_tops < 2 && not coarse then g
     else if bounding then begin
       let member = Array.make (Array.length objects) false in
       Array.iter (fun o -> member.(o.id) <- true) g.unbounded;

@@ -155,8 +155,9 @@ and obj = {
           plane's point nearest the origin): the scale of its rounding errors, for the robust mode *)
   pbox : float array;
       (** POV-Ray's bounding box of the object, as it stores it: lower corner and lengths, each
-          rounded to single precision ([||] for a plane). Only used to break exact depth ties the
-          way POV-Ray's bounding order does (§2.1). *)
+          rounded to single precision; [||] for an object POV-Ray flags infinite (a plane, any
+          box of volume above 2e10: {!Pov_box.infinite}), which stays out of its tree. Used to
+          search objects and break exact depth ties the way POV-Ray's bounding order does (§2.1). *)
   double_illuminate : bool;  (** §16.6: lights behind the surface light it too *)
 }
 

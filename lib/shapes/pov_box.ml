@@ -5,6 +5,12 @@ let epsilon = Precision.epsilon
 
 let of_min_max (lo : float array) (hi : float array) = Array.init 6 (fun i -> if i < 3 then f32 lo.(i) else f32 (hi.(i - 3) -. lo.(i - 3)))
 
+(* BOUNDS_VOLUME: the product of the single-precision lengths, taken in single precision *)
+let volume (b : float array) = f32 (f32 (b.(3) *. b.(4)) *. b.(5))
+
+(* Post_Process: INFINITE_VOLUME is BOUND_HUGE *)
+let infinite b = Array.length b = 0 || volume b > 2e10
+
 let mapped tr b =
   let lo = [| b.(0); b.(1); b.(2) |] and hi = [| b.(0) +. b.(3); b.(1) +. b.(4); b.(2) +. b.(5) |] in
   let m = Transform.bounds tr (Array.append lo hi) in

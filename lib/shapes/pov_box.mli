@@ -7,6 +7,14 @@ val of_min_max : float array -> float array -> float array
 (** [of_min_max lo hi] is the box from the corners [lo] and [hi] (3 floats each), as POV-Ray's
     Make_BBox_from_min_max rounds them. *)
 
+val volume : float array -> float
+(** [volume b] is BOUNDS_VOLUME: the product of the box's lengths, in single precision. *)
+
+val infinite : float array -> bool
+(** [infinite b] is whether POV-Ray flags an object with the box [b] infinite (Post_Process): an
+    unbounded box, or a volume above BOUND_HUGE (2e10), so a sphere of radius 1500 is infinite.
+    POV-Ray keeps infinite objects out of its bounding tree and tests them first, without their box. *)
+
 val mapped : Transform.t -> float array -> float array
 (** [mapped tr b] is the box of the corners of the box [b] mapped by [tr] (Recompute_BBox). *)
 

@@ -41,11 +41,8 @@ let huge_box =
 let of_min_max (lo : float array) (hi : float array) =
   [| f32 lo.(0); f32 lo.(1); f32 lo.(2); f32 (hi.(0) -. lo.(0)); f32 (hi.(1) -. lo.(1)); f32 (hi.(2) -. lo.(2)) |]
 
-(* BOUNDS_VOLUME: the product of the single-precision lengths, taken in single precision *)
-let volume (b : float array) = f32 (f32 (b.(3) *. b.(4)) *. b.(5))
-
-(* Post_Process: an object whose box is larger than this is infinite (INFINITE_VOLUME) *)
-let infinite b = volume b > bound_huge
+let volume = Pov_box.volume
+let infinite = Pov_box.infinite
 
 (* std::max and std::min, which keep the first argument unless the second is larger (smaller) *)
 let maxf (a : float) b = if a < b then b else a
