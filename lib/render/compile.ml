@@ -49,7 +49,7 @@ let group objs =
       | Some (s : Sphere.t) -> spheres.(4 * i) <- s.cx; spheres.((4 * i) + 1) <- s.cy; spheres.((4 * i) + 2) <- s.cz; spheres.((4 * i) + 3) <- s.r2
       | None -> ())
     bounded;
-  { unbounded = Array.of_list unbounded; bounded; bvh; spheres; boxes; order = None }
+  { unbounded = Array.of_list unbounded; bounded; bvh; spheres; boxes; pov = lazy (Listed [||]); pov_always = false }
 
 (* POV-Ray stores colours in single precision (§8.3); rounding the stored values the same way keeps
    results on the same side of the 8-bit rounding boundaries. *)
@@ -314,7 +314,15 @@ let scene ?(bounding_threshold = pov_bounding_threshold) (s : Scene.t) : Compile
         built := ob :: !built;
         Some ob
   in
-  let visible = List.filter_map (fun (o : Scene.obj) -> Option.map (fun ob -> (o, ob)) (build ~top:(-1) ~iid:(-1) ~inverted:false o)) s.objects in
+  (* the members of a split union that share its interior name the first one's (§16.5) *)
+  let shared = Hashtbl.create 8 in
+  let top_level (o : Scene.obj) =
+    let iid = if o.shared_interior < 0 then -1 else Option.value (Hashtbl.find_opt shared o.shared_interior) ~default:(-1) in
+    let ob = build ~top:(-1) ~iid ~inverted:false o in
+    (match ob with Some ob when o.shared_interior >= 0 && iid < 0 -> Hashtbl.replace shared o.shared_interior ob.id | Some _ | None -> ());
+    Option.map (fun ob -> (o, ob)) ob
+  in
+  let visible = List.filter_map top_level s.objects in
   let objects = Array.of_list (List.sort (fun a b -> compare a.id b.id) !built) in
   let tops = List.map snd visible in
   let casts = List.filter_map (fun ((o : Scene.obj), ob) -> if o.no_shadow then None else Some ob) visible in
@@ -372,24 +380,18 @@ let scene ?(bounding_threshold = pov_bounding_threshold) (s : Scene.t) : Compile
      object (§19.2) *)
   let count = List.length (List.filter (fun (o : Scene.obj) -> not o.looks_like) s.objects) + List.length s.lights in
   let bounding = count > 0 && count >= bounding_threshold in
-  let slabs =
-    lazy
-      (let finite, infinite = List.partition (fun o -> Array.length o.pbox > 0) tops in
-       Slab_tree.build (List.map (fun o -> (o.id, o.pbox)) finite) (List.map (fun o -> o.id) infinite))
-  in
+  let finite, infinite = List.partition (fun o -> Array.length o.pbox > 0) tops in
+  let slabs = lazy (Slab_tree.build (List.map (fun o -> (o.id, o.pbox)) finite) (List.map (fun o -> o.id) infinite)) in
   (* Isosurfaces share one cache, the last segment on which one found no root: which isosurface
-     was searched last decides what it answers, so a scene with isosurfaces in two or more
-     top-level objects is searched in POV-Ray's order *)
-  let iso_tops =
-    Array.fold_left (fun acc o -> match o.shape with Isosurface _ when not (List.mem o.top acc) -> o.top :: acc | _ -> acc) [] objects
-  in
+     was searched last, and how often, decides what it answers, so a scene with isosurfaces is
+     searched in POV-Ray's order (a replay would search one twice) *)
+  let isosurfaces = Array.exists (fun o -> match o.shape with Isosurface _ -> true | _ -> false) objects in
   (* POV-Ray meets an object only if the ray, its origin in single precision, crosses the
      object's single-precision box. Where coordinates are large against an object (a ball of 1e-3
      a million units from the origin) that rounding is much larger than the object, and POV-Ray
      misses parts of it or all of it: such a scene is searched as POV-Ray searches it. *)
   let coarse =
     let big (v : Vec.t) = Float.max (Float.abs v.x) (Float.max (Float.abs v.y) (Float.abs v.z)) in
-    let finite = List.filter (fun o -> Array.length o.pbox > 0) tops in
     let reach (b : float array) = Array.fold_left (fun m k -> Float.max m (Float.abs b.(k) +. b.(k + 3))) 0. [| 0; 1; 2 |] in
     let extent = List.fold_left (fun m (l : Scene.light) -> Float.max m (big l.position)) (big cam) s.lights in
     let extent = List.fold_left (fun m o -> Float.max m (reach o.pbox)) extent finite in
@@ -398,17 +400,20 @@ let scene ?(bounding_threshold = pov_bounding_threshold) (s : Scene.t) : Compile
     List.exists (fun o -> ulp > 1e-3 *. Float.max o.pbox.(3) (Float.max o.pbox.(4) o.pbox.(5))) finite
   in
   let ordered (g : group) =
-    if List.length iso_tops < 2 && not coarse then g
-    else if bounding then begin
-      let member = Array.make (Array.length objects) false in
-      Array.iter (fun o -> member.(o.id) <- true) g.unbounded;
-      Array.iter (fun o -> member.(o.id) <- true) g.bounded;
-      { g with order = Some (Tree { walk = Slab_tree.searcher (Lazy.force slabs); member }) }
-    end
-    else
-      let listed = Array.append g.unbounded g.bounded in
-      Array.sort (fun (a : obj) b -> Int.compare a.id b.id) listed;
-      { g with order = Some (Listed listed) }
+    let pov =
+      lazy
+        (if bounding then begin
+           let member = Array.make (Array.length objects) false in
+           Array.iter (fun o -> member.(o.id) <- true) g.unbounded;
+           Array.iter (fun o -> member.(o.id) <- true) g.bounded;
+           Tree { walk = Slab_tree.searcher (Lazy.force slabs); member }
+         end
+         else
+           let listed = Array.append g.unbounded g.bounded in
+           Array.sort (fun (a : obj) b -> Int.compare a.id b.id) listed;
+           Listed listed)
+    in
+    { g with pov; pov_always = isosurfaces || coarse }
   in
   (* the list holds interiors: a CSG's members share theirs (§16.5) *)
   let holds o = Interiors.holds stack o cam in

@@ -211,11 +211,15 @@ type group = {
       (** 6 per bounded object: the box of a shape costlier to test than a box
           ([Shape.costly]), as its hierarchy leaf would hold it alone (min x, y,
           z, max x, y, z), met by a ray before the shape itself is tried; nan for other shapes *)
-  order : order option;
-      (** Some where the objects must be searched as POV-Ray searches them (through its bounding
-          tree, or in scene order without it): isosurfaces in two or more top-level objects, whose shared cache
-          of the last segment without a root (isosurf.cpp) answers according to which isosurface
-          was searched last *)
+  pov : order Lazy.t;
+      (** the group searched as POV-Ray searches it (through its bounding tree, or in scene order
+          without it): replayed for a ray on which two top-level objects' hits nearly tie (equal
+          but for rounding), where which one POV-Ray finds depends on its order of search *)
+  pov_always : bool;
+      (** every ray searches [pov]: scenes with isosurfaces, whose shared cache of the last
+          segment without a root (isosurf.cpp) answers according to which isosurface was searched
+          last, and scenes whose coordinates are large against an object, which POV-Ray's
+          single-precision boxes miss in part *)
 }
 
 type t = {

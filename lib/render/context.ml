@@ -1,6 +1,6 @@
 (* A render worker's context: the scene, the statistics, the scratch and the shadow cache. *)
 
-type found = { mutable id : int; mutable part : int }
+type found = { mutable id : int; mutable part : int; mutable near : bool }
 type reach = { mutable depth : float; mutable least : float; mutable inv_dx : float; mutable inv_dy : float; mutable inv_dz : float }
 
 type t = {
@@ -27,7 +27,7 @@ let make ?(robust = false) ?shadow_cache:cache ?iso (scene : Compiled.t) stats =
     min_depth = (if robust then 0. else Precision.min_isect_depth);
     robust;
     shadow_cache = (match cache with Some c -> c | None -> shadow_cache scene);
-    found = { id = -1; part = -1 };
+    found = { id = -1; part = -1; near = false };
     reach = { depth = 0.; least = 0.; inv_dx = 0.; inv_dy = 0.; inv_dz = 0. };
     walk_limit = [| 0. |];
   }

@@ -3,9 +3,10 @@
     nothing) and POV-Ray's shadow cache. Nothing here is shared between workers, so the image does
     not depend on which worker renders which block. *)
 
-type found = { mutable id : int; mutable part : int }
+type found = { mutable id : int; mutable part : int; mutable near : bool }
 (** The nearest-hit search's best object so far (−1 for none) and the part of it hit (a mesh face,
-    a box side …). After a search: what it found. *)
+    a box side …), and whether two top-level objects' hits nearly tied on the way. After a
+    search: what it found. *)
 
 type reach = {
   mutable depth : float;  (** the best depth so far; after a search, the depth found *)

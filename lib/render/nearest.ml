@@ -3,61 +3,33 @@
 open Compiled
 open Context
 
-(* Whether [ob], hit at exactly the depth of the current best [cur], replaces it: POV-Ray keeps the
-   first of equal depths it meets. Without its bounding hierarchy it tests the objects in scene
-   order. With it, the order in which its priority queue hands out the objects' boxes decides
-   (unbounded objects first, then the bounded ones by the depth at which the ray enters their
-   boxes, equal depths as its heap orders them): that search is replayed here, on ties only. *)
-let wins_tie ctx (ob : obj) cur (o : Vec.t) (d : Vec.t) =
-  if not ctx.scene.bounding then ob.id < cur
-  else
-    (* [cur] may be a CSG member: its top-level object is what the tree holds *)
-    let top = ctx.scene.objects.(cur).top in
-    top <> ob.id && Slab_tree.met_first (Lazy.force ctx.scene.slabs) o d ob.id top
-
 let tie_tolerance (o : Vec.t) t = 0x1p-36 *. (Float.max (Float.abs o.x) (Float.max (Float.abs o.y) (Float.abs o.z)) +. t)
 
-(* How far beyond the best depth [best] found the walk still meets boxes. In the robust mode,
-   by the tie width. Else by a few units in the last place: the slab test multiplies by the
-   direction's reciprocal where a shape divides by the direction, so the entry into the box of
-   an object whose face lies in the best hit's face (a square sunk into a board, its top in the
-   board's) may round just beyond the depth at which that face is hit; the object ties and must
-   be met for the tie rule to decide. *)
-let[@inline] beyond ctx (o : Vec.t) best = if ctx.robust then best +. tie_tolerance o best else best +. (0x1p-48 *. Float.abs best)
+(* Depths this close to each other (relative) are equal but for rounding: POV-Ray's search may find
+   either, according to the order in which it meets the objects' boxes. *)
+let near_tie = 1e-9
 
-(* Whether POV-Ray's bounding tree would never have tested [ob], nearer than the current best
-   [best] by rounding only: it takes objects in the order the ray enters their single-precision
-   boxes and stops at the first box entered beyond the best depth found so far. So where a box
-   stands on a plane, a ray meeting the box's face exactly at the plane sees the plane. Asked only
-   of near ties. *)
-let pruned ctx (ob : obj) t best cur (o : Vec.t) (d : Vec.t) =
-  ctx.scene.bounding && cur >= 0
-  && t > best -. (1e-9 *. Float.abs best)
-  && Array.length ob.pbox > 0
-  && Pov_box.entry ob.pbox o d > best
+(* How far beyond the best depth [best] found the walk still meets boxes: by the tie width, so
+   that an object hit just beyond the best is seen to tie. *)
+let[@inline] beyond ctx (o : Vec.t) best = if ctx.robust then best +. tie_tolerance o best else best +. (near_tie *. Float.abs best)
 
-(* The converse of [pruned]: whether [ob], hit just beyond the current best [cur] (farther by
-   rounding only), is what POV-Ray finds. Its bounding tree enters [ob]'s box first, takes [ob]'s
-   hit as the best, and then never tests [cur], whose box it enters beyond that depth. So where a
-   glass cylinder stands on a glass box, a ray inside the cylinder sees the cylinder's end rather
-   than the box's face 1 unit in the last place nearer. Asked only of near ties. *)
-let overtakes ctx (ob : obj) t best cur (o : Vec.t) (d : Vec.t) =
-  ctx.scene.bounding && cur >= 0
-  && t < best +. (1e-9 *. Float.abs best)
-  && Array.length ob.pbox > 0
-  &&
-  let pb = ctx.scene.objects.(ctx.scene.objects.(cur).top).pbox in
-  Array.length pb > 0
-  &&
-  let ec = Pov_box.entry pb o d in
-  ec > t && Pov_box.entry ob.pbox o d < ec
+(* Whether POV-Ray's search meets [ob] at all: only if the ray crosses its single-precision box
+   (as its tree's Check_And_Enqueue, or without the tree Intersect_BBox, tests it), which a ray
+   grazing the box's edge may miss by rounding while it meets the shape (a box's own edge) *)
+let crosses_box ctx (ob : obj) (o : Vec.t) (d : Vec.t) =
+  Array.length ob.pbox = 0
+  || if ctx.scene.bounding then Pov_box.entry ob.pbox o d < infinity else Pov_box.met ob.pbox o d ~within:infinity
 
-(* Whether [ob], hit at depth [t], replaces the current best [cur] at depth [best]. *)
+(* Whether [ob], hit at depth [t], replaces the current best [cur] at depth [best]. Nearer
+   replaces, if POV-Ray's search meets the object; a hit of another top-level object within
+   rounding of the best is noted, and the ray is then searched again as POV-Ray searches it
+   ([search]). In the robust mode, of depths within the tie width the one written first. *)
 let[@inline] replaces ctx (ob : obj) t best cur (o : Vec.t) (d : Vec.t) =
-  if not ctx.robust then
-    (t < best && not (pruned ctx ob t best cur o d))
-    || (t = best && cur >= 0 && wins_tie ctx ob cur o d)
-    || (t > best && overtakes ctx ob t best cur o d)
+  if not ctx.robust then begin
+    if cur >= 0 && Float.abs (t -. best) <= near_tie *. Float.abs best && ctx.scene.objects.(cur).top <> ob.id then
+      ctx.found.near <- true;
+    t < best && crosses_box ctx ob o d
+  end
   else if cur < 0 then t < best
   else
     let tol = tie_tolerance o best in
@@ -152,9 +124,22 @@ let bvh_search ctx (g : group) (o : Vec.t) (d : Vec.t) hi =
 
 let search ctx (g : group) (o : Vec.t) (d : Vec.t) lo hi =
   let f = ctx.found and r = ctx.reach in
-  r.depth <- hi;
+  let start () =
+    r.depth <- hi;
+    f.id <- -1;
+    f.part <- -1
+  in
+  start ();
   r.least <- lo;
-  f.id <- -1;
-  f.part <- -1;
-  (match g.order with Some ord when not ctx.robust -> pov_search ctx ord o d | Some _ | None -> bvh_search ctx g o d hi);
+  f.near <- false;
+  if ctx.robust then bvh_search ctx g o d hi
+  else if g.pov_always then pov_search ctx (Lazy.force g.pov) o d
+  else begin
+    bvh_search ctx g o d hi;
+    (* a near tie: which object POV-Ray finds depends on its order of search *)
+    if f.near then begin
+      start ();
+      pov_search ctx (Lazy.force g.pov) o d
+    end
+  end;
   f.id

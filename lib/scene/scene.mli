@@ -448,6 +448,11 @@ and obj = {
   looks_like : bool;
       (** §19.2: the shape of a light: part of its light's top-level object, not one of its own
           (rays do start inside it, like inside any object: checked against POV-Ray) *)
+  shared_interior : int;
+      (** a member of a split union that has no [interior {}] of its own: the number of the
+          union whose interior it SHARES with its siblings (Post_Process gives the union one
+          interior and its members the same one, before the union is split), the same interior
+          in interior lists; −1: its own *)
 }
 
 (** How a light's intensity depends on where the lit point is (§3.4, §18.2, §18.3). *)

@@ -69,6 +69,7 @@ let scene_obj (o : V.obj) ?(no_shadow = o.no_shadow) ?(interior_texture = o.inte
     no_reflection = o.no_reflection;
     double_illuminate = o.double_illuminate;
     looks_like = o.looks_like;
+    shared_interior = -1;
     uv_mapped = o.uv_mapped;
     difference = o.difference;
   }
@@ -197,23 +198,31 @@ let rec finite (o : V.obj) =
    without a texture or interior take the union's, and its no_shadow goes to every member; its
    lights join the scene's. Another CSG enters whole. An inverted primitive enters as an
    intersection of itself alone, which has the same surface and the negated Inside (§16.3). *)
-let rec add_object st (o : V.obj) =
+let rec enter ~shared st (o : V.obj) =
   let o = unbound st o in
   match o.shape with
   | Prim shape when not o.inverted ->
       count_object st o.oloc;
-      st.objects <- finish_prim st o shape :: st.objects
+      st.objects <- { (finish_prim st o shape) with shared_interior = shared } :: st.objects
   | Prim _ ->
       (* an inverted primitive: the intersection holds its texture and interior, so the camera's
          interior list and the hits name the same interior, as for POV-Ray's one object *)
       let m = V.Member_obj { o with texture = None; interior_texture = None; interior = None } in
-      add_object st { o with shape = Csg { kind = Intersection; members = [ m ]; split = false; box = None }; inverted = false }
+      enter ~shared st { o with shape = Csg { kind = Intersection; members = [ m ]; split = false; box = None }; inverted = false }
   | Csg { kind = Union; members = ms; split = true; _ } ->
+      (* the union's interior, its own or the one it shares, is its members' *)
+      let union_interior =
+        if shared >= 0 then shared
+        else begin
+          st.split_unions <- st.split_unions + 1;
+          st.split_unions
+        end
+      in
       List.iter
         (function
           | V.Member_light l -> count_object st o.oloc; st.lights <- l :: st.lights
           | V.Member_obj c ->
-              add_object st
+              enter ~shared:(if c.interior = None then union_interior else -1) st
                 {
                   c with
                   texture = (match c.texture with Some _ -> c.texture | None -> o.texture);
@@ -234,5 +243,7 @@ let rec add_object st (o : V.obj) =
       | Prim _ | Csg _ -> ());
       count_object st o.oloc;
       let _, interior = resolved st o in
-      let obj = kept_obj st ~texture:None ~cut_parent:false ~interior o in
+      let obj = { (kept_obj st ~texture:None ~cut_parent:false ~interior o) with shared_interior = shared } in
       st.objects <- obj :: st.objects
+
+let add_object st o = enter ~shared:(-1) st o

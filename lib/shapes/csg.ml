@@ -164,8 +164,7 @@ let bounded_box (c : csg) =
     end
   done;
   let box = Pov_box.of_min_max lo hi in
-  let volume b = f32 (f32 (b.(3) *. b.(4)) *. b.(5)) in
-  if volume box < volume own then box else own
+  if Pov_box.volume box < Pov_box.volume own then box else own
 
 (* CSG::Compute_BBox of an intersection: the overlap of its members' boxes ([member_box]), the
    inverted members and height fields left out, the quadrics taken last *)

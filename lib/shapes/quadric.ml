@@ -41,8 +41,6 @@ let huge_box =
 let of_min_max (lo : float array) (hi : float array) =
   [| f32 lo.(0); f32 lo.(1); f32 lo.(2); f32 (hi.(0) -. lo.(0)); f32 (hi.(1) -. lo.(1)); f32 (hi.(2) -. lo.(2)) |]
 
-let volume = Pov_box.volume
-let infinite = Pov_box.infinite
 
 (* std::max and std::min, which keep the first argument unless the second is larger (smaller) *)
 let maxf (a : float) b = if a < b then b else a
@@ -60,7 +58,7 @@ let compute_box q ~old (clip_min : float array) (clip_max : float array) =
   if b <> 0. || c <> 0. || f <> 0. then begin
     (* not in a normal form: at best the clipping box *)
     let v = (cmax.(0) -. cmin.(0)) *. (cmax.(1) -. cmin.(1)) *. (cmax.(2) -. cmin.(2)) in
-    if v < volume old then of_min_max cmin cmax else old
+    if v < Pov_box.volume old then of_min_max cmin cmax else old
   end
   else begin
     (* linear terms: the translation that removes them where a square term allows it *)
@@ -152,7 +150,7 @@ let compute_box q ~old (clip_min : float array) (clip_max : float array) =
       nmax.(k) <- minf nmax.(k) cmax.(k)
     done;
     let v = (nmax.(0) -. nmin.(0)) *. (nmax.(1) -. nmin.(1)) *. (nmax.(2) -. nmin.(2)) in
-    if v < volume old then begin
+    if v < Pov_box.volume old then begin
       let t = [| tx; ty; tz |] in
       let b = of_min_max (Array.init 3 (fun k -> nmin.(k) +. t.(k))) (Array.init 3 (fun k -> nmax.(k) +. t.(k))) in
       if b.(3) > critical_length || b.(4) > critical_length || b.(5) > critical_length then huge_box else b
@@ -263,12 +261,12 @@ let inside q (p : Vec.t) =
   +. q.k
   <= 0.0
 
-let pov_box q = if infinite (box q) then [||] else box q
+let pov_box q = if Pov_box.infinite (box q) then [||] else box q
 
 (* a POV-Ray box as min and max (in double, as Make_min_max_from_BBox): the single-precision box
    culls rays before the quadric is tried (Intersect_BBox), so it is the box, not a wider one *)
 let min_max b =
-  if infinite b then None
+  if Pov_box.infinite b then None
   else
     let hi k = b.(k) +. b.(k + 3) in
     Some [| b.(0); b.(1); b.(2); hi 0; hi 1; hi 2 |]

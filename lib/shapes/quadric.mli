@@ -56,12 +56,8 @@ val box_within : t -> float array -> float array -> float array
     only when smaller than the box [q] had; lower corner and lengths, single precision. A CSG
     intersection bounds its quadric members this way within the others' box. *)
 
-val infinite : float array -> bool
-(** [infinite box] is whether POV-Ray takes an object with this box (lower corner and lengths) for
-    an infinite one: its single-precision volume is above BOUND_HUGE (Post_Process). *)
-
 val bounds : t -> float array option
-(** [bounds q] is POV-Ray's box of [q] as min x, y, z, max x, y, z; None when it is [infinite].
+(** [bounds q] is POV-Ray's box of [q] as min x, y, z, max x, y, z; None when it is infinite ({!Pov_box.infinite}).
     POV-Ray culls rays by that box before it tries the quadric, so it may cut a sliver off the
     surface by its single-precision rounding, as it does there. *)
 
@@ -70,7 +66,7 @@ val bounds_within : t -> float array -> float array -> float array option
 
 val pov_box : t -> float array
 (** [pov_box q] is POV-Ray's box of [q] (lower corner and lengths, single precision), [[||]] when
-    it is [infinite]. *)
+    it is infinite ({!Pov_box.infinite}). *)
 
 val magnitude : t -> float
 (** [magnitude q] is the size of the coordinates [q]'s intersection works with: its box's, or for

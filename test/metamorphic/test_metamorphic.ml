@@ -1,5 +1,6 @@
 (* Metamorphic tests of the robust mode: every scene in scenes/stiff/ and a set of fidelity scenes,
-   rendered scaled by 1e-3 and by 1e3 about the origin and moved by 1e5 along every axis, must show
+   rendered scaled by 1e-3 and by 1e3 about the origin, moved by 1e5 along every axis, and scaled by
+   1e-3, 1 and 1e3 and moved a million times its scale along every axis at once, must show
    the picture it shows as written: PSNR at least 50 dB against it, in the robust mode. The same
    comparisons in POV-Ray's mode are printed for the record (POV-Ray's fixed 1e-4 / 1e-3 / 1e7
    limits make its pictures depend on the scene's size), not asserted. *)
@@ -49,7 +50,19 @@ let stiff () =
     |> List.sort compare
     |> List.map (Filename.concat dir)
 
-let moves = [ ("scale 1e-3", (1e-3, Vec.zero)); ("scale 1e3", (1e3, Vec.zero)); ("translate 1e5", (1., Vec.make 1e5 1e5 1e5)) ]
+(* scaled, moved, and both at once: a scene a million of its own sizes from the origin, at every
+   scale from 1e-3 to 1e3 *)
+let far s = (s, Vec.make (1e6 *. s) (1e6 *. s) (1e6 *. s))
+
+let moves =
+  [
+    ("scale 1e-3", (1e-3, Vec.zero));
+    ("scale 1e3", (1e3, Vec.zero));
+    ("translate 1e5", (1., Vec.make 1e5 1e5 1e5));
+    ("scale 1e-3 translate 1e3", far 1e-3);
+    ("translate 1e6", far 1.);
+    ("scale 1e3 translate 1e9", far 1e3);
+  ]
 
 let opts robust = { (Render.defaults 160 120) with jitter = 0.; workers = 2; robust }
 
