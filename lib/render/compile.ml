@@ -305,7 +305,12 @@ let scene ?(bounding_threshold = pov_bounding_threshold) (s : Scene.t) : Compile
             caustics = o.interior.caustics;
             old_refract = f32 (match top_finish o.texture with Some f -> f.refraction | None -> 1.);
             opaque;
-            mag = Shape.magnitude shape;
+            (* a move of the whole scene is baked into these shapes, but composed into the
+               others' transforms, whose forward and inverse then disagree by the rounding of
+               the move's coordinates *)
+            mag =
+              (Shape.magnitude shape
+              +. match shape with Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Box _ -> 0. | _ -> s.shift);
             (* an object POV-Ray flags infinite has no box in its tree *)
             pbox = (let b = Shape.pov_box shape in if Pov_box.infinite b then [||] else b);
             double_illuminate = o.double_illuminate;
@@ -399,7 +404,7 @@ let scene ?(bounding_threshold = pov_bounding_threshold) (s : Scene.t) : Compile
     let ulp = extent *. 0x1p-24 in
     List.exists (fun o -> ulp > 1e-3 *. Float.max o.pbox.(3) (Float.max o.pbox.(4) o.pbox.(5))) finite
   in
-  let ordered (g : group) =
+  let order_group (g : group) =
     let pov =
       lazy
         (if bounding then begin
@@ -415,6 +420,9 @@ let scene ?(bounding_threshold = pov_bounding_threshold) (s : Scene.t) : Compile
     in
     { g with pov; pov_always = isosurfaces || coarse }
   in
+  (* a group that is every object stays the one group *)
+  let all_ordered = order_group all in
+  let ordered g = if g == all then all_ordered else order_group g in
   (* the list holds interiors: a CSG's members share theirs (§16.5) *)
   let holds o = Interiors.holds stack o cam in
   let holders = List.filter holds tops in
@@ -439,6 +447,8 @@ let scene ?(bounding_threshold = pov_bounding_threshold) (s : Scene.t) : Compile
     occluders = ordered (if List.length occluders = List.length tops then all else group occluders);
     shadow_mode;
     lights;
+    shift = s.shift;
+    robust_start_interiors = Interiors.innermost_first objects start_interiors;
     background = s.background;
     sky = s.sky;
     max_trace_level = s.max_trace_level;

@@ -248,6 +248,10 @@ type t = {
   legacy : bool;  (** effective version < 3.70 *)
   camera : Scene.camera;
   start_interiors : int list;  (** interiors containing the camera, last entered first (§6.4) *)
+  shift : float;
+      (** the scene's {!Scene.t.shift}: the rounding of a move of the whole scene leaves surfaces
+          that were coplanar apart by a few units in the last place of it *)
+  robust_start_interiors : int list;  (** the same in the robust mode's order ({!Interiors.innermost_first}) *)
   screen_holders : obj array;
       (** orthographic camera: the top-level objects whose box can hold a ray's origin, in scene
           order (§18.4); empty otherwise *)

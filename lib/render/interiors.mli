@@ -9,3 +9,9 @@ val at : Compiled.obj array -> float array -> Vec.t -> int list
 
 val holds : float array -> Compiled.obj -> Vec.t -> bool
 (** [holds stack o p] is whether [o]'s POV-Ray box and Inside test both hold [p]. *)
+
+val innermost_first : Compiled.obj array -> int list -> int list
+(** [innermost_first objects l] is the interior list [l] in the robust mode's order, which does not
+    depend on where the scene lies: the interior of the smallest box first, as entered last (an
+    interior list holding one another, a ball in a room); POV-Ray's order follows its bounding
+    tree, whose shape follows the single-precision rounding of the boxes. *)

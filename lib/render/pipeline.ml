@@ -37,6 +37,21 @@ let shutdown_warnings (scene : Scene.t) (stats : Stats.t) =
   in
   iso @ cut
 
+(* The robust mode traces the scene moved near the origin, by the camera's position rounded to a
+   grid of 16 times the camera's size (a power of 2): hit points are then as precise however far
+   the scene lies from the origin, and so are the error bounds, which grow with the coordinates
+   (Robust). A scene around the origin is not moved; a scene moved far away comes back by an exact
+   amount, so each coordinate keeps the rounding it got on the way out and no more. *)
+let recentred (scene : Scene.t) =
+  let c = scene.camera in
+  let size = Float.max (Vec.length c.direction) (Float.max (Vec.length c.right) (Vec.length c.up)) in
+  if not (size > 0. && Float.is_finite size) then scene
+  else
+    let grid = Float.ldexp 1. (snd (Float.frexp size) + 4) in
+    let snap x = if Float.is_finite x then Float.round (x /. grid) *. grid else 0. in
+    let t = Vec.make (snap c.location.x) (snap c.location.y) (snap c.location.z) in
+    if t.x = 0. && t.y = 0. && t.z = 0. then scene else Place.scene ~scale:1. ~translate:(Vec.neg t) scene
+
 let run ?interp ?move ?bounding_threshold (opts : Render.options) path =
   let t0 = Unix.gettimeofday () in
   let iopts = match interp with Some i -> i | None -> Interp.default_options ~width:opts.width ~height:opts.height in
@@ -44,6 +59,7 @@ let run ?interp ?move ?bounding_threshold (opts : Render.options) path =
   let included p ~depth dt = iopts.included p ~depth dt; if depth = 1 then includes := (p, dt) :: !includes in
   let scene, warnings = Interp.load_file { iopts with width = opts.width; height = opts.height; included } path in
   let scene = match move with None -> scene | Some (scale, translate) -> Place.scene ~scale ~translate scene in
+  let scene = if opts.robust then recentred scene else scene in
   let t1 = Unix.gettimeofday () in
   let compiled = Compile.scene ?bounding_threshold scene in
   let t2 = Unix.gettimeofday () in

@@ -64,12 +64,15 @@ let sample ctx opts x y =
   ctx.stats.camera_rays <- ctx.stats.camera_rays + 1;
   match sc.camera.projection with
   | Perspective ->
-      Trace.trace ctx ~level:0 ~weight:1. ~interiors:sc.start_interiors ~continued:false sc.camera.location
+      let interiors = if ctx.robust then sc.robust_start_interiors else sc.start_interiors in
+      Trace.trace ctx ~level:0 ~weight:1. ~interiors ~continued:false sc.camera.location
         (camera_dir sc.camera opts.width opts.height x y)
   | Orthographic ->
       (* every ray has its own origin, so its own interior list *)
       let o = ortho_origin sc.camera opts.width opts.height x y in
-      Trace.trace ctx ~level:0 ~weight:1. ~interiors:(Interiors.at sc.screen_holders ctx.shapes.mesh_stack o) ~continued:false o
+      let interiors = Interiors.at sc.screen_holders ctx.shapes.mesh_stack o in
+      let interiors = if ctx.robust then Interiors.innermost_first sc.objects interiors else interiors in
+      Trace.trace ctx ~level:0 ~weight:1. ~interiors ~continued:false o
         (Vec.normalize sc.camera.direction)
 
 (* §9.1: colours are compared after x ↦ max(x,0)^(1/aa_gamma), in the working space. *)

@@ -5,9 +5,10 @@
     same whatever the size and position of the scene. In POV-Ray's mode a secondary ray leaves from
     the hit point itself. *)
 
-val error_bound : Vec.t -> Vec.t -> float -> float
-(** [error_bound o p mag] bounds the error of the hit point [p] of a ray from [o] on a shape whose
-    coordinates reach [mag]: 256 units in the last place of the largest coordinate involved. *)
+val error_bound : shift:float -> Vec.t -> Vec.t -> float -> float
+(** [error_bound ~shift o p mag] bounds the error of the hit point [p] of a ray from [o] on a shape
+    whose coordinates reach [mag]: 256 units in the last place of the largest coordinate involved,
+    and 4 of [shift], how far the whole scene was moved (its coordinates' rounding on the way). *)
 
 val origin : Context.t -> Vec.t -> Vec.t -> float -> Vec.t -> Vec.t
 (** [origin ctx p ng e dir] is where a ray in direction [dir] leaves the surface at [p]: [p] itself

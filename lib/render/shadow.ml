@@ -15,7 +15,7 @@ let aim (lp : Vec.t) (o : Vec.t) =
 
 (* How far short of the light at [lp] a robust shadow segment of length [remaining] from near [p]
    stops counting hits. *)
-let robust_margin (p : Vec.t) (lp : Vec.t) remaining = (1e-9 *. remaining) +. Robust.error_bound p lp remaining
+let robust_margin ~shift (p : Vec.t) (lp : Vec.t) remaining = (1e-9 *. remaining) +. Robust.error_bound ~shift p lp remaining
 
 (* ComputeShadowTexture for a texture at the point [q] of a shadow ray's crossing: the product of
    its layers' filter colours (each times the interior's faked caustics, [caustic], when it has
@@ -137,7 +137,7 @@ let rec walk ctx ~slot (p : Vec.t) (lp : Vec.t) lo first (o : Vec.t) (l : Vec.t)
   let sc = ctx.scene in
   let i = Nearest.search ctx sc.occluders o l lo remaining in
   let t = ctx.reach.depth in
-  if i < 0 || t >= remaining -. (if ctx.robust then robust_margin p lp remaining else Precision.shadow_tolerance) then lc
+  if i < 0 || t >= remaining -. (if ctx.robust then robust_margin ~shift:ctx.scene.shift p lp remaining else Precision.shadow_tolerance) then lc
   else
     let obj = sc.objects.(i) in
     if obj.opaque then begin
@@ -171,7 +171,7 @@ let rec walk ctx ~slot (p : Vec.t) (lp : Vec.t) lo first (o : Vec.t) (l : Vec.t)
       if not ctx.robust then walk ctx ~slot p lp lo false q l (remaining -. t) interiors lc
       else
         let q = Shape.refine obj q in
-        let next = Robust.origin ctx q (Shape.geometric_normal obj part q) (Robust.error_bound o q obj.mag) l in
+        let next = Robust.origin ctx q (Shape.geometric_normal obj part q) (Robust.error_bound ~shift:ctx.scene.shift o q obj.mag) l in
         let l, remaining = aim lp next in
         walk ctx ~slot p lp lo false next l remaining interiors lc
 
@@ -205,7 +205,7 @@ let feeler_ray ctx ~slot (p : Vec.t) (ng : Vec.t) e (l : Vec.t) dist interiors (
           cached >= 0
           &&
           let shape = sc.objects.(cached).shape in
-          (if ctx.robust then Shape.depth ctx.shapes shape o l lo < dist -. robust_margin p lp dist
+          (if ctx.robust then Shape.depth ctx.shapes shape o l lo < dist -. robust_margin ~shift:ctx.scene.shift p lp dist
            else Shape.cached_depth ctx.shapes shape p l Precision.min_isect_depth dist < dist)
           (* a cached CSG shadows only if the member hit is opaque *)
           && ((not (Csg.is_csg shape)) || sc.objects.(ctx.shapes.leaf).opaque)

@@ -123,7 +123,7 @@ and shade ctx ~reflected obj part depth ~level ~weight ~interiors (o : Vec.t) (d
     let n = if dn > 0. then Vec.neg n else n in
     (* where secondary rays leave from in the robust mode *)
     let ng = if ctx.robust then Shape.geometric_normal obj part p else n in
-    let e = if ctx.robust then Robust.error_bound o p obj.mag else 0. in
+    let e = if ctx.robust then Robust.error_bound ~shift:ctx.scene.shift o p obj.mag else 0. in
     match tex with
     | Plain s when not obj.uv_mapped ->
         (* a plain texture, one layer (the common case): the layer loop of ComputeLightedTexture

@@ -227,8 +227,14 @@ let scene ~scale ~translate (s : Scene.t) : Scene.t =
       | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Prism _ | Lathe _ | Sor _ | Julia _ | Isosurface _ | Parametric _ | Bicubic _ ->
           shape (shape o.shape scaling) (Translate translate)
     in
-    let texture = texture (texture o.texture (Scale sv)) (Translate translate) in
-    { o with shape = sh; texture; interior = { o.interior with fade_distance = o.interior.fade_distance *. scale } }
+    let moved t = texture (texture t (Scale sv)) (Translate translate) in
+    {
+      o with
+      shape = sh;
+      texture = moved o.texture;
+      interior_texture = Option.map moved o.interior_texture;
+      interior = { o.interior with fade_distance = o.interior.fade_distance *. scale };
+    }
   in
   let light (l : Scene.light) =
     let radius, falloff =
@@ -253,4 +259,5 @@ let scene ~scale ~translate (s : Scene.t) : Scene.t =
       projection = c.projection;
     }
   in
-  { s with objects = List.map obj s.objects; lights = List.map light s.lights; camera }
+  let far (v : Vec.t) = Float.max (Float.abs v.x) (Float.max (Float.abs v.y) (Float.abs v.z)) in
+  { s with objects = List.map obj s.objects; lights = List.map light s.lights; camera; shift = (s.shift *. scale) +. far translate }

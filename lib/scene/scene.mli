@@ -506,4 +506,8 @@ type t = {
   noise_generator : int;  (** [global_settings { noise_generator }]: 1, 2 (the default) or 3 *)
   irid_wavelength : Rgb.t;  (** [global_settings { irid_wavelength }]: <0.70, 0.52, 0.48> by default *)
   gamma : gamma;
+  shift : float;
+      (** how far the whole scene was moved after it was read (the largest coordinate of the moves
+          of {!Place.scene}, 0 for a scene as written): the transforms composed with such a move
+          carry the rounding of coordinates that large *)
 }

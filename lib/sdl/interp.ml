@@ -99,6 +99,7 @@ let finish_scene st : Scene.t =
     irid_wavelength = st.irid_wavelength;
     version;
     gamma;
+    shift = 0.;
   }
 
 (* Where the reading was when an error arose: the include and macro-call chain, innermost first. *)

@@ -44,6 +44,7 @@ let compiled st (o : V.obj) =
           noise_generator = st.noise_generator;
           irid_wavelength = st.irid_wavelength;
           gamma = Gamma_off;
+          shift = 0.;
         }
       in
       let sc = Compile.scene scene in
