@@ -223,11 +223,6 @@ let traverse t h ri (o : Vec.t) (d : Vec.t) limit leaf =
 
 let heap_for t = match t.queued with None -> { depths = [||]; held = [||]; size = 0 } | Some root -> { depths = Array.make (t.nodes + 1) 0.; held = Array.make (t.nodes + 1) root; size = 0 }
 
-let met_first t (o : Vec.t) (d : Vec.t) a b =
-  let found = ref false in
-  traverse t (heap_for t) (Pov_box.ray_info ()) o d (fun () -> infinity) (fun id -> if id = a then (found := true; true) else id = b);
-  !found
-
 type search = { tree : t; heap : heap; ray : Pov_box.ray_info }
 
 let searcher tree = { tree; heap = heap_for tree; ray = Pov_box.ray_info () }

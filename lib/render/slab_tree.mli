@@ -14,14 +14,6 @@ val walk : t -> (float array -> bool) -> int list
     [in_box] holds for its box (InitRayContainerStateTree): the unbounded objects first, then the
     bounded ones whose box and ancestors' boxes pass, in tree order. *)
 
-val met_first : t -> Vec.t -> Vec.t -> int -> int -> bool
-(** [met_first t o d a b] is whether POV-Ray's search of the ray from [o] along [d] through its
-    bounding tree (Intersect_BBox_Tree) tests the object [a] before the object [b]: it pops
-    nodes from a binary heap keyed by the single-precision depth at which the ray enters their
-    boxes (unbounded ones first), so of equal depths the heap's own moves decide. True also when
-    it never reaches [b]; false when it reaches neither. Of two objects hit at exactly the same
-    depth POV-Ray keeps the one it tests first. *)
-
 type search
 (** A walk of the tree in POV-Ray's order with its own heap, reused from ray to ray (each render
     worker is a process; a walk never starts while another runs). *)
