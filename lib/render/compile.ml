@@ -460,7 +460,6 @@ let scene ?(bounding_threshold = pov_bounding_threshold) (s : Scene.t) : Compile
     start_interiors;
     screen_holders = screen_holders s.camera tops;
     bounding;
-    slabs;
     facets = Normals.facets_cache ();
     crand = [| 0 |];
     uses_crand = Layer_memo.fold (fun (l : Scene.layer) _ acc -> acc || l.finish.crand > 0.) memo false;

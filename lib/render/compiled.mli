@@ -260,10 +260,6 @@ type t = {
           Bounding_Threshold top-level objects (1 by default, 3 in Debian's povray.ini), light
           sources and degenerate triangles included. Without it objects are tested in scene order,
           which decides exact depth ties. *)
-  slabs : Slab_tree.t Lazy.t;
-      (** POV-Ray's bounding tree over the top-level objects, built only when asked: with
-          [bounding] its traversal order decides exact depth ties (§2.1) and the camera's
-          starting interiors (§6.4). *)
   facets : Normals.facets_cache;
       (** POV-Ray's facets cache, which a render thread keeps for every facets normal it meets:
           one for the scene, emptied at the start of each block ([Trace.make_ctx]) as a fresh

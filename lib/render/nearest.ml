@@ -124,12 +124,9 @@ let bvh_search ctx (g : group) (o : Vec.t) (d : Vec.t) hi =
 
 let search ctx (g : group) (o : Vec.t) (d : Vec.t) lo hi =
   let f = ctx.found and r = ctx.reach in
-  let start () =
-    r.depth <- hi;
-    f.id <- -1;
-    f.part <- -1
-  in
-  start ();
+  r.depth <- hi;
+  f.id <- -1;
+  f.part <- -1;
   r.least <- lo;
   f.near <- false;
   if ctx.robust then bvh_search ctx g o d hi
@@ -138,7 +135,9 @@ let search ctx (g : group) (o : Vec.t) (d : Vec.t) lo hi =
     bvh_search ctx g o d hi;
     (* a near tie: which object POV-Ray finds depends on its order of search *)
     if f.near then begin
-      start ();
+      r.depth <- hi;
+      f.id <- -1;
+      f.part <- -1;
       pov_search ctx (Lazy.force g.pov) o d
     end
   end;
