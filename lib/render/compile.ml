@@ -26,7 +26,10 @@ let screen_holders (cam : Scene.camera) (tops : obj list) =
       in
       Array.of_list (List.filter (fun o -> meets o.pbox) tops)
 
-let group objs =
+(* A group of top-level objects: povml's hierarchy over them, and [pov], how POV-Ray's search
+   meets them (see {!Compiled.group}) *)
+let group ~pov ~pov_always objs =
+  let pov = pov objs in
   let unbounded = List.filter (fun o -> Shape.bounds o.shape = None) objs in
   let bounded = List.filter (fun o -> Shape.bounds o.shape <> None) objs in
   let boxes = Bvh.create_boxes (List.length bounded) in
@@ -49,7 +52,7 @@ let group objs =
       | Some (s : Sphere.t) -> spheres.(4 * i) <- s.cx; spheres.((4 * i) + 1) <- s.cy; spheres.((4 * i) + 2) <- s.cz; spheres.((4 * i) + 3) <- s.r2
       | None -> ())
     bounded;
-  { unbounded = Array.of_list unbounded; bounded; bvh; spheres; boxes; pov = lazy (Listed [||]); pov_always = false }
+  { unbounded = Array.of_list unbounded; bounded; bvh; spheres; boxes; pov; pov_always }
 
 (* POV-Ray stores colours in single precision (§8.3); rounding the stored values the same way keeps
    results on the same side of the 8-bit rounding boundaries. *)
@@ -369,16 +372,6 @@ let scene ?(bounding_threshold = pov_bounding_threshold) (s : Scene.t) : Compile
            })
          s.lights)
   in
-  (* §6.4: the camera ray starts inside every object that contains the camera location; the list
-     is kept with the last entered first. *)
-  let all = group tops in
-  (* §16.6: image rays never meet no_image objects, reflection rays never meet no_reflection ones
-     (tested on top-level objects, §16.4); a scene without those flags searches one group for every
-     ray *)
-  let without keep =
-    if List.for_all (fun ((o : Scene.obj), _) -> keep o) visible then all
-    else group (List.filter_map (fun ((o : Scene.obj), ob) -> if keep o then Some ob else None) visible)
-  in
   let cam = s.camera.location in
   (* POV-Ray builds its tree when the scene has at least Bounding_Threshold objects, light sources
      counted (boundingtask.cpp); a light's looks_like shape belongs to the light's top-level
@@ -404,26 +397,30 @@ let scene ?(bounding_threshold = pov_bounding_threshold) (s : Scene.t) : Compile
     let ulp = extent *. 0x1p-24 in
     List.exists (fun o -> ulp > 1e-3 *. Float.max o.pbox.(3) (Float.max o.pbox.(4) o.pbox.(5))) finite
   in
-  let order_group (g : group) =
-    let pov =
-      lazy
-        (if bounding then begin
-           let member = Array.make (Array.length objects) false in
-           Array.iter (fun o -> member.(o.id) <- true) g.unbounded;
-           Array.iter (fun o -> member.(o.id) <- true) g.bounded;
-           Tree { walk = Slab_tree.searcher (Lazy.force slabs); member }
-         end
-         else
-           let listed = Array.append g.unbounded g.bounded in
-           Array.sort (fun (a : obj) b -> Int.compare a.id b.id) listed;
-           Listed listed)
-    in
-    { g with pov; pov_always = isosurfaces || coarse }
+  (* POV-Ray's search of a group's objects: its tree, or scene order without one *)
+  let pov members =
+    lazy
+      (if bounding then begin
+         let member = Array.make (Array.length objects) false in
+         List.iter (fun o -> member.(o.id) <- true) members;
+         Tree { walk = Slab_tree.searcher (Lazy.force slabs); member }
+       end
+       else
+         let listed = Array.of_list members in
+         Array.sort (fun (a : obj) b -> Int.compare a.id b.id) listed;
+         Listed listed)
   in
-  (* a group that is every object stays the one group *)
-  let all_ordered = order_group all in
-  let ordered g = if g == all then all_ordered else order_group g in
-  (* the list holds interiors: a CSG's members share theirs (§16.5) *)
+  let group = group ~pov ~pov_always:(isosurfaces || coarse) in
+  let all = group tops in
+  (* §16.6: image rays never meet no_image objects, reflection rays never meet no_reflection ones
+     (tested on top-level objects, §16.4); a scene without those flags searches one group for every
+     ray *)
+  let without keep =
+    if List.for_all (fun ((o : Scene.obj), _) -> keep o) visible then all
+    else group (List.filter_map (fun ((o : Scene.obj), ob) -> if keep o then Some ob else None) visible)
+  in
+  (* §6.4: the camera ray starts inside every object that contains the camera location; the list
+     is kept with the last entered first, and holds interiors: a CSG's members share theirs (§16.5) *)
   let holds o = Interiors.holds stack o cam in
   let holders = List.filter holds tops in
   let start_interiors =
@@ -441,10 +438,10 @@ let scene ?(bounding_threshold = pov_bounding_threshold) (s : Scene.t) : Compile
   in
   {
     objects;
-    all = ordered all;
-    seen = ordered (without (fun o -> not o.no_image));
-    mirrored = ordered (without (fun o -> not o.no_reflection));
-    occluders = ordered (if List.length occluders = List.length tops then all else group occluders);
+    all;
+    seen = without (fun o -> not o.no_image);
+    mirrored = without (fun o -> not o.no_reflection);
+    occluders = (if List.length occluders = List.length tops then all else group occluders);
     shadow_mode;
     lights;
     shift = s.shift;
