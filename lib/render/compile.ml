@@ -166,13 +166,38 @@ let rec texture_opaque (t : Scene.texture) =
 (* the top layer's finish, which holds the legacy refraction and ior (§2.7) *)
 let top_finish (t : Scene.texture) = match t with Layers (l :: _) -> Some l.finish | Layers [] | Texture_pattern _ | Uv_mapped _ | Material_map _ | Cutaway -> None
 
-(* Objects that share a layer (a declared texture) share its compiled surface. *)
-module Layer_memo = Hashtbl.Make (struct
-  type t = Scene.layer
+(* Objects whose layers are the same share one compiled surface: a declared texture, and the
+   layers written out alike for every object of an export (a million spheres each with its own
+   [pigment { rgb 1 }]), which would otherwise cost a compiled surface each. A surface is a pure
+   function of its layer, so equal layers compile to equal surfaces. Layers are the same when
+   physically equal or equal in structure; a layer holding a function closure is equal only to
+   itself. Each hash keeps the few layers met last, so a lookup costs a bounded number of
+   comparisons however many objects there are; a layer that has dropped out is compiled again. *)
+module Layer_memo : sig
+  type 'a t
 
-  let equal = ( == )
-  let hash = Hashtbl.hash
-end)
+  val create : unit -> 'a t
+  (** [create ()] is an empty memo. *)
+
+  val find_or_add : 'a t -> Scene.layer -> (Scene.layer -> 'a) -> 'a
+  (** [find_or_add memo l make] is the value kept for a layer the same as [l], or [make l], kept. *)
+end = struct
+  type 'a t = (int, (Scene.layer * 'a) list) Hashtbl.t
+
+  let kept = 8
+  let create () = Hashtbl.create 64
+  let same a b = a == b || match compare a b with 0 -> true | _ -> false | exception Invalid_argument _ -> false
+
+  let find_or_add memo l make =
+    let h = Hashtbl.hash l in
+    let bucket = Option.value (Hashtbl.find_opt memo h) ~default:[] in
+    match List.find_opt (fun (k, _) -> same k l) bucket with
+    | Some (_, v) -> v
+    | None ->
+        let v = make l in
+        Hashtbl.replace memo h ((l, v) :: List.filteri (fun i _ -> i < kept - 1) bucket);
+        v
+end
 
 (* A patterned texture's pattern, its value taken as a pigment's is (§17.1) *)
 let blended ~noise (tpat : Scene.patterned) values entries : blended =
@@ -192,15 +217,13 @@ let pov_bounding_threshold = 1
 
 let scene ?(bounding_threshold = pov_bounding_threshold) (s : Scene.t) : Compiled.t =
   let legacy = s.version < 370 in
-  let memo = Layer_memo.create 16 in
+  let memo = Layer_memo.create () in
   let noise = s.noise_generator in
+  let uses_crand = ref false in
   let surface_of (l : Scene.layer) =
-    match Layer_memo.find_opt memo l with
-    | Some sf -> sf
-    | None ->
-        let sf = surface ~legacy ~noise ~ambient_light:s.ambient_light l in
-        Layer_memo.add memo l sf;
-        sf
+    Layer_memo.find_or_add memo l (fun l ->
+        if l.finish.crand > 0. then uses_crand := true;
+        surface ~legacy ~noise ~ambient_light:s.ambient_light l)
   in
   let rec texture_of (t : Scene.texture) : texture =
     match t with
@@ -459,5 +482,5 @@ let scene ?(bounding_threshold = pov_bounding_threshold) (s : Scene.t) : Compile
     bounding;
     facets = Normals.facets_cache ();
     crand = [| 0 |];
-    uses_crand = Layer_memo.fold (fun (l : Scene.layer) _ acc -> acc || l.finish.crand > 0.) memo false;
+    uses_crand = !uses_crand;
   }
