@@ -296,11 +296,11 @@ let run (args : options) =
                     else o
                 | Some _ | None -> Filename.remove_extension output
               in
-              let total = List.length plan.frames in
-              let rec frames i = function
-                | [] -> `Ok 0
-                | (f : Animation.frame) :: rest -> (
-                    Printf.eprintf "Frame %d of %d: frame_number %d, clock %s\n%!" i total f.values.frame_number
+              let rec frames i (rest : Animation.frame Seq.t) =
+                match rest () with
+                | Seq.Nil -> `Ok 0
+                | Seq.Cons (f, rest) -> (
+                    Printf.eprintf "Frame %d of %d: frame_number %d, clock %s\n%!" i plan.count f.values.frame_number
                       (Printf.sprintf "%.9g" f.clock);
                     let iopts = { iopts with clock = f.clock; animation = f.values } in
                     match render_to iopts (Animation.numbered base ~frame:f.values.frame_number ~digits:plan.digits ^ ext) with

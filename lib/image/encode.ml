@@ -29,6 +29,6 @@ let image gamma (img : Image.t) =
   let n = img.width * img.height in
   let pixels = Bytes.create (3 * n) in
   for i = 0 to (3 * n) - 1 do
-    Bytes.unsafe_set pixels i (Char.unsafe_chr (channel gamma (Float.Array.get img.data i)))
+    Bytes.unsafe_set pixels i (Char.unsafe_chr (channel gamma (Image.channel img i)))
   done;
   { width = img.width; height = img.height; pixels }

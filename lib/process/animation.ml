@@ -32,7 +32,7 @@ let no_settings =
 
 type frame = { clock : float; values : values }
 
-type plan = { frames : frame list; digits : int }
+type plan = { frames : frame Seq.t; count : int; digits : int }
 
 (* a value as the front end declares it to the scene: written with six significant digits and
    read back (clock_delta 1.6/7 is 0.228571) *)
@@ -69,10 +69,14 @@ let plan (s : settings) =
             { clock_on = true; clock_delta = declared delta; frame_number = n; initial_frame = initial; final_frame = final;
               initial_clock = declared initial_clock; final_clock = declared final_clock } }
       in
-      (* the first frame always; then while the next one is within the subset *)
-      let rec frames n = if n + step <= last then frame (n + step) :: frames (n + step) else [] in
+      (* the first frame always; then while the next one is within the subset. The frames are
+         made one at a time as they are rendered: an animation of two billion frames is a long
+         render, not a list of two billion frames. *)
+      let count = 1 + ((max 0 (last - first)) / step) in
+      let rec from k () = if k >= count then Seq.Nil else Seq.Cons (frame (first + (k * step)), from (k + 1)) in
+      let frames = from 0 in
       let digits = String.length (string_of_int final) in
-      Some { frames = frame first :: frames first; digits }
+      Some { frames; count; digits }
 
 let numbered base ~frame ~digits =
   let n = string_of_int frame in

@@ -35,9 +35,12 @@ val no_settings : settings
 type frame = { clock : float; values : values }
 (** One frame to render: its clock (single precision) and the scene's identifiers. *)
 
-type plan = { frames : frame list; digits : int }
-(** The frames, in order, and the digits of their numbers in file names (those of the final
-    frame). *)
+type plan = {
+  frames : frame Seq.t;  (** the frames, in order, each made when it is reached *)
+  count : int;  (** how many there are *)
+  digits : int;  (** the digits of their numbers in file names (those of the final frame) *)
+}
+(** An animation's frames. *)
 
 val plan : settings -> plan option
 (** [plan s] is the animation [s] asks for, or None for a still: as POV-Ray's front end, neither

@@ -135,9 +135,29 @@ let value c =
       end
 
 let read_file loc file =
+  if Sys.file_exists file && Sys.is_directory file then Error.raise_at loc "cannot read the ini file \"%s\": it is a directory" file;
   match open_in_bin file with
   | exception Sys_error _ -> Error.raise_at loc "cannot open the ini file \"%s\"" file
-  | ic -> Fun.protect ~finally:(fun () -> close_in_noerr ic) (fun () -> really_input_string ic (in_channel_length ic))
+  | ic -> (
+      (* read to its end, so that a pipe (bash's <(…)) reads as a file does; an ini file is a few
+         lines, and one past [max_bytes] is refused rather than held in memory *)
+      let max_bytes = 1 lsl 24 in
+      let read () =
+        let b = Buffer.create 4096 and chunk = Bytes.create 65536 in
+        let rec go () =
+          let n = input ic chunk 0 (Bytes.length chunk) in
+          if n > 0 then begin
+            if Buffer.length b + n > max_bytes then Error.limit_at loc "the ini file \"%s\" is longer than %d bytes" file max_bytes;
+            Buffer.add_subbytes b chunk 0 n;
+            go ()
+          end
+        in
+        go ();
+        Buffer.contents b
+      in
+      match Fun.protect ~finally:(fun () -> close_in_noerr ic) read with
+      | text -> text
+      | exception Sys_error m -> Error.raise_at loc "cannot read the ini file \"%s\": %s" file m)
 
 let rec expand ~warn ~depth loc spec =
   if depth > 16 then Error.raise_at loc "ini files include each other more than 16 deep";

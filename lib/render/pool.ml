@@ -75,7 +75,7 @@ let signal_name s =
 
 (* The parent's side once the workers run: hand out the tasks, wait for every worker (removing it
    from [running]), then read the results. *)
-let collect items n ~close task_w outs running =
+let collect items n ~close task_w outs running consume =
   let buf = Bytes.create 4 in
   (try
      for i = 0 to n - 1 do
@@ -98,7 +98,7 @@ let collect items n ~close task_w outs running =
      results cut short, so they are read only when every worker finished *)
   Interrupt.check ();
   (match !failed with Some m -> raise (Worker_failed m) | None -> ());
-  let results = Array.make (Array.length items) None in
+  let finished = Array.make (Array.length items) false in
   Array.iter
     (fun fd ->
       ignore (Unix.lseek fd 0 Unix.SEEK_SET);
@@ -106,17 +106,18 @@ let collect items n ~close task_w outs running =
       try
         while true do
           let (i : int), r = Marshal.from_channel ic in
-          results.(i) <- Some r
+          finished.(i) <- true;
+          consume i r
         done
       with End_of_file -> ())
     outs;
-  Array.to_list (Array.map (function Some r -> r | None -> raise (Worker_failed "a task was not done")) results)
+  if not (Array.for_all Fun.id finished) then raise (Worker_failed "a task was not done")
 
-let map ~workers f items =
+let iter ~workers f items consume =
   let items = Array.of_list items in
   let n = Array.length items in
   let workers = min workers n in
-  if workers <= 1 then Array.to_list (Array.map f items)
+  if workers <= 1 then Array.iteri (fun i x -> consume i (f x)) items
   else begin
     flush_all ();
     let task_r, task_w = Unix.pipe ~cloexec:true () in
@@ -155,8 +156,8 @@ let map ~workers f items =
       close task_r;
       Interrupt.check ()
     in
-    match start (); collect items n ~close task_w outs running with
-    | results -> close_all (); results
+    match start (); collect items n ~close task_w outs running consume with
+    | () -> close_all ()
     | exception e ->
         (* kill and reap the workers still running, with signals held back so that this finishes *)
         Interrupt.hold (fun () ->
@@ -165,3 +166,8 @@ let map ~workers f items =
             close_all ());
         raise e
   end
+
+let map ~workers f items =
+  let results = Array.make (List.length items) None in
+  iter ~workers f items (fun i r -> results.(i) <- Some r);
+  Array.to_list (Array.map Option.get results)

@@ -11,3 +11,10 @@ val map : workers:int -> ('a -> 'b) -> 'a list -> 'b list
     [Interrupt.Interrupted] among others) it has killed and reaped its workers first; a worker
     whose parent was killed exits within half a second. Workers ignore SIGINT (the parent
     decides) and write nothing but their results and stderr. *)
+
+val iter : workers:int -> ('a -> 'b) -> 'a list -> (int -> 'b -> unit) -> unit
+(** [iter ~workers f xs consume] computes [f] of each element of [xs] as [map] does and hands
+    each result with its element's index to [consume], in this process, as it is read back, in no
+    particular order; none is kept, so the results of a large task list need not fit in memory at
+    once. With one worker [consume] takes each result before the next is computed, so [f] may
+    return a buffer it reuses. *)

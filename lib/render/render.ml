@@ -265,6 +265,9 @@ let blocks opts =
   in
   rows a.top []
 
+(* 256 MB of garbage between collections while rendering *)
+let major_budget = 32. *. 1024. *. 1024.
+
 let render opts (sc : Compiled.t) (gamma : Scene.gamma) : Image.t * Stats.t =
   let g = match gamma with Scene.Gamma_off -> 1. | Scene.Working g -> g in
   let inv = 1. /. opts.aa_gamma in
@@ -280,7 +283,20 @@ let render opts (sc : Compiled.t) (gamma : Scene.gamma) : Image.t * Stats.t =
      isosurfaces' cache of the last missed root search is carried the same way. *)
   let carried = if workers = 1 then Some (Context.shadow_cache sc) else None in
   let carried_iso = if workers = 1 then Some (Scratch.iso_room ()) else None in
+  (* Blocks leave garbage in the major heap (their pixel buffers, antialiasing's grids and the
+     samples they hold), which the nearly idle major collector (below) would let pile up without
+     end in a large image: after every [major_budget] words of it a full collection runs. A
+     render of an ordinary size never reaches it. *)
+  let collected_at = ref (Gc.quick_stat ()).major_words in
+  let bound_garbage ~compact =
+    let major = (Gc.quick_stat ()).major_words in
+    if major -. !collected_at > major_budget then begin
+      if compact then Gc.compact () else Gc.full_major ();
+      collected_at := major
+    end
+  in
   let work (i, b) =
+    bound_garbage ~compact:false;
     let stats = Stats.create () in
     let ctx = Trace.make_ctx ~robust:opts.robust ?shadow_cache:carried ?iso:carried_iso sc stats in
     let px = render_block ctx opts enc b in
@@ -294,23 +310,26 @@ let render opts (sc : Compiled.t) (gamma : Scene.gamma) : Image.t * Stats.t =
      the major collector is kept almost idle while rendering. *)
   let gc = Gc.get () in
   Gc.set { gc with space_overhead = 10_000 };
-  let results =
-    Fun.protect ~finally:(fun () -> Gc.set gc) (fun () ->
-        Pool.map ~workers work bl)
+  (* each block goes into the image as it comes back (the blocks' pixels are never all held at
+     once); the statistics are added up in block order. The image is made when the first block
+     comes back: worker processes, forked before, do not carry it. *)
+  let image = lazy (Image.create opts.width opts.height) in
+  let block_stats = Array.make total None in
+  let place i (b, px, st) =
+    (* blocks read back from worker processes come in heap chunks of their own (unmarshalled),
+       which only a compaction gives back *)
+    bound_garbage ~compact:(workers > 1);
+    let img = Lazy.force image in
+    let bw = b.bx1 - b.bx0 + 1 in
+    for y = b.by0 to b.by1 do
+      for x = b.bx0 to b.bx1 do
+        let i = 3 * (((y - b.by0) * bw) + (x - b.bx0)) in
+        Image.set img x y (Float.Array.get px i) (Float.Array.get px (i + 1)) (Float.Array.get px (i + 2))
+      done
+    done;
+    block_stats.(i) <- Some st
   in
+  Fun.protect ~finally:(fun () -> Gc.set gc) (fun () -> Pool.iter ~workers work bl place);
   if opts.progress then prerr_string "\r\027[K";
-  let img = Image.create opts.width opts.height in
-  let stats =
-    List.fold_left
-      (fun acc (b, px, st) ->
-        let bw = b.bx1 - b.bx0 + 1 in
-        for y = b.by0 to b.by1 do
-          for x = b.bx0 to b.bx1 do
-            let i = 3 * (((y - b.by0) * bw) + (x - b.bx0)) in
-            Image.set img x y (Float.Array.get px i) (Float.Array.get px (i + 1)) (Float.Array.get px (i + 2))
-          done
-        done;
-        Stats.merge acc st)
-      (Stats.create ()) results
-  in
-  (img, stats)
+  let stats = Array.fold_left (fun acc st -> Stats.merge acc (Option.get st)) (Stats.create ()) block_stats in
+  (Lazy.force image, stats)

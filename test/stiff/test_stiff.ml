@@ -19,18 +19,18 @@ let render ?antialias file = Pipeline.run (opts ?antialias ()) (Filename.concat 
 
 (* The first non-finite value of the raw image, as (x, y, channel, value). *)
 let first_non_finite (img : Image.t) =
-  let n = Float.Array.length img.data in
+  let n = Image.channels img in
   let rec go i =
     if i >= n then None
     else
-      let v = Float.Array.get img.data i in
+      let v = Image.channel img i in
       if Float.is_finite v then go (i + 1) else Some ((i / 3) mod img.width, i / 3 / img.width, i mod 3, v)
   in
   go 0
 
 let check_finite ?antialias file () =
   let r = render ?antialias file in
-  Alcotest.(check int) "raw image size" (3 * 40 * 30) (Float.Array.length r.raw.data);
+  Alcotest.(check int) "raw image size" (3 * 40 * 30) (Image.channels r.raw);
   match first_non_finite r.raw with
   | None -> ()
   | Some (x, y, c, v) -> Alcotest.failf "%s: pixel (%d,%d) channel %d is %h" file x y c v

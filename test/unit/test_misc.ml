@@ -126,9 +126,13 @@ let test_image () =
   let img = Image.create 3 2 in
   Alcotest.(check (triple (float 0.) (float 0.) (float 0.))) "black" (0., 0., 0.) (Image.get img 2 1);
   Image.set img 2 1 0.1 0.2 0.3;
-  Alcotest.(check (triple (float 0.) (float 0.) (float 0.))) "set/get" (0.1, 0.2, 0.3) (Image.get img 2 1);
+  (* single precision: what Encode reads anyway *)
+  let f32 = Precision.f32 in
+  Alcotest.(check (triple (float 0.) (float 0.) (float 0.))) "set/get" (f32 0.1, f32 0.2, f32 0.3) (Image.get img 2 1);
+  Alcotest.(check bool) "rounded to single precision" true (let r, _, _ = Image.get img 2 1 in r <> 0.1);
   (* row-major from the top: (2,1) is pixel 5, floats 15..17 *)
-  Alcotest.(check (float 0.)) "layout" 0.2 (Float.Array.get img.data 16)
+  Alcotest.(check (float 0.)) "layout" (f32 0.2) (Image.channel img 16);
+  Alcotest.(check int) "channels" 18 (Image.channels img)
 
 let test_output () =
   let e = { Encode.width = 2; height = 1; pixels = Bytes.of_string "\001\002\003\250\251\252" } in
