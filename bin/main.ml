@@ -212,7 +212,8 @@ let run (args : options) =
         fail
           (Error.limit_error Loc.none
              (Printf.sprintf "a %d×%d image has %s pixels, more than povml's limit of %s (raise it with --max-pixels N)" width height
-                (Reader.commas (width * height)) (Reader.commas limits.pixels)))
+                (if width > max_int / height then "over " ^ Reader.commas max_int else Reader.commas (width * height))
+                (Reader.commas limits.pixels)))
       else if args.dump then dump_scene iopts input
       else
         let fmt = match args.format with `Png -> Png_fmt | `Ppm -> Ppm_fmt in

@@ -311,11 +311,13 @@ let render opts (sc : Compiled.t) (gamma : Scene.gamma) : Image.t * Stats.t =
   let gc = Gc.get () in
   Gc.set { gc with space_overhead = 10_000 };
   (* each block goes into the image as it comes back (the blocks' pixels are never all held at
-     once); the statistics are added up in block order. The image is made when the first block
-     comes back: worker processes, forked before, do not carry it. *)
+     once), and its counts into the statistics; the isosurfaces' sums, which are floats, are
+     added up in block order at the end (most blocks have none). The image is made when the
+     first block comes back: worker processes, forked before, do not carry it. *)
   let image = lazy (Image.create opts.width opts.height) in
-  let block_stats = Array.make total None in
-  let place i (b, px, st) =
+  let counts = ref (Stats.create ()) in
+  let iso_found = Array.make total [||] in
+  let place i (b, px, (st : Stats.t)) =
     (* blocks read back from worker processes come in heap chunks of their own (unmarshalled),
        which only a compaction gives back *)
     bound_garbage ~compact:(workers > 1);
@@ -327,9 +329,14 @@ let render opts (sc : Compiled.t) (gamma : Scene.gamma) : Image.t * Stats.t =
         Image.set img x y (Float.Array.get px i) (Float.Array.get px (i + 1)) (Float.Array.get px (i + 2))
       done
     done;
-    block_stats.(i) <- Some st
+    iso_found.(i) <- st.iso_found;
+    counts := Stats.merge !counts { st with iso_found = [||] }
   in
   Fun.protect ~finally:(fun () -> Gc.set gc) (fun () -> Pool.iter ~workers work bl place);
   if opts.progress then prerr_string "\r\027[K";
-  let stats = Array.fold_left (fun acc st -> Stats.merge acc (Option.get st)) (Stats.create ()) block_stats in
+  let stats =
+    Array.fold_left
+      (fun acc found -> if found = [||] then acc else Stats.merge acc { (Stats.create ()) with iso_found = found })
+      !counts iso_found
+  in
   (Lazy.force image, stats)
