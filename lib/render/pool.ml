@@ -9,6 +9,10 @@
    but its own result file and stderr. *)
 
 exception Worker_failed of string
+exception Cannot_write of string
+
+(* a worker's status when its results could not be written; the reason goes down the error pipe *)
+let status_cannot_write = 4
 
 let read_task fd buf =
   let rec go () =
@@ -40,20 +44,29 @@ let become_worker parent =
   ignore (Unix.setitimer Unix.ITIMER_REAL { Unix.it_interval = 0.5; it_value = 0.5 });
   ignore (Unix.sigprocmask Unix.SIG_UNBLOCK [ Sys.sigint; Sys.sigterm ])
 
-let worker parent f items task_r out =
+(* A result file that cannot be written (a full disk): the parent is told why, in one line. *)
+exception Write_failed of string
+
+let worker parent f items task_r out err_w =
   let oc = Unix.out_channel_of_descr out in
+  let put write = try write () with Sys_error m -> raise (Write_failed m) in
   let buf = Bytes.create 4 in
   let rec loop () =
     if Unix.getppid () <> parent then Unix._exit 1;
     match read_task task_r buf with
     | None -> ()
     | Some i ->
-        Marshal.to_channel oc (i, f items.(i)) [ Marshal.No_sharing ];
+        let r = f items.(i) in
+        put (fun () -> Marshal.to_channel oc (i, r) [ Marshal.No_sharing ]);
         loop ()
   in
   let code =
-    match loop () with
-    | () -> flush oc; 0
+    match loop (); put (fun () -> flush oc) with
+    | () -> 0
+    | exception Write_failed m ->
+        let line = Bytes.of_string (m ^ "\n") in
+        (try write_all err_w line 0 (Bytes.length line) with Unix.Unix_error _ -> ());
+        status_cannot_write
     | exception e -> prerr_endline ("povml: render worker: " ^ Printexc.to_string e); 3
   in
   flush stderr;
@@ -75,7 +88,15 @@ let signal_name s =
 
 (* The parent's side once the workers run: hand out the tasks, wait for every worker (removing it
    from [running]), then read the results. *)
-let collect items n ~close task_w outs running =
+(* The first reason a worker sent down the error pipe, once every worker has exited. *)
+let reason err_r =
+  let buf = Bytes.create 4096 in
+  Unix.set_nonblock err_r;
+  match Unix.read err_r buf 0 (Bytes.length buf) with
+  | n when n > 0 -> List.hd (String.split_on_char '\n' (Bytes.sub_string buf 0 n))
+  | _ | (exception Unix.Unix_error _) -> "a write failed"
+
+let collect items n ~close task_w err_r outs running =
   let buf = Bytes.create 4 in
   (try
      for i = 0 to n - 1 do
@@ -84,19 +105,21 @@ let collect items n ~close task_w outs running =
      done
    with Unix.Unix_error (Unix.EPIPE, _, _) -> ());
   close task_w;
-  let failed = ref None in
+  let failed = ref None and cannot_write = ref false in
   List.iter
     (fun pid ->
       let st = waitpid pid in
       running := List.filter (fun p -> p <> pid) !running;
       match st with
       | Unix.WEXITED 0 -> ()
+      | Unix.WEXITED c when c = status_cannot_write -> cannot_write := true
       | Unix.WEXITED c -> failed := Some (Printf.sprintf "a render worker failed (status %d)" c)
       | Unix.WSIGNALED s | Unix.WSTOPPED s -> failed := Some (Printf.sprintf "a render worker was killed (%s)" (signal_name s)))
     !running;
   (* a worker that died with the interrupt did not fail; one that died otherwise may have left its
      results cut short, so they are read only when every worker finished *)
   Interrupt.check ();
+  if !cannot_write then raise (Cannot_write (reason err_r));
   (match !failed with Some m -> raise (Worker_failed m) | None -> ());
   let results = Array.make (Array.length items) None in
   Array.iter
@@ -120,18 +143,27 @@ let map ~workers f items =
   else begin
     flush_all ();
     let task_r, task_w = Unix.pipe ~cloexec:true () in
-    let outs =
-      Array.init workers (fun _ ->
-          let name = Filename.temp_file "povml-worker" ".bin" in
+    let err_r, err_w = Unix.pipe ~cloexec:true () in
+    let result_file _ =
+      match Filename.temp_file "povml-worker" ".bin" with
+      | exception Sys_error m ->
+          (* the message names the file, which was never made: the reason alone *)
+          raise (Cannot_write (match String.rindex_opt m ':' with Some i -> String.trim (String.sub m (i + 1) (String.length m - i - 1)) | None -> m))
+      | name ->
           let fd = Unix.openfile name [ Unix.O_RDWR; Unix.O_TRUNC; Unix.O_CLOEXEC ] 0o600 in
           Unix.unlink name;
-          fd)
+          fd
+    in
+    let outs =
+      match Array.init workers result_file with
+      | outs -> outs
+      | exception e -> List.iter Unix.close [ task_r; task_w; err_r; err_w ]; raise e
     in
     let parent = Unix.getpid () in
     let running = ref [] in
     (* if every worker died, writing tasks must fail with EPIPE, not kill this process *)
     let pipe_handler = Sys.signal Sys.sigpipe Sys.Signal_ignore in
-    let open_fds = ref (task_r :: task_w :: Array.to_list outs) in
+    let open_fds = ref (task_r :: task_w :: err_r :: err_w :: Array.to_list outs) in
     let close fd =
       if List.mem fd !open_fds then begin
         open_fds := List.filter (fun d -> d <> fd) !open_fds;
@@ -146,16 +178,17 @@ let map ~workers f items =
               match Unix.fork () with
               | 0 ->
                   (* the child never returns into the parent's code *)
-                  (try Unix.close task_w; become_worker parent; worker parent f items task_r out with _ -> ());
+                  (try Unix.close task_w; become_worker parent; worker parent f items task_r out err_w with _ -> ());
                   Unix._exit 3
               | pid -> running := pid :: !running)
             outs);
       running := List.rev !running;
       (* the workers hold the read end; once they are gone, writing a task fails with EPIPE *)
       close task_r;
+      close err_w;
       Interrupt.check ()
     in
-    match start (); collect items n ~close task_w outs running with
+    match start (); collect items n ~close task_w err_r outs running with
     | results -> close_all (); results
     | exception e ->
         (* kill and reap the workers still running, with signals held back so that this finishes *)

@@ -4,6 +4,10 @@
 exception Worker_failed of string
 (** A worker died or raised; the message says how. *)
 
+exception Cannot_write of string
+(** The workers' results, which go through files in the temporary directory ([TMPDIR]), could
+    not be written there (a full disk): the system's reason, in plain words. *)
+
 val map : workers:int -> ('a -> 'b) -> 'a list -> 'b list
 (** [map ~workers f xs] is [List.map f xs], computed by up to [workers] processes that take the
     next task as they finish one. With one worker (or one task) it runs in this process. Results

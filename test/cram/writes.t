@@ -45,6 +45,20 @@ own files would meet the limit first.
   $ no_temporary_file
   no temporary file
 
+The render processes hand their results back through files in the temporary directory (TMPDIR):
+when those cannot be written, no image is written either.
+
+  $ TMPDIR=$PWD/missing povml s.pov +W64 +H48 +WT2 -D +Oold.png 2>err; echo "exit $?"; grep -e cannot -e Wrote err | sed "s|$PWD|PWD|"
+  exit 5
+  povml: cannot write the render processes' results in PWD/missing: No such file or directory; no image was written
+  $ cmp old.png old.png.before && echo "old.png unchanged"
+  old.png unchanged
+  $ limited povml s.pov +W160 +H120 +WT2 -D +Oold.png 2>err; echo "exit $?"; grep -e cannot -e Wrote err | sed "s|$TMPDIR|TMPDIR|"
+  exit 5
+  povml: cannot write the render processes' results in TMPDIR: File too large; no image was written
+  $ cmp old.png old.png.before && echo "old.png unchanged"
+  old.png unchanged
+
 Where there was no file, none is left:
 
   $ limited povml s.pov +W160 +H120 +WT1 -D +Onew.png 2>err; echo "exit $?"; grep -e error -e Wrote err

@@ -71,6 +71,10 @@ expect "an animation" 5 "$disk/frame1.png: error: cannot write the image: No spa
 kept "frame1.png"
 [ -e "$disk/frame2.png" ] && fail "frame2.png was written"
 
+expect "the render processes' results" 5 "povml: cannot write the render processes' results in $disk: No space left on device; no image was written" \
+  env TMPDIR="$disk" "$povml" s.pov +W160 +H120 +WT2 -D +Oold.png
+cmp -s old.png.before old.png 2>/dev/null || [ ! -e old.png ] || fail "old.png was written"
+
 "$povml" s.pov +W160 +H120 -D +ER64 +Otop.png 2>/dev/null && "$povml" s.pov +W160 +H120 -D +SR65 +Obottom.png 2>/dev/null \
   || fail "the parts to merge were not written"
 expect "povml merge" 5 "povml merge: error: cannot write $disk/old.png: No space left on device; the old file is kept" \
