@@ -263,8 +263,7 @@ let run (args : options) =
           match Pipeline.run ~interp:iopts ?move ~bounding_threshold:args.bounding_threshold opts input with
           | exception Error.Scene_error e -> fail e
           | exception Pool.Cannot_write reason ->
-              Printf.eprintf "povml: cannot write the render processes' results in %s: %s; no image was written\n"
-                (Filename.get_temp_dir_name ()) reason;
+              Printf.eprintf "povml: cannot write the render processes' results in %s; no image was written\n" reason;
               `Ok Exits.cannot_write
           | exception Pool.Worker_failed msg ->
               (* a render process died: not the scene's fault *)

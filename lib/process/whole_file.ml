@@ -45,23 +45,21 @@ let sync_dir dir =
   | exception Unix.Unix_error _ -> ()
   | fd -> (try Unix.fsync fd with Unix.Unix_error _ -> ()); (try Unix.close fd with Unix.Unix_error _ -> ())
 
-(* Sys_error reads "name: reason"; the reason alone, the messages name the file themselves *)
-let after_colon msg = match String.rindex_opt msg ':' with Some i -> String.trim (String.sub msg (i + 1) (String.length msg - i - 1)) | None -> msg
-
-let reason = function
-  | Unix.Unix_error (e, _, _) -> Unix.error_message e
-  | Sys_error m -> after_colon m
-  | e -> raise e
+let temp_file dir =
+  match Filename.temp_file ~temp_dir:dir ".povml-" ".part" with
+  | tmp -> Ok tmp
+  | exception Sys_error msg ->
+      (* the message names the file, which was never made: the directory and the reason *)
+      let reason = match String.rindex_opt msg ':' with Some i -> String.trim (String.sub msg (i + 1) (String.length msg - i - 1)) | None -> msg in
+      Error (dir ^ ": " ^ reason)
 
 let replace path data =
   if Sys.file_exists path && Sys.is_directory path then Error "it is a directory; nothing was written" else
   let dir = Filename.dirname path in
   let outcome = if Sys.file_exists path then "the old file is kept" else "nothing was written" in
-  match Filename.temp_file ~temp_dir:dir ".povml-" ".part" with
-  | exception Sys_error msg ->
-      (* the message names the temporary file, which never existed: name the directory *)
-      Error (Printf.sprintf "%s: %s; %s" dir (after_colon msg) outcome)
-  | tmp -> (
+  match temp_file dir with
+  | Error reason -> Error (reason ^ "; " ^ outcome)
+  | Ok tmp -> (
       let discard () = try Sys.remove tmp with Sys_error _ -> () in
       match
         fill (Unix.openfile tmp [ O_WRONLY; O_TRUNC; O_CLOEXEC ] 0) data;
@@ -72,12 +70,12 @@ let replace path data =
       with
       | () -> sync_dir dir; Ok ()
       | exception Interrupt.Interrupted -> discard (); raise Interrupt.Interrupted
-      | exception ((Unix.Unix_error _ | Sys_error _) as e) -> discard (); Error (reason e ^ "; " ^ outcome))
+      | exception Unix.Unix_error (e, _, _) -> discard (); Error (Unix.error_message e ^ "; " ^ outcome))
 
 let write_into path data =
   match fill (Unix.openfile path [ O_WRONLY; O_CLOEXEC ] 0) data with
   | () -> Ok ()
-  | exception ((Unix.Unix_error _ | Sys_error _) as e) -> Error (reason e)
+  | exception Unix.Unix_error (e, _, _) -> Error (Unix.error_message e)
 
 let write path data =
   Interrupt.hold (fun () ->

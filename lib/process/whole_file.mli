@@ -17,3 +17,7 @@ val write : string -> string -> (unit, string) result
     SIGINT and SIGTERM are held back meanwhile ([Interrupt.hold]): one that has arrived, before or
     during the write, removes the temporary file and raises [Interrupt.Interrupted] instead of
     the rename. *)
+
+val temp_file : string -> (string, string) result
+(** [temp_file dir] is [Ok path] for a new empty file [.povml-XXXXXX.part] in [dir], private to its
+    owner, or [Error reason] naming [dir] ("/tmp: No space left on device"). *)

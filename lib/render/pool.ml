@@ -119,7 +119,7 @@ let collect items n ~close task_w err_r outs running =
   (* a worker that died with the interrupt did not fail; one that died otherwise may have left its
      results cut short, so they are read only when every worker finished *)
   Interrupt.check ();
-  if !cannot_write then raise (Cannot_write (reason err_r));
+  if !cannot_write then raise (Cannot_write (Filename.get_temp_dir_name () ^ ": " ^ reason err_r));
   (match !failed with Some m -> raise (Worker_failed m) | None -> ());
   let results = Array.make (Array.length items) None in
   Array.iter
@@ -145,11 +145,9 @@ let map ~workers f items =
     let task_r, task_w = Unix.pipe ~cloexec:true () in
     let err_r, err_w = Unix.pipe ~cloexec:true () in
     let result_file _ =
-      match Filename.temp_file "povml-worker" ".bin" with
-      | exception Sys_error m ->
-          (* the message names the file, which was never made: the reason alone *)
-          raise (Cannot_write (match String.rindex_opt m ':' with Some i -> String.trim (String.sub m (i + 1) (String.length m - i - 1)) | None -> m))
-      | name ->
+      match Whole_file.temp_file (Filename.get_temp_dir_name ()) with
+      | Error reason -> raise (Cannot_write reason)
+      | Ok name ->
           let fd = Unix.openfile name [ Unix.O_RDWR; Unix.O_TRUNC; Unix.O_CLOEXEC ] 0o600 in
           Unix.unlink name;
           fd

@@ -6,7 +6,8 @@ exception Worker_failed of string
 
 exception Cannot_write of string
 (** The workers' results, which go through files in the temporary directory ([TMPDIR]), could
-    not be written there (a full disk): the system's reason, in plain words. *)
+    not be written there (a full disk): the directory and the system's reason, in plain words
+    ("/tmp: No space left on device"). *)
 
 val map : workers:int -> ('a -> 'b) -> 'a list -> 'b list
 (** [map ~workers f xs] is [List.map f xs], computed by up to [workers] processes that take the
