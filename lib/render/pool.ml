@@ -6,7 +6,8 @@
    No worker outlives the map for long: when the parent leaves [map] by an exception (an
    interrupt among them) it kills and reaps the workers, and a worker whose parent died (SIGKILL,
    where nothing can run) notices within half a second and exits. A worker never writes anywhere
-   but its own result file and stderr. *)
+   but its own result file, stderr, and the error pipe when its result file cannot be written (a
+   full disk): the parent then says why, once. *)
 
 exception Worker_failed of string
 exception Cannot_write of string
@@ -86,8 +87,6 @@ let signal_name s =
   in
   match List.assoc_opt s names with Some n -> n | None -> Printf.sprintf "signal %d" s
 
-(* The parent's side once the workers run: hand out the tasks, wait for every worker (removing it
-   from [running]), then read the results. *)
 (* The first reason a worker sent down the error pipe, once every worker has exited. *)
 let reason err_r =
   let buf = Bytes.create 4096 in
@@ -96,6 +95,8 @@ let reason err_r =
   | n when n > 0 -> List.hd (String.split_on_char '\n' (Bytes.sub_string buf 0 n))
   | _ | (exception Unix.Unix_error _) -> "a write failed"
 
+(* The parent's side once the workers run: hand out the tasks, wait for every worker (removing it
+   from [running]), then read the results. *)
 let collect items n ~close task_w err_r outs running =
   let buf = Bytes.create 4 in
   (try
@@ -152,10 +153,11 @@ let map ~workers f items =
           Unix.unlink name;
           fd
     in
+    let made = ref [] in
     let outs =
-      match Array.init workers result_file with
-      | outs -> outs
-      | exception e -> List.iter Unix.close [ task_r; task_w; err_r; err_w ]; raise e
+      match for i = 1 to workers do made := result_file i :: !made done with
+      | () -> Array.of_list !made
+      | exception e -> List.iter Unix.close (task_r :: task_w :: err_r :: err_w :: !made); raise e
     in
     let parent = Unix.getpid () in
     let running = ref [] in

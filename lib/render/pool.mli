@@ -15,4 +15,5 @@ val map : workers:int -> ('a -> 'b) -> 'a list -> 'b list
     come back by [Marshal], so they must not contain functions. When [map] raises (an
     [Interrupt.Interrupted] among others) it has killed and reaped its workers first; a worker
     whose parent was killed exits within half a second. Workers ignore SIGINT (the parent
-    decides) and write nothing but their results and stderr. *)
+    decides) and write nothing but their results and stderr.
+    @raise Cannot_write when the workers' results cannot be written. *)
