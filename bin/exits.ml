@@ -16,7 +16,8 @@ let man =
     `I ("2", "Usage error: an unknown switch or a wrong value on the command line.");
     `I ("3", "The scene reached one of povml's limits (loop iterations, nesting, memory …).");
     `I ("4", "The scene asked for a file it may not read or write.");
-    `I ("5", "The image could not be written (the previous file at the output path is unchanged).");
+    `I ("5", "The image could not be written: a full disk, a device that refuses it, a missing directory or \
+               permission (the reason is printed; the previous file at the output path is unchanged).");
     `I ("70", "Internal error: a bug in povml (please report it).");
     `I ("130", "Interrupted by SIGINT (Ctrl-C): the render stopped, its worker processes were killed and no \
                 image was written.");

@@ -263,6 +263,9 @@ let run (args : options) =
           let render_to iopts output =
           match Pipeline.run ~interp:iopts ?move ~bounding_threshold:args.bounding_threshold opts input with
           | exception Error.Scene_error e -> fail e
+          | exception Pool.Cannot_write reason ->
+              Printf.eprintf "povml: cannot write the render processes' results in %s; no image was written\n" reason;
+              `Ok Exits.cannot_write
           | exception Pool.Worker_failed msg ->
               (* a render process died: not the scene's fault *)
               Printf.eprintf "povml: internal error: %s; no image was written (please report it)\n" msg;

@@ -49,11 +49,8 @@ let read_file path =
   let ic = open_in_bin path in
   Fun.protect ~finally:(fun () -> close_in_noerr ic) (fun () -> really_input_string ic (in_channel_length ic))
 
-let write_file path text =
-  let tmp = path ^ ".part" in
-  let oc = open_out_bin tmp in
-  Fun.protect ~finally:(fun () -> close_out_noerr oc) (fun () -> output_string oc text);
-  Sys.rename tmp path
+(* whole or not at all; a failure raises Sys_error with the reason *)
+let write_file path text = match Whole_file.write path text with Ok () -> () | Error reason -> raise (Sys_error reason)
 
 let int_switch k default switches =
   match List.rev (List.filter (fun s -> Switches.key s = Some k) switches) with

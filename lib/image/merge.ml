@@ -29,6 +29,8 @@ let read_png path =
   | _ -> Error "not an 8-bit RGB PNG"
 
 let load path =
+  if Sys.file_exists path && Sys.is_directory path then fail "%s: cannot read it: it is a directory, not a PNG file" path
+  else
   match read_png path with
   | Error m -> fail "%s: cannot read it: %s" path m
   | Ok img -> (

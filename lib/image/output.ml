@@ -1,14 +1,13 @@
-(* Writing encoded images as PNG or PPM, whole or not at all, and reading PNGs back. *)
+(* Encoding images as PNG or PPM bytes, written whole or not at all (Whole_file); reading PNGs
+   back. *)
 
 type format = Png | Ppm
 
-let write_ppm path (img : Encode.t) =
-  let oc = open_out_bin path in
-  Fun.protect ~finally:(fun () -> close_out_noerr oc) (fun () ->
-      Printf.fprintf oc "P6\n%d %d\n255\n" img.width img.height;
-      output_bytes oc img.pixels)
+let ppm (img : Encode.t) =
+  (* one copy of the pixels: the new bytes are never changed once they are a string *)
+  Bytes.unsafe_to_string (Bytes.cat (Bytes.of_string (Printf.sprintf "P6\n%d %d\n255\n" img.width img.height)) img.pixels)
 
-let write_png path (img : Encode.t) =
+let rgb24 (img : Encode.t) =
   let rgb = Rgb24.create img.width img.height in
   for y = 0 to img.height - 1 do
     for x = 0 to img.width - 1 do
@@ -17,58 +16,56 @@ let write_png path (img : Encode.t) =
         { Color.r = Char.code (Bytes.get img.pixels i); g = Char.code (Bytes.get img.pixels (i + 1)); b = Char.code (Bytes.get img.pixels (i + 2)) }
     done
   done;
-  Png.save path [] (Images.Rgb24 rgb)
+  rgb
 
-(* Whether the image is written through [path] rather than renamed onto it: a device, a pipe, a
-   socket (+O/dev/null) or a symbolic link (/dev/stdout), which a rename would replace. *)
-let written_through path =
-  match (Unix.lstat path).st_kind with
-  | S_REG | S_DIR -> false
-  | S_LNK | S_CHR | S_BLK | S_FIFO | S_SOCK -> true
-  | exception Unix.Unix_error _ -> false
+let rec read_fd fd buf chunk =
+  match Unix.read fd chunk 0 (Bytes.length chunk) with
+  | 0 -> Buffer.contents buf
+  | n -> Buffer.add_subbytes buf chunk 0 n; read_fd fd buf chunk
+  | exception Unix.Unix_error (EINTR, _, _) -> read_fd fd buf chunk
 
-let copy src dst =
-  let text = Png_text.read_all src in
-  let oc = open_out_gen [ Open_wronly; Open_binary ] 0o644 dst in
-  Fun.protect ~finally:(fun () -> close_out_noerr oc) (fun () -> output_string oc text)
+let rec waitpid pid =
+  match Unix.waitpid [] pid with _, st -> st | exception Unix.Unix_error (EINTR, _, _) -> waitpid pid
 
-(* The temporary file is created, and renamed or removed, with SIGINT and SIGTERM held back, so
-   that it always has a name to remove by; a signal that came while the image was being encoded
-   cancels the rename. *)
+(* camlimages (libpng) writes a PNG only to a file it opens by name, and does not report every
+   failed write. So a child process writes it into a pipe, opened as its /dev/stdout, and the
+   bytes come back here: nothing reaches the disk but through Whole_file, and a full disk never
+   meets libpng. The child leaves by [_exit], without the parent's buffered output. *)
+let png (img : Encode.t) =
+  match Unix.pipe ~cloexec:true () with
+  | exception Unix.Unix_error (e, _, _) -> Error (Unix.error_message e)
+  | r, w -> (
+      match Unix.fork () with
+      | exception Unix.Unix_error (e, _, _) -> Unix.close r; Unix.close w; Error (Unix.error_message e)
+      | 0 ->
+          Sys.set_signal Sys.sigpipe Sys.Signal_default;
+          let ok =
+            match Unix.dup2 ~cloexec:false w Unix.stdout; Png.save "/dev/stdout" [] (Images.Rgb24 (rgb24 img)) with
+            | () -> true
+            | exception _ -> false
+          in
+          Unix._exit (if ok then 0 else 1)
+      | pid -> (
+          Unix.close w;
+          let data = Fun.protect ~finally:(fun () -> Unix.close r) (fun () -> read_fd r (Buffer.create 65536) (Bytes.create 65536)) in
+          match waitpid pid with
+          | WEXITED 0 when Png_text.whole data -> Ok data
+          | WEXITED _ | WSIGNALED _ | WSTOPPED _ -> Error "the PNG encoder (libpng) failed"))
+
+let encode ?area fmt img =
+  match fmt with
+  | Ppm -> Ok (ppm img)
+  | Png -> (
+      match (png img, area) with
+      | (Error _ as e), _ -> e
+      | Ok data, None -> Ok data
+      | Ok data, Some a -> Ok (Png_text.add data ~key:Png_text.area_key ~value:a))
+
+(* The signals are held back from the encoding on: one that arrives meanwhile cancels the write. *)
 let write ?area fmt path img =
-  let through = written_through path in
-  let dir = if through then Filename.get_temp_dir_name () else Filename.dirname path in
   Interrupt.hold (fun () ->
       Interrupt.check ();
-      match Filename.temp_file ~temp_dir:dir ".povml-" ".part" with
-      | exception Sys_error msg ->
-          (* the message names the temporary file, which never existed: name the directory *)
-          let reason = match String.rindex_opt msg ':' with Some i -> String.sub msg (i + 2) (String.length msg - i - 2) | None -> msg in
-          Error (dir ^ ": " ^ reason)
-      | tmp -> (
-          let discard () = try Sys.remove tmp with Sys_error _ -> () in
-          match
-            (match fmt with
-            | Png -> (
-                write_png tmp img;
-                match area with
-                | None -> ()
-                | Some a -> ( match Png_text.add tmp ~key:Png_text.area_key ~value:a with Ok () -> () | Error m -> failwith m))
-            | Ppm -> write_ppm tmp img);
-            Interrupt.check ()
-          with
-          | () when through -> (
-              match copy tmp path with
-              | () -> discard (); Ok ()
-              | exception Sys_error m -> discard (); Error m)
-          | () -> (
-              (* the temporary file is private; the image gets ordinary permissions *)
-              (try Unix.chmod tmp 0o644 with Unix.Unix_error _ -> ());
-              match Unix.rename tmp path with
-              | () -> Ok ()
-              | exception Unix.Unix_error (e, _, _) -> discard (); Error (Unix.error_message e))
-          | exception Interrupt.Interrupted -> discard (); raise Interrupt.Interrupted
-          | exception e -> discard (); Error (match e with Sys_error m | Failure m -> m | e -> Printexc.to_string e)))
+      match encode ?area fmt img with Error m -> Error m | Ok data -> Whole_file.write path data)
 
 let read_png path =
   match Png.load path [] with

@@ -1,4 +1,4 @@
-(* PNG tEXt chunks: written after a file is saved, found when it is read back. *)
+(* PNG tEXt chunks: added to a PNG's bytes before they are written, found when it is read back. *)
 
 let area_key = "povml-area"
 
@@ -34,19 +34,24 @@ let chunks s =
   in
   if String.length s >= 8 && String.sub s 1 3 = "PNG" then go 8 [] else []
 
-let add path ~key ~value =
-  let s = read_all path in
-  match List.find_opt (fun (k, _, _, _) -> k = "IEND") (chunks s) with
-  | None -> Error (path ^ ": not a PNG file")
-  | Some (_, _, _, at) ->
+(* the IEND chunk, when it ends the file *)
+let iend s =
+  match List.rev (chunks s) with
+  | ("IEND", _, 0, at) :: _ when at + 12 = String.length s -> Some at
+  | _ -> None
+
+let whole s =
+  match iend s with
+  | None -> false
+  | Some _ -> List.for_all (fun (_, start, len, _) -> read32 s (start + len) = crc (String.sub s (start - 4) (len + 4))) (chunks s)
+
+let add png ~key ~value =
+  match iend png with
+  | None -> invalid_arg "Png_text.add: not a whole PNG file"
+  | Some at ->
       let body = "tEXt" ^ key ^ "\000" ^ value in
       let chunk = be32 (String.length body - 4) ^ body ^ be32 (crc body) in
-      let oc = open_out_bin path in
-      Fun.protect ~finally:(fun () -> close_out_noerr oc) (fun () ->
-          output_string oc (String.sub s 0 at);
-          output_string oc chunk;
-          output_string oc (String.sub s at (String.length s - at)));
-      Ok ()
+      String.concat "" [ String.sub png 0 at; chunk; String.sub png at (String.length png - at) ]
 
 let find path ~key =
   match read_all path with

@@ -5,9 +5,14 @@ val area_key : string
 (** [area_key] is ["povml-area"]: the chunk that records the area of the image a render drew
     ("left top right bottom", 0-based, inclusive; see Merge). *)
 
-val add : string -> key:string -> value:string -> (unit, string) result
-(** [add path ~key ~value] rewrites the PNG file [path] with a tEXt chunk [key]=[value] before its
-    IEND chunk. *)
+val whole : string -> bool
+(** [whole png] is whether [png] is a whole PNG file: the signature, then chunks whose CRCs match,
+    the last an IEND chunk that ends it. *)
+
+val add : string -> key:string -> value:string -> string
+(** [add png ~key ~value] is the PNG file [png] with a tEXt chunk [key]=[value] before its IEND
+    chunk.
+    @raise Invalid_argument unless [png] is [whole]. *)
 
 val find : string -> key:string -> string option
 (** [find path ~key] is the text of the first tEXt chunk named [key] in the PNG file [path], or

@@ -6,9 +6,14 @@
    No worker outlives the map for long: when the parent leaves [map] by an exception (an
    interrupt among them) it kills and reaps the workers, and a worker whose parent died (SIGKILL,
    where nothing can run) notices within half a second and exits. A worker never writes anywhere
-   but its own result file and stderr. *)
+   but its own result file, stderr, and the error pipe when its result file cannot be written (a
+   full disk): the parent then says why, once. *)
 
 exception Worker_failed of string
+exception Cannot_write of string
+
+(* a worker's status when its results could not be written; the reason goes down the error pipe *)
+let status_cannot_write = 4
 
 let read_task fd buf =
   let rec go () =
@@ -40,20 +45,29 @@ let become_worker parent =
   ignore (Unix.setitimer Unix.ITIMER_REAL { Unix.it_interval = 0.5; it_value = 0.5 });
   ignore (Unix.sigprocmask Unix.SIG_UNBLOCK [ Sys.sigint; Sys.sigterm ])
 
-let worker parent f items task_r out =
+(* A result file that cannot be written (a full disk): the parent is told why, in one line. *)
+exception Write_failed of string
+
+let worker parent f items task_r out err_w =
   let oc = Unix.out_channel_of_descr out in
+  let put write = try write () with Sys_error m -> raise (Write_failed m) in
   let buf = Bytes.create 4 in
   let rec loop () =
     if Unix.getppid () <> parent then Unix._exit 1;
     match read_task task_r buf with
     | None -> ()
     | Some i ->
-        Marshal.to_channel oc (i, f items.(i)) [ Marshal.No_sharing ];
+        let r = f items.(i) in
+        put (fun () -> Marshal.to_channel oc (i, r) [ Marshal.No_sharing ]);
         loop ()
   in
   let code =
-    match loop () with
-    | () -> flush oc; 0
+    match loop (); put (fun () -> flush oc) with
+    | () -> 0
+    | exception Write_failed m ->
+        let line = Bytes.of_string (m ^ "\n") in
+        (try write_all err_w line 0 (Bytes.length line) with Unix.Unix_error _ -> ());
+        status_cannot_write
     | exception e -> prerr_endline ("povml: render worker: " ^ Printexc.to_string e); 3
   in
   flush stderr;
@@ -73,9 +87,17 @@ let signal_name s =
   in
   match List.assoc_opt s names with Some n -> n | None -> Printf.sprintf "signal %d" s
 
+(* The first reason a worker sent down the error pipe, once every worker has exited. *)
+let reason err_r =
+  let buf = Bytes.create 4096 in
+  Unix.set_nonblock err_r;
+  match Unix.read err_r buf 0 (Bytes.length buf) with
+  | n when n > 0 -> List.hd (String.split_on_char '\n' (Bytes.sub_string buf 0 n))
+  | _ | (exception Unix.Unix_error _) -> "a write failed"
+
 (* The parent's side once the workers run: hand out the tasks, wait for every worker (removing it
    from [running]), then read the results. *)
-let collect items n ~close task_w outs running consume =
+let collect items n ~close task_w err_r outs running consume =
   let buf = Bytes.create 4 in
   (try
      for i = 0 to n - 1 do
@@ -84,19 +106,21 @@ let collect items n ~close task_w outs running consume =
      done
    with Unix.Unix_error (Unix.EPIPE, _, _) -> ());
   close task_w;
-  let failed = ref None in
+  let failed = ref None and cannot_write = ref false in
   List.iter
     (fun pid ->
       let st = waitpid pid in
       running := List.filter (fun p -> p <> pid) !running;
       match st with
       | Unix.WEXITED 0 -> ()
+      | Unix.WEXITED c when c = status_cannot_write -> cannot_write := true
       | Unix.WEXITED c -> failed := Some (Printf.sprintf "a render worker failed (status %d)" c)
       | Unix.WSIGNALED s | Unix.WSTOPPED s -> failed := Some (Printf.sprintf "a render worker was killed (%s)" (signal_name s)))
     !running;
   (* a worker that died with the interrupt did not fail; one that died otherwise may have left its
      results cut short, so they are read only when every worker finished *)
   Interrupt.check ();
+  if !cannot_write then raise (Cannot_write (Filename.get_temp_dir_name () ^ ": " ^ reason err_r));
   (match !failed with Some m -> raise (Worker_failed m) | None -> ());
   let finished = Array.make (Array.length items) false in
   Array.iter
@@ -121,18 +145,26 @@ let iter ~workers f items consume =
   else begin
     flush_all ();
     let task_r, task_w = Unix.pipe ~cloexec:true () in
-    let outs =
-      Array.init workers (fun _ ->
-          let name = Filename.temp_file "povml-worker" ".bin" in
+    let err_r, err_w = Unix.pipe ~cloexec:true () in
+    let result_file _ =
+      match Whole_file.temp_file (Filename.get_temp_dir_name ()) with
+      | Error reason -> raise (Cannot_write reason)
+      | Ok name ->
           let fd = Unix.openfile name [ Unix.O_RDWR; Unix.O_TRUNC; Unix.O_CLOEXEC ] 0o600 in
           Unix.unlink name;
-          fd)
+          fd
+    in
+    let made = ref [] in
+    let outs =
+      match for i = 1 to workers do made := result_file i :: !made done with
+      | () -> Array.of_list !made
+      | exception e -> List.iter Unix.close (task_r :: task_w :: err_r :: err_w :: !made); raise e
     in
     let parent = Unix.getpid () in
     let running = ref [] in
     (* if every worker died, writing tasks must fail with EPIPE, not kill this process *)
     let pipe_handler = Sys.signal Sys.sigpipe Sys.Signal_ignore in
-    let open_fds = ref (task_r :: task_w :: Array.to_list outs) in
+    let open_fds = ref (task_r :: task_w :: err_r :: err_w :: Array.to_list outs) in
     let close fd =
       if List.mem fd !open_fds then begin
         open_fds := List.filter (fun d -> d <> fd) !open_fds;
@@ -147,16 +179,17 @@ let iter ~workers f items consume =
               match Unix.fork () with
               | 0 ->
                   (* the child never returns into the parent's code *)
-                  (try Unix.close task_w; become_worker parent; worker parent f items task_r out with _ -> ());
+                  (try Unix.close task_w; become_worker parent; worker parent f items task_r out err_w with _ -> ());
                   Unix._exit 3
               | pid -> running := pid :: !running)
             outs);
       running := List.rev !running;
       (* the workers hold the read end; once they are gone, writing a task fails with EPIPE *)
       close task_r;
+      close err_w;
       Interrupt.check ()
     in
-    match start (); collect items n ~close task_w outs running consume with
+    match start (); collect items n ~close task_w err_r outs running consume with
     | () -> close_all ()
     | exception e ->
         (* kill and reap the workers still running, with signals held back so that this finishes *)

@@ -255,9 +255,9 @@ let directive st d loc =
       in
       loop ()
   | "fopen" -> User_files.fopen st
-  | "fclose" -> User_files.fclose st
+  | "fclose" -> User_files.fclose st loc
   | "read" -> User_files.read st loc
-  | "write" -> User_files.write st
+  | "write" -> User_files.write st loc
   | "render" | "statistics" -> st.opts.debug (string_arg st d)
   | _ -> (
       match Suggest.nearest d directive_names with

@@ -61,22 +61,34 @@ let fopen st =
   (* POV-Ray puts a file identifier in the global table, even when a macro opens it *)
   Names.replace st.global name (ref (V.File f))
 
-(* Closes [f] and undefines every identifier that names it. *)
-let close st (f : V.user_file) =
-  (match f.io with V.Writing oc -> close_out_noerr oc | V.Reading _ | V.Closed -> ());
+(* A failed write, flush or close of the file [f] (a full disk, a device): an error at [at], the
+   directive that wrote. *)
+let write_failed at (f : V.user_file) msg = Error.raise_at at "cannot write \"%s\": %s" f.path (reason f.path msg)
+
+(* Closes [f] and undefines every identifier that names it. A file closed by [#fclose] at [at] is
+   closed with its last bytes checked; one the scene left open, as well as it can. *)
+let close ?at st (f : V.user_file) =
+  let failure =
+    match (f.io, at) with
+    | V.Writing oc, Some _ -> ( try close_out oc; None with Sys_error m -> close_out_noerr oc; Some m)
+    | V.Writing oc, None -> close_out_noerr oc; None
+    | (V.Reading _ | V.Closed), _ -> None
+  in
   f.io <- V.Closed;
   st.files <- List.filter (fun g -> g != f) st.files;
-  List.iter (Names.filter_map_inplace (fun _ c -> match !c with V.File g when g == f -> None | _ -> Some c)) st.tables
+  List.iter (Names.filter_map_inplace (fun _ c -> match !c with V.File g when g == f -> None | _ -> Some c)) st.tables;
+  match (failure, at) with Some m, Some at -> write_failed at f m | _ -> ()
 
 let close_all st = List.iter (close st) st.files
 
 (* #fclose of an identifier that is not an open file does nothing, as in POV-Ray: a file read to
    its end has already been closed and undefined. *)
-let fclose st =
+let fclose st at =
   match peek_name st with
   | Ident s ->
-      (match lookup st s with Some (V.File f) -> close st f | Some _ | None -> ());
-      advance st
+      let file = match lookup st s with Some (V.File f) -> Some f | Some _ | None -> None in
+      advance st;
+      Option.iter (close ~at st) file
   | _ -> unexpected st "a file identifier after '#fclose'"
 
 (* The file named first in #read and #write. *)
@@ -237,7 +249,7 @@ let write_binary oc (lo, hi, bytes, big) x =
     output_byte oc ((v asr shift) land 0xFF)
   done
 
-let write st =
+let write st loc =
   expect st LParen "'(' after '#write'";
   let f, at = file_arg st "write" in
   let oc =
@@ -247,6 +259,7 @@ let write st =
     | V.Closed -> Error.raise_at at "the file \"%s\" is closed" f.path
   in
   ignore (accept st Comma);
+  let put out = try out () with Sys_error m -> write_failed loc f m in
   (* a binary format applies to the numbers after it up to the next comma *)
   let rec numbers fmt =
     match peek st with
@@ -254,8 +267,8 @@ let write st =
     | _ -> (
         let l = peek_loc st in
         match Expr.parse_full st with
-        | V.Float x -> write_binary oc fmt x; numbers fmt
-        | V.Vector a -> Array.iter (write_binary oc fmt) a; numbers fmt
+        | V.Float x -> put (fun () -> write_binary oc fmt x); numbers fmt
+        | V.Vector a -> put (fun () -> Array.iter (write_binary oc fmt) a); numbers fmt
         | v -> Error.raise_at l "'#write' writes floats and vectors in binary, not %s" (V.kind_name v))
   in
   let rec items () =
@@ -267,9 +280,9 @@ let write st =
         let l = peek_loc st in
         let v = Expr.parse_full st in
         match text v with
-        | Some s -> output_string oc s; items ()
+        | Some s -> put (fun () -> output_string oc s); items ()
         | None -> Error.raise_at l "'#write' writes strings, floats and vectors, not %s" (V.kind_name v))
   in
   items ();
   (* written at once, so that the file reads the same whatever else opens it *)
-  flush oc
+  put (fun () -> flush oc)

@@ -133,10 +133,10 @@ that does not exist (status 5):
   $ printf 'sphere { 0, 1 pigment { rgb 1 } }\n' > ok.pov
   $ povml ok.pov +W8 +H6 -D +Onowhere/x.png 2>err; echo "exit $?"; grep -v warning err
   exit 5
-  nowhere/x.png: error: cannot write the image: nowhere: No such file or directory
+  nowhere/x.png: error: cannot write the image: nowhere: No such file or directory; nothing was written
 
-A device, a pipe or a symbolic link is written through, never replaced (as root a rename would
-put a file where /dev/null was):
+A device or a pipe is written through, never replaced (as root a rename would put a file where
+/dev/null was); a symbolic link stays a link, the file it points to replaced:
 
   $ povml ok.pov +W8 +H6 -D +O/dev/null 2>/dev/null; echo "exit $?"; test -c /dev/null && echo "/dev/null is a device"
   exit 0

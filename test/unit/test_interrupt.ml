@@ -85,13 +85,14 @@ let test_output_during_write () =
       let oc = open_out_bin path in
       output_string oc "previous";
       close_out oc;
-      (* SIGINT once the temporary file exists: a timer looks for it every millisecond, and the
-         encoding of a million pixels takes far longer *)
+      (* SIGINT once the temporary file exists: a timer looks for it every millisecond, and
+         writing and syncing the 3 MB PNG of a million random pixels takes longer *)
       let writing () = Array.exists (fun e -> Filename.check_suffix e ".part") (Sys.readdir dir) in
       let sent = ref false in
       Sys.set_signal Sys.sigalrm (Sys.Signal_handle (fun _ -> if (not !sent) && writing () then (sent := true; self Sys.sigint)));
       ignore (Unix.setitimer Unix.ITIMER_REAL { Unix.it_interval = 0.001; it_value = 0.001 });
-      let big = { Encode.width = 1000; height = 1000; pixels = Bytes.make 3_000_000 '\100' } in
+      let random = Random.State.make [| 34 |] in
+      let big = { Encode.width = 1000; height = 1000; pixels = Bytes.init 3_000_000 (fun _ -> Char.chr (Random.State.int random 256)) } in
       let interrupted = raises (fun () -> Output.write Output.Png path big) in
       ignore (Unix.setitimer Unix.ITIMER_REAL { Unix.it_interval = 0.; it_value = 0. });
       Alcotest.(check bool) "SIGINT came during the write" true !sent;
@@ -108,7 +109,7 @@ let test_output_fails () =
       let path = Filename.concat dir "a.ppm" in
       match Output.write Output.Ppm (Filename.concat path "x.ppm") image with
       | Ok () -> Alcotest.fail "wrote into a missing directory"
-      | Error m -> Alcotest.(check string) "names the directory" (path ^ ": No such file or directory") m)
+      | Error m -> Alcotest.(check string) "names the directory" (path ^ ": No such file or directory; nothing was written") m)
 
 let test_pool () =
   Interrupt.install ();

@@ -64,6 +64,7 @@ let () =
       ("POV-Ray source rules (Lexer)", Test_lexer.source_rules);
       ("POV-Ray source rules (Interp)", Test_interp.source_rules);
       ("Interrupt", Test_interrupt.tests);
+      ("Whole_file", Test_whole_file.tests);
       ("Normals (perturbed normals)", Test_normals.tests);
       ("Images (image_map, image_pattern, bump_map)", Test_images.tests);
       ("Superellipsoid, ovus, sphere_sweep", Test_superq.tests);
