@@ -224,16 +224,12 @@ let texture_uv b u v =
   (u10 +. (p1 *. (u20 -. u10)), u11 +. (p1 *. (u21 -. u11)))
 
 (* bezier_subdivider (type 0), and type 1 when its tree would be too big: the same subpatches in
-   the same order as the tree's walk, their parameter range in single precision as the tree's
-   leaves keep it *)
+   the same order as the tree's walk (whose leaves keep their parameter range in single precision:
+   the same numbers, halves of halves of 1, to 24 splits) *)
 let rec subdivide b o d p u0 u1 v0 v1 depth emit =
   let c, r2 = bounding_sphere p in
   if sphere_check o d c r2 then
-    if flat_enough b p || (depth >= b.u_steps && depth >= b.v_steps) then
-      if b.patch_type = 1 then
-        let f = Precision.f32 in
-        quad b o d (at p 0 0) (at p 0 3) (at p 3 3) (at p 3 0) (f u0) (f u1) (f v0) (f v1) emit
-      else quad b o d (at p 0 0) (at p 0 3) (at p 3 3) (at p 3 0) u0 u1 v0 v1 emit
+    if flat_enough b p || (depth >= b.u_steps && depth >= b.v_steps) then quad b o d (at p 0 0) (at p 0 3) (at p 3 3) (at p 3 0) u0 u1 v0 v1 emit
     else if depth >= b.u_steps then begin
       let lo, hi = split_up_down p in
       let vt = (v1 +. v0) /. 2.0 in
@@ -292,7 +288,7 @@ let rec walk b o d node emit =
 
 (* The most splits, u_steps + v_steps, of a type 1 patch whose tree is kept: at most 2^16 leaves,
    some 16 MiB. POV-Ray builds the tree whatever its size: u_steps 12 v_steps 12, 4^12 leaves,
-   take it 28 s and 3.7 GB (and "Out of memory" under 2 GiB); subdividing for every ray crosses
+   takes POV-Ray 28 s and 3.7 GB ("Out of memory" under 2 GiB); subdividing for every ray crosses
    the same subpatches in the same order, in bounded memory. *)
 let max_tree_splits = 16
 
