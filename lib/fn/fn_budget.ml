@@ -8,6 +8,10 @@ let left = ref max_int
 let start n = left := n
 
 let take n =
-  let r = !left - n in
-  left := r;
-  if r < 0 then raise Exhausted
+  if n > !left then begin
+    left := -1;
+    raise Exhausted
+  end
+  else left := !left - n
+
+let loops v = if Float.is_nan v || v < 0. then 1 else if v >= 1e15 then max_int else int_of_float v + 1

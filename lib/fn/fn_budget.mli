@@ -15,4 +15,9 @@ val start : int -> unit
 (** [start n] gives the budget [n] steps (at the start of each scene). *)
 
 val take : int -> unit
-(** [take n] takes [n] steps from the budget; raises {!Exhausted} when fewer were left. *)
+(** [take n] takes [n] steps from the budget; raises {!Exhausted} when fewer were left (and from
+    then on). *)
+
+val loops : float -> int
+(** [loops v] is the steps of a loop a parameter [v] sets (octaves, tubes): [v] + 1, the most
+    steps for a [v] too big to count, 1 for NaN or a negative [v]. *)

@@ -180,7 +180,13 @@ let internal st ~name ~written loc =
       ignore written;
       let n = Fn_internal.arity k in
       let params = Array.init n (fun i -> match i with 0 -> "x" | 1 -> "y" | 2 -> "z" | i -> Printf.sprintf "p%d" (i - 3)) in
-      { Fn.name; params; frame = n; size = 0; eval; veval = (fun _ -> [||]); counted = Lazy.from_val eval; floc = loc }
+      (* a call while the scene is read takes as many steps as the function loops, before it runs *)
+      let counted =
+        match Fn_internal.loop_parameter k with
+        | None -> Lazy.from_val eval
+        | Some i -> Lazy.from_val (fun fr -> Fn_budget.take (Fn_budget.loops fr.(i)); eval fr)
+      in
+      { Fn.name; params; frame = n; size = 0; eval; veval = (fun _ -> [||]); counted; floc = loc }
 
 let declaration st ~name ~special =
   let loc = peek_loc st in

@@ -245,7 +245,7 @@ let count_iteration st loc =
 let with_function_steps st loc f =
   try f () with
   | Fn_budget.Exhausted ->
-      Error.limit_at loc "the scene's functions have taken %s steps, povml's limit (does a sum or a chain of calls run too long? raise the limit with --max-function-steps N)"
+      Error.limit_at loc "the scene's functions need more than %s steps, povml's limit (does a sum, a chain of calls or an octave count run too long? raise the limit with --max-function-steps N)"
         (commas st.opts.limits.function_steps)
 
 (* A string of [len] bytes built by a string function: all of them together are bounded, so that

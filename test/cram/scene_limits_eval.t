@@ -13,7 +13,7 @@ iteration of sum or prod):
   > #declare V = F(1e12);
   > POV
   $ run sum.pov
-  sum.pov:2:14: error: the scene's functions have taken 1,000,000,000 steps, povml's limit (does a sum or a chain of calls run too long? raise the limit with --max-function-steps N)
+  sum.pov:2:14: error: the scene's functions need more than 1,000,000,000 steps, povml's limit (does a sum, a chain of calls or an octave count run too long? raise the limit with --max-function-steps N)
       2 | #declare V = F(1e12);
         |              ^
   [exit 3]
@@ -24,8 +24,22 @@ iteration of sum or prod):
   >   for i in $(seq 1 63); do echo "#declare F$i = function(x) { F$((i - 1))(x) + F$((i - 1))(x) }"; done
   >   echo '#declare V = F63(0);'; } > calls.pov
   $ run calls.pov --max-function-steps 10000000
-  calls.pov:65:14: error: the scene's functions have taken 10,000,000 steps, povml's limit (does a sum or a chain of calls run too long? raise the limit with --max-function-steps N)
+  calls.pov:65:14: error: the scene's functions need more than 10,000,000 steps, povml's limit (does a sum, a chain of calls or an octave count run too long? raise the limit with --max-function-steps N)
      65 | #declare V = F63(0);
+        |              ^
+  [exit 3]
+
+An internal function whose octaves a parameter sets takes that many steps before it runs (here
+2,000,000,000 octaves of noise; 1e300 octaves of f_hetero_mf would never end):
+
+  $ cat > octaves.pov <<'POV'
+  > #include "functions.inc"
+  > #declare F = function { f_ridge(x, y, z, 0.5, 2e9, 0.5, 1, 1, 2) }
+  > #declare V = F(0.1, 0.2, 0.3);
+  > POV
+  $ run octaves.pov
+  octaves.pov:3:14: error: the scene's functions need more than 1,000,000,000 steps, povml's limit (does a sum, a chain of calls or an octave count run too long? raise the limit with --max-function-steps N)
+      3 | #declare V = F(0.1, 0.2, 0.3);
         |              ^
   [exit 3]
 
@@ -52,7 +66,7 @@ A function image is computed while the scene is read, its functions counted:
   > plane { z, 0 pigment { image_map { function 100, 100 { F(x, y, z) } } } }
   > POV
   $ run image.pov --max-function-steps 1000000
-  image.pov:2:36: error: the scene's functions have taken 1,000,000 steps, povml's limit (does a sum or a chain of calls run too long? raise the limit with --max-function-steps N)
+  image.pov:2:36: error: the scene's functions need more than 1,000,000 steps, povml's limit (does a sum, a chain of calls or an octave count run too long? raise the limit with --max-function-steps N)
       2 | plane { z, 0 pigment { image_map { function 100, 100 { F(x, y, z) } } } }
         |                                    ^
   [exit 3]
