@@ -1,7 +1,8 @@
 (** The steps user functions may take while a scene is read. A function called from the scene
     language runs its counting code ({!Fn.t.counted}), which takes steps from this one budget: at
     each entry into a compiled function as many as its body has operations, at each iteration of a
-    [sum] or [prod] as many as the iterated expression has. Rendering runs the code that does not
+    [sum] or [prod] as many as the iterated expression has, and before an internal function whose
+    octaves a parameter sets as many as it has octaves ({!Fn_internal.loop_parameter}). Rendering runs the code that does not
     count (its cost is bounded by the pixels), so the budget costs the renderer nothing.
 
     POV-Ray has no such bound: a sum of 10¹² terms or 64 functions each calling the one before
