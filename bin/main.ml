@@ -477,8 +477,8 @@ let cmd =
     let lim = "LIMITS" in
     let n names default doc = Arg.(value & opt int default & info names ~docv:"N" ~docs:lim ~doc) in
     let d = Scene_limits.default in
-    let make include_depth macro_depth macro_calls iterations objects nesting memory_mb pixels pattern_steps =
-      { Scene_limits.include_depth; macro_depth; macro_calls; iterations; objects; nesting; memory_mb; pixels; pattern_steps }
+    let make include_depth macro_depth macro_calls iterations objects nesting memory_mb pixels pattern_steps function_steps string_mb =
+      { Scene_limits.include_depth; macro_depth; macro_calls; iterations; objects; nesting; memory_mb; pixels; pattern_steps; function_steps; string_mb }
     in
     Term.(
       const make
@@ -496,7 +496,14 @@ let cmd =
       $ n [ "max-pixels" ] d.pixels "An image of more than N pixels (width × height) is an error (default 67,108,864 = 8192²)."
       $ n [ "max-pattern-steps" ] d.pattern_steps
           "A pattern that does more than N steps at each point is an error (default 100,000): a fractal's iterations, \
-           $(b,number_of_waves).")
+           $(b,number_of_waves)."
+      $ n [ "max-function-steps" ] d.function_steps
+          "User functions called while the scene is read that take more than N steps, all calls together, are an \
+           error (default 1,000,000,000): a step is an operation of a function's body, taken at each call and at \
+           each iteration of $(b,sum) and $(b,prod). Rendering is not counted."
+      $ n [ "max-strings" ] d.string_mb
+          "Strings built by the string functions ($(b,concat), $(b,str), $(b,substr) …) of more than N MiB, all \
+           together, are an error (default 4,096): a string grown one character at a time a million times stops.")
   in
   let term =
     let options =

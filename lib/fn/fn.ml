@@ -24,6 +24,7 @@ and t = {
   size : int;
   eval : float array -> float;
   veval : float array -> float array;
+  counted : (float array -> float) Lazy.t;
   floc : Loc.t;
 }
 
@@ -39,7 +40,7 @@ let fill f args =
   Array.blit args 0 fr 0 (min (Array.length args) (Array.length fr));
   fr
 
-let call f args = f.eval (fill f args)
+let call f args = (Lazy.force f.counted) (fill f args)
 
 let call_vector f args = f.veval (fill f args)
 

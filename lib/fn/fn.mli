@@ -38,6 +38,9 @@ and t = {
   size : int;  (** 0 for a float function, else the terms of a vector function (3 or 5, or a spline's) *)
   eval : float array -> float;  (** the value of a float function, given a frame *)
   veval : float array -> float array;  (** the terms of a vector function, given a frame *)
+  counted : (float array -> float) Lazy.t;
+      (** [eval] taking its steps from {!Fn_budget}, for the calls made while the scene is read
+          (compiled when first needed); [eval] itself for functions that are not compiled bodies *)
   floc : Loc.t;  (** where the function was written *)
 }
 
@@ -48,7 +51,9 @@ val frame : t -> float array
 (** [frame f] is a fresh frame for one call of [f], all zeros. *)
 
 val call : t -> float array -> float
-(** [call f args] is [f]'s value for the parameters [args] (as many as [arity f]). *)
+(** [call f args] is [f]'s value for the parameters [args] (as many as [arity f]), as the scene
+    language calls it: its steps are taken from {!Fn_budget}, which raises [Fn_budget.Exhausted]
+    when they run out. *)
 
 val call_vector : t -> float array -> float array
 (** [call_vector f args] is the terms of vector function [f] for [args]. *)

@@ -12,6 +12,7 @@ type env = {
   next_slot : int ref;  (** the next free frame slot for a counter *)
   warn : Loc.t -> string -> unit;
   floc : Loc.t;  (** where the function starts, for errors at constants (which have no location) *)
+  counted : bool;  (** the code takes its steps from {!Fn_budget} (for calls while the scene is read) *)
 }
 
 let c_int = C_float.int_cast
@@ -162,8 +163,11 @@ and loop env is_sum args loc =
       let from = code env from and upto = code env upto in
       let k = !(env.next_slot) in
       incr env.next_slot;
+      let steps = operations body in
       let body = code { env with counters = (name, k) :: env.counters } body in
       let neutral = if is_sum then 0. else 1. in
+      (* the counting code takes the body's steps before each iteration; the renderer's does not *)
+      let body = if env.counted then fun fr -> Fn_budget.take steps; body fr else body in
       fun fr ->
         fr.(k) <- from fr;
         let stop = upto fr in
@@ -183,7 +187,7 @@ and call env f args : code =
   let a = args_code env args in
   let n = Array.length a in
   let size = max f.frame 3 in
-  let eval = f.eval in
+  let eval = if env.counted then Lazy.force f.counted else f.eval in
   match a with
   | [| a0; a1; a2 |] when size = 3 ->
       (* a literal array of three floats is allocated in line, without a call into the runtime *)
@@ -227,9 +231,28 @@ and member env f args m : code =
   | -2 -> let k = 1. /. 255. in fun fr -> let t = terms fr in (t.(0) +. (t.(1) *. k)) *. 0.996093
   | i -> fun fr -> let t = terms fr in if i < Array.length t then t.(i) else 0.
 
+(* The steps an evaluation of [e] takes from the budget: its operations (numbers, variables,
+   operators and calls), a sum's or prod's body once. *)
+and operations e =
+  let all = List.fold_left (fun n e -> n + operations e) 0 in
+  match e with
+  | Const _ | Var _ -> 1
+  | Paren e | Neg e -> 1 + operations e
+  | Chain (first, rest) -> operations first + all (List.map snd rest)
+  | Builtin (_, args, _) | Call (_, args, _) | Member (_, args, _, _) -> 1 + all args
+
 let no_vector _ = [||]
 
 let compile ~name ~params ~loc ~warn body =
-  let env = { params; counters = []; next_slot = ref (Array.length params); warn; floc = loc } in
-  let eval = code env (Fn_optimise.optimise body) in
-  { name; params; frame = !(env.next_slot); size = 0; eval; veval = no_vector; floc = loc }
+  let body = Fn_optimise.optimise body in
+  let env counted warn = { params; counters = []; next_slot = ref (Array.length params); warn; floc = loc; counted } in
+  let plain = env false warn in
+  let eval = code plain body in
+  (* the counting code, compiled again when first called (its warnings were given above); an
+     entry takes the body's operations, each sum or prod iteration its own *)
+  let counted =
+    lazy
+      (let steps = operations body and run = code (env true (fun _ _ -> ())) body in
+       fun fr -> Fn_budget.take steps; run fr)
+  in
+  { name; params; frame = !(plain.next_slot); size = 0; eval; veval = no_vector; counted; floc = loc }

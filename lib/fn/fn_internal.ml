@@ -36,6 +36,9 @@ let entry k =
 let name k = fst (entry k)
 let arity k = snd (entry k)
 
+let loop_parameter k =
+  match name k with "f_hetero_mf" | "f_ridged_mf" -> Some 5 | "f_ridge" -> Some 4 | "f_polytubes" -> Some 3 | _ -> None
+
 let make ~noise_generator k =
   match Fn_algebraic.find k with
   | Some f -> Some f

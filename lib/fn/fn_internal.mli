@@ -20,6 +20,11 @@ val name : int -> string
     which functions.inc does not declare, it is fnintern.cpp's ["f_pattern"]. Raises
     [Invalid_argument] for [k] outside 0 … [count − 1]. *)
 
+val loop_parameter : int -> int option
+(** [loop_parameter k] is where in the argument array [internal(k)] reads how many times it loops,
+    for the functions whose work a parameter sets: the octaves of f_hetero_mf (5), f_ridge (4) and
+    f_ridged_mf (5), the tubes of f_polytubes (3); [None] for the others, whose work is bounded. *)
+
 val make : noise_generator:int -> int -> (float array -> float) option
 (** [make ~noise_generator k] is the implementation of [internal(k)]: a function reading its
     arguments from the array at 0 … [arity k − 1] (the array may be longer; it is not written).

@@ -159,9 +159,14 @@ let parse_index st (a : V.array_v) =
     else begin
       expect st LBracket "'[' of an array subscript";
       let l = peek_loc st in
-      let i = parse_float st in
-      let i = int_of_float i in
-      if i < 0 || i >= a.dims.(d) then Error.raise_at l "array subscript %d is out of range 0 … %d" i (a.dims.(d) - 1);
+      let f = parse_float st in
+      (* truncated as C's (int) does; NaN and infinities are out of range, as in POV-Ray, where
+         the cast makes them INT_MIN ("Negative subscript", Parse_Ident in parse.cpp) *)
+      if not (f > -1. && f < float_of_int a.dims.(d)) then
+        Error.raise_at l "array subscript %s is out of range 0 … %d"
+          (if Float.is_nan f then "nan" else if Float.abs f < 2147483648. then string_of_int (int_of_float f) else Printf.sprintf "%g" f)
+          (a.dims.(d) - 1);
+      let i = int_of_float f in
       expect st RBracket "']' closing an array subscript";
       go (d + 1) ((acc * a.dims.(d)) + i)
     end

@@ -14,8 +14,9 @@ let limit_error loc msg = { loc; msg; notes = []; kind = Limit }
 let warning loc msg = { loc; msg; notes = []; kind = Scene }
 let raise_notes loc notes msg = raise (Scene_error { loc; msg; notes; kind = Scene })
 
-(* The [n]th line (1-based) of [text], without its line end. *)
+(* The [n]th line (1-based) of [text], without its line end, lines ending as the lexer counts them. *)
 let nth_line text n =
+  let text = Line_ends.normalise text in
   let len = String.length text in
   let rec find_start pos line =
     if line = n then Some pos
@@ -28,7 +29,6 @@ let nth_line text n =
   | None -> None
   | Some start ->
       let stop = match String.index_from_opt text start '\n' with Some i -> i | None -> len in
-      let stop = if stop > start && text.[stop - 1] = '\r' then stop - 1 else stop in
       Some (String.sub text start (stop - start))
 
 (* The length of the valid UTF-8 sequence starting at [i] of [s], or 0. *)

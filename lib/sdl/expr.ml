@@ -335,147 +335,151 @@ and parse_function st loc name =
       Error.limit_at loc "'%s' would make a string of %.0f MiB, more than povml's memory limit of %s MiB (raise it with --max-memory MIB)"
         name mib (commas st.opts.limits.memory_mb)
   in
-  match name with
-  | "abs" -> f1 Float.abs
-  | "sqrt" -> f1 (fun x -> if x < 0. then Error.raise_at loc "sqrt of negative number %f" x else sqrt x)
-  | "sin" -> f1 sin
-  | "cos" -> f1 cos
-  | "tan" -> f1 tan
-  | "sinh" -> f1 sinh
-  | "cosh" -> f1 cosh
-  | "tanh" -> f1 tanh
-  | "asinh" -> f1 (fun x -> Float.log (x +. sqrt ((x *. x) +. 1.)))
-  | "acosh" -> f1 (fun x -> Float.log (x +. sqrt ((x *. x) -. 1.)))
-  | "atanh" -> f1 (fun x -> 0.5 *. Float.log ((1. +. x) /. (1. -. x)))
-  | "asin" | "acos" ->
-      (* §11.2: the argument is clamped to ±1 with a warning *)
-      let f = if name = "asin" then asin else acos in
-      f1 (fun x ->
-          if x < -1. || x > 1. then warn st loc "domain error in '%s': %g is clamped to the range -1 … 1" name x;
-          f (Float.max (-1.) (Float.min 1. x)))
-  | "atan" -> f1 atan
-  | "atan2" -> f2 (fun a b -> if Float.abs a < 1e-10 && Float.abs b < 1e-10 then Error.raise_at loc "domain error in atan2(0, 0)" else Float.atan2 a b)
-  | "pow" ->
-      f2 (fun a b -> if a = 0. && b = 0. then Error.raise_at loc "pow(0, 0) is undefined" else Float.pow a b)
-  | "exp" -> f1 exp
-  | "ln" -> f1 (fun x -> if x <= 0. then Error.raise_at loc "ln of a number that is not positive: %f" x else log x)
-  | "log" -> f1 (fun x -> if x <= 0. then Error.raise_at loc "log of a number that is not positive: %f" x else log10 x)
-  | "int" -> f1 c_int
-  | "floor" -> f1 floor
-  | "ceil" -> f1 ceil
-  | "mod" -> f2 Float.rem (* C fmod: mod(x, 0) is NaN *)
-  | "div" -> f2 (fun a b -> c_int (a /. b))
-  | "radians" -> f1 (fun d -> d *. Float.pi /. 180.)
-  | "degrees" -> f1 (fun r -> r *. 180. /. Float.pi)
-  | "min" | "max" ->
-      if args = [] then Error.raise_at loc "'%s' needs at least one argument" name;
-      let fs = List.map float_arg args in
-      V.Float (List.fold_left (if name = "min" then Float.min else Float.max) (List.hd fs) fs)
-  | "bitwise_and" | "bitwise_or" | "bitwise_xor" ->
-      if n < 2 then Error.raise_at loc "'%s' needs at least two arguments" name;
-      let op = match name with "bitwise_and" -> ( land ) | "bitwise_or" -> ( lor ) | _ -> ( lxor ) in
-      let is = List.map int_arg args in
-      V.Float (float_of_int (List.fold_left op (List.hd is) (List.tl is)))
-  | "seed" ->
-      (* §11.2: each seed() makes a new stream and returns its number *)
-      arity 1;
-      st.streams <- Array.append st.streams [| { V.state = int_arg (arg 0) land 0xFFFFFFFF } |];
-      V.Float (float_of_int (Array.length st.streams - 1))
-  | "rand" ->
-      arity 1;
-      let l, _ = arg 0 in
-      let i = int_arg (arg 0) in
-      if i < 0 || i >= Array.length st.streams then Error.raise_at l "rand(%d): there is no such random stream (make one with seed())" i;
-      let r = st.streams.(i) in
-      (* a 32-bit linear congruential step *)
-      r.state <- ((r.state * 1812433253) + 12345) land 0xFFFFFFFF;
-      V.Float (float_of_int r.state /. 4294967295.)
-  | "vlength" -> arity 1; V.Float (Vec.length (vec_arg (arg 0)))
-  | "vnormalize" ->
-      arity 1;
-      let a = vec_arg (arg 0) in
-      if Vec.length a = 0. then begin
-        warn st loc "normalizing zero-length vector; the result is <0,0,0>";
-        of_vec Vec.zero
-      end
-      else of_vec (Vec.normalize a)
-  | "vdot" -> arity 2; V.Float (Vec.dot (vec_arg (arg 0)) (vec_arg (arg 1)))
-  | "vcross" -> arity 2; of_vec (Vec.cross (vec_arg (arg 0)) (vec_arg (arg 1)))
-  | "vturbulence" ->
-      (* express.cpp: DTurbulence at the vector, with lambda and omega stored in single precision
-         and the octaves clipped to 1…10 *)
-      arity 4;
-      let octaves = max 1 (min 10 (int_of_float (float_arg (arg 2)))) in
-      let turb = { Scene.turbulence = Vec.zero; octaves; omega = Precision.f32 (float_arg (arg 1)); lambda = Precision.f32 (float_arg (arg 0)) } in
-      of_vec (Noise.dturbulence turb (vec_arg (arg 3)))
-  | "vrotate" -> arity 2; of_vec (Transform.point (Transform.rotate (vec_arg (arg 1))) (vec_arg (arg 0)))
-  | "vaxis_rotate" ->
-      arity 3;
-      of_vec (Transform.point (Transform.axis_rotate (vec_arg (arg 1)) (float_arg (arg 2))) (vec_arg (arg 0)))
-  | "select" ->
-      if n <> 3 && n <> 4 then Error.raise_at loc "'select' takes 3 or 4 arguments";
-      let c = float_arg (arg 0) in
-      let pick i = snd (arg i) in
-      if n = 3 then if c < 0. then pick 1 else pick 2
-      else if c < 0. then pick 1
-      else if c = 0. then pick 2
-      else pick 3
-  | "dimensions" -> (
-      match args with
-      | [ (_, V.Array a) ] -> V.Float (float_of_int (Array.length a.dims))
-      | _ -> Error.raise_at loc "'dimensions' takes one array")
-  | "dimension_size" -> (
-      match args with
-      | [ (_, V.Array a); d ] ->
-          let d = int_arg d in
-          (* a dimension the array does not have has size 0 (checked with POV-Ray) *)
-          V.Float (if d < 1 || d > Array.length a.dims then 0. else float_of_int a.dims.(d - 1))
-      | _ -> Error.raise_at loc "'dimension_size' takes an array and a dimension number")
-  | "str" ->
-      arity 3;
-      let l = int_arg (arg 1) and p = int_arg (arg 2) in
-      string_room 1 l p;
-      V.String (Strfmt.str (float_arg (arg 0)) l p)
-  | "vstr" ->
-      arity 5;
-      let k = int_arg (arg 0) in
-      let k = max 2 (min 5 k) in
-      (* the value is not promoted: a float is its first term, the others are 0 *)
-      let terms =
-        match arg 1 with
-        | _, V.Float f -> Array.init k (fun i -> if i = 0 then f else 0.)
-        | _, (V.Vector a | V.Colour a) -> Array.init k (fun i -> if i < Array.length a then a.(i) else 0.)
-        | l, v -> Error.raise_at l "'vstr' expects a vector, not %s" (V.kind_name v)
-      in
-      let l = int_arg (arg 3) and p = int_arg (arg 4) in
-      string_room k l p;
-      V.String (Strfmt.vstr terms (string_arg (arg 2)) l p)
-  | "concat" -> V.String (String.concat "" (List.map string_arg args))
-  | "substr" ->
-      arity 3;
-      let s = string_arg (arg 0) and p = int_arg (arg 1) and l = int_arg (arg 2) in
-      if p < 1 || l < 0 || p + l - 1 > String.length s then
-        Error.raise_at loc "substr(\"%s\", %d, %d) is outside the string (length %d)" s p l (String.length s);
-      V.String (String.sub s (p - 1) l)
-  | "chr" ->
-      arity 1;
-      let c = int_arg (arg 0) in
-      if c < 0 || c > 65535 then Error.raise_at loc "chr(%d): the value must be 0 … 65535" c;
-      let b = Buffer.create 4 in
-      Buffer.add_utf_8_uchar b (if Uchar.is_valid c then Uchar.of_int c else Uchar.rep);
-      V.String (Buffer.contents b)
-  | "asc" -> arity 1; let s = string_arg (arg 0) in V.Float (if s = "" then 0. else float_of_int (Char.code s.[0]))
-  | "strlen" -> arity 1; V.Float (float_of_int (String.length (string_arg (arg 0))))
-  | "strupr" -> arity 1; V.String (String.uppercase_ascii (string_arg (arg 0)))
-  | "strlwr" -> arity 1; V.String (String.lowercase_ascii (string_arg (arg 0)))
-  | "val" -> arity 1; V.Float (Strfmt.value (string_arg (arg 0)))
-  | "strcmp" -> arity 2; V.Float (float_of_int (Strfmt.compare (string_arg (arg 0)) (string_arg (arg 1))))
-  | "file_exists" ->
-      (* POV-Ray opens the file through its I/O restrictions, so a file it may not read is not there *)
-      arity 1;
-      let found = match find_file ~inc:false st (string_arg (arg 0)) with Some p -> Access.readable st.opts.access p | None -> false in
-      V.Float (if found then 1. else 0.)
-  | _ -> Error.raise_at loc "unknown function '%s'" name
+  let value =
+    match name with
+    | "abs" -> f1 Float.abs
+    | "sqrt" -> f1 (fun x -> if x < 0. then Error.raise_at loc "sqrt of negative number %f" x else sqrt x)
+    | "sin" -> f1 sin
+    | "cos" -> f1 cos
+    | "tan" -> f1 tan
+    | "sinh" -> f1 sinh
+    | "cosh" -> f1 cosh
+    | "tanh" -> f1 tanh
+    | "asinh" -> f1 (fun x -> Float.log (x +. sqrt ((x *. x) +. 1.)))
+    | "acosh" -> f1 (fun x -> Float.log (x +. sqrt ((x *. x) -. 1.)))
+    | "atanh" -> f1 (fun x -> 0.5 *. Float.log ((1. +. x) /. (1. -. x)))
+    | "asin" | "acos" ->
+        (* §11.2: the argument is clamped to ±1 with a warning *)
+        let f = if name = "asin" then asin else acos in
+        f1 (fun x ->
+            if x < -1. || x > 1. then warn st loc "domain error in '%s': %g is clamped to the range -1 … 1" name x;
+            f (Float.max (-1.) (Float.min 1. x)))
+    | "atan" -> f1 atan
+    | "atan2" -> f2 (fun a b -> if Float.abs a < 1e-10 && Float.abs b < 1e-10 then Error.raise_at loc "domain error in atan2(0, 0)" else Float.atan2 a b)
+    | "pow" ->
+        f2 (fun a b -> if a = 0. && b = 0. then Error.raise_at loc "pow(0, 0) is undefined" else Float.pow a b)
+    | "exp" -> f1 exp
+    | "ln" -> f1 (fun x -> if x <= 0. then Error.raise_at loc "ln of a number that is not positive: %f" x else log x)
+    | "log" -> f1 (fun x -> if x <= 0. then Error.raise_at loc "log of a number that is not positive: %f" x else log10 x)
+    | "int" -> f1 c_int
+    | "floor" -> f1 floor
+    | "ceil" -> f1 ceil
+    | "mod" -> f2 Float.rem (* C fmod: mod(x, 0) is NaN *)
+    | "div" -> f2 (fun a b -> c_int (a /. b))
+    | "radians" -> f1 (fun d -> d *. Float.pi /. 180.)
+    | "degrees" -> f1 (fun r -> r *. 180. /. Float.pi)
+    | "min" | "max" ->
+        if args = [] then Error.raise_at loc "'%s' needs at least one argument" name;
+        let fs = List.map float_arg args in
+        V.Float (List.fold_left (if name = "min" then Float.min else Float.max) (List.hd fs) fs)
+    | "bitwise_and" | "bitwise_or" | "bitwise_xor" ->
+        if n < 2 then Error.raise_at loc "'%s' needs at least two arguments" name;
+        let op = match name with "bitwise_and" -> ( land ) | "bitwise_or" -> ( lor ) | _ -> ( lxor ) in
+        let is = List.map int_arg args in
+        V.Float (float_of_int (List.fold_left op (List.hd is) (List.tl is)))
+    | "seed" ->
+        (* §11.2: each seed() makes a new stream and returns its number *)
+        arity 1;
+        st.streams <- Array.append st.streams [| { V.state = int_arg (arg 0) land 0xFFFFFFFF } |];
+        V.Float (float_of_int (Array.length st.streams - 1))
+    | "rand" ->
+        arity 1;
+        let l, _ = arg 0 in
+        let i = int_arg (arg 0) in
+        if i < 0 || i >= Array.length st.streams then Error.raise_at l "rand(%d): there is no such random stream (make one with seed())" i;
+        let r = st.streams.(i) in
+        (* a 32-bit linear congruential step *)
+        r.state <- ((r.state * 1812433253) + 12345) land 0xFFFFFFFF;
+        V.Float (float_of_int r.state /. 4294967295.)
+    | "vlength" -> arity 1; V.Float (Vec.length (vec_arg (arg 0)))
+    | "vnormalize" ->
+        arity 1;
+        let a = vec_arg (arg 0) in
+        if Vec.length a = 0. then begin
+          warn st loc "normalizing zero-length vector; the result is <0,0,0>";
+          of_vec Vec.zero
+        end
+        else of_vec (Vec.normalize a)
+    | "vdot" -> arity 2; V.Float (Vec.dot (vec_arg (arg 0)) (vec_arg (arg 1)))
+    | "vcross" -> arity 2; of_vec (Vec.cross (vec_arg (arg 0)) (vec_arg (arg 1)))
+    | "vturbulence" ->
+        (* express.cpp: DTurbulence at the vector, with lambda and omega stored in single precision
+           and the octaves clipped to 1…10 *)
+        arity 4;
+        let octaves = max 1 (min 10 (int_of_float (float_arg (arg 2)))) in
+        let turb = { Scene.turbulence = Vec.zero; octaves; omega = Precision.f32 (float_arg (arg 1)); lambda = Precision.f32 (float_arg (arg 0)) } in
+        of_vec (Noise.dturbulence turb (vec_arg (arg 3)))
+    | "vrotate" -> arity 2; of_vec (Transform.point (Transform.rotate (vec_arg (arg 1))) (vec_arg (arg 0)))
+    | "vaxis_rotate" ->
+        arity 3;
+        of_vec (Transform.point (Transform.axis_rotate (vec_arg (arg 1)) (float_arg (arg 2))) (vec_arg (arg 0)))
+    | "select" ->
+        if n <> 3 && n <> 4 then Error.raise_at loc "'select' takes 3 or 4 arguments";
+        let c = float_arg (arg 0) in
+        let pick i = snd (arg i) in
+        if n = 3 then if c < 0. then pick 1 else pick 2
+        else if c < 0. then pick 1
+        else if c = 0. then pick 2
+        else pick 3
+    | "dimensions" -> (
+        match args with
+        | [ (_, V.Array a) ] -> V.Float (float_of_int (Array.length a.dims))
+        | _ -> Error.raise_at loc "'dimensions' takes one array")
+    | "dimension_size" -> (
+        match args with
+        | [ (_, V.Array a); d ] ->
+            let d = int_arg d in
+            (* a dimension the array does not have has size 0 (checked with POV-Ray) *)
+            V.Float (if d < 1 || d > Array.length a.dims then 0. else float_of_int a.dims.(d - 1))
+        | _ -> Error.raise_at loc "'dimension_size' takes an array and a dimension number")
+    | "str" ->
+        arity 3;
+        let l = int_arg (arg 1) and p = int_arg (arg 2) in
+        string_room 1 l p;
+        V.String (Strfmt.str (float_arg (arg 0)) l p)
+    | "vstr" ->
+        arity 5;
+        let k = int_arg (arg 0) in
+        let k = max 2 (min 5 k) in
+        (* the value is not promoted: a float is its first term, the others are 0 *)
+        let terms =
+          match arg 1 with
+          | _, V.Float f -> Array.init k (fun i -> if i = 0 then f else 0.)
+          | _, (V.Vector a | V.Colour a) -> Array.init k (fun i -> if i < Array.length a then a.(i) else 0.)
+          | l, v -> Error.raise_at l "'vstr' expects a vector, not %s" (V.kind_name v)
+        in
+        let l = int_arg (arg 3) and p = int_arg (arg 4) in
+        string_room k l p;
+        V.String (Strfmt.vstr terms (string_arg (arg 2)) l p)
+    | "concat" -> V.String (String.concat "" (List.map string_arg args))
+    | "substr" ->
+        arity 3;
+        let s = string_arg (arg 0) and p = int_arg (arg 1) and l = int_arg (arg 2) in
+        if p < 1 || l < 0 || p + l - 1 > String.length s then
+          Error.raise_at loc "substr(\"%s\", %d, %d) is outside the string (length %d)" s p l (String.length s);
+        V.String (String.sub s (p - 1) l)
+    | "chr" ->
+        arity 1;
+        let c = int_arg (arg 0) in
+        if c < 0 || c > 65535 then Error.raise_at loc "chr(%d): the value must be 0 … 65535" c;
+        let b = Buffer.create 4 in
+        Buffer.add_utf_8_uchar b (if Uchar.is_valid c then Uchar.of_int c else Uchar.rep);
+        V.String (Buffer.contents b)
+    | "asc" -> arity 1; let s = string_arg (arg 0) in V.Float (if s = "" then 0. else float_of_int (Char.code s.[0]))
+    | "strlen" -> arity 1; V.Float (float_of_int (String.length (string_arg (arg 0))))
+    | "strupr" -> arity 1; V.String (String.uppercase_ascii (string_arg (arg 0)))
+    | "strlwr" -> arity 1; V.String (String.lowercase_ascii (string_arg (arg 0)))
+    | "val" -> arity 1; V.Float (Strfmt.value (string_arg (arg 0)))
+    | "strcmp" -> arity 2; V.Float (float_of_int (Strfmt.compare (string_arg (arg 0)) (string_arg (arg 1))))
+    | "file_exists" ->
+        (* POV-Ray opens the file through its I/O restrictions, so a file it may not read is not there *)
+        arity 1;
+        let found = match find_file ~inc:false st (string_arg (arg 0)) with Some p -> Access.readable st.opts.access p | None -> false in
+        V.Float (if found then 1. else 0.)
+    | _ -> Error.raise_at loc "unknown function '%s'" name
+  in
+  (match value with V.String s -> count_string st loc (String.length s) | _ -> ());
+  value
 
 (* The arguments of dimensions() and dimension_size(): an array identifier, then floats. *)
 and array_args st =

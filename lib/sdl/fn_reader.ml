@@ -180,7 +180,13 @@ let internal st ~name ~written loc =
       ignore written;
       let n = Fn_internal.arity k in
       let params = Array.init n (fun i -> match i with 0 -> "x" | 1 -> "y" | 2 -> "z" | i -> Printf.sprintf "p%d" (i - 3)) in
-      { Fn.name; params; frame = n; size = 0; eval; veval = (fun _ -> [||]); floc = loc }
+      (* a call while the scene is read takes as many steps as the function loops, before it runs *)
+      let counted =
+        match Fn_internal.loop_parameter k with
+        | None -> Lazy.from_val eval
+        | Some i -> Lazy.from_val (fun fr -> Fn_budget.take (Fn_budget.loops fr.(i)); eval fr)
+      in
+      { Fn.name; params; frame = n; size = 0; eval; veval = (fun _ -> [||]); counted; floc = loc }
 
 let declaration st ~name ~special =
   let loc = peek_loc st in
@@ -215,8 +221,7 @@ let sdl_call st (f : Fn.t) loc ~parse_float =
   in
   if peek st == Comma then Error.raise_at (peek_loc st) "%s takes %d parameter%s" what n (if n = 1 then "" else "s");
   expect st RParen (Printf.sprintf "')' after the %d parameters of %s" n what);
-  ignore loc;
-  if f.size = 0 then V.Float (Fn.call f args)
+  if f.size = 0 then V.Float (with_function_steps st loc (fun () -> Fn.call f args))
   else
     let t = Fn.call_vector f args in
     if Array.length t = 5 then V.Colour t else if Array.length t = 1 then V.Float t.(0) else V.Vector t

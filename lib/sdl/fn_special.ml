@@ -7,7 +7,8 @@ let terms_value t = if Array.length t = 5 then Value.Colour t else Value.Vector 
 let spline s floc =
   let n = Spline.terms s in
   let veval fr = Array.sub (Spline.eval s fr.(0)) 0 n in
-  { Fn.name = ""; params = [| "t" |]; frame = 1; size = n; eval = (fun fr -> (veval fr).(0)); veval; floc }
+  let eval fr = (veval fr).(0) in
+  { Fn.name = ""; params = [| "t" |]; frame = 1; size = n; eval; veval; counted = Lazy.from_val eval; floc }
 
 let spline_value s t = terms_value (Array.sub (Spline.eval s t) 0 (Spline.terms s))
 
@@ -32,7 +33,8 @@ let spline_call st sp ~parse_float =
 
 
 let vector_fn ~size ~veval floc =
-  { Fn.name = ""; params = [| "x"; "y"; "z" |]; frame = 3; size; eval = (fun fr -> (veval fr).(0)); veval; floc }
+  let eval fr = (veval fr).(0) in
+  { Fn.name = ""; params = [| "x"; "y"; "z" |]; frame = 3; size; eval; veval; counted = Lazy.from_val eval; floc }
 
 let point fr = Vec.make fr.(0) fr.(1) fr.(2)
 

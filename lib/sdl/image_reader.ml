@@ -142,14 +142,21 @@ and function_image st : Image_file.t =
     fr.(2) <- 0.
   in
   let n = width * height in
+  (* an int a sample, four for a colour: the memory limit bounds them before they are made *)
+  let mib = float_of_int width *. float_of_int height *. float_of_int (if f.size = 0 then 1 else 4) *. float_of_int (Sys.word_size / 8) /. 1048576. in
+  if mib >= float_of_int st.opts.limits.memory_mb then
+    Error.limit_at loc "a %d×%d function image would need %.0f MiB, more than povml's memory limit of %s MiB (raise it with --max-memory MIB)"
+      width height mib (commas st.opts.limits.memory_mb);
   if f.size = 0 then begin
     let grey = Array.make n 0 in
-    for i = 0 to height - 1 do
-      for j = 0 to width - 1 do
-        at i j;
-        grey.((i * width) + j) <- sample (f.eval fr)
-      done
-    done;
+    let eval = Lazy.force f.counted in
+    with_function_steps st loc (fun () ->
+        for i = 0 to height - 1 do
+          for j = 0 to width - 1 do
+            at i j;
+            grey.((i * width) + j) <- sample (eval fr)
+          done
+        done);
     { width; height; pixels = Grey { max = 65535; grey; alpha = None; lut = None }; premultiplied = false }
   end
   else if f.size = 5 then begin

@@ -20,6 +20,7 @@ type t = {
 }
 
 let create ~file text =
+  let text = Line_ends.normalise text in
   let len = String.length text in
   let start = if len >= 3 && String.sub text 0 3 = "\xEF\xBB\xBF" then 3 else 0 in
   { file; text; len; start; pos = start; line = 1; bol = start }
@@ -65,8 +66,9 @@ let check_length lx pos n what =
 (* A string from just after its opening quote; returns the token and the offset after it. A
    line break inside the quotes is part of the string, as one '\n' whatever the file's line ends
    (POV-Ray's Parse_String_Literal in tokenize.cpp reads to the closing quote, and its text stream
-   turns CR LF, LF CR and a lone CR into one '\n': shapes3.inc's #warning at line 881 spans three
-   lines); only the end of the file, or a '\' just before a line break, leaves it unterminated. *)
+   turns CR LF, LF CR and a lone CR into one '\n', as [create] does ({!Line_ends}): shapes3.inc's
+   #warning at line 881 spans three lines); only the end of the file, or a '\' just before a line
+   break, leaves it unterminated. *)
 let lex_string lx pos =
   let text = lx.text and len = lx.len in
   let loc = loc_at lx (pos - 1) in
@@ -74,19 +76,13 @@ let lex_string lx pos =
   (* characters as POV-Ray counts them for its length limit: as written, a line end as one *)
   let written = ref 0 in
   let unicode_at p = p + 5 < len && String.for_all is_hex (String.sub text (p + 2) 4) in
-  (* a line end at [p]: the offset after it, the lines counted *)
-  let line_end p =
-    match text.[p] with
-    | '\n' -> newline lx p; if p + 1 < len && text.[p + 1] = '\r' then p + 2 else p + 1
-    | _ (* '\r' *) -> if p + 1 < len && text.[p + 1] = '\n' then (newline lx (p + 1); p + 2) else p + 1
-  in
   let rec go p =
     if p >= len then Error.raise_at loc "unterminated string: missing closing '\"'"
     else
       match text.[p] with
       | '"' -> p + 1
-      | '\n' | '\r' -> Buffer.add_char buf '\n'; incr written; go (line_end p)
-      | '\\' when p + 1 < len && (text.[p + 1] = '\n' || text.[p + 1] = '\r') ->
+      | '\n' -> Buffer.add_char buf '\n'; incr written; newline lx p; go (p + 1)
+      | '\\' when p + 1 < len && text.[p + 1] = '\n' ->
           Error.raise_at (loc_at lx p) "unterminated string: a '\\' ends the line (POV-Ray refuses it; a backslash is written '\\\\')"
       | '\\' when p + 1 < len ->
           let e = text.[p + 1] in

@@ -29,4 +29,4 @@ let pattern st floc =
     Pigment.shape_value ~frequency:h.frequency ~phase:h.phase h.wave
       (Patterns.value_with ~frequency:h.frequency ~phase:h.phase pat h.warps gen Patterns.no_hit q)
   in
-  { Fn.name = ""; params = [| "x"; "y"; "z" |]; frame = 3; size = 0; eval; veval = (fun _ -> [||]); floc }
+  { Fn.name = ""; params = [| "x"; "y"; "z" |]; frame = 3; size = 0; eval; veval = (fun _ -> [||]); counted = Lazy.from_val eval; floc }

@@ -79,6 +79,7 @@ type st = {
   mutable macro_depth : int;
   mutable macro_calls : int;  (* in the whole scene, against [opts.limits] *)
   mutable iterations : int;  (* loop iterations in the whole scene *)
+  mutable string_bytes : int;  (* the bytes of the strings string functions built in the whole scene *)
   mutable nesting : int;  (* open parentheses, vectors, unary operators and unions being read *)
   mutable braces : int;  (* POV-Ray's count of nested blocks, for its warning past 200 *)
   mutable object_count : int;  (* objects and lights that entered the scene *)
@@ -238,6 +239,22 @@ let count_iteration st loc =
     Error.limit_at loc "the scene's loops have run %s times, povml's limit (does this loop never end? raise the limit with --max-iterations N)"
       (commas st.opts.limits.iterations);
   check_memory st loc
+
+(* Evaluating [f ()], a call of user functions while the scene is read, with the limit on their
+   steps reported at [loc]. *)
+let with_function_steps st loc f =
+  try f () with
+  | Fn_budget.Exhausted ->
+      Error.limit_at loc "the scene's functions need more than %s steps, povml's limit (does a sum, a chain of calls or an octave count run too long? raise the limit with --max-function-steps N)"
+        (commas st.opts.limits.function_steps)
+
+(* A string of [len] bytes built by a string function: all of them together are bounded, so that
+   a string grown a little at a time (quadratic work) ends. *)
+let count_string st loc len =
+  st.string_bytes <- st.string_bytes + len;
+  if st.string_bytes / 1048576 >= st.opts.limits.string_mb then
+    Error.limit_at loc "the scene's string functions have built %s MiB of strings, povml's limit (is a string grown in a long loop? raise the limit with --max-strings MIB)"
+      (commas st.opts.limits.string_mb)
 
 let count_object st loc =
   st.object_count <- st.object_count + 1;

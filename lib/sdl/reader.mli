@@ -76,6 +76,7 @@ type st = {
   mutable macro_depth : int;
   mutable macro_calls : int;  (** macro calls so far, against [opts.limits] *)
   mutable iterations : int;  (** loop iterations so far, all loops together *)
+  mutable string_bytes : int;  (** the bytes of the strings the string functions built so far *)
   mutable nesting : int;  (** parentheses, vectors, signs and unions open in the reader *)
   mutable braces : int;  (** POV-Ray's count of nested blocks, for its warning past 200 *)
   mutable object_count : int;  (** objects and lights that entered the scene *)
@@ -148,6 +149,15 @@ val check_memory : st -> Loc.t -> unit
 val count_iteration : st -> Loc.t -> unit
 (** [count_iteration st loc] counts one loop iteration of the loop at [loc], raising a [Limit] error
     past the limit (or past the memory limit). *)
+
+val with_function_steps : st -> Loc.t -> (unit -> 'a) -> 'a
+(** [with_function_steps st loc f] is [f ()], calls of user functions from the scene language;
+    when their steps run out ([Fn_budget.Exhausted]), a [Limit] error at [loc] naming
+    [--max-function-steps]. *)
+
+val count_string : st -> Loc.t -> int -> unit
+(** [count_string st loc n] counts a string of [n] bytes built by a string function, raising a
+    [Limit] error at [loc] past the limit on all strings built together. *)
 
 val count_object : st -> Loc.t -> unit
 (** [count_object st loc] counts one object or light entering the scene, raising a [Limit] error

@@ -10,6 +10,8 @@ type t = {
   memory_mb : int;
   pixels : int;
   pattern_steps : int;
+  function_steps : int;
+  string_mb : int;
 }
 
 (* Half the address space the process may use (ulimit -v), read from /proc/self/limits on Linux;
@@ -44,4 +46,6 @@ let default =
     memory_mb = default_memory_mb;
     pixels = 8192 * 8192;
     pattern_steps = 100_000;
+    function_steps = 1_000_000_000;
+    string_mb = 4096;
   }

@@ -223,7 +223,9 @@ let texture_uv b u v =
   let u20 = st.(6) +. (p0 *. (st.(4) -. st.(6))) and u21 = st.(7) +. (p0 *. (st.(5) -. st.(7))) in
   (u10 +. (p1 *. (u20 -. u10)), u11 +. (p1 *. (u21 -. u11)))
 
-(* bezier_subdivider (type 0) *)
+(* bezier_subdivider (type 0), and type 1 when its tree would be too big: the same subpatches in
+   the same order as the tree's walk (whose leaves keep their parameter range in single precision:
+   the same numbers, halves of halves of 1, to 24 splits) *)
 let rec subdivide b o d p u0 u1 v0 v1 depth emit =
   let c, r2 = bounding_sphere p in
   if sphere_check o d c r2 then
@@ -284,9 +286,15 @@ let rec walk b o d node emit =
   | Leaf { lc; lr2; corners; u0; u1; v0; v1 } ->
       if sphere_check o d lc lr2 then quad b o d corners.(0) corners.(1) corners.(2) corners.(3) u0 u1 v0 v1 emit
 
+(* The most splits, u_steps + v_steps, of a type 1 patch whose tree is kept: at most 2^16 leaves,
+   some 16 MiB. POV-Ray builds the tree whatever its size: u_steps 12 v_steps 12, 4^12 leaves,
+   takes POV-Ray 28 s and 3.7 GB ("Out of memory" under 2 GiB); subdividing for every ray crosses
+   the same subpatches in the same order, in bounded memory. *)
+let max_tree_splits = 16
+
 let make ~patch_type ~u_steps ~v_steps ~flatness ~st cp =
   let b = { patch_type; u_steps; v_steps; flatness; cp; st; tree = None } in
-  if patch_type = 1 then { b with tree = Some (build b cp 0.0 1.0 0.0 1.0 0) } else b
+  if patch_type = 1 && max 0 u_steps + max 0 v_steps <= max_tree_splits then { b with tree = Some (build b cp 0.0 1.0 0.0 1.0 0) } else b
 
 (* All_Intersections: every crossing, in POV-Ray's push order, to [emit] *)
 let crossings (w : Scratch.t) b o d emit =

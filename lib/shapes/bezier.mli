@@ -17,12 +17,16 @@ type t = {
   flatness : float;  (** a subpatch is flat when its control points are nearer than this to its plane *)
   cp : Vec.t array;  (** P[i][j] at 4i + j, i with u, j with v *)
   st : float array;  (** the four uv_vectors (u0, v0, …, u3, v3): the texture coordinates of the corners *)
-  tree : node option;  (** type 1's tree (bezier_tree_builder); None for type 0 *)
+  tree : node option;
+      (** type 1's tree (bezier_tree_builder); None for type 0, and for type 1 when the tree could
+          have more than 2^16 leaves (u_steps + v_steps > 16): that patch is subdivided for every
+          ray instead, which crosses the same subpatches *)
 }
 
 val make : patch_type:int -> u_steps:int -> v_steps:int -> flatness:float -> st:float array -> Vec.t array -> t
 (** [make ~patch_type ~u_steps ~v_steps ~flatness ~st cp] is the patch of the 16 points [cp] with
-    the uv_vectors [st], its tree built for type 1 (Precompute_Patch_Values). *)
+    the uv_vectors [st], its tree built for type 1 (Precompute_Patch_Values) unless it could be
+    too big. *)
 
 val texture_uv : t -> float -> float -> float * float
 (** [texture_uv b u v] is Compute_Texture_UV: the patch parameters [(u, v)] of a crossing mapped

@@ -84,15 +84,24 @@ let invert f = { f with inverted = not f.inverted }
 (* ---------------------------------------------------------------------------------------------- *)
 (* The iteration stack: (x, y, z, w) of every iterate, 4 floats each, in the worker's scratch *)
 
-let stack (w : Scratch.t) f =
+(* [g]'s room, grown to hold [f]'s iterations *)
+let room (g : Scratch.growable) f =
   let need = 4 * (f.iterations + 1) in
-  let g = w.fractal_stack in
   if Array.length g.room < need then begin
-    let bigger = Array.make need 0. in
+    let bigger = Scratch.big_floats need in
     Array.blit g.room 0 bigger 0 (Array.length g.room);
     g.room <- bigger
   end;
   g.room
+
+let stack (w : Scratch.t) f = room w.fractal_stack f
+
+(* The stack of [inside] and [normal], which have no worker's scratch: one for the process, grown
+   to the most iterations seen, as POV-Ray keeps one per thread (Allocate_Iteration_Stack). A
+   stack made for every call would be 4 × max_iteration floats each time: 96 MB for 3,000,000
+   iterations, which the renderer's relaxed collector would not free before the address space ran
+   out. Neither function calls the other while it iterates. *)
+let spare : Scratch.growable = { room = [||] }
 
 let[@inline] slice_w f x y z = (f.slice_dist -. (f.s0 *. x) -. (f.s1 *. y) -. (f.s2 *. z)) /. f.s3
 
@@ -470,7 +479,7 @@ let inside_with st f p =
 
 let inside stack f p =
   let need = 4 * (f.iterations + 1) in
-  inside_with (if Array.length stack >= need then stack else Array.make need 0.) f p
+  inside_with (if Array.length stack >= need then stack else room spare f) f p
 
 let normal_with st f p =
   let q = local f p in
@@ -479,9 +488,7 @@ let normal_with st f p =
   let n = match f.trans with None -> n | Some m -> Transform.normal m n in
   Transform.normalize n
 
-let normal f p =
-  let st = Array.make (4 * (f.iterations + 1)) 0. in
-  normal_with st f p
+let normal f p = normal_with (room spare f) f p
 
 let hit_normal (w : Scratch.t) f p = match Scratch.reported_normal w p with Some n -> n | None -> normal f p
 

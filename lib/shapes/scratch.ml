@@ -3,6 +3,16 @@
 type slab = { mutable t_near : float; mutable t_far : float }
 type growable = { mutable room : float array }
 
+(* The heap grows by the block asked for plus space_overhead percent of it (expand_heap in the
+   runtime's memory.c): that margin is set to its least for the allocation. *)
+let big_floats n =
+  let gc = Gc.get () in
+  if gc.space_overhead <= 200 then Array.make n 0.
+  else begin
+    Gc.set { gc with space_overhead = 1 };
+    Fun.protect ~finally:(fun () -> Gc.set gc) (fun () -> Array.make n 0.)
+  end
+
 type blob_room = {
   mutable bounds : float array;
   mutable marks : int array;

@@ -79,7 +79,7 @@ is named; bytes that are not UTF-8 are shown as '?' in the source line.
 
   $ sh run.sh random_bytes.pov
   random_bytes.pov:1:1: error: unexpected character byte 0xA1
-      1 | ?B??9{???J??2????UTˬ??????'?ف???00NK?????-?d*b?t?>?=?????:?;??qL???A{c???`????f???????ð????????Tv??<5????????^?g??@09Yoɒ??Ϟ???(???????{)dzT????????\-?՞J?l??xW?u…
+      1 | ?B??9{???J??2????UTˬ??????'?ف???00NK?????-?d*b?t?>?=?????:?;??qL???A{c???`????f???????ð????????Tv??<5????????^?g??@09Yoɒ??Ϟ???(???????{)dzT????????\-?՞J?l??xW?u?0?Tēl??:?
         | ^
   [exit 1, no image]
 
@@ -410,3 +410,31 @@ floating-point exception), never a crash; a call with the wrong number of parame
 Every scene in this directory and in fuzz/ has its case above:
 
   $ for f in *.pov fuzz/*.pov; do grep -q "run.sh $f" bad.t 2>/dev/null || grep -q "> $f" bad.t 2>/dev/null || echo "no case for $f"; done
+
+Issue 34, messages: an array subscript that is not a number or is infinite is out of range (it read
+element 0 before; POV-Ray casts it to INT_MIN and says "Negative subscript"):
+
+  $ sh run.sh array_index_nan.pov
+  array_index_nan.pov:7:15: error: array subscript nan is out of range 0 … 2
+      7 | sphere { 0, A[N] }
+        |               ^
+  [exit 1, no image]
+  $ sh run.sh array_index_inf.pov
+  array_index_inf.pov:6:15: error: array subscript inf is out of range 0 … 2
+      6 | sphere { 0, A[1e400] }
+        |               ^
+  [exit 1, no image]
+
+Lines end as POV-Ray counts them: CR alone (old Mac files) and LF CR are line ends as CR LF and LF
+are, a `//` comment ends at each, and the error is at the line and column POV-Ray gives (line 5):
+
+  $ sh run.sh cr_line_ends.pov
+  cr_line_ends.pov:5:15: error: expected an object modifier or '}' closing 'sphere' but found 'pigmnt'; did you mean 'pigment'?
+      5 | sphere { 0, 1 pigmnt { rgb 1 } }
+        |               ^
+  [exit 1, no image]
+  $ sh run.sh lfcr_line_ends.pov
+  lfcr_line_ends.pov:5:15: error: expected an object modifier or '}' closing 'sphere' but found 'pigmnt'; did you mean 'pigment'?
+      5 | sphere { 0, 1 pigmnt { rgb 1 } }
+        |               ^
+  [exit 1, no image]

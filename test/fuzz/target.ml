@@ -16,6 +16,8 @@ let limits =
     objects = 10_000;
     nesting = 2_000;
     memory_mb = 128;
+    function_steps = 10_000_000;
+    string_mb = 64;
   }
 
 type outcome = Scene of int | Refused of Error.t | Bug of string

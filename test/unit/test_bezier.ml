@@ -108,6 +108,39 @@ let test_sampling () =
   done;
   Alcotest.(check bool) "outside the box" true (first_hit b (v 3. 5. 0.) (v 0. (-1.) 0.) = None)
 
+(* A type 1 patch whose tree could have more than 2^16 leaves is subdivided for every ray (POV-Ray's
+   tree for u_steps 12 v_steps 12 takes 3.7 GB); the subdivision crosses the same subpatches in the
+   same order as the tree, so the depths, normals and uv are the tree's to the bit. *)
+let test_big_tree () =
+  let big = parse ("bicubic_patch { type 1 u_steps 12 v_steps 12 " ^ points ^ " }") in
+  Alcotest.(check bool) "u_steps 12 v_steps 12: no tree" true (big.tree = None);
+  Alcotest.(check bool) "u_steps 8 v_steps 8: a tree" true ((parse ("bicubic_patch { type 1 u_steps 8 v_steps 8 " ^ points ^ " }")).tree <> None);
+  let tree = parse ("bicubic_patch { type 1 u_steps 5 v_steps 4 " ^ points ^ " }") in
+  let walked = { tree with tree = None } in
+  let w = Scratch.create ~robust:false (Stats.create ()) in
+  let at b o d =
+    let t = Bezier.depth w b o d 0. in
+    if t = infinity then None
+    else
+      let p = Vec.madd o t d in
+      Some (t, Bezier.hit_normal w p, Bezier.uv w p)
+  in
+  let hits = ref 0 in
+  for i = 0 to 20 do
+    for j = 0 to 20 do
+      let o = v ((float_of_int i /. 10.) -. 1.) 5. ((float_of_int j /. 10.) -. 1.) and d = Vec.normalize (v 0.1 (-1.) 0.05) in
+      match (at tree o d, at walked o d) with
+      | None, None -> ()
+      | Some (t1, n1, uv1), Some (t2, n2, uv2) ->
+          incr hits;
+          float_eq ~eps:0. "depth" t1 t2;
+          vec_eq ~eps:0. "normal" n1 n2;
+          vec_eq ~eps:0. "uv" uv1 uv2
+      | _ -> Alcotest.failf "ray %d, %d: the tree and the subdivision disagree on a hit" i j
+    done
+  done;
+  Alcotest.(check bool) "most rays hit" true (!hits > 300)
+
 let test_no_inside () =
   let c = compile (v37 ^ "bicubic_patch { type 1 flatness 0.05 u_steps 3 v_steps 3 " ^ points ^ " }") in
   let o = c.objects.(0) in
@@ -132,4 +165,5 @@ let tests =
     Alcotest.test_case "trace() points and normals" `Quick test_trace;
     Alcotest.test_case "crossings by sampling" `Quick test_sampling;
     Alcotest.test_case "no inside" `Quick test_no_inside;
+    Alcotest.test_case "type 1 too big for a tree: the same crossings" `Quick test_big_tree;
   ]

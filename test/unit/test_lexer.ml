@@ -123,6 +123,20 @@ let test_crlf () =
   (* a at 1:1, b at 2:1, c at 3:3; end of file is placed just after the last visible character, 3:4 *)
   check_locs "CRLF line numbers" [ (1, 1); (2, 1); (3, 3); (3, 4) ] "a\r\nb\r\n  c\r\n"
 
+(* POV-Ray's text stream (ITextStream::getchar) ends a line at CR LF, LF CR, a lone CR and a lone LF *)
+let test_line_ends () =
+  check_locs "CR alone" [ (1, 1); (2, 1); (3, 3); (3, 4) ] "a\rb\r  c\r";
+  check_locs "LF CR is one line end" [ (1, 1); (2, 1); (3, 3); (3, 4) ] "a\n\rb\n\r  c\n\r";
+  check_locs "CR CR is two" [ (1, 1); (3, 1); (3, 2) ] "a\r\rb";
+  check_locs "mixed" [ (1, 1); (2, 1); (3, 1); (4, 1); (4, 2) ] "a\rb\r\nc\nd";
+  check_kinds "a line comment ends at a CR" [ Ident "a"; Ident "b"; Eof ] "a // comment\rb";
+  Alcotest.(check string) "normalise" "a\nb\nc\nd\n\ne" (Line_ends.normalise "a\rb\r\nc\n\rd\r\re");
+  let text = "one\rtwo\rthree x" in
+  let e = Error.limit_error { Loc.file = "t.pov"; line = 3; col = 7 } "here" in
+  let shown = Error.render ~source:(fun _ -> Some text) ~kind:"error" e in
+  check_contains "the error shows line 3 alone" ~sub:"3 | three x\n" shown;
+  if contains ~sub:"two" shown then Alcotest.failf "line 3 shown with line 2: %S" shown
+
 let test_locations () =
   let text = "camera {\n  location <0, 1, -3>\n}\n" in
   (* camera 1:1, { 1:8, location 2:3, < 2:12, 0 2:13, ',' 2:14, 1 2:16, ',' 2:17, - 2:19, 3 2:20,
@@ -210,6 +224,7 @@ let tests =
     Alcotest.test_case "operators" `Quick test_operators;
     Alcotest.test_case "UTF-8 BOM" `Quick test_bom;
     Alcotest.test_case "CRLF" `Quick test_crlf;
+    Alcotest.test_case "CR, LF CR: POV-Ray's line ends" `Quick test_line_ends;
     Alcotest.test_case "locations" `Quick test_locations;
     Alcotest.test_case "errors" `Quick test_errors;
     Alcotest.test_case "mesh fast path (scan_vector3)" `Quick test_scan_vector3;

@@ -31,6 +31,7 @@ let () =
       ("Prism, lathe, sor", Test_spline.tests);
       ("Spline values (spline { })", Test_spline_values.tests);
       ("Julia fractal", Test_julia.tests);
+      ("Fn_budget", Test_fn_budget.tests);
       ("Isosurface", Test_isosurface.tests);
       ("Bicubic patch", Test_bezier.tests);
       ("Parametric surface", Test_parametric.tests);
