@@ -42,6 +42,14 @@ let guard run =
       Interrupt.disarm ();
       match Interrupt.received () with
       | Some s -> interrupted s
-      | None ->
-          Printf.eprintf "povml: internal error: %s (please report it)\n%!" (Printexc.to_string e);
-          internal_error)
+      | None -> (
+          match e with
+          | Out_of_memory ->
+              (* what the interpreter's memory limit does not see: the render, the image *)
+              Printf.eprintf
+                "povml: error: the render needs more memory than the system gives this process (ulimit -v); \
+                 no image was written (a smaller image, +W and +H, needs less)\n%!";
+              scene_error Limit
+          | e ->
+              Printf.eprintf "povml: internal error: %s (please report it)\n%!" (Printexc.to_string e);
+              internal_error))
