@@ -2,7 +2,7 @@
 # make bench: povml against POV-Ray 3.7 on the benchmark scenes, same switches, both with the same
 # thread count, several runs each, one program after the other. Prints a Markdown table of median
 # times (parse, build = bounding, render, total wall) and peak memory, with the povml/POV-Ray
-# ratio, then the render-time series of the sphere fields (1k, 10k, 100k spheres at one image size).
+# ratio, then the render-time series of the sphere fields (1k, 10k, 100k and 1M spheres at one image size).
 #
 # The large scenes are generated into scenes/bench/generated/ by the generators in
 # scenes/bench/gen/ (a 1,000,000-triangle mesh2 terrain, a 100,000-smooth-triangle mesh, sphere
@@ -27,7 +27,7 @@ tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 
 [ -f "$OUT/terrain.pov" ] || "$GEN/gen_terrain.exe" "$OUT/terrain.pov"
 [ -f "$OUT/smooth.pov" ] || "$GEN/gen_smooth.exe" "$OUT/smooth.pov"
-for n in 1000 10000 100000; do [ -f "$OUT/spheres_$n.pov" ] || "$GEN/gen_spheres.exe" "$OUT/spheres_$n.pov" "$n"; done
+for n in 1000 10000 100000 1000000; do [ -f "$OUT/spheres_$n.pov" ] || "$GEN/gen_spheres.exe" "$OUT/spheres_$n.pov" "$n"; done
 [ -f "$OUT/shapes_2000.pov" ] || "$GEN/gen_shapes.exe" "$OUT/shapes_2000.pov" 2000
 [ -f "$OUT/hfield_1024.png" ] || bash scenes/bench/gen_hfield.sh "$OUT/hfield_1024.png"
 
@@ -39,6 +39,7 @@ CASES=(
   "$OUT/spheres_1000.pov|+W640 +H480 -A"
   "$OUT/spheres_10000.pov|+W640 +H480 -A"
   "$OUT/spheres_100000.pov|+W640 +H480 -A"
+  "$OUT/spheres_1000000.pov|+W640 +H480 -A"
   "scenes/bench/while_spheres.pov|+W640 +H480 -A"
   "$OUT/shapes_2000.pov|+W640 +H480 -A"
   "$OUT/shapes_2000.pov|+W640 +H480 +A0.3"
