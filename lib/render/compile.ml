@@ -90,8 +90,9 @@ let coloured ~legacy ~ambient_light (f : Scene.finish) base (c : Colour.t) =
     transparent = c.filter <> 0. || c.transmit <> 0.;
   }
 
-let surface ~legacy ~noise ~ambient_light (t : Scene.layer) =
-  let f0 = t.finish in
+(* What a surface takes from its layer's finish and normal (the finish in single precision, and
+   the surface without its colour), given whether its pigment or normal reads UV coordinates. *)
+let finished ((f0 : Scene.finish), (normal : Scene.normal option), needs_uv) =
   (* finish scalars are single precision too *)
   let f =
     {
@@ -107,7 +108,6 @@ let surface ~legacy ~noise ~ambient_light (t : Scene.layer) =
       metallic = f32 f0.metallic;
     }
   in
-  let ambient_light = rgb32 ambient_light in
   let r = f.reflection in
   let base =
     {
@@ -133,11 +133,17 @@ let surface ~legacy ~noise ~ambient_light (t : Scene.layer) =
       crand = f32 f.crand;
       paint = Fixed;
       (* the normal, if any, is perturbed at each hit; without one the tracer never looks *)
-      bump = (match t.normal with None -> Smooth | Some nm -> Bumpy nm);
-      (* UV coordinates are computed only for a surface that reads them *)
-      needs_uv = Pigment.uses_uv t.pigment || (match t.normal with None -> false | Some nm -> Pigment.normal_uses_uv nm);
+      bump = (match normal with None -> Smooth | Some nm -> Bumpy nm);
+      needs_uv;
     }
   in
+  (f, base)
+
+let surface_with ~finished ~legacy ~noise ~ambient_light (t : Scene.layer) =
+  (* UV coordinates are computed only for a surface that reads them *)
+  let needs_uv = Pigment.uses_uv t.pigment || (match t.normal with None -> false | Some nm -> Pigment.normal_uses_uv nm) in
+  let f, base = finished (t.finish, t.normal, needs_uv) in
+  let ambient_light = rgb32 ambient_light in
   match t.pigment with
   | Solid c | Solid_placed { colour = c; _ } -> coloured ~legacy ~ambient_light f base (colour32 c)
   | Pattern p ->
@@ -146,6 +152,8 @@ let surface ~legacy ~noise ~ambient_light (t : Scene.layer) =
       (* shading takes the surface at the point; [transparent] here says whether any colour of the
          pattern lets light through, which the shadow cache asks of a CSG's own texture *)
       { base with paint = Varying at; transparent = not (Pigment.opaque t.pigment) }
+
+let surface = surface_with ~finished
 
 (* An object stops a shadow ray at once when none of its pigments lets light through (§4, §17.8). *)
 let pigment_opaque (p : Scene.pigment) =
@@ -168,34 +176,35 @@ let top_finish (t : Scene.texture) = match t with Layers (l :: _) -> Some l.fini
 
 (* Objects whose layers are the same share one compiled surface: a declared texture, and the
    layers written out alike for every object of an export (a million spheres each with its own
-   [pigment { rgb 1 }]), which would otherwise cost a compiled surface each. A surface is a pure
-   function of its layer, so equal layers compile to equal surfaces. Layers are the same when
-   physically equal or equal in structure; a layer holding a function closure is equal only to
-   itself. Each hash keeps the few layers met last, so a lookup costs a bounded number of
-   comparisons however many objects there are; a layer that has dropped out is compiled again. *)
-module Layer_memo : sig
-  type 'a t
+   [pigment { rgb 1 }]), which would otherwise cost a compiled surface each; and surfaces whose
+   finish and normal are the same share the parts that come from them. What is compiled is a pure
+   function of what it is compiled from, so equal inputs give equal results. Inputs are the same
+   when physically equal or equal in structure; one holding a function closure is equal only to
+   itself. Each hash keeps the few inputs met last, so a lookup costs a bounded number of
+   comparisons however many objects there are; an input that has dropped out is compiled again. *)
+module Same_memo : sig
+  type ('k, 'v) t
 
-  val create : unit -> 'a t
+  val create : unit -> ('k, 'v) t
   (** [create ()] is an empty memo. *)
 
-  val find_or_add : 'a t -> Scene.layer -> (Scene.layer -> 'a) -> 'a
-  (** [find_or_add memo l make] is the value kept for a layer the same as [l], or [make l], kept. *)
+  val find_or_add : ('k, 'v) t -> 'k -> ('k -> 'v) -> 'v
+  (** [find_or_add memo k make] is the value kept for an input the same as [k], or [make k], kept. *)
 end = struct
-  type 'a t = (int, (Scene.layer * 'a) list) Hashtbl.t
+  type ('k, 'v) t = (int, ('k * 'v) list) Hashtbl.t
 
   let kept = 8
   let create () = Hashtbl.create 64
   let same a b = a == b || match compare a b with 0 -> true | _ -> false | exception Invalid_argument _ -> false
 
-  let find_or_add memo l make =
-    let h = Hashtbl.hash l in
+  let find_or_add memo k make =
+    let h = Hashtbl.hash k in
     let bucket = Option.value (Hashtbl.find_opt memo h) ~default:[] in
-    match List.find_opt (fun (k, _) -> same k l) bucket with
+    match List.find_opt (fun (k', _) -> same k' k) bucket with
     | Some (_, v) -> v
     | None ->
-        let v = make l in
-        Hashtbl.replace memo h ((l, v) :: List.filteri (fun i _ -> i < kept - 1) bucket);
+        let v = make k in
+        Hashtbl.replace memo h ((k, v) :: List.filteri (fun i _ -> i < kept - 1) bucket);
         v
 end
 
@@ -217,13 +226,13 @@ let pov_bounding_threshold = 1
 
 let scene ?(bounding_threshold = pov_bounding_threshold) (s : Scene.t) : Compiled.t =
   let legacy = s.version < 370 in
-  let memo = Layer_memo.create () in
+  let memo = Same_memo.create () and bases = Same_memo.create () in
   let noise = s.noise_generator in
   let uses_crand = ref false in
   let surface_of (l : Scene.layer) =
-    Layer_memo.find_or_add memo l (fun l ->
+    Same_memo.find_or_add memo l (fun l ->
         if l.finish.crand > 0. then uses_crand := true;
-        surface ~legacy ~noise ~ambient_light:s.ambient_light l)
+        surface_with ~legacy ~noise ~ambient_light:s.ambient_light ~finished:(fun k -> Same_memo.find_or_add bases k finished) l)
   in
   let rec texture_of (t : Scene.texture) : texture =
     match t with

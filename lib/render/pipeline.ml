@@ -14,20 +14,22 @@ type result = {
 
 (* DispatchShutdownMessages: POV-Ray's word on the max_gradient of each top-level isosurface that
    is not a copy, at its function *)
-let shutdown_warnings (scene : Scene.t) (stats : Stats.t) =
-  let iso =
-    List.filter_map
-      (fun (o : Scene.obj) ->
-        match o.shape with
-        | Isosurface s when not s.copy -> Option.map (Error.warning s.fn.floc) (Isosurface.warning s stats)
-        | _ -> None)
-      scene.objects
-  in
+type watched = { isosurfaces : Isosurface.t list; first_parametric : Parametric.t option }
+
+(* what the warnings after the render look at, kept so that the scene's objects need not be *)
+let watched (scene : Scene.t) =
+  {
+    isosurfaces = List.filter_map (fun (o : Scene.obj) -> match o.shape with Isosurface s when not s.copy -> Some s | _ -> None) scene.objects;
+    first_parametric = List.find_map (fun (o : Scene.obj) -> match o.shape with Parametric p -> Some p | _ -> None) scene.objects;
+  }
+
+let shutdown_warnings (w : watched) (stats : Stats.t) =
+  let iso = List.filter_map (fun (s : Isosurface.t) -> Option.map (Error.warning s.fn.floc) (Isosurface.warning s stats)) w.isosurfaces in
   (* povml's own limit on a parametric surface's search, said once, at the first one *)
   let cut =
     if stats.parametric_cut = 0 then []
     else
-      match List.find_map (fun (o : Scene.obj) -> match o.shape with Parametric p -> Some p | _ -> None) scene.objects with
+      match w.first_parametric with
       | None -> []
       | Some p ->
           [ Error.warning p.fx.floc
@@ -52,6 +54,9 @@ let recentred (scene : Scene.t) =
     let t = Vec.make (snap c.location.x) (snap c.location.y) (snap c.location.z) in
     if t.x = 0. && t.y = 0. && t.z = 0. then scene else Place.scene ~scale:1. ~translate:(Vec.neg t) scene
 
+(* 512 MB *)
+let large_heap = 64 * 1024 * 1024
+
 let run ?interp ?move ?bounding_threshold (opts : Render.options) path =
   let t0 = Unix.gettimeofday () in
   let iopts = match interp with Some i -> i | None -> Interp.default_options ~width:opts.width ~height:opts.height in
@@ -62,9 +67,15 @@ let run ?interp ?move ?bounding_threshold (opts : Render.options) path =
   let scene = if opts.robust then recentred scene else scene in
   let t1 = Unix.gettimeofday () in
   let compiled = Compile.scene ?bounding_threshold scene in
+  (* the compiled scene is all the render needs: the scene's objects are let go, and a large heap
+     is compacted before worker processes are forked from it, so that a scene of a million objects
+     renders in the memory it needs once, not twice *)
+  let watched = watched scene in
+  let scene = { scene with objects = [] } in
+  if (Gc.quick_stat ()).heap_words > large_heap then Gc.compact ();
   let t2 = Unix.gettimeofday () in
   let img, stats = Render.render opts compiled scene.gamma in
   let image = Encode.image scene.gamma img in
   let t3 = Unix.gettimeofday () in
-  let warnings = warnings @ shutdown_warnings scene stats in
+  let warnings = warnings @ shutdown_warnings watched stats in
   { image; raw = img; stats; warnings; scene; includes = List.rev !includes; parse_seconds = t1 -. t0; build_seconds = t2 -. t1; render_seconds = t3 -. t2 }

@@ -5,7 +5,7 @@ type result = {
   raw : Image.t;  (** the float image the tracer produced, before encoding *)
   stats : Stats.t;
   warnings : Error.t list;
-  scene : Scene.t;
+  scene : Scene.t;  (** the scene read, its settings without its objects (let go once compiled) *)
   includes : (string * float) list;  (** the files the scene included, with the seconds each took *)
   parse_seconds : float;  (** reading the scene, meshes and their hierarchies included *)
   build_seconds : float;  (** the compile step: the scene's hierarchy, the surfaces *)

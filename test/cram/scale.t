@@ -3,17 +3,25 @@ allows, render within 2 GiB of address space (ulimit -v), or stop with a clean a
 overflow, no unbounded memory, no internal error.
 
   $ run() { (ulimit -v 2097152; exec timeout 120 povml "$@" -D) 2>err.txt >/dev/null; s=$?; grep -E "error|Wrote" err.txt; echo "[exit $s]"; }
-  $ field() { awk -v n=$1 'BEGIN { print "#version 3.7; global_settings { assumed_gamma 1 }";
+  $ field() { awk -v n=$1 -v c=$2 'BEGIN { print "#version 3.7; global_settings { assumed_gamma 1 }";
   >   print "camera { location <0, 0, -30> look_at 0 } light_source { <10, 20, -30>, rgb 1 }";
-  >   for (i = 0; i < n; i++) printf "sphere { <%.3f, %.3f, %.3f>, 0.02 pigment { rgb 1 } }\n",
-  >     (i % 100) / 5 - 10, (int(i / 100) % 100) / 5 - 10, int(i / 10000) / 5 - 10 }'; }
+  >   for (i = 0; i < n; i++) printf "sphere { <%.3f, %.3f, %.3f>, 0.02 pigment { rgb <%.3f, %.3f, 1> } }\n",
+  >     (i % 100) / 5 - 10, (int(i / 100) % 100) / 5 - 10, int(i / 10000) / 5 - 10, (i % c) / c, int(i / c) % c / c }'; }
 
-A million spheres, each with its own pigment (the list of objects once overflowed the stack at
-about 250,000, and equal pigments compiled one by one cost a quadratic search):
+A million spheres, each with a pigment of its own, in 256 colours (the list of objects once
+overflowed the stack at about 250,000, and equal pigments compiled one by one cost a quadratic
+search):
 
-  $ field 1000000 > million.pov
+  $ field 1000000 16 > million.pov
   $ run million.pov +W80 +H60 +Omillion.png
   Wrote million.png (80x60)
+  [exit 0]
+
+300,000 spheres each of a colour of its own (surfaces share what they take from an equal finish):
+
+  $ field 300000 1000 > colours.pov
+  $ run colours.pov +W80 +H60 +Ocolours.png
+  Wrote colours.png (80x60)
   [exit 0]
 
 A declared union of 300,000 spheres placed with object {}:
