@@ -32,9 +32,9 @@ exception Bad of string
 
 let bad fmt = Printf.ksprintf (fun s -> raise (Bad s)) fmt
 
-exception Over_limit of string
+exception Over_limit of { msg : string; option : string }
 
-let over_limit fmt = Printf.ksprintf (fun s -> raise (Over_limit s)) fmt
+let over_limit option fmt = Printf.ksprintf (fun msg -> raise (Over_limit { msg; option })) fmt
 
 let mul a b = if a = 0 || b = 0 then 0 else if a > max_int / b then max_int else a * b
 
@@ -47,11 +47,11 @@ let check_size o ~format ~width ~height ~samples =
   if width < 0 || height < 0 then bad "the %s's size %d×%d is negative" format width height;
   let pixels = mul width height in
   if pixels > o.max_pixels then
-    over_limit "the %s's size %d×%d is above the %s-pixel limit (raise it with --max-pixels N)" format width height (commas o.max_pixels);
+    over_limit "--max-pixels N" "the %s's size %d×%d is above povml's limit of %s pixels" format width height (commas o.max_pixels);
   (* each sample is one OCaml int, 8 bytes; a colour-mapped image ([samples] 0) has a byte per pixel *)
   let mib = (if samples = 0 then pixels else mul (mul pixels samples) 8) / 1048576 in
   if mib >= o.max_memory_mb then
-    over_limit "the %s's %d×%d pixels need %s MiB once decoded, more than povml's memory limit of %s MiB (raise it with --max-memory MIB)" format width
+    over_limit "--max-memory MIB" "the %s's %d×%d pixels need %s MiB once decoded, more than povml's memory limit of %s MiB" format width
       height (commas mib) (commas o.max_memory_mb)
 
 let check_data ~format ~width ~height ~have ~need_per_pixel =

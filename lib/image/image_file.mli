@@ -80,12 +80,9 @@ exception Bad of string
 val bad : ('a, unit, string, 'b) format4 -> 'a
 (** [bad fmt …] raises {!Bad} with the message. *)
 
-exception Over_limit of string
-(** A well-formed file declaring more than the caps of {!options} allow, with the reason and the
-    option that raises the cap. *)
-
-val over_limit : ('a, unit, string, 'b) format4 -> 'a
-(** [over_limit fmt …] raises {!Over_limit} with the message. *)
+exception Over_limit of { msg : string; option : string }
+(** A well-formed file declaring more than the caps of {!options} allow: the reason, and the
+    command-line option that raises the cap ("--max-pixels N"). *)
 
 val mul : int -> int -> int
 (** [mul a b] is [a × b] for non-negative [a] and [b], or [max_int] when the product overflows:

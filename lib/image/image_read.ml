@@ -1,7 +1,7 @@
 (* Reading an image file of any format povml reads: the format's reader, JPEG through camlimages. *)
 open Image_file
 
-type failure = Unreadable of string | Over_limit of string
+type failure = Unreadable of string | Over_limit of { msg : string; option : string }
 
 (* the file's bytes, refused when the file alone is larger than the memory limit *)
 let file_contents (o : options) path =
@@ -9,11 +9,11 @@ let file_contents (o : options) path =
   Fun.protect ~finally:(fun () -> close_in_noerr ic) (fun () ->
       let len = in_channel_length ic in
       if len / 1048576 >= o.max_memory_mb then
-        over_limit "the file is %s MiB, more than povml's memory limit of %s MiB (raise it with --max-memory MIB)" (commas (len / 1048576))
-          (commas o.max_memory_mb);
+        raise (Image_file.Over_limit { option = "--max-memory MIB"; msg = Printf.sprintf "the file is %s MiB, more than povml's memory limit of %s MiB (raise it with --max-memory MIB)" (commas (len / 1048576))
+          (commas o.max_memory_mb) });
       really_input_string ic len)
 
-let message = function Unreadable m | Over_limit m -> m
+let message = function Unreadable m | Over_limit { msg = m; _ } -> m
 
 (* JPEG (jpeg.cpp): libjpeg's 8-bit samples through camlimages, sRGB unless told otherwise *)
 
@@ -49,7 +49,7 @@ let capturing_stderr o f =
     Unix.close saved
   in
   let said () =
-    let text = try file_contents { o with max_memory_mb = max_int } tmp with Sys_error _ | Over_limit _ -> "" in
+    let text = try file_contents { o with max_memory_mb = max_int } tmp with Sys_error _ | Image_file.Over_limit _ -> "" in
     (try Sys.remove tmp with Sys_error _ -> ());
     text
   in
@@ -121,6 +121,6 @@ let read fmt o path =
   let contents () = file_contents o path in
   try Ok (decode fmt o ~contents ~path) with
   | Bad m -> Error (Unreadable m)
-  | Image_file.Over_limit m -> Error (Over_limit m)
+  | Image_file.Over_limit { msg; option } -> Error (Over_limit { msg; option })
   | Sys_error m -> Error (Unreadable m)
-  | Out_of_memory -> Error (Over_limit "decoding it needs more memory than there is (lower the image's size or raise ulimit -v)")
+  | Out_of_memory -> Error (Over_limit { msg = "decoding it needs more memory than the process may use"; option = "ulimit -v" })

@@ -4,7 +4,8 @@
 (** Why a file was not read. *)
 type failure =
   | Unreadable of string  (** unreadable, malformed, or a format or variant povml does not read yet *)
-  | Over_limit of string  (** well-formed but larger than the caps of {!Image_file.options} allow *)
+  | Over_limit of { msg : string; option : string }
+      (** well-formed but larger than the caps of {!Image_file.options} allow; [option] raises the cap *)
 
 val message : failure -> string
 (** [message f] is the reason, a sentence about the file. *)

@@ -116,7 +116,7 @@ let rec load_file ?(hf = false) st block =
   match Image_read.read fmt options path with
   | Ok img -> (img, name)
   | Error (Unreadable msg) -> Error.raise_at file_loc "cannot read the image file \"%s\": %s" name msg
-  | Error (Over_limit msg) -> Error.limit_at file_loc "cannot read the image file \"%s\": %s" name msg
+  | Error (Over_limit { msg; option }) -> Error.limit_at file_loc "cannot read the image file \"%s\": %s (raise it with %s)" name msg option
 
 (* function W, H { … } (Make_Pattern_Image): an image of W × H pixels made by a float function (a
    16-bit grey image) or a pigment function (a 16-bit RGBA image, not premultiplied) over the unit
