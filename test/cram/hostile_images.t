@@ -61,7 +61,7 @@ PPM: a width × height × 3 that overflows segfaulted a render; sizes are checke
 the file's length before anything is allocated.
 
   $ mk ppm-overflow a.ppm && run ppm a.ppm
-  s.pov:4:36: error: cannot read the image file "a.ppm": the PPM's size 3037000500×3037000500 is above povml's limit of 67,108,864 pixels (raise it with --max-pixels N)
+  s.pov:4:36: error: cannot read the image file "a.ppm": the PPM's size 2305843009213693952×4 is above povml's limit of 67,108,864 pixels (raise it with --max-pixels N)
       4 | plane { z, 0 pigment { image_map { ppm "a.ppm" } } }
         |                                    ^
   [exit 3, no image]
