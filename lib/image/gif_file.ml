@@ -28,7 +28,12 @@ let lzw_decode s start min_size out =
   let suffix = Array.make (max_codes + 1) 0 and prefix = Array.make (max_codes + 1) 0 in
   (* the decoded string of one code, pushed last character first *)
   let stack = Array.make (max_codes + 2) 0 and sp = ref 0 in
-  let push c = stack.(!sp) <- c; incr sp in
+  (* a damaged file can make the prefixes a loop (gifdecod.cpp then writes past its dstack) *)
+  let push c =
+    if !sp >= Array.length stack then bad "the GIF's LZW data is damaged: a code stands for more than %d pixels" (Array.length stack);
+    stack.(!sp) <- c;
+    incr sp
+  in
   let n = Bytes.length out in
   let written = ref 0 in
   let put c =

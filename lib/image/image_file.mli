@@ -84,6 +84,9 @@ exception Over_limit of { msg : string; option : string }
 (** A well-formed file declaring more than the caps of {!options} allow: the reason, and the
     command-line option that raises the cap ("--max-pixels N"). *)
 
+val over_limit : string -> ('a, unit, string, 'b) format4 -> 'a
+(** [over_limit option fmt …] raises {!Over_limit} with the message and [option]. *)
+
 val mul : int -> int -> int
 (** [mul a b] is [a × b] for non-negative [a] and [b], or [max_int] when the product overflows:
     sizes declared by a file are multiplied with it, so that a product is never wrapped round to

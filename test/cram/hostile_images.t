@@ -144,15 +144,31 @@ Targa: sizes against the cap and the file's length.
         |                                    ^
   [exit 1, no image]
 
-JPEG: libjpeg's own lines ("Premature end of JPEG file") no longer come before the located error;
-a file that ends early is refused, as POV-Ray refuses it; a declared size above the cap is refused
+JPEG, through povml's own libjpeg binding (lib/jpeg_stubs.c) rather than camlimages': libjpeg's
+own lines ("Premature end of JPEG file") no longer come before the located error; a file that
+ends early is refused, as POV-Ray refuses it; a damaged Huffman table, which made camlimages'
+binding segfault, is libjpeg's message, as in POV-Ray; a declared size above the cap is refused
 before libjpeg allocates it.
 
   $ mk jpeg-truncated a.jpg && run jpeg a.jpg
-  s.pov:4:36: error: cannot read the image file "a.jpg": the JPEG is damaged: Premature end of JPEG file
+  s.pov:4:36: error: cannot read the image file "a.jpg": Premature end of JPEG file
       4 | plane { z, 0 pigment { image_map { jpeg "a.jpg" } } }
         |                                    ^
   [exit 1, no image]
+  $ mk jpeg-bogus-huffman a.jpg && run jpeg a.jpg
+  s.pov:4:36: error: cannot read the image file "a.jpg": Bogus Huffman table definition
+      4 | plane { z, 0 pigment { image_map { jpeg "a.jpg" } } }
+        |                                    ^
+  [exit 1, no image]
+
+hostile_segv.jpg is one of the 240 in 1,500 mutated JPEGs of the decoder fuzz run
+(test/fuzz/test_fuzz_images.ml) that segfaulted povml through camlimages; POV-Ray says the same:
+
+  $ run jpeg hostile_segv.jpg
+  s.pov:4:36: error: reading "hostile_segv.jpg" is not allowed: it is outside the scene's directory, the working directory and the library paths (allow it with --allow-read DIR)
+      4 | plane { z, 0 pigment { image_map { jpeg "hostile_segv.jpg" } } }
+        |                                    ^
+  [exit 4, no image]
   $ mk jpeg-65500x65500 a.jpg && run jpeg a.jpg
   s.pov:4:36: error: cannot read the image file "a.jpg": the JPEG's size 65500×65500 is above povml's limit of 67,108,864 pixels (raise it with --max-pixels N)
       4 | plane { z, 0 pigment { image_map { jpeg "a.jpg" } } }

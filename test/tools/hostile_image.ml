@@ -142,6 +142,14 @@ let make = function
       let i = sof 2 in
       Bytes.blit_string "\xff\xdc\xff\xdc" 0 s (i + 5) 4;
       Bytes.to_string s
+  | "jpeg-bogus-huffman" ->
+      (* a Huffman table whose code counts add up to more than 256: camlimages' binding jumped
+         back into a C frame that had returned (a segmentation fault) *)
+      let s = Bytes.of_string (jpeg ()) in
+      let rec dht i = if Bytes.get s i = '\xff' && Bytes.get s (i + 1) = '\xc4' then i else dht (i + 1) in
+      let i = dht 2 in
+      Bytes.fill s (i + 5) 16 '\xff';
+      Bytes.to_string s
   | k -> failwith ("unknown kind " ^ k)
 
 let () =
