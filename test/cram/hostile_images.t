@@ -164,11 +164,11 @@ before libjpeg allocates it.
 hostile_segv.jpg is one of the 240 in 1,500 mutated JPEGs of the decoder fuzz run
 (test/fuzz/test_fuzz_images.ml) that segfaulted povml through camlimages; POV-Ray says the same:
 
-  $ run jpeg hostile_segv.jpg
-  s.pov:4:36: error: reading "hostile_segv.jpg" is not allowed: it is outside the scene's directory, the working directory and the library paths (allow it with --allow-read DIR)
-      4 | plane { z, 0 pigment { image_map { jpeg "hostile_segv.jpg" } } }
+  $ cp hostile_segv.jpg b.jpg && run jpeg b.jpg
+  s.pov:4:36: error: cannot read the image file "b.jpg": Quantization table 0x01 was not defined
+      4 | plane { z, 0 pigment { image_map { jpeg "b.jpg" } } }
         |                                    ^
-  [exit 4, no image]
+  [exit 1, no image]
   $ mk jpeg-65500x65500 a.jpg && run jpeg a.jpg
   s.pov:4:36: error: cannot read the image file "a.jpg": the JPEG's size 65500×65500 is above povml's limit of 67,108,864 pixels (raise it with --max-pixels N)
       4 | plane { z, 0 pigment { image_map { jpeg "a.jpg" } } }
