@@ -89,7 +89,7 @@ exception Full
 
 let[@inline] room o n =
   if o.len + n > Bytes.length o.buf then begin
-    let b = Bytes.create (max (min (2 * Bytes.length o.buf) (o.limit + 65536)) (o.len + n)) in
+    let b = Bytes.create (max (min (2 * Bytes.length o.buf) (o.limit + min 65536 (max_int - o.limit))) (o.len + n)) in
     Bytes.blit o.buf 0 b 0 o.len;
     o.buf <- b
   end
@@ -175,7 +175,7 @@ let zlib ?(limit = max_int) s =
   if cmf land 0x0f <> 8 || ((cmf lsl 8) lor flg) mod 31 <> 0 then corrupt "not a deflate stream";
   if flg land 0x20 <> 0 then corrupt "a preset dictionary, which PNG does not allow";
   let b = { src = s; pos = 2; bit_buf = 0; bit_count = 0; over = 0 } in
-  let out = { buf = Bytes.create (min (max 64 (4 * String.length s)) (limit + 1)); len = 0; limit } in
+  let out = { buf = Bytes.create (max 1 (min (max 64 (4 * String.length s)) limit)); len = 0; limit } in
   let last = ref false in
   (try
   while (not !last) && out.len < limit do

@@ -66,5 +66,6 @@ let () =
       ("Interrupt", Test_interrupt.tests);
       ("Normals (perturbed normals)", Test_normals.tests);
       ("Images (image_map, image_pattern, bump_map)", Test_images.tests);
+      ("Decoders against hostile files", Test_decoders.tests);
       ("Superellipsoid, ovus, sphere_sweep", Test_superq.tests);
     ])
