@@ -160,6 +160,12 @@ let read_png (o : options) s =
   check_size o ~format:"PNG" ~width ~height ~samples:(2 * channels);
   (* decompression stops at the size the header promises: extra data is ignored, as libpng does *)
   let limit = inflated_size ~width ~height ~bits_pp:(depth * channels) ~interlaced in
+  (* deflate inflates at most 1,032 bytes from one (two-bit codes for a 258-byte copy), so the
+     compressed data bounds the image: libpng would run out of data ("Not enough image data") *)
+  let compressed = Buffer.length idat in
+  if limit / 1032 > compressed + 16 then
+    bad "the PNG's %s bytes of compressed data cannot hold its %d×%d pixels (%s bytes once inflated; deflate inflates at most 1,032 times)"
+      (commas compressed) width height (commas limit);
   let data = try Inflate.zlib ~limit (Buffer.contents idat) with Inflate.Corrupt m -> bad "%s" m in
   let samples = png_samples data ~width ~height ~depth ~channels ~interlaced in
   let n = width * height in

@@ -125,6 +125,15 @@ libpng refuses a critical chunk whose CRC does not match and an IHDR it does not
       4 | plane { z, 0 pigment { image_map { png "a.png" } } }
         |                                    ^
   [exit 3, no image]
+
+A size within the caps but far more than its compressed data can hold (deflate inflates at most
+1,032 times): refused before the samples are allocated, as libpng runs out of data.
+
+  $ mk png-8000x8000-tiny a.png && run png a.png --max-memory 100000
+  s.pov:4:36: error: cannot read the image file "a.png": the PNG's 111 bytes of compressed data cannot hold its 8000×8000 pixels (192,008,000 bytes once inflated; deflate inflates at most 1,032 times)
+      4 | plane { z, 0 pigment { image_map { png "a.png" } } }
+        |                                    ^
+  [exit 1, no image]
   $ mk png-no-plte a.png && run png a.png
   s.pov:4:36: error: cannot read the image file "a.png": the PNG has colour type 3 (a palette) but no PLTE chunk
       4 | plane { z, 0 pigment { image_map { png "a.png" } } }

@@ -130,6 +130,7 @@ let make = function
   | "png-bit-depth-3" -> png [ ihdr ~depth:3 1 1; chunk "IDAT" (stored "\000\255\000\000") ]
   | "png-rgb-depth-4" -> png [ ihdr ~depth:4 1 1; chunk "IDAT" (stored "\000\255\000\000") ]
   | "png-100000x100000" -> png [ ihdr 100_000 100_000; chunk "IDAT" (bomb 1000) ]
+  | "png-8000x8000-tiny" -> png [ ihdr 8000 8000; chunk "IDAT" (stored (String.make 100 '\000')) ]
   | "png-2000000x1" -> png [ ihdr 2_000_000 1; chunk "IDAT" (stored "\000") ]
   | "png-no-plte" -> png [ ihdr ~ctype:3 1 1; chunk "IDAT" (stored "\000\000") ]
   | "tga-65535x65535" -> tga ~rle:false 65535 65535 (String.make 64 '\000')
