@@ -11,7 +11,7 @@
 
 open Povml_fuzz
 
-let inputs = try int_of_string (Sys.getenv "POVML_FUZZ_IMAGE_INPUTS") with Not_found | Failure _ -> 1500
+let inputs = try int_of_string (Sys.getenv "POVML_FUZZ_IMAGE_INPUTS") with Not_found | Failure _ -> 10_000
 let seed = try int_of_string (Sys.getenv "POVML_FUZZ_SEED") with Not_found | Failure _ -> 6
 let budget = 2.
 
