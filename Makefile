@@ -1,7 +1,7 @@
 # povml — set-up, build, render, test, benchmark.
 # `make render` and `make test` install whatever Debian packages are missing first.
 
-DEB_PACKAGES = libcamlimages-ocaml-dev libalcotest-ocaml-dev \
+DEB_PACKAGES = libcamlimages-ocaml-dev libjpeg-dev libalcotest-ocaml-dev \
                libcmdliner-ocaml-dev libqcheck-ocaml-dev povray povray-includes povray-examples time parallel \
                slurm-wlm munge openssh-server rsync
 
