@@ -184,16 +184,28 @@ hostile_segv.jpg is one of the 240 in 1,500 mutated JPEGs of the decoder fuzz ru
         |                                    ^
   [exit 3, no image]
 
+TrueType: a font whose one character is made of 12⁸ glyphs (composite glyphs naming composite glyphs,
+8 deep) ran out of stack with "the scene nests too deeply" (POV-Ray: std::bad_alloc); now a
+bounded number of glyphs and points per character:
+
+  $ mk ttf-nested-composites n.ttf
+  $ printf '#version 3.7;\nglobal_settings { assumed_gamma 1 }\ncamera { location <0, 0, -3> look_at 0 }\ntext { ttf "n.ttf" "A" 0.1, 0 }\n' > t.pov
+  $ (ulimit -v 1048576 && exec timeout 20 povml t.pov +W16 +H12 -D) 2>err.txt >/dev/null; echo "[exit $?]"; sed '/^------/,$d' err.txt
+  [exit 1]
+  t.pov:4:12: error: the font file "n.ttf" cannot be read: a composite glyph is made of more than 10000 glyphs
+      4 | text { ttf "n.ttf" "A" 0.1, 0 }
+        |            ^
+
 A smooth height field from a 1-pixel image: POV-Ray stops the parse with "Failed to find any
 normals at."; povml said so unlocated, as an internal error (exit 70).
 
   $ printf 'P5\n1 1\n255\n\200' > one.pgm
   $ printf '#version 3.7;\nglobal_settings { assumed_gamma 1 }\ncamera { location <0, 2, -2> look_at 0 }\nheight_field { pgm "one.pgm" smooth }\n' > hf.pov
-  $ (ulimit -v 1048576 && exec timeout 20 povml hf.pov +W16 +H12 -D) 2>&1 >/dev/null | sed '/^------/,$d'; echo "[exit $?]"
+  $ (ulimit -v 1048576 && exec timeout 20 povml hf.pov +W16 +H12 -D) 2>err.txt >/dev/null; echo "[exit $?]"; sed '/^------/,$d' err.txt
+  [exit 1]
   hf.pov:4:16: error: Failed to find any normals at. (a smooth height_field needs an image at least 2×2 pixels; "one.pgm" is 1×1)
       4 | height_field { pgm "one.pgm" smooth }
         |                ^
-  [exit 0]
 
 povml merge: a part of huge declared size or a decompression bomb was exit 70; now a clear error
 in bounded memory, or the part read as far as its header promises.
