@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # make fuzz, second part: AFL++ on each decoder (test/fuzz/afl_image.exe FORMAT FILE, built
 # instrumented by the Makefile in _build_afl) for FUZZ_IMAGE_SECONDS each, seeded with the files of
-# test/fuzz/image_seeds/<format>/ (POT with the GIF files; TrueType with POV-Ray's own fonts).
+# test/fuzz/image_seeds/<format>/ (POT with the GIF files; TrueType with POV-Ray's own fonts) and the
+# corpus earlier runs grew from them, test/fuzz/image_corpus/<format>/ (minimised with afl-cmin; to
+# refresh it: afl-cmin -i $FUZZ_OUT/images/<format>/default/queue -o test/fuzz/image_corpus/<format>
+# -- _build_afl/default/test/fuzz/afl_image.exe <format> @@).
 # Prints how many inputs each tried and fails if any input crashed or hung.
 #   FUZZ_IMAGE_SECONDS  how long to fuzz each decoder (default 300)
 #   FUZZ_IMAGE_FORMATS  which decoders (default: png gif pot jpeg ppm pgm tga ttf)
@@ -32,6 +35,7 @@ for format in $formats; do
     ttf) cp -L "$fonts/povlogo.ttf" "$fonts/crystal.ttf" "$dir/seeds/" ;;
     *) cp test/fuzz/image_seeds/"$format"/* "$dir/seeds/" ;;
   esac
+  if [ -d test/fuzz/image_corpus/"$format" ]; then cp test/fuzz/image_corpus/"$format"/* "$dir/seeds/"; fi
   afl-fuzz -i "$dir/seeds" -o "$dir" -t "$timeout" -m 2048 -V "$seconds" \
     -- "$target" "$format" @@ > "$dir/afl-fuzz.log" 2>&1 || true
   stats=$dir/default/fuzzer_stats

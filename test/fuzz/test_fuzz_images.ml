@@ -1,6 +1,6 @@
 (* The short deterministic fuzz run of the decoders in make test: with a fixed seed, mutations
    (Byte_mutate) of the small real files in image_seeds/<format>/ (and of POV-Ray's own fonts)
-   go through each decoder and every pixel is read back (Image_target); any exception other than
+   and of the corpus AFL++ grew from them (image_corpus/<format>/) go through each decoder and every pixel is read back (Image_target); any exception other than
    the decoder's own refusal fails the test, the input saved beside it. Half the PNG inputs get
    their CRCs put right first, so that they reach past the CRC check.
 
@@ -36,6 +36,12 @@ let seed_files name =
       let dir = Filename.concat "image_seeds" (if name = "pot" then "gif" else name) in
       Sys.readdir dir |> Array.to_list |> List.sort compare |> List.map (Filename.concat dir)
 
+(* the corpus AFL++ found from them (make fuzz, minimised with afl-cmin): more files to mutate,
+   valid or not *)
+let corpus_files name =
+  let dir = Filename.concat "image_corpus" name in
+  if Sys.file_exists dir then Sys.readdir dir |> Array.to_list |> List.sort compare |> List.map (Filename.concat dir) else []
+
 (* POVML_FUZZ_IMAGE_DUMP: a directory where every input is also written, to replay them elsewhere *)
 let dump = Sys.getenv_opt "POVML_FUZZ_IMAGE_DUMP"
 
@@ -64,6 +70,8 @@ let () =
         failed := true
       end
       else begin
+        let seeds = List.length files in
+        let files = files @ corpus_files name in
         let texts = Array.of_list (List.map read files) in
         let files = Array.of_list files in
         let rng = Random.State.make [| seed; 34; f |] in
@@ -74,6 +82,7 @@ let () =
           (fun i t ->
             match Image_target.run kind t with
             | Decoded -> ()
+            | Refused _ when i >= seeds -> ()
             | Refused m | Bug m -> bugs := (-i - 1, files.(i), t, "the seed itself: " ^ m) :: !bugs)
           texts;
         for i = 1 to inputs do
@@ -101,7 +110,7 @@ let () =
           | Bug m -> bugs := (i, files.(k), data, m) :: !bugs
         done;
         let bugs = List.rev !bugs in
-        Printf.printf "%s: %d inputs from %d seed files in %.1f s: %d decoded, %d refused, %d bugs\n" name inputs (Array.length files)
+        Printf.printf "%s: %d inputs from %d seed and corpus files in %.1f s: %d decoded, %d refused, %d bugs\n" name inputs (Array.length files)
           (Unix.gettimeofday () -. t0) !decoded !refused (List.length bugs);
         List.iteri
           (fun n (i, seed, data, msg) ->
