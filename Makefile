@@ -1,7 +1,7 @@
 # povml — set-up, build, render, test, benchmark.
 # `make render` and `make test` install whatever Debian packages are missing first.
 
-DEB_PACKAGES = libcamlimages-ocaml-dev libalcotest-ocaml-dev \
+DEB_PACKAGES = libcamlimages-ocaml-dev libjpeg-dev libalcotest-ocaml-dev \
                libcmdliner-ocaml-dev libqcheck-ocaml-dev povray povray-includes povray-examples time parallel \
                slurm-wlm munge openssh-server rsync
 
@@ -55,13 +55,16 @@ test-ssh: deps
 # AFL++ on the interpreter and a tiny render for FUZZ_SECONDS (test/fuzz/afl.sh), built instrumented in
 # _build_afl (test/fuzz/afl.workspace); prints the inputs tried and fails on any crash or hang.
 FUZZ_SECONDS ?= 1800
+# then AFL++ on each image decoder and the TrueType reader for FUZZ_IMAGE_SECONDS each (test/fuzz/afl_images.sh)
+FUZZ_IMAGE_SECONDS ?= 300
 fuzz: deps
 	@dpkg-query -W -f='$${Status}' afl++ 2>/dev/null | grep -q "install ok installed" || { \
 	  echo "Installing Debian packages: afl++"; \
 	  $(SUDO) apt-get update -q && DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -q afl++; }
 	dune build --workspace test/fuzz/afl.workspace --build-dir _build_afl \
-	  ./test/fuzz/afl_main.exe ./test/fuzz/povml.dict
+	  ./test/fuzz/afl_main.exe ./test/fuzz/povml.dict ./test/fuzz/afl_image.exe
 	FUZZ_SECONDS=$(FUZZ_SECONDS) bash test/fuzz/afl.sh
+	FUZZ_IMAGE_SECONDS=$(FUZZ_IMAGE_SECONDS) bash test/fuzz/afl_images.sh
 
 bench: build
 	bash scenes/bench/run.sh

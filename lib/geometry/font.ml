@@ -157,12 +157,32 @@ let glyph_index ?(utf8 = false) f c = try glyph_index_exn ~utf8 f c with Bad _ -
 
 (* ExtractGlyphOutline: the points (em units) with their flags, the contours' last points, the
    header's box (font units) widened by the points, and the glyph whose metrics it uses. *)
-type raw = { mutable nc : int; mutable xmin : int; mutable ymin : int; mutable xmax : int; mutable ymax : int; mutable ends : int list; mutable pts : (float * float * int) list (* reversed *); mutable metrics : int }
+type raw = {
+  mutable nc : int;
+  mutable xmin : int;
+  mutable ymin : int;
+  mutable xmax : int;
+  mutable ymax : int;
+  mutable ends : int list; (* reversed *)
+  mutable pts : (float * float * int) list; (* reversed *)
+  mutable npts : int;
+  mutable metrics : int;
+}
 
-let rec extract f g c depth =
+(* What one character's outline may cost: a composite glyph names others, up to 8 deep, each of
+   which may name many, so that a small hostile file could ask for an exponential number of glyphs
+   and points. No real font comes near these. *)
+type budget = { mutable glyphs : int; mutable points : int }
+
+let max_glyphs = 10_000
+let max_points = 1_000_000
+
+let rec extract f g c depth budget =
   if depth > 8 then raise (Bad "its composite glyphs nest too deep");
+  budget.glyphs <- budget.glyphs + 1;
+  if budget.glyphs > max_glyphs then raise (Bad (Printf.sprintf "a composite glyph is made of more than %d glyphs" max_glyphs));
   let s = f.data in
-  let r = { nc = 0; xmin = 0; ymin = 0; xmax = 0; ymax = 0; ends = []; pts = []; metrics = g } in
+  let r = { nc = 0; xmin = 0; ymin = 0; xmax = 0; ymax = 0; ends = []; pts = []; npts = 0; metrics = g } in
   if g < 0 || g >= Array.length f.loca then raise (Bad (Printf.sprintf "glyph %d is not in the font" g));
   if c <> 32 then begin
     let o = f.glyf + f.loca.(g) in
@@ -178,6 +198,8 @@ let rec extract f g c depth =
       let ins = u16 s (o + 10 + (2 * nc)) in
       let p = ref (o + 12 + (2 * nc) + ins) in
       let n = ends.(nc - 1) + 1 in
+      budget.points <- budget.points + n;
+      if budget.points > max_points then raise (Bad (Printf.sprintf "a glyph has more than %d points" max_points));
       let flags = Array.make n 0 in
       let i = ref 0 in
       while !i < n do
@@ -218,8 +240,9 @@ let rec extract f g c depth =
       let ys = coords 4 0x20 in
       Array.iter (fun x -> if x > r.xmax then r.xmax <- x; if x < r.xmin then r.xmin <- x) xs;
       Array.iter (fun y -> if y > r.ymax then r.ymax <- y; if y < r.ymin then r.ymin <- y) ys;
-      r.ends <- Array.to_list ends;
-      r.pts <- List.rev (List.init n (fun i -> (float_of_int xs.(i) /. upem, float_of_int ys.(i) /. upem, flags.(i))))
+      r.ends <- List.rev (Array.to_list ends);
+      r.pts <- List.rev (List.init n (fun i -> (float_of_int xs.(i) /. upem, float_of_int ys.(i) /. upem, flags.(i))));
+      r.npts <- n
     end
     else if r.nc < 0 then begin
       r.nc <- 0;
@@ -243,10 +266,13 @@ let rec extract f g c depth =
         if flags land 2 <> 0 then begin
           let xoff = float_of_int arg1 /. upem and yoff = float_of_int arg2 /. upem in
           if flags land 0x200 <> 0 then r.metrics <- sub;
-          let sr = extract f sub c (depth + 1) in
+          let sr = extract f sub c (depth + 1) budget in
           if sr.nc <> 0 then begin
-            let n = List.length r.pts in
-            r.ends <- r.ends @ List.map (fun e -> e + n) sr.ends;
+            let n = r.npts in
+            budget.points <- budget.points + sr.npts;
+            if budget.points > max_points then raise (Bad (Printf.sprintf "a glyph has more than %d points" max_points));
+            r.ends <- List.rev_append (List.rev_map (fun e -> e + n) sr.ends) r.ends;
+            r.npts <- r.npts + sr.npts;
             r.nc <- r.nc + sr.nc;
             List.iter
               (fun (x, y, fl) ->
@@ -268,7 +294,7 @@ let rec extract f g c depth =
 
 let outline f g ~char_code =
   try
-    let r = extract f g char_code 0 in
+    let r = extract f g char_code 0 { glyphs = 0; points = 0 } in
     let pts = Array.of_list (List.rev r.pts) in
     let _, contours =
       List.fold_left
@@ -279,7 +305,7 @@ let outline f g ~char_code =
           let xs = Array.map (fun (x, _, _) -> x) sub and ys = Array.map (fun (_, y, _) -> y) sub in
           let on = Array.map (fun (_, _, fl) -> fl land 1 <> 0) sub in
           (e + 1, (xs, ys, on) :: acc))
-        (0, []) r.ends
+        (0, []) (List.rev r.ends)
     in
     let o =
       Glyph.outline_of_contours ~units_per_em:f.units_per_em ~xmin:r.xmin ~ymin:r.ymin ~xmax:r.xmax ~ymax:r.ymax (List.rev contours)

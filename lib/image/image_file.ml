@@ -12,6 +12,8 @@ type options = {
   working_gamma : Gamma_curve.t;
   gamma_override : bool;
   premultiply : bool option;
+  max_pixels : int;
+  max_memory_mb : int;
 }
 
 type map_kind = Rgb_map | Rgba_map | Rgbft_map
@@ -29,6 +31,33 @@ let f = Precision.f32
 exception Bad of string
 
 let bad fmt = Printf.ksprintf (fun s -> raise (Bad s)) fmt
+
+exception Over_limit of { msg : string; option : string }
+
+let over_limit option fmt = Printf.ksprintf (fun msg -> raise (Over_limit { msg; option })) fmt
+
+let mul a b = if a = 0 || b = 0 then 0 else if a > max_int / b then max_int else a * b
+
+let commas n =
+  let s = string_of_int n in
+  let len = String.length s in
+  String.concat "" (List.init len (fun i -> (if i > 0 && (len - i) mod 3 = 0 && s.[i - 1] <> '-' then "," else "") ^ String.make 1 s.[i]))
+
+let check_size o ~format ~width ~height ~samples =
+  if width < 0 || height < 0 then bad "the %s's size %d×%d is negative" format width height;
+  let pixels = mul width height in
+  if pixels > o.max_pixels then
+    over_limit "--max-pixels N" "the %s's size %d×%d is above povml's limit of %s pixels" format width height (commas o.max_pixels);
+  (* each sample is one OCaml int, 8 bytes; a colour-mapped image ([samples] 0) has a byte per pixel *)
+  let mib = (if samples = 0 then pixels else mul (mul pixels samples) 8) / 1048576 in
+  if mib >= o.max_memory_mb then
+    over_limit "--max-memory MIB" "the %s's %d×%d pixels need %s MiB once decoded, more than povml's memory limit of %s MiB" format width
+      height (commas mib) (commas o.max_memory_mb)
+
+let check_data ~format ~width ~height ~have ~need_per_pixel =
+  let needed = mul (mul width height) need_per_pixel in
+  if needed > have then
+    bad "the %s's size %d×%d needs at least %s bytes of pixel data, but the file holds %s" format width height (commas needed) (commas have)
 
 let format_name = function
   | Png -> "png"
@@ -158,7 +187,7 @@ let given_curve (o : options) =
   | Some d when o.gamma_correct -> Gamma_curve.transcoding ~working:o.working_gamma ~encoding:d
   | Some _ | None -> Gamma_curve.Neutral
 
-let u8 s i = Char.code (String.unsafe_get s i)
+let u8 s i = if i < 0 || i >= String.length s then bad "the file ends early" else Char.code (String.unsafe_get s i)
 let u16be s i = (u8 s i lsl 8) lor u8 s (i + 1)
 let u32be s i = (u16be s i lsl 16) lor u16be s (i + 2)
 

@@ -16,6 +16,8 @@ type options = {
   working_gamma : Gamma_curve.t;  (** the scene's working curve ([Neutral] for none) *)
   gamma_override : bool;  (** [default_gamma] even where the file names its own *)
   premultiply : bool option;  (** the [premultiplied] keyword, where the format has alpha *)
+  max_pixels : int;  (** the most pixels a file may declare (the +W×+H cap, [--max-pixels]) *)
+  max_memory_mb : int;  (** the most memory, in MiB, the decoded samples may take ([--max-memory]) *)
 }
 
 (** What a palette entry holds: POV-Ray's colour maps are RGB, RGBA (the filter field holding
@@ -78,6 +80,32 @@ exception Bad of string
 val bad : ('a, unit, string, 'b) format4 -> 'a
 (** [bad fmt …] raises {!Bad} with the message. *)
 
+exception Over_limit of { msg : string; option : string }
+(** A well-formed file declaring more than the caps of {!options} allow: the reason, and the
+    command-line option that raises the cap ("--max-pixels N"). *)
+
+val over_limit : string -> ('a, unit, string, 'b) format4 -> 'a
+(** [over_limit option fmt …] raises {!Over_limit} with the message and [option]. *)
+
+val mul : int -> int -> int
+(** [mul a b] is [a × b] for non-negative [a] and [b], or [max_int] when the product overflows:
+    sizes declared by a file are multiplied with it, so that a product is never wrapped round to
+    a small number. *)
+
+val commas : int -> string
+(** [commas n] is [n] written with thousands separators (67,108,864). *)
+
+val check_size : options -> format:string -> width:int -> height:int -> samples:int -> unit
+(** [check_size o ~format ~width ~height ~samples] raises {!Bad} when a dimension is negative, and
+    {!Over_limit} when the [width × height] pixels the [format] file declares are more than
+    [o.max_pixels], or when their [samples] values per pixel (one OCaml int each; 0 for a palette
+    image's one byte) need more than [o.max_memory_mb]. Every reader calls it before it allocates anything of the image's size. *)
+
+val check_data : format:string -> width:int -> height:int -> have:int -> need_per_pixel:int -> unit
+(** [check_data ~format ~width ~height ~have ~need_per_pixel] raises {!Bad} unless [have] bytes of
+    data can hold [width × height] pixels of at least [need_per_pixel] bytes each (a minimum the
+    format cannot do without): a file's length bounds what it may ask for. *)
+
 val f : float -> float
 (** [f x] is [x] rounded to single precision ({!Precision.f32}). *)
 
@@ -102,7 +130,8 @@ val given_curve : options -> Gamma_curve.t
 (** [given_curve o] is PPM's and PGM's curve: the one given, else neutral. *)
 
 val u8 : string -> int -> int
-(** [u8 s i] is the byte of [s] at [i]. *)
+(** [u8 s i] is the byte of [s] at [i].
+    @raise Bad when [i] is outside [s] (the file ends early). *)
 
 val u16be : string -> int -> int
 (** [u16be s i] is the big-endian 16-bit number at [i]. *)

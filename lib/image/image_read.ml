@@ -1,43 +1,37 @@
-(* Reading an image file of any format povml reads: the format's reader, JPEG through camlimages. *)
+(* Reading an image file of any format povml reads: the format's reader. *)
 open Image_file
 
-(* JPEG (jpeg.cpp): libjpeg's 8-bit samples through camlimages, sRGB unless told otherwise *)
+type failure = Unreadable of string | Over_limit of { msg : string; option : string }
 
-let read_jpeg (o : options) path =
-  let curve = assumed_curve o in
-  let img = try Jpeg.load path [] with Failure m -> bad "%s" m | Images.Wrong_file_type -> bad "not a JPEG file" in
-  let rgb24 = match img with Images.Rgb24 b -> b | _ -> bad "unsupported color format in JPEG image" in
-  let width = rgb24.Rgb24.width and height = rgb24.Rgb24.height in
-  let rgb = Array.make (3 * width * height) 0 in
-  for y = 0 to height - 1 do
-    for x = 0 to width - 1 do
-      let c = Rgb24.get rgb24 x y in
-      let i = 3 * (x + (y * width)) in
-      rgb.(i) <- c.Color.r;
-      rgb.(i + 1) <- c.Color.g;
-      rgb.(i + 2) <- c.Color.b
-    done
-  done;
-  { width; height; pixels = Colour { max = 255; rgb; alpha = None; lut = lut_of curve 255 }; premultiplied = false }
+(* the file's bytes, refused when the file alone is larger than the memory limit *)
+let file_contents (o : options) path =
+  let ic = open_in_bin path in
+  Fun.protect ~finally:(fun () -> close_in_noerr ic) (fun () ->
+      let len = in_channel_length ic in
+      if len / 1048576 >= o.max_memory_mb then
+        over_limit "--max-memory MIB" "the file is %s MiB, more than povml's memory limit of %s MiB" (commas (len / 1048576)) (commas o.max_memory_mb);
+      really_input_string ic len)
 
-(* ---------------------------------------------------------------------------------------------- *)
+let message = function Unreadable m | Over_limit { msg = m; _ } -> m
 
-let read fmt o path =
-  let contents () =
-    let ic = open_in_bin path in
-    Fun.protect ~finally:(fun () -> close_in ic) (fun () -> really_input_string ic (in_channel_length ic))
-  in
-  try
-    match fmt with
-    | Png -> Ok (Png_file.read_png o (contents ()))
-    | Ppm -> Ok (Netpbm_file.read_netpbm ~colour:true o (contents ()))
-    | Pgm -> Ok (Netpbm_file.read_netpbm ~colour:false o (contents ()))
-    | Tga -> Ok (Tga_file.read_tga o (contents ()))
-    | Gif -> Ok (Gif_file.read_gif o (contents ()))
-    | Pot -> Ok (Gif_file.read_pot o (contents ()))
-    | Jpeg -> Ok (read_jpeg o path)
-    | Iff | Tiff | Bmp | Exr | Hdr -> Error (Printf.sprintf "not supported yet: '%s' images" (format_name fmt))
-  with
-  | Bad m -> Error m
-  | Sys_error m -> Error m
-  | Invalid_argument m | Failure m -> Error m
+let decode fmt o ~contents =
+  match fmt with
+  | Png -> Png_file.read_png o (contents ())
+  | Ppm -> Netpbm_file.read_netpbm ~colour:true o (contents ())
+  | Pgm -> Netpbm_file.read_netpbm ~colour:false o (contents ())
+  | Tga -> Tga_file.read_tga o (contents ())
+  | Gif -> Gif_file.read_gif o (contents ())
+  | Pot -> Gif_file.read_pot o (contents ())
+  | Jpeg -> Jpeg_file.read_jpeg o (contents ())
+  | Iff | Tiff | Bmp | Exr | Hdr -> bad "not supported yet: '%s' images" (format_name fmt)
+
+let guarded f =
+  try Ok (f ()) with
+  | Bad m -> Error (Unreadable m)
+  | Image_file.Over_limit { msg; option } -> Error (Over_limit { msg; option })
+  | Sys_error m -> Error (Unreadable m)
+  | Out_of_memory -> Error (Over_limit { msg = "decoding it needs more memory than the process may use"; option = "ulimit -v" })
+
+let read fmt o path = guarded (fun () -> decode fmt o ~contents:(fun () -> file_contents o path))
+
+let of_string fmt o data = guarded (fun () -> decode fmt o ~contents:(fun () -> data))

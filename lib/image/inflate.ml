@@ -81,12 +81,15 @@ let[@inline] decode b h =
   drop b (e land 15);
   e lsr 4
 
-(* The output, grown by doubling. *)
-type out = { mutable buf : Bytes.t; mutable len : int }
+(* The output, grown by doubling up to [limit] and a block's worth more; [Full] stops the
+   decompression once [limit] bytes are out. *)
+type out = { mutable buf : Bytes.t; mutable len : int; limit : int }
+
+exception Full
 
 let[@inline] room o n =
   if o.len + n > Bytes.length o.buf then begin
-    let b = Bytes.create (max (2 * Bytes.length o.buf) (o.len + n)) in
+    let b = Bytes.create (max (min (2 * Bytes.length o.buf) (o.limit + min 65536 (max_int - o.limit))) (o.len + n)) in
     Bytes.blit o.buf 0 b 0 o.len;
     o.buf <- b
   end
@@ -144,7 +147,8 @@ let codes b out lit dist =
     if sym < 256 then begin
       room out 1;
       Bytes.unsafe_set out.buf out.len (Char.unsafe_chr sym);
-      out.len <- out.len + 1
+      out.len <- out.len + 1;
+      if out.len >= out.limit then raise Full
     end
     else if sym = 256 then fin := true
     else begin
@@ -160,19 +164,21 @@ let codes b out lit dist =
       (* byte by byte: a copy may overlap what it writes *)
       let buf = out.buf and at = out.len in
       for k = 0 to len - 1 do Bytes.unsafe_set buf (at + k) (Bytes.unsafe_get buf (start + k)) done;
-      out.len <- at + len
+      out.len <- at + len;
+      if out.len >= out.limit then raise Full
     end
   done
 
-let zlib s =
+let zlib ?(limit = max_int) s =
   if String.length s < 2 then corrupt "the zlib header is missing";
   let cmf = Char.code s.[0] and flg = Char.code s.[1] in
   if cmf land 0x0f <> 8 || ((cmf lsl 8) lor flg) mod 31 <> 0 then corrupt "not a deflate stream";
   if flg land 0x20 <> 0 then corrupt "a preset dictionary, which PNG does not allow";
   let b = { src = s; pos = 2; bit_buf = 0; bit_count = 0; over = 0 } in
-  let out = { buf = Bytes.create (max 64 (4 * String.length s)); len = 0 } in
+  let out = { buf = Bytes.create (max 1 (min (max 64 (4 * String.length s)) limit)); len = 0; limit } in
   let last = ref false in
-  while not !last do
+  (try
+  while (not !last) && out.len < limit do
     last := take b 1 = 1;
     match take b 2 with
     | 0 ->
@@ -195,5 +201,6 @@ let zlib s =
         let lit, dist = dynamic_tables b in
         codes b out lit dist
     | _ -> corrupt "an invalid block type"
-  done;
-  Bytes.sub_string out.buf 0 out.len
+  done
+  with Full -> ());
+  Bytes.sub_string out.buf 0 (min out.len limit)

@@ -5,6 +5,8 @@
 exception Corrupt of string
 (** Raised by {!zlib} with a sentence saying what is wrong with the data. *)
 
-val zlib : string -> string
-(** [zlib s] is the data the zlib stream [s] holds (its two-byte header, deflate blocks, and
-    Adler-32 check, which is read but not verified). Raises {!Corrupt} on malformed data. *)
+val zlib : ?limit:int -> string -> string
+(** [zlib ?limit s] is the data the zlib stream [s] holds (its two-byte header, deflate blocks, and
+    Adler-32 check, which is read but not verified), or its first [limit] bytes: decompression
+    stops there, so that a small stream that inflates to gigabytes takes no more than [limit]
+    bytes and a block (64 KiB) of memory. Raises {!Corrupt} on malformed data. *)

@@ -20,10 +20,12 @@ let fail fmt = Printf.ksprintf (fun m -> Error m) fmt
 
 (* the 8-bit RGB values as stored, read by povml's own decoder *)
 let read_png path =
-  let raw = { Image_file.gamma_correct = false; default_gamma = None; working_gamma = Gamma_curve.Neutral; gamma_override = false; premultiply = None } in
+  let raw = { Image_file.gamma_correct = false; default_gamma = None; working_gamma = Gamma_curve.Neutral; gamma_override = false; premultiply = None;
+      max_pixels = max_int; max_memory_mb = Scene_limits.default.memory_mb } in
   match Png_file.read_png raw (Png_text.read_all path) with
   | exception Sys_error m -> Error m
   | exception Image_file.Bad m -> Error m
+  | exception Image_file.Over_limit { msg; _ } -> Error msg
   | { width; height; pixels = Colour { max = 255; rgb; _ }; _ } ->
       Ok { Encode.width; height; pixels = Bytes.init (3 * width * height) (fun i -> Char.chr rgb.(i)) }
   | _ -> Error "not an 8-bit RGB PNG"

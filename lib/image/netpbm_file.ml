@@ -24,33 +24,51 @@ let netpbm_header s =
   if depth > 65535 || depth < 1 then bad "unsupported number of colors";
   (width, height, depth, !pos)
 
-(* Read_ASCII_File_Number *)
-let ascii_numbers s start =
+(* Read_ASCII_File_Number (pgm.cpp): blanks skipped, then up to 49 digits (a longer run of digits
+   goes on as the next number); its atoi's value stored in the container as POV-Ray's
+   SetRGBValue(unsigned int) stores it, wrapped to the container's 8 or 16 bits ([max]); a number
+   too long for strtol is LONG_MAX, whose low bits are all set *)
+let ascii_numbers s start max =
   let pos = ref start in
+  let is_space c = c = ' ' || c = '\t' || c = '\n' || c = '\r' || c = '\011' || c = '\012' in
+  let is_digit c = c >= '0' && c <= '9' in
   fun () ->
-    let is_space c = c = ' ' || c = '\t' || c = '\n' || c = '\r' || c = '\011' || c = '\012' in
     while !pos < String.length s && is_space s.[!pos] do incr pos done;
-    if !pos >= String.length s then bad "unexpected end of file";
-    let b = !pos in
-    while !pos < String.length s && s.[!pos] >= '0' && s.[!pos] <= '9' do incr pos done;
-    if !pos = b || (!pos < String.length s && not (is_space s.[!pos])) then bad "invalid data";
-    int_of_string (String.sub s b (!pos - b))
+    if !pos >= String.length s then bad "the file ends before its last pixel";
+    if not (is_digit s.[!pos]) then bad "invalid data in the pixels: '%c' where a number should be" s.[!pos];
+    let value = ref 0 and digits = ref 0 in
+    while !digits < 49 && !pos < String.length s && is_digit s.[!pos] do
+      let d = Char.code s.[!pos] - 48 in
+      value := if !value > (max_int - d) / 10 then max_int else (10 * !value) + d;
+      incr digits;
+      incr pos
+    done;
+    if !digits < 49 && !pos < String.length s && not (is_space s.[!pos]) then
+      bad "invalid data in the pixels: '%c' inside a number" s.[!pos];
+    !value land max
 
 let read_netpbm ~colour (o : options) s =
   need s 2 "header";
   let ascii, binary = if colour then ('3', '6') else ('2', '5') in
-  if s.[0] <> 'P' || (s.[1] <> ascii && s.[1] <> binary) then bad "not a %s file" (if colour then "PPM" else "PGM");
+  let format = if colour then "PPM" else "PGM" in
+  if s.[0] <> 'P' || (s.[1] <> ascii && s.[1] <> binary) then bad "not a %s file" format;
   let width, height, depth, start = netpbm_header s in
   let max = if depth < 256 then 255 else 65535 in
   let curve = Gamma_curve.scaled_by_decoding (f (float_of_int max /. float_of_int depth)) (given_curve o) in
-  let count = width * height * if colour then 3 else 1 in
+  let per_pixel = if colour then 3 else 1 in
+  check_size o ~format ~width ~height ~samples:per_pixel;
+  let count = width * height * per_pixel in
+  let have = String.length s - min start (String.length s) in
   let values =
-    if s.[1] = ascii then
-      let next = ascii_numbers s start in
+    if s.[1] = ascii then begin
+      (* each number takes a digit and, but for the last, a blank *)
+      check_data ~format ~width ~height ~have:(have + 1) ~need_per_pixel:(2 * per_pixel);
+      let next = ascii_numbers s start max in
       Array.init count (fun _ -> next ())
+    end
     else begin
       let size = if max = 255 then 1 else 2 in
-      need s (start + (count * size)) "pixels";
+      check_data ~format ~width ~height ~have ~need_per_pixel:(size * per_pixel);
       Array.init count (fun i -> if size = 1 then u8 s (start + i) else u16be s (start + (2 * i)))
     end
   in

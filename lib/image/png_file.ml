@@ -67,33 +67,77 @@ let png_samples data ~width ~height ~depth ~channels ~interlaced =
   if interlaced then Array.iter pass adam7 else pass (0, 0, 1, 1);
   samples
 
+(* libpng's default user limit on either dimension (png.h, PNG_USER_WIDTH_MAX and
+   PNG_USER_HEIGHT_MAX), which POV-Ray's png.cpp does not change *)
+let libpng_max_dimension = 1_000_000
+
+(* png_check_IHDR (png.c): the bit depths each colour type allows *)
+let depth_allowed ctype depth =
+  match ctype with
+  | 0 -> List.mem depth [ 1; 2; 4; 8; 16 ]
+  | 3 -> List.mem depth [ 1; 2; 4; 8 ]
+  | 2 | 4 | 6 -> depth = 8 || depth = 16
+  | _ -> false
+
+(* The image data's length once inflated: each pass's rows, a filter byte and the row's bytes. *)
+let inflated_size ~width ~height ~bits_pp ~interlaced =
+  let passes = if interlaced then Array.to_list adam7 else [ (0, 0, 1, 1) ] in
+  List.fold_left
+    (fun acc (x0, y0, dx, dy) ->
+      let pw = if width > x0 then (width - x0 + dx - 1) / dx else 0 in
+      let ph = if height > y0 then (height - y0 + dy - 1) / dy else 0 in
+      if pw = 0 || ph = 0 then acc
+      else
+        let stride = (mul pw bits_pp + 7) / 8 in
+        let rows = mul ph (stride + 1) in
+        if acc > max_int - rows then max_int else acc + rows)
+    0 passes
+
 let read_png (o : options) s =
   need s 8 "signature";
   if String.sub s 0 8 <> "\137PNG\r\n\026\n" then bad "not a PNG file";
-  let ihdr = ref None and plte = ref "" and trns = ref None and gama = ref None and srgb = ref false in
-  let idat = Buffer.create (String.length s) in
+  let ihdr = ref None and plte = ref None and trns = ref None and gama = ref None and srgb = ref false in
+  let idat = Buffer.create (min (String.length s) 65536) in
   let rec chunks pos =
     if pos + 8 > String.length s then bad "the file ends before its IEND chunk";
     let len = u32be s pos and kind = String.sub s (pos + 4) 4 in
+    if len > 0x7fffffff then bad "the PNG's %S chunk has a length above 2³¹ − 1" kind;
     if pos + 12 + len > String.length s then bad "the %s chunk ends early" kind;
     let body = String.sub s (pos + 8) len in
+    (* png_crc_finish (pngrutil.c): a critical chunk (its first letter upper-case) with a bad CRC
+       is an error, an ancillary one is ignored *)
+    let critical = kind.[0] >= 'A' && kind.[0] <= 'Z' in
+    let crc_ok = Png_crc.crc (kind ^ body) = u32be s (pos + 8 + len) in
+    if critical && not crc_ok then bad "the PNG's %s chunk is damaged (its CRC does not match its data)" kind;
+    if !ihdr = None && kind <> "IHDR" then bad "the PNG does not begin with its IHDR chunk";
     match kind with
     | "IEND" -> ()
     | _ ->
         (match kind with
-        | "IHDR" -> ihdr := Some body
-        | "PLTE" -> plte := body
-        | "tRNS" -> trns := Some body
-        | "gAMA" -> if len >= 4 then gama := Some (float_of_int (u32be body 0) *. 0.00001)
-        | "sRGB" -> srgb := true
+        | "IHDR" -> if !ihdr <> None then bad "the PNG has two IHDR chunks" else ihdr := Some body
+        | "PLTE" -> plte := Some body
+        | "tRNS" -> if crc_ok then trns := Some body
+        | "gAMA" -> if len >= 4 && crc_ok then gama := Some (float_of_int (u32be body 0) *. 0.00001)
+        | "sRGB" -> if crc_ok then srgb := true
         | "IDAT" -> Buffer.add_string idat body
         | _ -> ());
         chunks (pos + 12 + len)
   in
   chunks 8;
-  let h = match !ihdr with Some h when String.length h >= 13 -> h | Some _ | None -> bad "no IHDR chunk" in
-  let width = u32be h 0 and height = u32be h 4 and depth = u8 h 8 and ctype = u8 h 9 and interlaced = u8 h 12 = 1 in
-  if width <= 0 || height <= 0 || width > 1 lsl 24 || height > 1 lsl 24 then bad "invalid dimensions";
+  let h = match !ihdr with Some h when String.length h = 13 -> h | Some _ -> bad "the PNG's IHDR chunk is not 13 bytes long" | None -> bad "no IHDR chunk" in
+  let width = u32be h 0 and height = u32be h 4 and depth = u8 h 8 and ctype = u8 h 9 and interlace = u8 h 12 in
+  (* png_check_IHDR (png.c): the errors libpng raises, in its order *)
+  if width = 0 || height = 0 then bad "the PNG's size %d×%d has no pixels" width height;
+  if width > 0x7fffffff || height > 0x7fffffff then bad "the PNG's size %d×%d is above 2³¹ − 1" width height;
+  if width > libpng_max_dimension || height > libpng_max_dimension then
+    bad "the PNG's size %d×%d is above libpng's limit of %s pixels a side" width height (commas libpng_max_dimension);
+  if not (List.mem depth [ 1; 2; 4; 8; 16 ]) then bad "the PNG's bit depth %d is not 1, 2, 4, 8 or 16" depth;
+  if not (List.mem ctype [ 0; 2; 3; 4; 6 ]) then bad "the PNG's colour type %d is not 0, 2, 3, 4 or 6" ctype;
+  if not (depth_allowed ctype depth) then bad "the PNG's bit depth %d is not allowed with its colour type %d" depth ctype;
+  if u8 h 10 <> 0 then bad "the PNG's compression method %d is unknown" (u8 h 10);
+  if u8 h 11 <> 0 then bad "the PNG's filter method %d is unknown" (u8 h 11);
+  if interlace > 1 then bad "the PNG's interlace method %d is unknown" interlace;
+  let interlaced = interlace = 1 in
   (* the file's curve: the user's, else sRGB by its chunk, else the gAMA power law, else the
      default (sRGB) *)
   let curve =
@@ -111,13 +155,25 @@ let read_png (o : options) s =
   let channels =
     match ctype with 0 -> 1 | 2 -> 3 | 3 -> 1 | 4 -> 2 | 6 -> 4 | _ -> bad "unsupported color type in PNG image"
   in
-  let data = try Inflate.zlib (Buffer.contents idat) with Inflate.Corrupt m -> bad "%s" m in
+  if ctype = 3 && !plte = None then bad "the PNG has colour type 3 (a palette) but no PLTE chunk";
+  (* the unpacked samples, and the arrays made from them *)
+  check_size o ~format:"PNG" ~width ~height ~samples:(2 * channels);
+  (* decompression stops at the size the header promises: extra data is ignored, as libpng does *)
+  let limit = inflated_size ~width ~height ~bits_pp:(depth * channels) ~interlaced in
+  (* deflate inflates at most 1,032 bytes from one (two-bit codes for a 258-byte copy), so the
+     compressed data bounds the image: libpng would run out of data ("Not enough image data") *)
+  let compressed = Buffer.length idat in
+  if limit / 1032 > compressed + 16 then
+    bad "the PNG's %s bytes of compressed data cannot hold its %d×%d pixels (%s bytes once inflated; deflate inflates at most 1,032 times)"
+      (commas compressed) width height (commas limit);
+  let data = try Inflate.zlib ~limit (Buffer.contents idat) with Inflate.Corrupt m -> bad "%s" m in
   let samples = png_samples data ~width ~height ~depth ~channels ~interlaced in
   let n = width * height in
   let pixels =
     match ctype with
     | 3 ->
-        let pal = !plte in
+        let pal = Option.value !plte ~default:"" in
+        if String.length pal mod 3 <> 0 || String.length pal = 0 then bad "the PNG's palette (PLTE chunk) of %d bytes is not a whole number of colours" (String.length pal);
         let count = String.length pal / 3 in
         let trans = Option.value !trns ~default:"" in
         let map =

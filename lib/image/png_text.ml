@@ -2,19 +2,8 @@
 
 let area_key = "povml-area"
 
-let crc_table =
-  Array.init 256 (fun n ->
-      let c = ref n in
-      for _ = 0 to 7 do
-        c := if !c land 1 <> 0 then 0xedb88320 lxor (!c lsr 1) else !c lsr 1
-      done;
-      !c)
-
 (* CRC-32 of the chunk type and data, as PNG computes it *)
-let crc s =
-  let c = ref 0xffffffff in
-  String.iter (fun ch -> c := crc_table.((!c lxor Char.code ch) land 0xff) lxor (!c lsr 8)) s;
-  !c lxor 0xffffffff
+let crc = Png_crc.crc
 
 let be32 n = String.init 4 (fun i -> Char.chr ((n lsr (8 * (3 - i))) land 0xff))
 let read32 s i = (Char.code s.[i] lsl 24) lor (Char.code s.[i + 1] lsl 16) lor (Char.code s.[i + 2] lsl 8) lor Char.code s.[i + 3]

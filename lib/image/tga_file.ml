@@ -48,6 +48,16 @@ let read_tga (o : options) s =
     end
     else None
   in
+  (* the palette index, the colour and the alpha of every pixel *)
+  check_size o ~format:"Targa" ~width ~height ~samples:4;
+  (* a raw pixel takes its bytes; a run-length packet, a byte and one pixel's, covers at most 128 *)
+  let have = String.length s - min (String.length s) !pos in
+  if compressed then begin
+    let packets = (mul width height + 127) / 128 in
+    if packets > have then
+      bad "the Targa's size %d×%d needs at least %s run-length packets, but the file holds %s bytes of pixel data" width height (commas packets) (commas have)
+  end
+  else check_data ~format:"Targa" ~width ~height ~have ~need_per_pixel:psizeb;
   let n = width * height in
   let index = Bytes.make n '\000' and rgb = Array.make (3 * n) 0 and alpha = Array.make n 255 in
   let store x y =

@@ -22,7 +22,8 @@ let heights_of_image (img : Image_file.t) =
 
 let parse st =
   open_shape st "height_field";
-  let image, _name = Image_reader.height_field_image st in
+  let image_loc = peek_loc st in
+  let image, name = Image_reader.height_field_image st in
   let rec options water smooth =
     match peek st with
     | Ident "water_level" ->
@@ -35,6 +36,11 @@ let parse st =
     | _ -> (water, smooth)
   in
   let water, smooth = options 0. false in
+  (* smooth_height_field (hfield.cpp) finds no triangle round a vertex of a field one pixel wide
+     or deep, and stops the parse with this message *)
+  if smooth && (image.width < 2 || image.height < 2) then
+    Error.raise_at image_loc "Failed to find any normals at. (a smooth height_field needs an image at least 2×2 pixels; \"%s\" is %d×%d)" name
+      image.width image.height;
   let field =
     Hfield.make ~width:image.width ~height:image.height ~heights:(heights_of_image image) ~water ~smooth
   in

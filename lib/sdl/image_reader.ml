@@ -55,7 +55,8 @@ let read_options st block ~gamma ~premultiply : Image_file.options =
   let correct = block = Image_map in
   let version = if st.version_set then st.version else 362 in
   let working = match st.assumed_gamma with Some g -> Gamma_curve.by_decoding_gamma g | None -> Gamma_curve.Neutral in
-  let off : Image_file.options = { gamma_correct = false; default_gamma = None; working_gamma = Neutral; gamma_override = false; premultiply } in
+  let off : Image_file.options = { gamma_correct = false; default_gamma = None; working_gamma = Neutral; gamma_override = false; premultiply;
+      max_pixels = st.opts.limits.pixels; max_memory_mb = st.opts.limits.memory_mb } in
   let base : Image_file.options =
     match st.assumed_gamma with
     | _ when not correct -> off
@@ -114,7 +115,8 @@ let rec load_file ?(hf = false) st block =
   let path = locate st file_loc fmt name in
   match Image_read.read fmt options path with
   | Ok img -> (img, name)
-  | Error msg -> Error.raise_at file_loc "cannot read the image file \"%s\": %s" name msg
+  | Error (Unreadable msg) -> Error.raise_at file_loc "cannot read the image file \"%s\": %s" name msg
+  | Error (Over_limit { msg; option }) -> Error.limit_at file_loc "cannot read the image file \"%s\": %s (raise it with %s)" name msg option
 
 (* function W, H { … } (Make_Pattern_Image): an image of W × H pixels made by a float function (a
    16-bit grey image) or a pigment function (a 16-bit RGBA image, not premultiplied) over the unit

@@ -18,9 +18,9 @@ let root =
 let image name = Filename.concat (Lazy.force root) ("scenes/images/" ^ name)
 
 let raw : Image_file.options =
-  { gamma_correct = false; default_gamma = None; working_gamma = Neutral; gamma_override = false; premultiply = None }
+  { gamma_correct = false; default_gamma = None; working_gamma = Neutral; gamma_override = false; premultiply = None; max_pixels = 8192 * 8192; max_memory_mb = 4096 }
 
-let read fmt name = match Image_read.read fmt raw (image name) with Ok i -> i | Error m -> Alcotest.fail m
+let read fmt name = match Image_read.read fmt raw (image name) with Ok i -> i | Error m -> Alcotest.fail (Image_read.message m)
 
 (* the generator of scenes/images' base picture (an 8-bit PPM): each pixel's r, g, b *)
 let base x y = ((x * 16) + 8, (y * 21) + 5, (((x / 4) * 60) + ((y / 4) * 90) + 13) mod 256)

@@ -68,5 +68,6 @@ let () =
       ("Whole_file", Test_whole_file.tests);
       ("Normals (perturbed normals)", Test_normals.tests);
       ("Images (image_map, image_pattern, bump_map)", Test_images.tests);
+      ("Decoders against hostile files", Test_decoders.tests);
       ("Superellipsoid, ovus, sphere_sweep", Test_superq.tests);
     ])
