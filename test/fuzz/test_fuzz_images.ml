@@ -45,16 +45,7 @@ let corpus_files name =
 (* POVML_FUZZ_IMAGE_DUMP: a directory where every input is also written, to replay them elsewhere *)
 let dump = Sys.getenv_opt "POVML_FUZZ_IMAGE_DUMP"
 
-let write path data =
-  let oc = open_out_bin path in
-  Fun.protect ~finally:(fun () -> close_out oc) (fun () -> output_string oc data)
-
-let keep fd text =
-  ignore (Unix.lseek fd 0 SEEK_SET);
-  ignore (Unix.write_substring fd text 0 (String.length text));
-  Unix.ftruncate fd (String.length text)
-
-let set_timer which seconds = ignore (Unix.setitimer which { Unix.it_interval = 0.; it_value = seconds })
+open Fuzz_io
 
 let () =
   Printexc.record_backtrace true;

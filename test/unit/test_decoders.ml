@@ -86,29 +86,7 @@ let tests =
         refused "size that wraps" (fun () -> Netpbm_file.read_netpbm ~colour:true options "P6\n2305843009213693952 4\n255\n\000"));
   ]
 
-(* A TrueType font whose glyph 0 (character 'A') is made of [k] copies of glyph 1, itself made of
-   [k] copies of glyph 2, and so on 8 deep, glyph 8 a single point: k⁸ glyphs for one character. *)
-let nested_font k =
-  let be16 n = String.init 2 (fun i -> Char.chr ((n lsr (8 * (1 - i))) land 0xff)) in
-  let composite next = be16 0xffff ^ String.make 8 '\000' ^ String.concat "" (List.init k (fun i -> be16 (if i < k - 1 then 0x22 else 0x02) ^ be16 next ^ be16 0)) in
-  let simple = be16 1 ^ String.make 8 '\000' ^ be16 0 ^ be16 0 ^ "\001" ^ be16 10 ^ be16 20 ^ "\000" in
-  let glyphs = List.init 8 (fun g -> composite (g + 1)) @ [ simple ] in
-  let glyf = String.concat "" glyphs in
-  let offsets = List.rev (snd (List.fold_left (fun (o, acc) g -> (o + String.length g, o :: acc)) (0, []) glyphs)) in
-  let loca = String.concat "" (List.map (fun o -> be16 (o / 2)) (offsets @ [ String.length glyf ])) in
-  let head = String.make 12 '\000' ^ be32 0x5F0F3CF5 ^ be16 0 ^ be16 1000 ^ String.make 30 '\000' ^ be16 0 ^ be16 0 in
-  let maxp = be32 0x00010000 ^ be16 9 in
-  let hhea = String.make 34 '\000' ^ be16 1 in
-  let hmtx = be16 500 ^ be16 0 in
-  let cmap = be16 0 ^ be16 1 ^ be16 1 ^ be16 0 ^ be32 12 ^ be16 0 ^ be16 262 ^ be16 0 ^ String.init 256 (fun _ -> '\000') in
-  let tables = [ ("cmap", cmap); ("glyf", glyf); ("head", head); ("hhea", hhea); ("hmtx", hmtx); ("loca", loca); ("maxp", maxp) ] in
-  let start = 12 + (16 * List.length tables) in
-  let _, records, bodies =
-    List.fold_left
-      (fun (o, rs, bs) (tag, body) -> (o + String.length body, rs ^ tag ^ be32 0 ^ be32 o ^ be32 (String.length body), bs ^ body))
-      (start, "", "") tables
-  in
-  be32 0x00010000 ^ be16 (List.length tables) ^ String.make 6 '\000' ^ records ^ bodies
+let nested_font = Hostile_files.nested_font
 
 let font_tests =
   [
