@@ -217,6 +217,13 @@ let run (args : options) =
       else if args.dump then dump_scene iopts input
       else
         let fmt = match args.format with `Png -> Png_fmt | `Ppm -> Ppm_fmt in
+        if fmt = Png_fmt && args.output_to_file && (width > Output.png_max_side || height > Output.png_max_side) then
+          fail
+            (Error.limit_error Loc.none
+               (Printf.sprintf
+                  "a PNG is at most %s pixels wide and high (libpng's limit; POV-Ray's render fails when it writes one), this image is %d×%d: write a PPM instead (+FP)"
+                  (Reader.commas Output.png_max_side) width height))
+        else
         let output =
           match args.output with
           | None -> default_output input fmt

@@ -3,9 +3,8 @@
 
 type format = Png | Ppm
 
-let ppm (img : Encode.t) =
-  (* one copy of the pixels: the new bytes are never changed once they are a string *)
-  Bytes.unsafe_to_string (Bytes.cat (Bytes.of_string (Printf.sprintf "P6\n%d %d\n255\n" img.width img.height)) img.pixels)
+(* the header and the pixels, which are not copied: the bytes are never changed once encoded *)
+let ppm (img : Encode.t) = [ Printf.sprintf "P6\n%d %d\n255\n" img.width img.height; Bytes.unsafe_to_string img.pixels ]
 
 let rgb24 (img : Encode.t) =
   let rgb = Rgb24.create img.width img.height in
@@ -31,7 +30,12 @@ let rec waitpid pid =
    failed write. So a child process writes it into a pipe, opened as its /dev/stdout, and the
    bytes come back here: nothing reaches the disk but through Whole_file, and a full disk never
    meets libpng. The child leaves by [_exit], without the parent's buffered output. *)
+let png_max_side = 1_000_000
+
 let png (img : Encode.t) =
+  if img.width > png_max_side || img.height > png_max_side then
+    Error (Printf.sprintf "a PNG is at most %s pixels wide and high (libpng's limit), this image is %d×%d" "1,000,000" img.width img.height)
+  else
   match Unix.pipe ~cloexec:true () with
   | exception Unix.Unix_error (e, _, _) -> Error (Unix.error_message e)
   | r, w -> (
@@ -58,14 +62,14 @@ let encode ?area fmt img =
   | Png -> (
       match (png img, area) with
       | (Error _ as e), _ -> e
-      | Ok data, None -> Ok data
-      | Ok data, Some a -> Ok (Png_text.add data ~key:Png_text.area_key ~value:a))
+      | Ok data, None -> Ok [ data ]
+      | Ok data, Some a -> Ok [ Png_text.add data ~key:Png_text.area_key ~value:a ])
 
 (* The signals are held back from the encoding on: one that arrives meanwhile cancels the write. *)
 let write ?area fmt path img =
   Interrupt.hold (fun () ->
       Interrupt.check ();
-      match encode ?area fmt img with Error m -> Error m | Ok data -> Whole_file.write path data)
+      match encode ?area fmt img with Error m -> Error m | Ok parts -> Whole_file.write_parts path parts)
 
 let read_png path =
   match Png.load path [] with

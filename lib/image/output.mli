@@ -2,6 +2,10 @@
 
 type format = Png | Ppm
 
+val png_max_side : int
+(** [png_max_side] is the widest and highest PNG libpng writes (its default user limits, which
+    POV-Ray does not raise: its render of a wider PNG fails at the end): 1,000,000 pixels. *)
+
 val write : ?area:string -> format -> string -> Encode.t -> (unit, string) result
 (** [write ?area fmt path img] encodes [img] and writes it to [path] whole or not at all
     ([Whole_file.write]: a temporary file beside [path], checked to the last byte, synced and

@@ -22,17 +22,19 @@ let target path =
       | _ | (exception Unix.Unix_error _) -> Into)
   | { st_kind = S_CHR | S_BLK | S_FIFO | S_SOCK; _ } -> Into
 
-let rec write_all fd data off =
+let rec write_one fd data off =
   if off < String.length data then
     match Unix.write_substring fd data off (String.length data - off) with
-    | n -> write_all fd data (off + n)
-    | exception Unix.Unix_error (EINTR, _, _) -> write_all fd data off
+    | n -> write_one fd data (off + n)
+    | exception Unix.Unix_error (EINTR, _, _) -> write_one fd data off
 
-(* [data] into the open file [fd], synced when it is a regular file (a device or a pipe has
+let write_all fd parts = List.iter (fun data -> write_one fd data 0) parts
+
+(* [data] (its parts one after the other) into the open file [fd], synced when it is a regular file (a device or a pipe has
    nothing to sync), and [fd] closed: every step checked, the first failure raised. *)
 let fill fd data =
   match
-    write_all fd data 0;
+    write_all fd data;
     if (Unix.fstat fd).st_kind = S_REG then Unix.fsync fd
   with
   | () -> Unix.close fd
@@ -77,7 +79,9 @@ let write_into path data =
   | () -> Ok ()
   | exception Unix.Unix_error (e, _, _) -> Error (Unix.error_message e)
 
-let write path data =
+let write_parts path data =
   Interrupt.hold (fun () ->
       Interrupt.check ();
       match target path with Replace p -> replace p data | Into -> write_into path data)
+
+let write path data = write_parts path [ data ]

@@ -18,6 +18,10 @@ val write : string -> string -> (unit, string) result
     during the write, removes the temporary file and raises [Interrupt.Interrupted] instead of
     the rename. *)
 
+val write_parts : string -> string list -> (unit, string) result
+(** [write_parts path parts] is [write path (String.concat "" parts)], without making the
+    concatenation (a large image's header and pixels). *)
+
 val temp_file : string -> (string, string) result
 (** [temp_file dir] is [Ok path] for a new empty file [.povml-XXXXXX.part] in [dir], private to its
     owner, or [Error reason] naming [dir] ("/tmp: No space left on device"). *)

@@ -32,4 +32,8 @@ let make ?(robust = false) ?shadow_cache:cache ?iso (scene : Compiled.t) stats =
     walk_limit = [| 0. |];
   }
 
+let renew ctx ~shadow_cache ~iso stats =
+  { ctx with stats; shadow_cache; shapes = Scratch.renew ctx.shapes ~iso stats; found = { id = -1; part = -1; near = false };
+    reach = { depth = 0.; least = 0.; inv_dx = 0.; inv_dy = 0.; inv_dz = 0. } }
+
 let[@inline] cache_slot ~level k = (2 * k) + if level = 1 then 0 else 1

@@ -39,7 +39,13 @@ val make : ?robust:bool -> ?shadow_cache:int array -> ?iso:Scratch.iso_room -> C
 (** [make ?robust ?shadow_cache ?iso scene stats] is a context for one render worker, with the shadow
     cache [shadow_cache] and the isosurfaces' state [iso] (default new empty ones), which it
     updates; [robust] (default false) selects the robust mode's limits instead of POV-Ray's.
-    The render loop makes one per block. *)
+    A render worker makes one for its first block and {!renew}s it for each next one. *)
+
+val renew : t -> shadow_cache:int array -> iso:Scratch.iso_room -> Stats.t -> t
+(** [renew ctx ~shadow_cache ~iso stats] is the context of the worker's next block, counting into
+    [stats], with the shadow cache [shadow_cache] and the isosurfaces' state [iso]: it keeps
+    [ctx]'s rooms (allocated once per worker, not per block: a 67,108,864×1 image has two million
+    blocks) and starts as {!make} does. [ctx] is not used afterwards. *)
 
 val cache_slot : level:int -> int -> int
 (** [cache_slot ~level k] is light [k]'s shadow-cache slot for the shadow tests made while

@@ -295,31 +295,46 @@ let render opts (sc : Compiled.t) (gamma : Scene.gamma) : Image.t * Stats.t =
       collected_at := major
     end
   in
+  (* Tracing allocates only short-lived values, and the scene stays alive throughout: a major
+     collection would only walk the scene (and, in forked workers, copy every page it marks), so
+     the major collector is kept almost idle while rendering, in each process from its first block
+     on: not before, since the heap grows by [space_overhead] percent of any large allocation (the
+     list of two million blocks of a 67,108,864×1 image made into an array would reserve 1.6 GB). *)
+  let gc = Gc.get () in
+  let quiet = lazy (Gc.set { gc with space_overhead = 10_000 }) in
+  (* the context of the worker (of the process: workers are forked before their first block),
+     its rooms made once and renewed for each block *)
+  let worker = ref None in
   let work (i, b) =
+    Lazy.force quiet;
     bound_garbage ~compact:false;
     let stats = Stats.create () in
-    let ctx = Trace.make_ctx ~robust:opts.robust ?shadow_cache:carried ?iso:carried_iso sc stats in
+    let shadow_cache = match carried with Some c -> c | None -> Context.shadow_cache sc in
+    let iso = match carried_iso with Some r -> r | None -> Scratch.iso_room () in
+    let ctx =
+      match !worker with
+      | None -> Trace.make_ctx ~robust:opts.robust ~shadow_cache ~iso sc stats
+      | Some ctx -> Trace.renew_ctx ctx ~shadow_cache ~iso stats
+    in
+    worker := Some ctx;
     let px = render_block ctx opts enc b in
     (* blocks finish in about this order whichever worker renders them *)
     if opts.progress then Printf.eprintf "\rRendering block %d of %d %!" (i + 1) total;
     (b, px, stats)
   in
   let bl = List.mapi (fun i b -> (i, b)) bl in
-  (* Tracing allocates only short-lived values, and the scene stays alive throughout: a major
-     collection would only walk the scene (and, in forked workers, copy every page it marks), so
-     the major collector is kept almost idle while rendering. *)
-  let gc = Gc.get () in
-  Gc.set { gc with space_overhead = 10_000 };
   (* each block goes into the image as it comes back (the blocks' pixels are never all held at
      once), and its counts into the statistics; the isosurfaces' sums, which are floats, are
-     added up in block order at the end (most blocks have none). The image is made when the
+     added up in block order at the end (most blocks have none, and none is kept for them: a
+     large allocation here would grow the heap by [space_overhead] times its size). The image is made when the
      first block comes back: worker processes, forked before, do not carry it. *)
   let image = lazy (Image.create opts.width opts.height) in
   let counts = ref (Stats.create ()) in
-  let iso_found = Array.make total [||] in
+  let iso_found = ref [] in
   let place i (b, px, (st : Stats.t)) =
     (* blocks read back from worker processes come in heap chunks of their own (unmarshalled),
        which only a compaction gives back *)
+    Lazy.force quiet;
     bound_garbage ~compact:(workers > 1);
     let img = Lazy.force image in
     let bw = b.bx1 - b.bx0 + 1 in
@@ -329,14 +344,15 @@ let render opts (sc : Compiled.t) (gamma : Scene.gamma) : Image.t * Stats.t =
         Image.set img x y (Float.Array.get px i) (Float.Array.get px (i + 1)) (Float.Array.get px (i + 2))
       done
     done;
-    iso_found.(i) <- st.iso_found;
+    if st.iso_found <> [||] then iso_found := (i, st.iso_found) :: !iso_found;
     counts := Stats.merge !counts { st with iso_found = [||] }
   in
   Fun.protect ~finally:(fun () -> Gc.set gc) (fun () -> Pool.iter ~workers work bl place);
   if opts.progress then prerr_string "\r\027[K";
   let stats =
-    Array.fold_left
-      (fun acc found -> if found = [||] then acc else Stats.merge acc { (Stats.create ()) with iso_found = found })
-      !counts iso_found
+    List.fold_left
+      (fun acc (_, found) -> Stats.merge acc { (Stats.create ()) with iso_found = found })
+      !counts
+      (List.sort (fun (i, _) (j, _) -> compare i j) !iso_found)
   in
   (Lazy.force image, stats)

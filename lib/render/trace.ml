@@ -24,6 +24,10 @@ let make_ctx ?robust ?shadow_cache ?iso (sc : Compiled.t) stats =
   Normals.reset_facets sc.facets;
   Context.make ?robust ?shadow_cache ?iso sc stats
 
+let renew_ctx (ctx : ctx) ~shadow_cache ~iso stats =
+  Normals.reset_facets ctx.scene.facets;
+  Context.renew ctx ~shadow_cache ~iso stats
+
 let black = Traced.black
 
 (* What every layer and entry of a texture shaded at one hit shares: the object, the hit point P

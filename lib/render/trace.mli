@@ -11,6 +11,10 @@ val make_ctx : ?robust:bool -> ?shadow_cache:int array -> ?iso:Scratch.iso_room 
 (** [make_ctx ?robust ?shadow_cache ?iso scene stats] is [Context.make]: a context for one block of one
     render worker, with the scene's facets cache emptied (POV-Ray keeps it per render thread). *)
 
+val renew_ctx : ctx -> shadow_cache:int array -> iso:Scratch.iso_room -> Stats.t -> ctx
+(** [renew_ctx ctx ~shadow_cache ~iso stats] is [Context.renew] for the worker's next block, with the
+    scene's facets cache emptied as by {!make_ctx}. *)
+
 val black : result
 (** [black] is what a ray cut off by max_trace_level or adc_bailout returns. *)
 

@@ -133,6 +133,9 @@ let create ~robust ?iso stats =
     shadow_test = false;
   }
 
+let renew w ~iso stats =
+  { w with stats; iso; part = -1; leaf = -1; side_near = 0; side_far = 0; fractal_count = 0; shadow_test = false }
+
 let push_hit w n t part id px py pz =
   let width = hit_width in
   if (n + 1) * width > Array.length w.hits.room then begin

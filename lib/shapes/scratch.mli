@@ -113,6 +113,12 @@ val create : robust:bool -> ?iso:iso_room -> Stats.t -> t
     depth limits or, when [robust], the robust mode's; [iso] is the isosurfaces' state carried
     from an earlier scratch (else a fresh one). *)
 
+val renew : t -> iso:iso_room -> Stats.t -> t
+(** [renew w ~iso stats] is scratch for the worker's next block, counting into [stats] with the
+    isosurfaces' state [iso]: it shares [w]'s rooms (grown as the earlier blocks needed, and
+    always written before they are read) and starts as {!create} does (no part or leaf found, no
+    fractal crossing reported, not a shadow test). [w] is not used afterwards. *)
+
 val hit_width : int
 (** [hit_width] is the number of floats per hit in [hits]: depth, part, the member's id, and the
     hit point's x, y, z. *)

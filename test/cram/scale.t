@@ -67,6 +67,22 @@ A size whose pixel count overflows is a limit error that says so:
   error: a 4294967296×4294967296 image has over 4,611,686,018,427,387,903 pixels, more than povml's limit of 67,108,864 (raise it with --max-pixels N)
   [3]
 
+A PNG is at most 1,000,000 pixels wide and high (libpng's limit; POV-Ray's render of a wider one
+fails when it writes it): povml says so before it renders. A PPM has no such limit: the widest
+image the pixel limit allows, one row of 67,108,864 pixels (two million blocks, each once given a
+worker's rooms of its own), renders within 2 GiB:
+
+  $ povml plain.pov +W67108864 +H1 -D +Owide.png
+  error: a PNG is at most 1,000,000 pixels wide and high (libpng's limit; POV-Ray's render fails when it writes one), this image is 67108864×1: write a PPM instead (+FP)
+  [3]
+  $ run plain.pov +W67108864 +H1 +FP +WT1 +Owide.ppm
+  Wrote wide.ppm (67108864x1)
+  [exit 0]
+  $ head -c 20 wide.ppm | head -2
+  P6
+  67108864 1
+  $ rm wide.ppm
+
 An animation of two billion frames renders frame after frame, as POV-Ray does, its frames made one
 at a time (they were a list of two billion frames first):
 
