@@ -86,7 +86,10 @@ let coloured ~legacy ~ambient_light (f : Scene.finish) base (c : Colour.t) =
     colour;
     att;
     emitted;
-    filcol = Rgb.make (f32 (f32 (c.red *. c.filter) +. c.transmit)) (f32 (f32 (c.green *. c.filter) +. c.transmit)) (f32 (f32 (c.blue *. c.filter) +. c.transmit));
+    filcol =
+      (* black, one value for every opaque colour (f32 (f32 (x *. 0.) +. 0.) is 0) *)
+      (if c.filter = 0. && c.transmit = 0. then Rgb.black
+       else Rgb.make (f32 (f32 (c.red *. c.filter) +. c.transmit)) (f32 (f32 (c.green *. c.filter) +. c.transmit)) (f32 (f32 (c.blue *. c.filter) +. c.transmit)));
     transparent = c.filter <> 0. || c.transmit <> 0.;
   }
 
@@ -224,7 +227,16 @@ let blended ~noise (tpat : Scene.patterned) values entries : blended =
 (* POV-Ray's Bounding_Threshold when no ini file sets it (scene.cpp) *)
 let pov_bounding_threshold = 1
 
+(* What the tracer's groups ask of a top-level object once the scene's object is let go *)
+type seen = { no_shadow : bool; no_image : bool; no_reflection : bool }
+
 let scene ?(bounding_threshold = pov_bounding_threshold) (s : Scene.t) : Compiled.t =
+  let scene_objects = s.objects in
+  let s = { s with objects = [] } in
+  (* POV-Ray builds its tree when the scene has at least Bounding_Threshold objects, light sources
+     counted (boundingtask.cpp); a light's looks_like shape belongs to the light's top-level
+     object (§19.2) *)
+  let count = List.fold_left (fun n (o : Scene.obj) -> if o.looks_like then n else n + 1) 0 scene_objects + List.length s.lights in
   let legacy = s.version < 370 in
   let memo = Same_memo.create () and bases = Same_memo.create () in
   let noise = s.noise_generator in
@@ -233,6 +245,11 @@ let scene ?(bounding_threshold = pov_bounding_threshold) (s : Scene.t) : Compile
     Same_memo.find_or_add memo l (fun l ->
         if l.finish.crand > 0. then uses_crand := true;
         surface_with ~legacy ~noise ~ambient_light:s.ambient_light ~finished:(fun k -> Same_memo.find_or_add bases k finished) l)
+  in
+  let interiors = Same_memo.create () in
+  let interior_of (i : Scene.interior) =
+    Same_memo.find_or_add interiors i (fun i ->
+        { ior = f32 i.ior; fade_distance = f32 i.fade_distance; fade_power = f32 i.fade_power; fade_colour = rgb32 i.fade_colour; caustics = i.caustics })
   in
   let rec texture_of (t : Scene.texture) : texture =
     match t with
@@ -333,12 +350,9 @@ let scene ?(bounding_threshold = pov_bounding_threshold) (s : Scene.t) : Compile
             clear;
             uv_mapped = o.uv_mapped;
             difference = o.difference;
-            ior = f32 o.interior.ior;
-            fade_distance = f32 o.interior.fade_distance;
-            fade_power = f32 o.interior.fade_power;
-            fade_colour = rgb32 o.interior.fade_colour;
-            caustics = o.interior.caustics;
-            old_refract = f32 (match top_finish o.texture with Some f -> f.refraction | None -> 1.);
+            interior = interior_of o.interior;
+            (* 1 (the common case) is one shared constant, not a float boxed per object *)
+            old_refract = (match top_finish o.texture with Some f when f.refraction <> 1. -> f32 f.refraction | Some _ | None -> 1.);
             opaque;
             (* a move of the whole scene is baked into these shapes, but composed into the
                others' transforms, whose forward and inverse then disagree by the rounding of
@@ -360,12 +374,14 @@ let scene ?(bounding_threshold = pov_bounding_threshold) (s : Scene.t) : Compile
     let iid = if o.shared_interior < 0 then -1 else Option.value (Hashtbl.find_opt shared o.shared_interior) ~default:(-1) in
     let ob = build ~top:(-1) ~iid ~inverted:false o in
     (match ob with Some ob when o.shared_interior >= 0 && iid < 0 -> Hashtbl.replace shared o.shared_interior ob.id | Some _ | None -> ());
-    Option.map (fun ob -> (o, ob)) ob
+    Option.map (fun ob -> ({ no_shadow = o.no_shadow; no_image = o.no_image; no_reflection = o.no_reflection }, ob)) ob
   in
-  let visible = List.filter_map top_level s.objects in
+  (* the scene's objects are compiled as the last thing that reads them, so that each one is let
+     go once compiled: a scene of a million objects is not held twice *)
+  let visible = List.filter_map top_level scene_objects in
   let objects = Array.of_list (List.sort (fun a b -> compare a.id b.id) !built) in
   let tops = List.map snd visible in
-  let casts = List.filter_map (fun ((o : Scene.obj), ob) -> if o.no_shadow then None else Some ob) visible in
+  let casts = List.filter_map (fun (o, ob) -> if o.no_shadow then None else Some ob) visible in
   let occluders = casts in
   let shadow_mode =
     if occluders = [] then No_occluders
@@ -405,10 +421,6 @@ let scene ?(bounding_threshold = pov_bounding_threshold) (s : Scene.t) : Compile
          s.lights)
   in
   let cam = s.camera.location in
-  (* POV-Ray builds its tree when the scene has at least Bounding_Threshold objects, light sources
-     counted (boundingtask.cpp); a light's looks_like shape belongs to the light's top-level
-     object (§19.2) *)
-  let count = List.length (List.filter (fun (o : Scene.obj) -> not o.looks_like) s.objects) + List.length s.lights in
   let bounding = count > 0 && count >= bounding_threshold in
   let finite, infinite = List.partition (fun o -> Array.length o.pbox > 0) tops in
   let slabs = lazy (Slab_tree.build (List.map (fun o -> (o.id, o.pbox)) finite) (List.map (fun o -> o.id) infinite)) in
@@ -448,8 +460,8 @@ let scene ?(bounding_threshold = pov_bounding_threshold) (s : Scene.t) : Compile
      (tested on top-level objects, §16.4); a scene without those flags searches one group for every
      ray *)
   let without keep =
-    if List.for_all (fun ((o : Scene.obj), _) -> keep o) visible then all
-    else group (List.filter_map (fun ((o : Scene.obj), ob) -> if keep o then Some ob else None) visible)
+    if List.for_all (fun (o, _) -> keep o) visible then all
+    else group (List.filter_map (fun (o, ob) -> if keep o then Some ob else None) visible)
   in
   (* §6.4: the camera ray starts inside every object that contains the camera location; the list
      is kept with the last entered first, and holds interiors: a CSG's members share theirs (§16.5) *)

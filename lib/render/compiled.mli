@@ -119,6 +119,16 @@ and csg = {
   cbox : float array;  (** POV-Ray's box of the CSG, as [obj.pbox]; the ray is tested against it first *)
 }
 
+(** An object's interior as the tracer uses it (POV-Ray's Interior), its values in single
+    precision. Objects whose interiors are equal share one. *)
+and interior = {
+  ior : float;
+  fade_distance : float;
+  fade_power : float;
+  fade_colour : Rgb.t;
+  caustics : float;  (** the faked caustics (0: none), as stored *)
+}
+
 (** An object ready to trace: a top-level object, or a member of a CSG. *)
 and obj = {
   id : int;  (** its index in [t.objects]: top-level objects and their members in scene order *)
@@ -143,11 +153,7 @@ and obj = {
           is clear is not kept in the shadow cache *)
   difference : bool;  (** a CSG written as [difference] (for [Cutaway]) *)
   uv_mapped : bool;  (** [uv_mapping] on the object: its textures are evaluated at the hit's (u, v, 0) *)
-  ior : float;
-  fade_distance : float;
-  fade_power : float;
-  fade_colour : Rgb.t;
-  caustics : float;  (** the interior's faked caustics (0: none), as stored *)
+  interior : interior;  (** what its interior does to light inside it *)
   old_refract : float;  (** legacy finish refraction: the transmitted-colour factor (§2.7, §6.3) *)
   opaque : bool;  (** every surface has filter = transmit = 0: stops a shadow ray at once (§2.7) *)
   mag : float;

@@ -8,6 +8,8 @@ open Compiled
    texture's surface *)
 let no_surface = Compile.surface ~legacy:false ~noise:2 ~ambient_light:Rgb.black Defaults.layer
 
+let clear_interior : Compiled.interior = { ior = 1.; fade_distance = 0.; fade_power = 0.; fade_colour = Rgb.black; caustics = 0. }
+
 let member ~inverted shape =
   {
     id = 0;
@@ -22,11 +24,7 @@ let member ~inverted shape =
     clear = false;
     uv_mapped = false;
     difference = false;
-    ior = 1.;
-    fade_distance = 0.;
-    fade_power = 0.;
-    fade_colour = Rgb.black;
-    caustics = 0.;
+    interior = clear_interior;
     old_refract = 1.;
     opaque = true;
     mag = 0.;

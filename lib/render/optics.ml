@@ -14,17 +14,17 @@ let[@inline] fade_factor fade_colour fade_distance fade_power depth (c : Rgb.t) 
     let k x = f32 (x +. f32 (f32 (1. -. x) /. a)) in
     Rgb.make (f32 (c.r *. k fade_colour.Rgb.r)) (f32 (c.g *. k fade_colour.g)) (f32 (c.b *. k fade_colour.b))
 
-let fade obj depth c = fade_factor obj.fade_colour obj.fade_distance obj.fade_power depth c
-let fades obj = Float.abs obj.fade_distance > epsilon
+let fade obj depth c = fade_factor obj.interior.fade_colour obj.interior.fade_distance obj.interior.fade_power depth c
+let fades obj = Float.abs obj.interior.fade_distance > epsilon
 let rec remove id = function [] -> [] | x :: rest -> if x = id then rest else x :: remove id rest
 
 (* §5.2: the ratio n_transmitted / n_incident seen by the Fresnel term. *)
 let fresnel_ior sc obj interiors =
   match interiors with
-  | [] -> obj.ior
+  | [] -> obj.interior.ior
   | last :: rest ->
-      if List.mem obj.iid interiors then if rest = [] then 1. /. obj.ior else sc.objects.(last).ior /. obj.ior
-      else obj.ior /. sc.objects.(last).ior
+      if List.mem obj.iid interiors then if rest = [] then 1. /. obj.interior.ior else sc.objects.(last).interior.ior /. obj.interior.ior
+      else obj.interior.ior /. sc.objects.(last).interior.ior
 
 (* k·hi + (1 − k)·lo in single precision *)
 let blend k (hi : Rgb.t) (lo : Rgb.t) =

@@ -63,16 +63,28 @@ let run ?interp ?move ?bounding_threshold (opts : Render.options) path =
   let includes = ref [] in
   let included p ~depth dt = iopts.included p ~depth dt; if depth = 1 then includes := (p, dt) :: !includes in
   let scene, warnings = Interp.load_file { iopts with width = opts.width; height = opts.height; included } path in
+  (* taken now: a pattern's field left to be read where it is used would keep the pair, and with
+     it the whole scene, alive until then *)
+  let warnings = Sys.opaque_identity warnings in
   let scene = match move with None -> scene | Some (scale, translate) -> Place.scene ~scale ~translate scene in
   let scene = if opts.robust then recentred scene else scene in
   let t1 = Unix.gettimeofday () in
-  let compiled = Compile.scene ?bounding_threshold scene in
-  (* the compiled scene is all the render needs: the scene's objects are let go, and a large heap
-     is compacted before worker processes are forked from it, so that a scene of a million objects
-     renders in the memory it needs once, not twice *)
+  (* the compiled scene is all the render needs: the scene's objects are let go as they are
+     compiled (nothing here holds them meanwhile), and a large heap is compacted before worker
+     processes are forked from it, so that a scene of a million objects renders in the memory it
+     needs once, not twice *)
   let watched = watched scene in
-  let scene = { scene with objects = [] } in
-  if (Gc.quick_stat ()).heap_words > large_heap then Gc.compact ();
+  let rest = { scene with objects = [] } in
+  let compiled = Compile.scene ?bounding_threshold scene in
+  let scene = rest in
+  if (Gc.quick_stat ()).heap_words > large_heap then begin
+    (* a compaction keeps [space_overhead] percent of the live data free (compact.c): kept small
+       here, the heap shrinks to about what the render reads *)
+    let gc = Gc.get () in
+    Gc.set { gc with space_overhead = 20 };
+    Gc.compact ();
+    Gc.set gc
+  end;
   let t2 = Unix.gettimeofday () in
   let img, stats = Render.render opts compiled scene.gamma in
   let image = Encode.image scene.gamma img in

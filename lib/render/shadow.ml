@@ -94,7 +94,7 @@ let caustic ctx (obj : obj) part (q : Vec.t) (l : Vec.t) =
           let pn = Normals.perturb ~facets:sc.facets sc.noise_generator nm p { Patterns.normal = raw; dir = l; uv } wn in
           List.fold_right (fun ws v -> Normals.unwarp_normal ws ~keep_scale:false v) warps (Normals.layer_normal nm pn)
     in
-    1.0 +. Float.pow (Float.abs (Vec.dot n l)) obj.caustics
+    1.0 +. Float.pow (Float.abs (Vec.dot n l)) obj.interior.caustics
 
 (* Whether a shadow ray along [l] meets the surface of [obj] at [q] from inside (its normal,
    inverse counted, along the ray): it then sees the interior texture. *)
@@ -106,9 +106,9 @@ let inside_hit (obj : obj) part q l =
    colour at the crossing [q], [t] along the shadow ray [l] from its last origin. *)
 let textured ctx (obj : obj) part (q : Vec.t) (l : Vec.t) t interiors (tex : texture) : Rgb.t =
   let sc = ctx.scene in
-  let fades = List.mem obj.iid interiors && obj.fade_power > 0. && Optics.fades obj in
+  let fades = List.mem obj.iid interiors && obj.interior.fade_power > 0. && Optics.fades obj in
   let hit (s : surface) = if s.needs_uv then { Patterns.no_hit with uv = Shape.uv ctx.shapes obj part q } else Patterns.no_hit in
-  let caustic = if obj.caustics = 0. then None else Some (caustic ctx obj part q l) in
+  let caustic = if obj.interior.caustics = 0. then None else Some (caustic ctx obj part q l) in
   let uv () = Shape.uv ctx.shapes obj part q in
   let q' = if obj.uv_mapped then uv () else q in
   match tex with
@@ -154,7 +154,7 @@ let rec walk ctx ~slot (p : Vec.t) (lp : Vec.t) lo first (o : Vec.t) (l : Vec.t)
       let tex = if obj.inner_tex = None then Surfaces.at obj part else Surfaces.seen obj part ~inside:(inside_hit obj part q l) in
       let f =
         match tex with
-        | Plain sf when (not obj.uv_mapped) && obj.caustics = 0. ->
+        | Plain sf when (not obj.uv_mapped) && obj.interior.caustics = 0. ->
             (* §4, §17.8: a patterned pigment is evaluated where the shadow ray crosses it; a
                uv-mapped one at the crossing's UV coordinates *)
             let f =
@@ -163,7 +163,7 @@ let rec walk ctx ~slot (p : Vec.t) (lp : Vec.t) lo first (o : Vec.t) (l : Vec.t)
               | Varying at ->
                   (at (if sf.needs_uv then { Patterns.no_hit with uv = Shape.uv ctx.shapes obj part q } else Patterns.no_hit) q).filcol
             in
-            if List.mem obj.iid interiors && obj.fade_power > 0. && Optics.fades obj then Optics.fade obj t f else f
+            if List.mem obj.iid interiors && obj.interior.fade_power > 0. && Optics.fades obj then Optics.fade obj t f else f
         | Plain _ | Layered _ | Blended _ | Uv_mapped _ | Chosen _ | Cutaway -> textured ctx obj part q l t interiors tex
       in
       let lc = Rgb.make (f32 (lc.r *. f.r)) (f32 (lc.g *. f.g)) (f32 (lc.b *. f.b)) in

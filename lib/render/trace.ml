@@ -316,10 +316,10 @@ and refract ctx ~reflected obj ~level ~weight ~interiors p ng e d n ~raw ~bump :
   let sc = ctx.scene in
   let ior, inner =
     match interiors with
-    | [] -> (1. /. obj.ior, [ obj.iid ])
-    | last :: rest when last = obj.iid -> (obj.ior /. (match rest with [] -> 1. | l :: _ -> sc.objects.(l).ior), rest)
+    | [] -> (1. /. obj.interior.ior, [ obj.iid ])
+    | last :: rest when last = obj.iid -> (obj.interior.ior /. (match rest with [] -> 1. | l :: _ -> sc.objects.(l).interior.ior), rest)
     | _ when List.mem obj.iid interiors -> (1., Optics.remove obj.iid interiors)
-    | last :: _ -> (sc.objects.(last).ior /. obj.ior, obj.iid :: interiors)
+    | last :: _ -> (sc.objects.(last).interior.ior /. obj.interior.ior, obj.iid :: interiors)
   in
   ctx.stats.refracted_rays <- ctx.stats.refracted_rays + 1;
   if Float.abs (ior -. 1.) < Precision.epsilon then

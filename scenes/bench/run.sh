@@ -6,7 +6,7 @@
 #
 # The large scenes are generated into scenes/bench/generated/ by the generators in
 # scenes/bench/gen/ (a 1,000,000-triangle mesh2 terrain, a 100,000-smooth-triangle mesh, sphere
-# fields, a field of mixed shapes: boxes, cylinders, cones, discs, tori; with scenes/bench/gen_hfield.sh
+# fields (one of a million spheres each with a texture of its own), a field of mixed shapes: boxes, cylinders, cones, discs, tori; with scenes/bench/gen_hfield.sh
 # the 1024×1024 16-bit height map of scenes/bench/hfield.pov); scenes/bench/isosurface.pov times
 # the compiled functions in isosurfaces' root searches. Both programs get +L of the scene's
 # directory (POV-Ray does not look there for image files). RUNS (default 3) and
@@ -28,6 +28,7 @@ tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 [ -f "$OUT/terrain.pov" ] || "$GEN/gen_terrain.exe" "$OUT/terrain.pov"
 [ -f "$OUT/smooth.pov" ] || "$GEN/gen_smooth.exe" "$OUT/smooth.pov"
 for n in 1000 10000 100000 1000000; do [ -f "$OUT/spheres_$n.pov" ] || "$GEN/gen_spheres.exe" "$OUT/spheres_$n.pov" "$n"; done
+[ -f "$OUT/colours_1000000.pov" ] || "$GEN/gen_spheres.exe" "$OUT/colours_1000000.pov" 1000000 colours
 [ -f "$OUT/shapes_2000.pov" ] || "$GEN/gen_shapes.exe" "$OUT/shapes_2000.pov" 2000
 [ -f "$OUT/hfield_1024.png" ] || bash scenes/bench/gen_hfield.sh "$OUT/hfield_1024.png"
 
@@ -40,6 +41,7 @@ CASES=(
   "$OUT/spheres_10000.pov|+W640 +H480 -A"
   "$OUT/spheres_100000.pov|+W640 +H480 -A"
   "$OUT/spheres_1000000.pov|+W640 +H480 -A"
+  "$OUT/colours_1000000.pov|+W640 +H480 -A"
   "scenes/bench/while_spheres.pov|+W640 +H480 -A"
   "$OUT/shapes_2000.pov|+W640 +H480 -A"
   "$OUT/shapes_2000.pov|+W640 +H480 +A0.3"

@@ -333,8 +333,8 @@ let test_compiled () =
   Alcotest.(check (list int)) "tops" [ 0; 0; 0; 0; 4 ] (Array.to_list (Array.map (fun (o : Compiled.obj) -> o.top) c.objects));
   (* §16.5: members without an interior share the CSG's *)
   Alcotest.(check (list int)) "interior identities" [ 0; 0; 2; 0; 4 ] (Array.to_list (Array.map (fun (o : Compiled.obj) -> o.iid) c.objects));
-  float_eq "shared ior" 1.5 c.objects.(3).ior;
-  float_eq "own ior" 2. c.objects.(2).ior;
+  float_eq "shared ior" 1.5 c.objects.(3).interior.ior;
+  float_eq "own ior" 2. c.objects.(2).interior.ior;
   Alcotest.(check int) "groups hold top-level objects" 2 (Array.length c.all.bounded + Array.length c.all.unbounded);
   (* bounding boxes: an intersection's is the overlap of its members' that are not inverted *)
   let c, _ = setup "intersection { box { -1, 1 } sphere { x, 1 } sphere { 0, 0.5 inverse } }" in

@@ -1,4 +1,4 @@
-(* gen_spheres OUT.pov N
+(* gen_spheres OUT.pov N [colours]
 
    Writes a field of N small spheres over a plane to OUT.pov. The field always covers the same
    square, x, z in [-20, 20]: the spheres sit on a g x g grid (g = ceil (sqrt N), filled row by row)
@@ -6,12 +6,14 @@
    So the image looks alike for N = 1000, 10000 and 100000 and render time differences come from N.
    Everything comes from a simple integer hash of the sphere's index (no Random), so the file is
    the same on every run. About one sphere in five is a mirror; the others take one of five
-   coloured textures. One light, a camera looking over the field. *)
+   coloured textures. One light, a camera looking over the field. With [colours], every sphere
+   has a texture of its own instead, of its own colour, written out as a molecule or
+   point-cloud export writes it. *)
 
 open Gen_common
 
 let usage () =
-  prerr_endline "usage: gen_spheres OUT.pov N   (N >= 1 spheres)";
+  prerr_endline "usage: gen_spheres OUT.pov N [colours]   (N >= 1 spheres)";
   exit 2
 
 
@@ -22,7 +24,9 @@ let unit i k = float_of_int (hash32 ((i * 4) + k + 0x9e3779b9)) /. 4294967296.0
 let half = 20.0
 
 let () =
-  if Array.length Sys.argv <> 3 then usage ();
+  let argc = Array.length Sys.argv in
+  if argc <> 3 && not (argc = 4 && Sys.argv.(3) = "colours") then usage ();
+  let colours = argc = 4 in
   let out = Sys.argv.(1) in
   let n = match int_of_string_opt Sys.argv.(2) with Some n when n >= 1 -> n | _ -> usage () in
   let g, cell = grid n half in
@@ -52,7 +56,11 @@ let () =
     let t = if h mod 5 = 0 then 0 else 1 + ((h / 5) mod 5) in
     (* resting just above the plane (no tangent contact with it) *)
     let cy = r *. 1.02 in
-    add (Printf.sprintf "sphere{<%s,%s,%s>,%s texture{T%d}}\n" (fmt cx) (fmt cy) (fmt cz) (fmt r) t)
+    if colours then
+      add
+        (Printf.sprintf "sphere{<%s,%s,%s>,%s texture{pigment{rgb<%.3f,%.3f,%.3f>} finish{phong 0.5}}}\n" (fmt cx) (fmt cy) (fmt cz) (fmt r)
+           (unit i 0) (unit i 1) (unit i 2))
+    else add (Printf.sprintf "sphere{<%s,%s,%s>,%s texture{T%d}}\n" (fmt cx) (fmt cy) (fmt cz) (fmt r) t)
   done;
   finish ();
   Printf.printf "%s: %d spheres on a %d x %d grid\n" out n g g
