@@ -17,9 +17,10 @@ search):
   Wrote million.png (80x60)
   [exit 0]
 
-300,000 spheres each of a colour of its own (surfaces share what they take from an equal finish):
+A million spheres each of a colour of its own (surfaces share what they take from an equal finish,
+objects their interior, and the scene's objects are let go as they are compiled):
 
-  $ field 300000 1000 > colours.pov
+  $ field 1000000 1000 > colours.pov
   $ run colours.pov +W80 +H60 +Ocolours.png
   Wrote colours.png (80x60)
   [exit 0]
