@@ -42,7 +42,7 @@ selected() {
 }
 
 count=0; failed=0; lineno=0
-while IFS=$'\t' read -r name scene options min_identical max_peak reason || [ -n "${name:-}" ]; do
+while IFS=$'\t' read -r name scene options max_differing max_peak reason || [ -n "${name:-}" ]; do
   lineno=$((lineno + 1))
   [ "$lineno" -eq 1 ] && continue                       # header
   case "$name" in ''|'#'*) continue ;; esac
