@@ -54,7 +54,9 @@ let check case () =
           (100. *. share) c.differing c.peak case.max_differing case.max_peak
         :: !summary;
       if c.differing > case.max_differing then
-        Alcotest.failf "%s: %d pixels differ from POV-Ray's (the manifest allows %d)" case.name c.differing case.max_differing;
+        Alcotest.failf "%s: %d %s from POV-Ray's (the manifest allows %d)" case.name c.differing
+          (if c.differing = 1 then "pixel differs" else "pixels differ")
+          case.max_differing;
       if c.peak > case.max_peak then Alcotest.failf "%s: peak channel error %d/255 exceeds %d" case.name c.peak case.max_peak
 
 (* The image must not depend on the number of render processes (§ issue: both cores). *)
