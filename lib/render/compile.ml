@@ -70,7 +70,8 @@ let coloured ~legacy ~ambient_light (f : Scene.finish) base (c : Colour.t) =
   let colour = Colour.rgb c in
   (* §3.2: the legacy "att" formula applies below language version 3.70 *)
   let att =
-    if legacy then 1. -. ((c.filter *. Rgb.max3 colour) +. c.transmit) else 1. -. c.filter -. c.transmit
+    if legacy then 1. -. ((c.filter *. Rgb.max3 colour) +. c.transmit)
+    else (* the colour's opacity, a single-precision value in POV-Ray *) f32 (1. -. c.filter -. c.transmit)
   in
   (* §3.2, in single precision as POV-Ray sums it: ((C·ambient)·ambient_light)·att, then + (C·emission)·att *)
   let mul a b = f32 (a *. b) in
@@ -490,7 +491,8 @@ let scene ?(bounding_threshold = pov_bounding_threshold) (s : Scene.t) : Compile
     lights;
     shift = s.shift;
     robust_start_interiors = Interiors.innermost_first objects start_interiors;
-    background = s.background;
+    (* POV-Ray keeps the background colour in single precision *)
+    background = colour32 s.background;
     sky = s.sky;
     max_trace_level = s.max_trace_level;
     adc_bailout = s.adc_bailout;

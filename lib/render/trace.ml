@@ -235,7 +235,9 @@ and texture_colour ctx at tex q warps : result =
         if prev = cur then c1
         else
           let c2 = texture_colour ctx at b.entries.(prev) tq warps in
-          let v1 = (v -. b.values.(prev)) /. (b.values.(cur) -. b.values.(prev)) in
+          (* the map's values are single precision, and so is their difference (the value's own
+             distance from the lower one is taken in double) *)
+          let v1 = (v -. b.values.(prev)) /. f32 (b.values.(cur) -. b.values.(prev)) in
           let v2 = 1. -. v1 in
           let mix x y = f32 (f32 (v1 *. x) +. f32 (v2 *. y)) in
           { r = mix c1.r c2.r; g = mix c1.g c2.g; b = mix c1.b c2.b; tr = mix c1.tr c2.tr }
