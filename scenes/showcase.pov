@@ -1,6 +1,6 @@
 // povml showcase scene (render at 640x480; e.g. +W640 +H480 +A0.3).
 // A mirror ball, a glass ball, a few coloured balls on a glossy floor under a blue sky, two lights.
-// Uses only the povml subset (POVRAY-3.7.md §1-§9).
+// Uses only the povml subset (docs/povray-rules.md §1-§9).
 #version 3.7;
 global_settings { assumed_gamma 1.0 max_trace_level 10 }
 

@@ -1,4 +1,4 @@
-(* TrueType reading for the text object (POVRAY-3.7 §15.9), following the steps of POV-Ray's
+(* TrueType reading for the text object (docs/povray-rules.md §15.9), following the steps of POV-Ray's
    truetype.cpp: ProcessFontFile, ProcessCharMap, ExtractGlyphOutline, ProcessNewTTF. *)
 
 exception Bad of string

@@ -1,4 +1,4 @@
-(** A TrueType font file as a [text] object reads it (POVRAY-3.7 §15.9): the tables head, maxp,
+(** A TrueType font file as a [text] object reads it (docs/povray-rules.md §15.9): the tables head, maxp,
     loca, hhea, hmtx, kern and cmap, glyph outlines from glyf (simple and composite), and the
     layout of a string along +x, as POV-Ray's truetype.cpp does it, its quirks included. *)
 

@@ -1,4 +1,4 @@
-(* The depths a shape accepts (POVRAY-3.7 §2.1). POV-Ray's are fixed lengths, which is why a
+(* The depths a shape accepts (docs/povray-rules.md §2.1). POV-Ray's are fixed lengths, which is why a
    scene's look depends on its size; the robust mode drops them and relies on moving secondary-ray
    origins off the surface by a bound on the hit point's floating-point error instead. *)
 

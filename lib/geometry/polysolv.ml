@@ -1,4 +1,4 @@
-(* POV-Ray's Solve_Polynomial (POVRAY-3.7 §15.6, math/polysolv.cpp of the default build), written
+(* POV-Ray's Solve_Polynomial (docs/povray-rules.md §15.6, math/polysolv.cpp of the default build), written
    anew for every degree up to MAX_ORDER (35): closed forms up to 4, Sturm sequences above. The
    arithmetic follows POV-Ray's order of operations term by term: a root that differs in its last
    bit can move a torus's silhouette by a pixel. *)

@@ -1,4 +1,4 @@
-(** POV-Ray's polynomial solver, [Solve_Polynomial] of its default build (POVRAY-3.7 §15.6), up to
+(** POV-Ray's polynomial solver, [Solve_Polynomial] of its default build (docs/povray-rules.md §15.6), up to
     degree 35 (MAX_ORDER): closed forms for degrees 1–3, Ferrari's quartic, root elimination, the
     [difficult] test and Sturm sequences with modified regula falsi (every degree above 4). Every operation is done in the same
     order as POV-Ray does it, so the roots are the same to the last bit. Nothing is allocated per

@@ -1,5 +1,5 @@
 (** POV-Ray's precision rules, defined once: single-precision rounding and the tolerances every
-    stage shares (POVRAY-3.7 §2.1, §4, §8.3). *)
+    stage shares (docs/povray-rules.md §2.1, §4, §8.3). *)
 
 val f32 : float -> float
 (** [f32 x] is [x] rounded to single precision, as POV-Ray stores colours, bounding boxes and

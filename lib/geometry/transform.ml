@@ -1,4 +1,4 @@
-(* POV-Ray's TRANSFORM (POVRAY-3.7 §14.1): M and its inverse I, 4×4, for row vectors. Products,
+(* POV-Ray's TRANSFORM (docs/povray-rules.md §14.1): M and its inverse I, 4×4, for row vectors. Products,
    inverses and point maps keep the operation order of POV-Ray's math/matrices.cpp (sums left to
    right, k = 0..3), because the last bit of a matrix entry can decide a pixel. Matrices are built
    in 16-float arrays (row-major) and stored in one all-float record, so that the tracer reads the

@@ -1,4 +1,4 @@
-(** POV-Ray's TRANSFORM (POVRAY-3.7 §14.1): a 4×4 double matrix [M] and its inverse [I], for row
+(** POV-Ray's TRANSFORM (docs/povray-rules.md §14.1): a 4×4 double matrix [M] and its inverse [I], for row
     vectors ([p' = p·M], translation in row 3). Every operation repeats the floating-point operation
     order of POV-Ray's [math/matrices.cpp], so that results agree to the last bit.
 

@@ -1,4 +1,4 @@
-(* From linear working colours to 8-bit file values, in POV-Ray's precision (POVRAY-3.7 §8.1). *)
+(* From linear working colours to 8-bit file values, in POV-Ray's precision (docs/povray-rules.md §8.1). *)
 
 type t = { width : int; height : int; pixels : Bytes.t }
 

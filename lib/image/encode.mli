@@ -1,4 +1,4 @@
-(** From linear working colours to 8-bit file values (POVRAY-3.7 §8.1). *)
+(** From linear working colours to 8-bit file values (docs/povray-rules.md §8.1). *)
 
 type t = { width : int; height : int; pixels : Bytes.t  (** r g b bytes per pixel, row-major *) }
 

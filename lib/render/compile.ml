@@ -1,4 +1,4 @@
-(* The compile step (POVRAY-3.7 §2.7, §3, §16.5): the immutable scene turned once into what the
+(* The compile step (docs/povray-rules.md §2.7, §3, §16.5): the immutable scene turned once into what the
    tracer reads: objects numbered with their interiors, shapes through [Shape.compile], surfaces
    with their constant parts folded, lights, the groups each kind of ray searches, the shadow
    strategy and the camera's starting interiors. *)

@@ -1,4 +1,4 @@
-(** The interiors a ray starts in (POVRAY-3.7 §6.4, §18.4). *)
+(** The interiors a ray starts in (docs/povray-rules.md §6.4, §18.4). *)
 
 val at : Compiled.obj array -> float array -> Vec.t -> int list
 (** [at holders stack p] is the interiors of the objects of [holders] (top-level objects, such as

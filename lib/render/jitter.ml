@@ -1,4 +1,4 @@
-(* POV-Ray's deterministic jitter (POVRAY-3.7 §9.2): a 4096-entry permutation built with a linear
+(* POV-Ray's deterministic jitter (docs/povray-rules.md §9.2): a 4096-entry permutation built with a linear
    congruential generator, indexing a fixed table of 256 offsets in [-0.5, 0.5] (Appendix A). *)
 
 let table =

@@ -1,4 +1,4 @@
-(** POV-Ray's deterministic 2-D jitter for antialiasing samples (POVRAY-3.7 §9.2). *)
+(** POV-Ray's deterministic 2-D jitter for antialiasing samples (docs/povray-rules.md §9.2). *)
 
 val jx : float -> float -> float
 (** [jx x y] is the horizontal jitter offset in [-0.5, 0.5] for the sample position (x, y). *)

@@ -1,4 +1,4 @@
-(** Local illumination (POVRAY-3.7 §3.3, §3.4, §18.2, §18.3): what the light sources add to a
+(** Local illumination (docs/povray-rules.md §3.3, §3.4, §18.2, §18.3): what the light sources add to a
     surface point, each through its shadow feeler — diffuse (N·L, brilliance), Phong and specular
     highlights (metallic tint) — and how a light's colour is attenuated on the way. *)
 

@@ -1,4 +1,4 @@
-(** The nearest hit along a ray (POVRAY-3.7 §2.1), with POV-Ray's tie rules: unbounded objects
+(** The nearest hit along a ray (docs/povray-rules.md §2.1), with POV-Ray's tie rules: unbounded objects
     (planes, infinite quadrics) one by one, the others through the bounding hierarchy, and of equal (or, where POV-Ray's bounding
     tree decides it, nearly equal) depths the object POV-Ray meets first. *)
 

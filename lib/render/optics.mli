@@ -1,4 +1,4 @@
-(** Optics of reflection and transmission (POVRAY-3.7 §4, §5, §6): how much a surface reflects
+(** Optics of reflection and transmission (docs/povray-rules.md §4, §5, §6): how much a surface reflects
     (Fresnel), how an interior's fade dims light, and which interiors a ray is in. *)
 
 val fade : Compiled.obj -> float -> Rgb.t -> Rgb.t

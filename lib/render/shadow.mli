@@ -1,4 +1,4 @@
-(** The shadow feeler (POVRAY-3.7 §4): the ray from a lit point towards a light, and what the
+(** The shadow feeler (docs/povray-rules.md §4): the ray from a lit point towards a light, and what the
     objects it crosses leave of the light's colour. *)
 
 val feeler : Context.t -> slot:int -> Vec.t -> Vec.t -> float -> Vec.t -> float -> int list -> Rgb.t -> Rgb.t

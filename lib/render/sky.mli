@@ -1,4 +1,4 @@
-(** What a ray that meets nothing sees (POVRAY-3.7 §8.4, §18.1): the background colour, or the
+(** What a ray that meets nothing sees (docs/povray-rules.md §8.4, §18.1): the background colour, or the
     sky_sphere's pigments in the ray's direction over it. *)
 
 val colour : Compiled.t -> Vec.t -> Traced.t

@@ -1,4 +1,4 @@
-(* POV-Ray's bounding-slab tree (Build_BBox_Tree, sort_and_split; POVRAY-3.7 §15.8), built only for
+(* POV-Ray's bounding-slab tree (Build_BBox_Tree, sort_and_split; docs/povray-rules.md §15.8), built only for
    the order in which it lists its objects: POV-Ray fills the camera's starting interior list by
    walking this tree depth first (§6.4), so with the camera inside several objects that order
    decides which one counts as entered last. Boxes are POV-Ray's single-precision ones

@@ -1,4 +1,4 @@
-(** POV-Ray's bounding-slab tree (Build_BBox_Tree; POVRAY-3.7 §15.8), built for the order in which it
+(** POV-Ray's bounding-slab tree (Build_BBox_Tree; docs/povray-rules.md §15.8), built for the order in which it
     lists objects: POV-Ray fills the camera's starting interior list by walking it (§6.4). *)
 
 type t

@@ -2,7 +2,7 @@
    termination: the trace level or the ray's weight) → nearest hit → local illumination (ambient,
    diffuse, specular, each light through its shadow feeler) → transmitted ray → reflected ray. The
    lecture adds k_r·RayTrace(R) before k_t·RayTrace(T); POV-Ray traces the transmitted ray first,
-   and so does this tracer, because the order shows in the shadow cache. POVRAY-3.7 §2–§7. The colour seen along a ray is
+   and so does this tracer, because the order shows in the shadow cache. docs/povray-rules.md §2–§7. The colour seen along a ray is
    a function of the compiled scene and the ray; what each step needs lives in a module of its own:
    Nearest (the nearest hit and POV-Ray's tie rules), Normals (a texture's normal bending the
    surface normal), Lighting and Shadow (local illumination and shadow feelers), Optics (Fresnel,

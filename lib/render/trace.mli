@@ -1,4 +1,4 @@
-(** The recursive Whitted tracer (POVRAY-3.7 §2–§7): the colour seen along one ray. *)
+(** The recursive Whitted tracer (docs/povray-rules.md §2–§7): the colour seen along one ray. *)
 
 type result = Traced.t = { r : float; g : float; b : float; tr : float }
 (** A traced colour, in the working colour space, with its transmittance (used only by the

@@ -1,5 +1,5 @@
 (** What a ray brings back: a colour in the working colour space and its transmittance (used only
-    by the antialiasing comparison, POVRAY-3.7 §9.5). *)
+    by the antialiasing comparison, docs/povray-rules.md §9.5). *)
 
 type t = { r : float; g : float; b : float; tr : float }
 

@@ -1,4 +1,4 @@
-(* The set-up of cylinders, cones and discs (POVRAY-3.7 §15.2–§15.4): the transform from each one's
+(* The set-up of cylinders, cones and discs (docs/povray-rules.md §15.2–§15.4): the transform from each one's
    canonical space to the shape as written, computed in POV-Ray's operation order
    (Cone::Compute_Cone_Data, Compute_Cylinder_Data, Disc::Compute_Disc), since the last bit of a
    matrix entry can decide a pixel. *)

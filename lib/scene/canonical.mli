@@ -1,4 +1,4 @@
-(** Cylinders, cones and discs as POV-Ray sets them up (POVRAY-3.7 §15.2–§15.4): each one is a
+(** Cylinders, cones and discs as POV-Ray sets them up (docs/povray-rules.md §15.2–§15.4): each one is a
     canonical shape placed by a transform, computed here in POV-Ray's operation order. *)
 
 val cylinder : p1:Vec.t -> p2:Vec.t -> radius:float -> closed:bool -> Scene.shape option

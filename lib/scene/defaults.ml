@@ -1,4 +1,4 @@
-(* POV-Ray's defaults for reflection, finishes, textures and interiors (POVRAY-3.7 §10). *)
+(* POV-Ray's defaults for reflection, finishes, textures and interiors (docs/povray-rules.md §10). *)
 
 open Scene
 

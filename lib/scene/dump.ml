@@ -24,7 +24,7 @@ let matrix (t : Transform.t) =
     (String.concat ", "
        (List.map num [ t.m00; t.m01; t.m02; t.m10; t.m11; t.m12; t.m20; t.m21; t.m22; t.m30; t.m31; t.m32 ]))
 
-(* Only what differs from the default finish (POVRAY-3.7 §10.1) is shown. *)
+(* Only what differs from the default finish (docs/povray-rules.md §10.1) is shown. *)
 let finish (f : finish) =
   let d = Defaults.finish in
   let items = ref [] in
@@ -135,7 +135,7 @@ let warp (w : warp) =
   | Planar_warp c -> Printf.sprintf "warp { planar %s, %s }" (vec c.orientation) (num c.offset)
   | Cubic_warp -> "warp { cubic }"
 
-(* A pattern pigment with its whole map and its composed transform (POVRAY-3.7 §17). *)
+(* A pattern pigment with its whole map and its composed transform (docs/povray-rules.md §17). *)
 let rec pigment = function
   | Solid c | Solid_placed { colour = c; _ } -> colour c
   | Pattern p ->

@@ -1,4 +1,4 @@
-(* Pigment patterns and colour maps, after POVRAY-3.7 §17. *)
+(* Pigment patterns and colour maps, after docs/povray-rules.md §17. *)
 
 let checker = Patterns.checker
 let gradient = Patterns.gradient

@@ -1,5 +1,5 @@
 (** Pigment evaluation: patterns, the value wrap and waves, and colour-map lookup; the default maps,
-    and a pigment's transform (POVRAY-3.7 §17). *)
+    and a pigment's transform (docs/povray-rules.md §17). *)
 
 val checker : Vec.t -> float
 (** [checker] is {!Patterns.checker} (§17.4). *)

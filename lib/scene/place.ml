@@ -1,4 +1,4 @@
-(* Moving shapes, and the whole scene. What one object modifier does to a shape (POVRAY-3.7 §14.4), following the shapes' Translate,
+(* Moving shapes, and the whole scene. What one object modifier does to a shape (docs/povray-rules.md §14.4), following the shapes' Translate,
    Rotate, Scale and Transform methods in POV-Ray (shape/spheres.cpp, planes.cpp, triangle.cpp,
    mesh.cpp) down to the operation order, since a baked parameter is only bit-exact if it is
    computed the same way. *)

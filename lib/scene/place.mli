@@ -1,5 +1,5 @@
 (** Moving shapes: what one [translate], [rotate], [scale], [matrix] or [transform] modifier does
-    to a shape (POVRAY-3.7 §14.4), shape by shape as POV-Ray's [Translate], [Rotate], [Scale] and
+    to a shape (docs/povray-rules.md §14.4), shape by shape as POV-Ray's [Translate], [Rotate], [Scale] and
     [Transform] methods do it. Apply the modifiers one by one in text order. Also the whole scene
     moved, for [--scene-scale] and [--scene-translate]. *)
 

@@ -27,7 +27,7 @@ val max3 : t -> float
 (** [max3 c] is the largest channel. *)
 
 val intensity : t -> float
-(** [intensity c] is 0.297 r + 0.589 g + 0.114 b, POV-Ray's grey (POVRAY-3.7 conventions). *)
+(** [intensity c] is 0.297 r + 0.589 g + 0.114 b, POV-Ray's grey (docs/povray-rules.md §3). *)
 
 val is_zero : t -> bool
 (** [is_zero c] is true when every channel is exactly 0. *)

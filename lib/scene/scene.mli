@@ -28,7 +28,7 @@ type bitmap = {
   bump_size : float option;  (** bump_map's [bump_size], which the normal's amount takes *)
 }
 
-(** A pattern: a function from a point in pattern space to a value (POVRAY-3.7 §17.4–§17.7;
+(** A pattern: a function from a point in pattern space to a value (docs/povray-rules.md §17.4–§17.7;
     the others as POV-Ray 3.7's pattern.cpp defines them). Values stored in single precision by
     POV-Ray ([SNGL]) are rounded when parsed. *)
 type pattern =
@@ -206,7 +206,7 @@ and pigment =
       (** a plain colour that was transformed: the same everywhere, but a later edit that gives
           it a pattern keeps the transform (§17.9) *)
 
-(** [reflection {…}] of a finish (POVRAY-3.7 §5.1). *)
+(** [reflection {…}] of a finish (docs/povray-rules.md §5.1). *)
 type reflection = {
   rmin : Rgb.t;  (** reflection at normal incidence (or the only value) *)
   rmax : Rgb.t;  (** reflection at grazing incidence *)

@@ -1,4 +1,4 @@
-(** The values of the scene language's [spline { … }] (POVRAY-3.7 §11.5; backend/math/splines.cpp):
+(** The values of the scene language's [spline { … }] (docs/povray-rules.md §11.5; backend/math/splines.cpp):
     (time, value) entries kept sorted by time, and the value at any time by linear, quadratic,
     Catmull-Rom ([cubic_spline]) or natural cubic interpolation, exactly as POV-Ray 3.7 computes
     it (Get_Spline_Val, same float operations in the same order).

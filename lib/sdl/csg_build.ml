@@ -1,5 +1,5 @@
 (* CSG as POV-Ray builds it: inversion by De Morgan's rule, and how an object as read enters the
-   scene, a union dissolved into its members and any other CSG kept whole (POVRAY-3.7 §16). *)
+   scene, a union dissolved into its members and any other CSG kept whole (docs/povray-rules.md §16). *)
 
 open Reader
 

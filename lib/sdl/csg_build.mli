@@ -1,5 +1,5 @@
 (** CSG as POV-Ray builds it: inversion by De Morgan's rule (§16.3), and how an object as read
-    enters the scene: a union dissolved into its members, any other CSG kept whole (POVRAY-3.7
+    enters the scene: a union dissolved into its members, any other CSG kept whole (docs/povray-rules.md
     §16.4, §16.5). *)
 
 val invert : Value.obj -> Value.obj

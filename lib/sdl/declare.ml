@@ -1,4 +1,4 @@
-(* Declarations (POVRAY-3.7 §11.3): the value of a #declare or a macro argument, arrays, and where
+(* Declarations (docs/povray-rules.md §11.3): the value of a #declare or a macro argument, arrays, and where
    the value is stored. *)
 
 open Token

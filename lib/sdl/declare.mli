@@ -1,4 +1,4 @@
-(** Declarations (POVRAY-3.7 §11.3): the value of a #declare or a macro argument, arrays, and where
+(** Declarations (docs/povray-rules.md §11.3): the value of a #declare or a macro argument, arrays, and where
     a value is stored. *)
 
 val parse_rvalue : ?store:(Value.t -> unit) -> ?name:string -> Reader.st -> Value.t * bool

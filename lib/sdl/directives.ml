@@ -1,4 +1,4 @@
-(* Directives (POVRAY-3.7 §11.3), run as the token stream is read: conditionals, loops, macros and
+(* Directives (docs/povray-rules.md §11.3), run as the token stream is read: conditionals, loops, macros and
    their calls, includes, messages, #version, #undef and #default; #declare and the file directives
    are handed to Declare and User_files. *)
 

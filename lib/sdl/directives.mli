@@ -1,4 +1,4 @@
-(** Directives (POVRAY-3.7 §11.3), run as the token stream is read. *)
+(** Directives (docs/povray-rules.md §11.3), run as the token stream is read. *)
 
 val directive_names : string list
 (** [directive_names] are the directives povml knows, without the '#'. *)

@@ -1,4 +1,4 @@
-(** Expressions (POVRAY-3.7 §11.2): floats, vectors, colours, strings, the built-in functions and
+(** Expressions (docs/povray-rules.md §11.2): floats, vectors, colours, strings, the built-in functions and
     the transformations. *)
 
 val function_names : string list

@@ -1,4 +1,4 @@
-(** The scene-language interpreter: text to an immutable [Scene.t] (POVRAY-3.7 §11). *)
+(** The scene-language interpreter: text to an immutable [Scene.t] (docs/povray-rules.md §11). *)
 
 (** What the scene can see of the command line. *)
 type options = {

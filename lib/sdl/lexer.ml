@@ -1,5 +1,5 @@
 (* The lexer: scene text to located tokens, read on demand, and the fast path that reads a vector
-   of plain numbers straight from the text (POVRAY-3.7 §11.1). *)
+   of plain numbers straight from the text (docs/povray-rules.md §11.1). *)
 
 open Token
 

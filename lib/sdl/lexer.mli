@@ -1,4 +1,4 @@
-(** The lexer: scene text to located tokens, read on demand (POVRAY-3.7 §11.1). *)
+(** The lexer: scene text to located tokens, read on demand (docs/povray-rules.md §11.1). *)
 
 type t
 (** A lexer over one text. *)

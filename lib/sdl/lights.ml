@@ -1,4 +1,4 @@
-(* The light_source block (POVRAY-3.7 §10.2, §18.2, §18.3, §19.2). *)
+(* The light_source block (docs/povray-rules.md §10.2, §18.2, §18.3, §19.2). *)
 
 open Token
 open Reader

@@ -1,5 +1,5 @@
 (** The light_source block: point lights, spotlights, cylinder and parallel lights, and a light's
-    looks_like object (POVRAY-3.7 §10.2, §18.2, §18.3, §19.2). *)
+    looks_like object (docs/povray-rules.md §10.2, §18.2, §18.3, §19.2). *)
 
 (** A light source as read: alone, or with its looks_like object (§19.2), kept as a union of the
     light and the object so that later transforms move both. *)

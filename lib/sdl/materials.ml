@@ -1,4 +1,4 @@
-(* Pigments, finishes, textures and interiors (POVRAY-3.7 §5, §10.1). *)
+(* Pigments, finishes, textures and interiors (docs/povray-rules.md §5, §10.1). *)
 
 open Token
 open Reader
@@ -11,7 +11,7 @@ let ident_of_kind st f =
   | Ident s -> ( match cur_value st s with Some v -> (match f v with Some r -> advance st; Some r | None -> None) | None -> None)
   | _ -> None
 
-(* color_map { [v COLOUR] … } or color_map { Id } (POVRAY-3.7 §17.3): entries in the order written,
+(* color_map { [v COLOUR] … } or color_map { Id } (docs/povray-rules.md §17.3): entries in the order written,
    the old form [v1 v2 COLOUR1 COLOUR2] giving two; values and colours in single precision. *)
 let parse_colour_map st what : Scene.map_entry array =
   let loc = peek_loc st in

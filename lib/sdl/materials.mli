@@ -1,4 +1,4 @@
-(** Pigments, finishes, textures and interiors (POVRAY-3.7 §5, §10.1). *)
+(** Pigments, finishes, textures and interiors (docs/povray-rules.md §5, §10.1). *)
 
 val ident_of_kind : Reader.st -> (Value.t -> 'a option) -> 'a option
 (** [ident_of_kind st f] consumes an identifier whose value [f] accepts, and returns [f]'s result. *)

@@ -1,4 +1,4 @@
-(* The corners of triangles, and the mesh and mesh2 objects (POVRAY-3.7 §2.4–§2.6). *)
+(* The corners of triangles, and the mesh and mesh2 objects (docs/povray-rules.md §2.4–§2.6). *)
 
 open Token
 open Reader

@@ -1,5 +1,5 @@
 (* Objects as read (Value.obj), before they enter the scene: a new one, and what the modifiers
-   that reach every member do to one (POVRAY-3.7 §14.7, §15.5, §16.5). *)
+   that reach every member do to one (docs/povray-rules.md §14.7, §15.5, §16.5). *)
 
 module V = Value
 

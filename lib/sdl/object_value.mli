@@ -1,5 +1,5 @@
 (** Objects as read ([Value.obj]), before they enter the scene: making one, and what the modifiers
-    that reach every member of a CSG do to one (POVRAY-3.7 §14.7, §15.5, §16.5). *)
+    that reach every member of a CSG do to one (docs/povray-rules.md §14.7, §15.5, §16.5). *)
 
 val new_obj_of : Value.shape -> Loc.t -> Value.obj
 (** [new_obj_of shape loc] is an object of [shape] written at [loc], with no texture, interior or

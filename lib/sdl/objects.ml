@@ -1,5 +1,5 @@
 (* The object parser: which object a keyword starts, the primitives read in place, and the
-   modifiers every object takes (POVRAY-3.7 §2, §14, §15, §16). *)
+   modifiers every object takes (docs/povray-rules.md §2, §14, §15, §16). *)
 
 open Token
 open Reader

@@ -1,4 +1,4 @@
-(** The object parser: every object, primitive or CSG, as read, with its modifiers (POVRAY-3.7 §2,
+(** The object parser: every object, primitive or CSG, as read, with its modifiers (docs/povray-rules.md §2,
     §14, §15, §16). *)
 
 val unsupported_rvalue_set : unit Reader.Names.t

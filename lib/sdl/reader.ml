@@ -138,7 +138,7 @@ let keywords =
     "blob"; "height_field"; "superellipsoid"; "ovus"; "sphere_sweep"; "prism"; "lathe"; "sor"; "julia_fractal"; "reciprocal"; "bicubic_patch"; "parametric"; "isosurface";
     "material"; "texture_map"; "interior_texture"; "tiles"; "irid"; "uv_mapping"; "crand"; "image_map"; "bump_map"; "image_pattern"; "caustics"; "cutaway_textures"; "pigment_pattern";
     "bounded_by"; "trace"; "inside"; "min_extent"; "max_extent" ]
-  (* pigment patterns (POVRAY-3.7 §17) *)
+  (* pigment patterns (docs/povray-rules.md §17) *)
   @ [ "checker"; "gradient"; "hexagon"; "brick"; "brick_size"; "mortar"; "color_map"; "colour_map"; "frequency";
       "phase"; "ramp_wave"; "triangle_wave"; "sine_wave"; "scallop_wave"; "cubic_wave"; "poly_wave"; "pigment_map" ]
   (* the other patterns, their modifiers, warps and normals *)
@@ -170,7 +170,7 @@ let unsupported =
     "subsurface";
     "light_group"; "sturm";
     "phong_albedo"; "metallic_albedo"; "translucency" ]
-  (* patterns and pattern modifiers not read yet (POVRAY-3.7 §17) *)
+  (* patterns and pattern modifiers not read yet (docs/povray-rules.md §17) *)
   @ [ "density_file"; "color_list" ]
   (* more of POV-Ray 3.7's reserved words that start something povml does not read, each found
      where POV-Ray reads it in an object, a light_source, a texture or an expression (checked word

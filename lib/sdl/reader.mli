@@ -1,6 +1,6 @@
 (** The reader of the scene language: the parser state, the token stream with its frames (scene
     file, included files, macro bodies), the symbol tables, and the helpers every part of the
-    interpreter uses to look at tokens and report errors (POVRAY-3.7 §11). *)
+    interpreter uses to look at tokens and report errors (docs/povray-rules.md §11). *)
 
 module V = Value
 

@@ -1,4 +1,4 @@
-(* Camera, global settings, sky_sphere and background (POVRAY-3.7 §1, §7, §8). *)
+(* Camera, global settings, sky_sphere and background (docs/povray-rules.md §1, §7, §8). *)
 
 open Token
 open Reader

@@ -1,4 +1,4 @@
-(* Readers of polygon (POVRAY-3.7 §15.7, Parse_Polygon), quadric (Parse_Quadric), and poly, cubic,
+(* Readers of polygon (docs/povray-rules.md §15.7, Parse_Polygon), quadric (Parse_Quadric), and poly, cubic,
    quartic (Parse_Poly) and polynomial (Parse_Polynom). *)
 
 open Token

@@ -1,4 +1,4 @@
-(** The reader of a declared spline, [spline { … }] (POVRAY-3.7 §11.5; Parse_Spline of
+(** The reader of a declared spline, [spline { … }] (docs/povray-rules.md §11.5; Parse_Spline of
     parser/express.cpp). *)
 
 val read_block_with : named:(Reader.st -> string -> Spline.t option) -> Reader.st -> Spline.t

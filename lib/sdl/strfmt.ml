@@ -1,4 +1,4 @@
-(* The string functions of the scene language that need more than a line (POVRAY-3.7 §11.2). *)
+(* The string functions of the scene language that need more than a line (docs/povray-rules.md §11.2). *)
 
 (* str(V, L, P): printf's %[L].[P]f: P digits after the point (6 when P < 0), at least |L|
    characters, padded with zeros when L < 0 and with spaces when L > 0. *)

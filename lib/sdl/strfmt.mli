@@ -1,4 +1,4 @@
-(** String functions of the scene language (POVRAY-3.7 §11.2). *)
+(** String functions of the scene language (docs/povray-rules.md §11.2). *)
 
 val str : float -> int -> int -> string
 (** [str v l p] is [str(v, l, p)]: [p] decimals (6 when [p < 0]), padded

@@ -1,5 +1,5 @@
 (* The text object: a TrueType font file found and read, the string decoded, one extruded glyph
-   per character (POVRAY-3.7 §15.9). *)
+   per character (docs/povray-rules.md §15.9). *)
 
 open Token
 open Reader

@@ -1,5 +1,5 @@
 (** The text object: a string set in a TrueType font, one extruded glyph per character
-    (POVRAY-3.7 §15.9). *)
+    (docs/povray-rules.md §15.9). *)
 
 val parse : Reader.st -> Loc.t -> Value.obj
 (** [parse st loc] reads the block of a text object written at [loc] (after the keyword) up to its

@@ -1,4 +1,4 @@
-(** The scene's own files: [#fopen], [#read], [#write] and [#fclose] (POVRAY-3.7 §11.3), through
+(** The scene's own files: [#fopen], [#read], [#write] and [#fclose] (docs/povray-rules.md §11.3), through
     the access policy of [Reader.options]. *)
 
 val fopen : Reader.st -> unit

@@ -1,4 +1,4 @@
-(* UTF-8 decoding for the strings of text objects (POVRAY-3.7 §15.9). *)
+(* UTF-8 decoding for the strings of text objects (docs/povray-rules.md §15.9). *)
 
 (* Characters beyond 0xFFFF are dropped, as POV-Ray keeps UCS-2 only. *)
 let decode ~invalid s =

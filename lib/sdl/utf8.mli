@@ -1,4 +1,4 @@
-(** UTF-8 decoding, for the strings of text objects read with charset utf8 (POVRAY-3.7 §15.9). *)
+(** UTF-8 decoding, for the strings of text objects read with charset utf8 (docs/povray-rules.md §15.9). *)
 
 val decode : invalid:(int -> unit) -> string -> int array
 (** [decode ~invalid s] is the character codes of the UTF-8 text [s], in order. A character beyond

@@ -1,4 +1,4 @@
-(* Values of the scene language and POV-Ray's arithmetic on them (POVRAY-3.7 §11.2). *)
+(* Values of the scene language and POV-Ray's arithmetic on them (docs/povray-rules.md §11.2). *)
 
 type obj = {
   shape : shape;
@@ -19,7 +19,7 @@ type obj = {
 }
 
 (** A primitive, or a CSG: a union with [split] on is dissolved into its members when it enters
-    the scene (POVRAY-3.7 §16.4); any other CSG is kept whole. *)
+    the scene (docs/povray-rules.md §16.4); any other CSG is kept whole. *)
 and shape = Prim of Scene.shape | Csg of { kind : Scene.csg_kind; members : member list; split : bool; box : float array option }
 
 and member = Member_obj of obj | Member_light of Scene.light
@@ -74,7 +74,7 @@ type t =
   | Unsupported of { what : string; at : Loc.t }
       (** a declaration that uses a feature povml cannot render yet: an error only where it is used *)
   | File of user_file  (** the identifier [#fopen] declares *)
-  | Colour_map of Scene.map_entry array  (** a declared [color_map] (POVRAY-3.7 §17.3) *)
+  | Colour_map of Scene.map_entry array  (** a declared [color_map] (docs/povray-rules.md §17.3) *)
   | Pigment_map of Scene.pigment_entry array  (** a declared [pigment_map] (§17.3) *)
   | Texture_map of Scene.texture_entry array  (** a declared [texture_map] *)
   | Material of material  (** a declared [material] *)
@@ -115,7 +115,7 @@ let terms = function
   | Vector a | Colour a -> Array.length a
   | String _ | Pigment _ | Normal _ | Sky _ | Finish _ | Texture _ | Interior _ | Object _ | Light _ | Camera _ | Array _ | Macro _ | Transform _ | Unsupported _ | File _ | Colour_map _ | Pigment_map _ | Texture_map _ | Material _ | Spline _ | Function _ -> 0
 
-(* POVRAY-3.7 §11.2: a float is replicated into every term, a shorter vector is padded with zeros. *)
+(* docs/povray-rules.md §11.2: a float is replicated into every term, a shorter vector is padded with zeros. *)
 let promote v n =
   match v with
   | Float f -> Array.make n f

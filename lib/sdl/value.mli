@@ -1,4 +1,4 @@
-(** Values of the scene language and POV-Ray's arithmetic on them (POVRAY-3.7 §11.2). *)
+(** Values of the scene language and POV-Ray's arithmetic on them (docs/povray-rules.md §11.2). *)
 
 (** An object as declared: its texture and interior are filled in only when it enters the scene. *)
 type obj = {
@@ -20,7 +20,7 @@ type obj = {
 }
 
 (** A primitive, or a CSG: a union with [split] on is dissolved into its members when it enters
-    the scene (POVRAY-3.7 §16.4); any other CSG is kept whole. [box] is {!Scene.shape}'s: POV-Ray's
+    the scene (docs/povray-rules.md §16.4); any other CSG is kept whole. [box] is {!Scene.shape}'s: POV-Ray's
     box of a union or merge as its history made it. *)
 and shape = Prim of Scene.shape | Csg of { kind : Scene.csg_kind; members : member list; split : bool; box : float array option }
 
@@ -76,7 +76,7 @@ type t =
   | Unsupported of { what : string; at : Loc.t }
       (** a declaration that uses a feature povml cannot render yet: an error only where it is used *)
   | File of user_file  (** the identifier [#fopen] declares *)
-  | Colour_map of Scene.map_entry array  (** a declared [color_map] (POVRAY-3.7 §17.3) *)
+  | Colour_map of Scene.map_entry array  (** a declared [color_map] (docs/povray-rules.md §17.3) *)
   | Pigment_map of Scene.pigment_entry array  (** a declared [pigment_map] (§17.3) *)
   | Texture_map of Scene.texture_entry array  (** a declared [texture_map] *)
   | Material of material  (** a declared [material] *)

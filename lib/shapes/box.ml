@@ -1,4 +1,4 @@
-(* The box: POVRAY-3.7 §15.1, §14.5 (a), POV-Ray's Box. *)
+(* The box: docs/povray-rules.md §15.1, §14.5 (a), POV-Ray's Box. *)
 
 type t = { x0 : float; y0 : float; z0 : float; x1 : float; y1 : float; z1 : float }
 type moved = { bx : t; btr : Transform.t }

@@ -1,4 +1,4 @@
-(** The box (POVRAY-3.7 §15.1): its corners sorted per axis, in world space or mapped by a
+(** The box (docs/povray-rules.md §15.1): its corners sorted per axis, in world space or mapped by a
     transform (§14.5 (a)). The side a hit is on is 1–6 for X−, X+, Y−, Y+, Z−, Z+. *)
 
 type t = { x0 : float; y0 : float; z0 : float; x1 : float; y1 : float; z1 : float }

@@ -1,4 +1,4 @@
-(* The cylinder and the cone: POVRAY-3.7 §15.2, §15.3, §14.5 (b), POV-Ray's Cone. *)
+(* The cylinder and the cone: docs/povray-rules.md §15.2, §15.3, §14.5 (b), POV-Ray's Cone. *)
 
 type t = { ctr : Transform.t; dist : float; cyl : bool; closed : bool }
 

@@ -1,4 +1,4 @@
-(** The cylinder and the cone (POVRAY-3.7 §15.2, §15.3) in their canonical space, placed by a
+(** The cylinder and the cone (docs/povray-rules.md §15.2, §15.3) in their canonical space, placed by a
     transform: the cylinder x² + y² ≤ 1, 0 ≤ z ≤ 1, the cone x² + y² ≤ z², dist ≤ z ≤ 1. A hit's
     part is 1 the base (small end, z = dist), 2 the cap (z = 1), 3 the side. *)
 

@@ -1,4 +1,4 @@
-(* CSG kept whole: POVRAY-3.7 §16, POV-Ray's CSG (union, merge, intersection) and clipped_by. *)
+(* CSG kept whole: docs/povray-rules.md §16, POV-Ray's CSG (union, merge, intersection) and clipped_by. *)
 
 open Compiled
 

@@ -1,4 +1,4 @@
-(** CSG kept whole (POVRAY-3.7 §16): union (with [split_union off]), merge, intersection and
+(** CSG kept whole (docs/povray-rules.md §16): union (with [split_union off]), merge, intersection and
     difference, and objects with [clipped_by] or [bounded_by]. A CSG's hits are its members' hits kept by its rule;
     its inside is its members' insides combined. The members are shapes again, so each function
     takes the member operation it recurses through ([Shape]'s) as an argument. *)

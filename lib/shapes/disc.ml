@@ -1,4 +1,4 @@
-(* The disc: POVRAY-3.7 §15.4, §14.5 (b), POV-Ray's Disc. *)
+(* The disc: docs/povray-rules.md §15.4, §14.5 (b), POV-Ray's Disc. *)
 
 type t = { dtr : Transform.t; dnx : float; dny : float; dnz : float; or2 : float; ir2 : float }
 

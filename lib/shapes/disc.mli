@@ -1,4 +1,4 @@
-(** The disc (POVRAY-3.7 §15.4) in the plane z = 0 of its canonical space, placed by a transform. *)
+(** The disc (docs/povray-rules.md §15.4) in the plane z = 0 of its canonical space, placed by a transform. *)
 
 type t = {
   dtr : Transform.t;  (** canonical space to world *)

@@ -1,4 +1,4 @@
-(* A text object's letter (POVRAY-3.7 §15.9): TrueType::GlyphIntersect, Inside_Glyph and
+(* A text object's letter (docs/povray-rules.md §15.9): TrueType::GlyphIntersect, Inside_Glyph and
    solve_quad, their arithmetic in the same order, so that a ray grazing an edge goes the same way. *)
 
 type outline = {

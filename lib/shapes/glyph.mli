@@ -1,4 +1,4 @@
-(** One letter of a [text] object (POVRAY-3.7 §15.9): a TrueType glyph outline in the plane z = 0
+(** One letter of a [text] object (docs/povray-rules.md §15.9): a TrueType glyph outline in the plane z = 0
     of its own space, in em units, extruded from z = 0 to z = [depth], mapped to the world by its
     transform. Rays are brought into glyph space without renormalising the direction, so a
     glyph-space parameter is a world depth. The arithmetic and tolerances are POV-Ray's

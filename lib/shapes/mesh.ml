@@ -1,4 +1,4 @@
-(* Triangle meshes as POV-Ray stores them (POVRAY-3.7 §2.6): single-precision vertices and normals,
+(* Triangle meshes as POV-Ray stores them (docs/povray-rules.md §2.6): single-precision vertices and normals,
    each face with its plane (normal and distance computed in double, both stored in single
    precision: MESH_TRIANGLE's Distance is an SNGL),
    its dominant axis and swap, and a BVH over the faces. Built once; instances share it. The

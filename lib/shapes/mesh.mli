@@ -1,4 +1,4 @@
-(** Triangle meshes as POV-Ray stores them (POVRAY-3.7 §2.6), with a BVH over the faces. A mesh is
+(** Triangle meshes as POV-Ray stores them (docs/povray-rules.md §2.6), with a BVH over the faces. A mesh is
     immutable and shared by every object that uses it. *)
 
 type f32s = (float, Bigarray.float32_elt, Bigarray.c_layout) Bigarray.Array1.t

@@ -1,4 +1,4 @@
-(* The plane: POVRAY-3.7 §2.3, §14.5 (a), POV-Ray's Plane. *)
+(* The plane: docs/povray-rules.md §2.3, §14.5 (a), POV-Ray's Plane. *)
 
 type t = { nx : float; ny : float; nz : float; dist : float }
 type moved = { pl : t; ptr : Transform.t; pnormal : Vec.t }

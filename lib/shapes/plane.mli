@@ -1,4 +1,4 @@
-(** The plane (POVRAY-3.7 §2.3): the points P with N·P = offset, and the plane mapped by a
+(** The plane (docs/povray-rules.md §2.3): the points P with N·P = offset, and the plane mapped by a
     transform (§14.5 (a)). Planes are unbounded. *)
 
 type t = { nx : float; ny : float; nz : float; dist : float }

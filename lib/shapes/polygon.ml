@@ -1,4 +1,4 @@
-(* The polygon, after POV-Ray 3.7's shape/polygon.cpp and Parse_Polygon (POVRAY-3.7 §15.7), in
+(* The polygon, after POV-Ray 3.7's shape/polygon.cpp and Parse_Polygon (docs/povray-rules.md §15.7), in
    their operation order. *)
 
 type t = { tr : Transform.t; points : float array; degenerate : bool }

@@ -1,4 +1,4 @@
-(** The polygon (POVRAY-3.7 §15.7; POV-Ray's [shape/polygon.cpp], [parse.cpp: Parse_Polygon]):
+(** The polygon (docs/povray-rules.md §15.7; POV-Ray's [shape/polygon.cpp], [parse.cpp: Parse_Polygon]):
     one or more closed outlines in a plane, filled by the even-odd rule. It is flat and has no
     inside: Inside is always false and [inverse] does nothing, so in an intersection it keeps only
     its own hits inside the other members and hides theirs. The points live in the polygon's own

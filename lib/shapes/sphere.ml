@@ -1,4 +1,4 @@
-(* The sphere and the ellipsoid: POVRAY-3.7 §2.2, §14.5 (b), POV-Ray's Sphere. *)
+(* The sphere and the ellipsoid: docs/povray-rules.md §2.2, §14.5 (b), POV-Ray's Sphere. *)
 
 type t = { cx : float; cy : float; cz : float; radius : float; r2 : float }
 type uv_frame = { uv_trans : Transform.t; uv_centre : Vec.t }

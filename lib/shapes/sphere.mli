@@ -1,4 +1,4 @@
-(** The sphere (POVRAY-3.7 §2.2), and the ellipsoid: a sphere mapped by a transform (§14.5 (b)). *)
+(** The sphere (docs/povray-rules.md §2.2), and the ellipsoid: a sphere mapped by a transform (§14.5 (b)). *)
 
 type t = { cx : float; cy : float; cz : float; radius : float; r2 : float }
 (** Centre, radius as written (the normal is scaled by its reciprocal), radius². *)

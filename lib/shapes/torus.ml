@@ -1,4 +1,4 @@
-(* The torus: POVRAY-3.7 §15.5 (shape/torus.cpp), with POV-Ray's quartic and its solver (§15.6). *)
+(* The torus: docs/povray-rules.md §15.5 (shape/torus.cpp), with POV-Ray's quartic and its solver (§15.6). *)
 
 type t = { major : float; minor : float; sturm : bool; tr : Transform.t }
 

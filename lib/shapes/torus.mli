@@ -1,4 +1,4 @@
-(** The torus (POVRAY-3.7 §15.5): centred at the origin of its own space, symmetric about the Y
+(** The torus (docs/povray-rules.md §15.5): centred at the origin of its own space, symmetric about the Y
     axis, the tube's core circle of radius [major] in the XZ plane, mapped to the world by its
     transform (a torus always has one, §14.4). Rays are brought into torus space with the
     direction renormalised (§14.5 (b)); depths are returned in world units. *)

@@ -1,4 +1,4 @@
-(* Triangles as POV-Ray sets them up (POVRAY-3.7 §2.4, §2.5): a unit normal and plane distance,
+(* Triangles as POV-Ray sets them up (docs/povray-rules.md §2.4, §2.5): a unit normal and plane distance,
    the dominant axis of the normal for a 2-D inside test, vertices 1 and 2 swapped once so that the
    winding in that projection is consistent, and for smooth triangles the vector Perp and axis used
    to interpolate the vertex normals. *)

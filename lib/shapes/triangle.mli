@@ -1,4 +1,4 @@
-(** Standalone triangles and smooth triangles as POV-Ray sets them up (POVRAY-3.7 §2.4, §2.5). *)
+(** Standalone triangles and smooth triangles as POV-Ray sets them up (docs/povray-rules.md §2.4, §2.5). *)
 
 type t = private {
   nx : float; ny : float; nz : float;  (** unit normal *)

@@ -1,6 +1,6 @@
 // povml benchmark scene: render at +W640 +H480 +A0.3.
 // A few spheres (mirror, glass, coloured) and a reflective plane, two lights; exercises shadows,
-// reflection, refraction and antialiasing. Subset only (POVRAY-3.7.md §1-§9).
+// reflection, refraction and antialiasing. Subset only (docs/povray-rules.md §1-§9).
 #version 3.7;
 global_settings { assumed_gamma 1.0 max_trace_level 8 }
 camera { location <0, 2.4, -8> look_at <0, 1.0, 0> right x*image_width/image_height angle 55 }

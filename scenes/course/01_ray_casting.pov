@@ -1,7 +1,7 @@
 // povml course scene 01 -- slides "Recap: Local Illumination" and "Recap: Result of Ray Casting".
 // Shows: ray casting with local illumination only, I = ka*Ia + sum_j Ii,j * kd (n.l_j): every light
 // is assumed visible (no shadow feelers), so there are no shadows at all.
-// In POV-Ray terms the lights are `shadowless` (POVRAY-3.7.md §3.2, §3.3); note that POV-Ray's
+// In POV-Ray terms the lights are `shadowless` (docs/povray-rules.md §3.2, §3.3); note that POV-Ray's
 // shadowless lights also give no phong/specular highlights (§13.7).
 #version 3.7;
 global_settings { assumed_gamma 1.0 }

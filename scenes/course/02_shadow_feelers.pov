@@ -2,7 +2,7 @@
 // Shows: I = ka*Ia + sum_j S_j Ii,j (kd (n.l_j) + ks (h_j.n)^n): a shadow feeler is cast from each
 // hit point toward each light, and S_j = 0 if it hits an object first. Same scene as 01 with
 // ordinary (shadow-casting) lights: shadows appear, and the specular highlights come back.
-// (POVRAY-3.7.md §4; specular §3.3.)
+// (docs/povray-rules.md §4; specular §3.3.)
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 camera { location <0, 2.2, -7> look_at <0, 0.8, 0> right x*image_width/image_height }

@@ -4,7 +4,7 @@
 // the floor toward the light would hit that ball if they were not stopped at the light, which
 // would wrongly darken the whole floor. Only hits with t < distance to the light count, so the floor
 // is lit and only the small ball (really between light and floor) casts a shadow.
-// (POVRAY-3.7.md §4: 1e-3 < t < dist - 1e-3.)
+// (docs/povray-rules.md §4: 1e-3 < t < dist - 1e-3.)
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 camera { location <0, 2.5, -7> look_at <0, 1.6, 0> right x*image_width/image_height }

@@ -2,7 +2,7 @@
 // Shows: the reflected ray R = -E + 2(N.E)N (E pointing to the eye; POV-Ray writes it as
 // D - 2(D.N)N with D = -E) is cast from the hit point and I = I_local + kr * I_r'.
 // A mirror ball (kr = 0.8) and a slightly reflective floor (kr = 0.25) reflect the coloured balls.
-// (POVRAY-3.7.md §5.3.)
+// (docs/povray-rules.md §5.3.)
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 camera { location <0, 2.2, -7> look_at <0, 0.8, 0> right x*image_width/image_height }

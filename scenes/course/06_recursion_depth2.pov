@@ -3,7 +3,7 @@
 // with multiple reflections"). Scenes 05, 06 and 07 are identical except for max_trace_level.
 // This one: max_trace_level 2: one bounce. The mirrors reflect the scene, but the reflections OF the
 // mirrors seen in the other mirror are black.
-// (POVRAY-3.7.md §7: the primary ray is level 0; a ray at level >= max_trace_level returns black.)
+// (docs/povray-rules.md §7: the primary ray is level 0; a ray at level >= max_trace_level returns black.)
 #version 3.7;
 global_settings { assumed_gamma 1.0 max_trace_level 2 }
 camera { location <0, 1.8, -6> look_at <0, 1.0, 0> right x*image_width/image_height }

@@ -2,7 +2,7 @@
 // Shows: sin(a)/sin(b) = eta2/eta1; the transmitted ray T = -eta12 E + N(eta12 cos a - sqrt(1 +
 // eta12^2 (cos^2 a - 1))) is cast at each glass surface (entering and leaving), and
 // I = I_local + kr I_r + kt I_t. A glass ball (ior 1.5) inverts the balls behind it; a water
-// ball (ior 1.33) bends less. (POVRAY-3.7.md §6.2, §6.3.)
+// ball (ior 1.33) bends less. (docs/povray-rules.md §6.2, §6.3.)
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 camera { location <0, 1.6, -7> look_at <0, 1.0, 0> right x*image_width/image_height }

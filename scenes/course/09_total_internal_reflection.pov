@@ -5,7 +5,7 @@
 // normal) refract out: "Snell's window", a disc showing the sky and the green ball above the
 // water. Outside it 1 + eta^2 (cos^2 a - 1) < 0: total internal reflection turns the surface into
 // a perfect mirror of the sand and the balls under water.
-// (POVRAY-3.7.md §6.2: TIR ray traced at full strength and added unfiltered; §6.4 interior list.)
+// (docs/povray-rules.md §6.2: TIR ray traced at full strength and added unfiltered; §6.4 interior list.)
 // (A lone glass ball seen from outside never shows TIR: a ray that got in always gets out.)
 #version 3.7;
 global_settings { assumed_gamma 1.0 max_trace_level 8 }

@@ -2,7 +2,7 @@
 // "New Pseudo Code" and "Putting Everything Together".
 // Shows: local illumination + shadow feelers + reflection + refraction, recursively:
 // I = I_local + kr I(R) + kt I(T). A mirror ball, a glass ball (with filtered shadow), a matte
-// ball and a glossy reflective floor, lit by two lights. (POVRAY-3.7.md Appendix B.)
+// ball and a glossy reflective floor, lit by two lights. (docs/povray-rules.md, Appendix B.)
 #version 3.7;
 global_settings { assumed_gamma 1.0 max_trace_level 8 }
 camera { location <0.5, 2.4, -7> look_at <0, 0.9, 0> right x*image_width/image_height }

@@ -1,7 +1,7 @@
 // povml fidelity scene: adc_bailout
 // Rule: a child ray whose weight (parent weight * max(refl), or * max|filCol| for transmission)
 //       is below adc_bailout returns black; a transmitted ray is traced only if
-//       trans = min(1, |grey(filCol)|) > adc_bailout (POVRAY-3.7.md §7, §6.1, pitfall §13.13).
+//       trans = min(1, |grey(filCol)|) > adc_bailout (docs/povray-rules.md §7, §6.1, pitfall §13.13).
 // adc_bailout 0.5. Left ball: reflection 0.3 (reflected ray weight 0.3: black reflection).
 // Second: reflection 0.7 (reflected, but its own reflections are cut: weight 0.49).
 // Third: rgbt 0.8 (transmitted, see-through). Right: rgbt 0.4 (trans 0.4: no transmitted ray).

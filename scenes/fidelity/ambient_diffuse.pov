@@ -1,6 +1,6 @@
 // povml fidelity scene: ambient_diffuse
 // Rule: local colour = C*ambient*ambient_light*att + sum over lights of C*lc*(N.L)*diffuse*att
-//       (POVRAY-3.7.md §3.2, §3.3; default finish ambient 0.1 diffuse 0.6, §10.1).
+//       (docs/povray-rules.md §3.2, §3.3; default finish ambient 0.1 diffuse 0.6, §10.1).
 // Left: ambient 0.6 diffuse 0 (flat disc).  Middle: default finish (no finish block).
 // Right: ambient 0 diffuse 1 (black where N.L <= 0).  Floor: ambient 0.2 diffuse 0.5.
 #version 3.7;

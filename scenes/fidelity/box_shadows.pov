@@ -1,6 +1,6 @@
 // povml fidelity scene: box_shadows
 // Rule: box { A, B } with its corners sorted per axis; Box::Intersect's slabs, the side hit
-//       gives the normal, edges and corners decided by the 1e-6 tie rule (POVRAY-3.7.md §15.1);
+//       gives the normal, edges and corners decided by the 1e-6 tie rule (docs/povray-rules.md §15.1);
 //       translate and scale move the corners (§14.4). Boxes cast shadows on the floor and on
 //       each other (§4).
 // Three axis-aligned boxes, one given with its corners swapped, one flat (zero height) box on

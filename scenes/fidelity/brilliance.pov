@@ -1,6 +1,6 @@
 // povml fidelity scene: brilliance
 // Rule: diffuse term uses (N.L)^brilliance (exponent skipped when brilliance == 1)
-//       (POVRAY-3.7.md §3.3, ComputeDiffuseColour).
+//       (docs/povray-rules.md §3.3, ComputeDiffuseColour).
 // Left to right: brilliance 0.3 (flat, wide), 1 (Lambert), 5 (narrow, dark terminator).
 // The light comes from the upper right so the terminator is visible on every sphere.
 #version 3.7;

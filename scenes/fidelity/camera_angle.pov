@@ -1,6 +1,6 @@
 // povml fidelity scene: camera_angle
 // Rule: `angle A` sets the HORIZONTAL field of view across |right|: |direction| = |right|/(2 tan(A/2)),
-//       applied before look_at; right = x*image_width/image_height (POVRAY-3.7.md §1.3, pitfall §13.4).
+//       applied before look_at; right = x*image_width/image_height (docs/povray-rules.md §1.3, pitfall §13.4).
 // angle 35 (a telephoto view): the middle ball fills most of the width; a 90 degree default
 // would show all five balls small.
 #version 3.7;

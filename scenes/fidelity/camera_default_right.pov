@@ -1,6 +1,6 @@
 // povml fidelity scene: camera_default_right
 // Rule: the default right vector is <1.33,0,0> (not 4/3, not adjusted to the image size) and
-//       look_at keeps its length (POVRAY-3.7.md §1.1, §1.3, pitfall §13.2).
+//       look_at keeps its length (docs/povray-rules.md §1.1, §1.3, pitfall §13.2).
 // No `right` keyword. At 160x120 the balls look round; on a non-4:3 image they would be squashed.
 #version 3.7;
 global_settings { assumed_gamma 1.0 }

@@ -1,7 +1,7 @@
 // povml fidelity scene: camera_direction
 // Rule: without look_at/angle the ray is normalize(direction + x0*right + y0*up); the length of
 //       `direction` sets the zoom (|direction| 1.8 = narrower view than the default 1)
-//       (POVRAY-3.7.md §1.3, §1.4).
+//       (docs/povray-rules.md §1.3, §1.4).
 // direction <0,0,1.8> with explicit up y and right x*image_width/image_height.
 #version 3.7;
 global_settings { assumed_gamma 1.0 }

@@ -1,7 +1,7 @@
 // povml fidelity scene: camera_direction_skew
 // Rule: without look_at/angle the ray is normalize(direction + x0*right + y0*up) and nothing
 //       re-orthogonalises the vectors: a direction that is not perpendicular to right/up gives an
-//       oblique (skewed, off-axis) projection (POVRAY-3.7.md §1.3, §1.4).
+//       oblique (skewed, off-axis) projection (docs/povray-rules.md §1.3, §1.4).
 // direction <0.15,-0.1,1.8> with explicit up y and right x*image_width/image_height.
 // POV-Ray prints the (expected) warning "Camera vectors are not perpendicular".
 #version 3.7;

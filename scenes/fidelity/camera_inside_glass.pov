@@ -1,7 +1,7 @@
 // povml fidelity scene: camera_inside_glass
 // Rule: a camera inside a sphere starts with that sphere's interior in its list, so its first
 //       hit is an exit from glass (ratio 1.5/1); rays meeting the surface beyond the critical
-//       angle are totally internally reflected (POVRAY-3.7.md §6.4, §6.2, §2.2 Inside).
+//       angle are totally internally reflected (docs/povray-rules.md §6.4, §6.2, §2.2 Inside).
 // The camera sits off-centre inside a big glass ball (ior 1.5, radius 3) and looks out at
 // coloured balls. The floor (y = -0.5) cuts through the glass ball. Near the right edge the rays
 // meet the surface beyond the critical angle; a ray trapped by TIR in a sphere keeps being

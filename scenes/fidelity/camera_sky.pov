@@ -1,6 +1,6 @@
 // povml fidelity scene: camera_sky
 // Rule: look_at builds R = normalize(sky x D), U = D x R; a tilted `sky` rolls the view
-//       (POVRAY-3.7.md §1.3 step 4).
+//       (docs/povray-rules.md §1.3 step 4).
 // sky <0.35,1,0>: the horizon and the row of balls appear tilted (rolled clockwise).
 #version 3.7;
 global_settings { assumed_gamma 1.0 }

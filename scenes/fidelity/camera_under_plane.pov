@@ -1,6 +1,6 @@
 // povml fidelity scene: camera_under_plane
 // Rule: primary rays start with every object whose Inside(camera) is true; for a plane the half
-//       space OPPOSITE the normal is inside (n^.P - d < EPSILON) (POVRAY-3.7.md §2.3, §6.4, §1.4).
+//       space OPPOSITE the normal is inside (n^.P - d < EPSILON) (docs/povray-rules.md §2.3, §6.4, §1.4).
 // The camera is under a water surface plane { y, 0 } (ior 1.33): the first hit on it is an EXIT
 // (ratio 1.33/1), giving Snell's window: the sky and the red ball are seen through a disc,
 // outside which the surface totally reflects the sand and the green ball (§6.2).

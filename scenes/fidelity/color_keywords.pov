@@ -1,7 +1,7 @@
 // povml fidelity scene: color_keywords
 // Rule: colour syntax: rgb/rgbf/rgbt/rgbft, optional `color`/`colour` keyword, component keywords
 //       red/green/blue/filter/transmit overwrite components; `rgbt V` puts V's 4th term in TRANSMIT;
-//       a float after rgb is replicated (POVRAY-3.7.md §11.2).
+//       a float after rgb is replicated (docs/povray-rules.md §11.2).
 // Left: color red 1 green 0.5 (blue stays 0). Second: rgb <0.2,0.4,1> filter 0.7 (filtered blue).
 // Third: rgbt <1,1,0.3,0.6> (transmit). Right: color rgb 0.3 blue 0.9 transmit 0.3.
 #version 3.7;

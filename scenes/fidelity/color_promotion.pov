@@ -1,7 +1,7 @@
 // povml fidelity scene: color_promotion
 // Rule: a bare float or vector in a full colour context is promoted: `color 0.5` = rgbft
 //       <0.5,0.5,0.5,0.5,0.5> (half filter, half transmit!), `color <r,g,b>` = opaque,
-//       `color <r,g,b,f>` gives FILTER; `rgb 0.5` is opaque grey (POVRAY-3.7.md §11.2, pitfall §13.17).
+//       `color <r,g,b,f>` gives FILTER; `rgb 0.5` is opaque grey (docs/povray-rules.md §11.2, pitfall §13.17).
 // Left to right: color 0.5 (see-through, att 0: only the transmitted part), rgb 0.5 (opaque),
 // color <1,0.5,0.25,0.6> (filtered orange), color <0.2,0.6,0.9> (opaque blue).
 #version 3.7;

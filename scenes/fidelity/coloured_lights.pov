@@ -1,6 +1,6 @@
 // povml fidelity scene: coloured_lights
 // Rule: each light contributes C*lc*(N.L)*diffuse (+ highlights scaled by lc); lights are summed in
-//       parse order; light colours are unbounded (POVRAY-3.7.md §3.3).
+//       parse order; light colours are unbounded (docs/povray-rules.md §3.3).
 // Three lights (red, green, blue) from different directions over white objects: the floor shows
 // three coloured shadows where one light is blocked (e.g. cyan where red is blocked).
 #version 3.7;

@@ -1,6 +1,6 @@
 // povml fidelity scene: conserve_energy
 // Rule: with conserve_energy the transmitted light is scaled by min(1, 1 - refl) per channel
-//       (filCol *= 1 - refl) (POVRAY-3.7.md §5.2, §6.5).
+//       (filCol *= 1 - refl) (docs/povray-rules.md §5.2, §6.5).
 // Left: glass with reflection 0.5, no conserve_energy (too bright). Middle: the same with
 // conserve_energy. Right: reflection { 0.05, 1 fresnel } conserve_energy with ior 1.5.
 #version 3.7;

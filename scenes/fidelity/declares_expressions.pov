@@ -2,7 +2,7 @@
 // Rule: scene-language subset: #declare/#local of floats, vectors, colours, pigments, finishes,
 //       textures, interiors and objects; float/vector arithmetic with promotion; component access
 //       .x .y .z .red .green .blue .filter .transmit; pi, true, false, image_width/image_height;
-//       object { Id modifiers } makes a copy whose pigment is edited (POVRAY-3.7.md §11.1, §11.2,
+//       object { Id modifiers } makes a copy whose pigment is edited (docs/povray-rules.md §11.1, §11.2,
 //       §11.3, §19.3).
 #version 3.7;
 #declare Ar = image_width / image_height;

@@ -1,6 +1,6 @@
 // povml fidelity scene: emission_ambient
 // Rule: ambient and emission are colours; ambient is multiplied by global ambient_light (colour),
-//       emission is not; both are multiplied by the pigment and att (POVRAY-3.7.md §3.2, §10.2).
+//       emission is not; both are multiplied by the pigment and att (docs/povray-rules.md §3.2, §10.2).
 // global ambient_light is bluish. Left: ambient colour only (diffuse 0). Middle: emission colour
 // plus diffuse. Right: emission 1 diffuse 0 (a self-lit ball that lights nothing else).
 #version 3.7;

@@ -1,6 +1,6 @@
 // povml fidelity scene: filtered_shadow
 // Rule: a non-opaque object multiplies the light by (rgb*filter + transmit) at EVERY surface
-//       crossing (twice for a closed sphere); shadows do not refract (POVRAY-3.7.md §4, §3.5).
+//       crossing (twice for a closed sphere); shadows do not refract (docs/povray-rules.md §4, §3.5).
 // Left: rgbf <1,0.2,0.2,0.8> (red-tinted shadow). Middle: rgbt <1,1,1,0.6> (grey shadow, 0.36).
 // Right: rgbft <0.2,0.4,1,0.5,0.3> (blue-tinted shadow). Default ior 1, so the camera sees
 // straight through them.

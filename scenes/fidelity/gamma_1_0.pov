@@ -1,5 +1,5 @@
 // povml fidelity scene: gamma_1_0
-// Rule: language version and gamma mode decide the output transfer curve (POVRAY-3.7.md §8.1, §8.2,
+// Rule: language version and gamma mode decide the output transfer curve (docs/povray-rules.md §8.1, §8.2,
 //       pitfall §13.1). The four gamma_* scenes share the same geometry; only the header differs.
 // Mode: `#version 3.7; assumed_gamma 1.0`: linear working space, exact piecewise sRGB output (§8.1).
 // Content: a grey ramp (rgb 0.05, 0.2, 0.45, 0.8) plus a filtered red ball rgbf <0.8,0.3,0.3,0.6>

@@ -1,5 +1,5 @@
 // povml fidelity scene: gamma_implied
-// Rule: language version and gamma mode decide the output transfer curve (POVRAY-3.7.md §8.1, §8.2,
+// Rule: language version and gamma mode decide the output transfer curve (docs/povray-rules.md §8.1, §8.2,
 //       pitfall §13.1). The four gamma_* scenes share the same geometry; only the header differs.
 // Mode: `#version 3.7;` WITHOUT assumed_gamma: implied working gamma 1.0, sRGB output, with the
 //       expected warning "assumed_gamma not specified" (§8.1).

@@ -1,5 +1,5 @@
 // povml fidelity scene: gamma_legacy
-// Rule: language version and gamma mode decide the output transfer curve (POVRAY-3.7.md §8.1, §8.2,
+// Rule: language version and gamma mode decide the output transfer curve (docs/povray-rules.md §8.1, §8.2,
 //       pitfall §13.1). The four gamma_* scenes share the same geometry; only the header differs.
 // Mode: NO #version and no assumed_gamma: effective version 3.62, gamma OFF (output = clipped
 //       linear value) and the legacy att = 1 - (filter*max(r,g,b) + transmit) (§3.2, §8.1, §8.2).

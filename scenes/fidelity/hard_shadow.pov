@@ -1,6 +1,6 @@
 // povml fidelity scene: hard_shadow
 // Rule: shadow ray from P toward the light; an opaque object hit with 1e-3 < t < dist - 1e-3
-//       blocks the light completely (OPAQUE flag) (POVRAY-3.7.md §4, §2.1).
+//       blocks the light completely (OPAQUE flag) (docs/povray-rules.md §4, §2.1).
 // A sphere floating above the floor casts a sharp shadow on the floor and on a second,
 // smaller sphere below-right of it.
 #version 3.7;

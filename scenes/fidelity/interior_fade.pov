@@ -3,7 +3,7 @@
 //       the exit surface): factor fade_colour + (1-fade_colour)/(1+(d/fade_distance)^fade_power), or
 //       exp(-(1-fade_colour)d/fade_distance) for fade_power >= 1000, applied whenever
 //       fade_distance != 0 (fade_power 0 gives a constant 1/2 for black). Shadow rays apply it only
-//       when fade_power > 0 (POVRAY-3.7.md §6.3, §4, pitfalls §13.9, §13.11).
+//       when fade_power > 0 (docs/povray-rules.md §6.3, §4, pitfalls §13.9, §13.11).
 // Left: ior 1.0, fade_distance 0.8 fade_power 2 fade_color rgb <0.2,0.5,1> (blue-ish core, tinted shadow).
 // Middle: ior 1.3, fade_distance 1 fade_power 1001 (exponential) fade_color rgb <1,0.35,0.2>.
 // Right: ior 1.0, fade_distance 0.5, no fade_power: camera rays halved, shadow NOT faded.

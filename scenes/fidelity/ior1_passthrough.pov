@@ -1,6 +1,6 @@
 // povml fidelity scene: ior1_passthrough
 // Rule: with |ior - 1| < EPSILON a transmitted ray continues straight and is a "continued" ray:
-//       the trace level is NOT incremented (POVRAY-3.7.md §6.2, §7, pitfall §13.10).
+//       the trace level is NOT incremented (docs/povray-rules.md §6.2, §7, pitfall §13.10).
 // max_trace_level is 2, yet the background and the far balls stay visible through a chain of
 // three rgbt/rgbf balls (6 surface crossings) and through a transparent ball nested inside
 // another transparent ball.

@@ -2,7 +2,7 @@
 // Rule: arrays with initialisers (one and two dimensions), element assignment, dimension_size;
 //       #switch with #case, #range, #else and fall-through; #for with a negative step; string
 //       functions checked with #if/#error; #ifdef/#undef; #local in an include-free macro
-//       (POVRAY-3.7.md §11.2, §11.3).
+//       (docs/povray-rules.md §11.2, §11.3).
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 camera { location <0, 5, -8> look_at <0, 0.5, 0.5> right x*image_width/image_height angle 50 }

@@ -1,5 +1,5 @@
 // povml fidelity scene: lang_camera_transform
-// Rule: camera transforms (POVRAY-3.7.md §1.3, §14.8): look_at first, then rotate and translate
+// Rule: camera transforms (docs/povray-rules.md §1.3, §14.8): look_at first, then rotate and translate
 //       applied last to location, direction, up and right; a light moved by a transform block.
 #version 3.7;
 global_settings { assumed_gamma 1.0 }

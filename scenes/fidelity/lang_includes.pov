@@ -1,5 +1,5 @@
 // povml fidelity scene: lang_includes
-// Rule: POV-Ray's standard include files read as they are (POVRAY-3.7.md §11.3): colors.inc,
+// Rule: POV-Ray's standard include files read as they are (docs/povray-rules.md §11.3): colors.inc,
 //       textures.inc (with finish.inc), metals.inc and glass.inc, using their plain-colour pigments,
 //       finishes, textures and interiors; everything else they declare is never used.
 #version 3.7;

@@ -1,6 +1,6 @@
 // povml fidelity scene: lang_recursive_macro
 // Rule: #macro with parameters, #local, recursion, a macro that returns a value and one that
-//       returns an object, by-reference arguments (POVRAY-3.7.md §11.3).
+//       returns an object, by-reference arguments (docs/povray-rules.md §11.3).
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 camera { location <0, 3, -8> look_at <0, 1.2, 0> right x*image_width/image_height angle 45 }

@@ -1,5 +1,5 @@
 // povml fidelity scene: lang_transforms_groups
-// Rule: transforms on objects, unions and lights (POVRAY-3.7.md §14): a union with a shared
+// Rule: transforms on objects, unions and lights (docs/povray-rules.md §14): a union with a shared
 //       texture, a light inside it and a transform after it (§16.4, §19.1); object copies with
 //       their own transforms (§19.3); declared transforms, transform blocks with inverse (§14.3);
 //       rotated triangles and a scaled smooth triangle; #for loops placing rotated copies.

@@ -1,6 +1,6 @@
 // povml fidelity scene: lang_while_grid
 // Rule: #while loops with #declare counters, nested loops, seed()/rand() streams, colour arithmetic
-//       and #if inside the loop body (POVRAY-3.7.md §11.2, §11.3).
+//       and #if inside the loop body (docs/povray-rules.md §11.2, §11.3).
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 camera { location <0, 7, -9> look_at <0, 0, 0.5> right x*image_width/image_height angle 50 }

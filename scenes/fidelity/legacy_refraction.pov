@@ -1,6 +1,6 @@
 // povml fidelity scene: legacy_refraction
 // Rule: legacy (no #version) `finish { refraction R ior I }`: ior is copied into the interior and
-//       Old_Refract = R scales the transmitted colour (attCol) (POVRAY-3.7.md §2.7, §6.3);
+//       Old_Refract = R scales the transmitted colour (attCol) (docs/povray-rules.md §2.7, §6.3);
 //       no #version also means gamma off and the legacy att formula (§8.1, §8.2).
 // Left: finish { refraction 1 ior 1.33 } (water ball). Right: finish { refraction 0.5 ior 1.5 }
 // (transmitted light halved). POV-Ray may warn that these finish keywords are deprecated.

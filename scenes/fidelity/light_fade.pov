@@ -1,7 +1,7 @@
 // povml fidelity scene: light_fade
 // Rule: light attenuation a = 2 / (1 + (dist/fade_distance)^fade_power), only when fade_power > 0
 //       and fade_distance != 0 (factor 2: brighter than full inside fade_distance)
-//       (POVRAY-3.7.md §3.4, pitfall §13.6).
+//       (docs/povray-rules.md §3.4, pitfall §13.6).
 // Left light: fade_distance 1.5 fade_power 2 (quadratic falloff pool on the floor).
 // Right light: fade_distance 2 fade_power 1 (linear, wider pool).
 // Third light: fade_distance 1 but no fade_power, so NO attenuation (uniform dim blue fill).

@@ -1,6 +1,6 @@
 // povml fidelity scene: lights_cylinder
 // Rule: a cylinder light: a beam of radius 0.75 with falloff 1.6 and tightness 2 around the
-//       axis centre → point_at, parallel (POVRAY-3.7.md §18.2, §18.3).
+//       axis centre → point_at, parallel (docs/povray-rules.md §18.2, §18.3).
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 camera { location <0, 5, -7> look_at <0, 0.3, 0> right x*image_width/image_height }

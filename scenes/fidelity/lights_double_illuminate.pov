@@ -1,6 +1,6 @@
 // povml fidelity scene: lights_double_illuminate
 // Rule: double_illuminate skips the N·L < EPSILON rejection, so a light behind a surface lights it
-//       with |N·L| diffuse but gives no highlight; shadows are traced as usual (POVRAY-3.7.md §16.6,
+//       with |N·L| diffuse but gives no highlight; shadows are traced as usual (docs/povray-rules.md §16.6,
 //       §3.3). On a union it is set on every member (§16.5).
 // The lights are behind two panes (a triangle and a plane-cut wall) seen from the camera's side:
 // the double_illuminate ones glow, the plain triangle stays dark.

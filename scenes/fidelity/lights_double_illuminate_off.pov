@@ -1,6 +1,6 @@
 // povml fidelity scene: lights_double_illuminate_off
 // Rule: double_illuminate [bool] on a union sets the value written on the whole subtree when it is
-//       read: "double_illuminate off" clears the flag its members set themselves (POVRAY-3.7.md
+//       read: "double_illuminate off" clears the flag its members set themselves (docs/povray-rules.md
 //       §16.5, §16.6; checked: the same scene without the "off" differs in 1214 pixels).
 #version 3.7;
 global_settings { assumed_gamma 1.0 }

@@ -2,7 +2,7 @@
 // Rule: no_image: not hit by camera rays or what they see through glass, still reflected and
 //       still casting shadows; no_reflection: seen directly, casting shadows, but absent from
 //       reflections (and from rays refracted after one); no_shadow: seen and reflected but no
-//       shadow (POVRAY-3.7.md §16.6). A union passes its flags to its members (§16.5).
+//       shadow (docs/povray-rules.md §16.6). A union passes its flags to its members (§16.5).
 // Over a mirror floor: a no_image red sphere, a no_reflection blue sphere, a no_shadow green
 // sphere, a glass pane through which the no_image sphere's place is seen, and a union whose
 // no_reflection reaches both members.

@@ -1,7 +1,7 @@
 // povml fidelity scene: lights_flags_tir
 // Rule: a ray totally internally reflected inside glass is a reflection ray, and so is the ray that
 //       leaves the glass after it: no_reflection objects are absent from what it sees and no_image
-//       objects present (POVRAY-3.7.md §16.6; checked: treating it as an image ray differs in over
+//       objects present (docs/povray-rules.md §16.6; checked: treating it as an image ray differs in over
 //       a thousand pixels). A glass box turned 30° sends every ray entering its front face into
 //       total internal reflection at a side face.
 #version 3.7;

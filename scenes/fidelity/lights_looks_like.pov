@@ -2,7 +2,7 @@
 // Rule: looks_like { OBJECT modifiers }: the object is written about the origin, moved to the
 //       light's centre, then its own modifiers apply; the light's later transforms move both; the
 //       object casts no shadow (not even on its own light's rays) and is seen by camera and
-//       reflection rays, shaded as usual (POVRAY-3.7.md §19.2). In a union the union's pigment
+//       reflection rays, shaded as usual (docs/povray-rules.md §19.2). In a union the union's pigment
 //       reaches an untextured looks_like object and the union's transforms move light and object
 //       (§19.1).
 #version 3.7;

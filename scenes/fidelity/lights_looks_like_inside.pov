@@ -1,7 +1,7 @@
 // povml fidelity scene: lights_looks_like_inside
 // Rule: a camera inside a light's looks_like object starts inside it, as inside any object: the
 //       ray leaving the glass ball refracts from ior 1.5 to 1 (checked against POV-Ray 3.7.0.10;
-//       POVRAY-3.7.md §19.2 says the opposite, and its rendering differs in 79% of the pixels).
+//       docs/povray-rules.md §19.2 says the opposite, and its rendering differs in 79% of the pixels).
 //       §6.4.
 #version 3.7;
 global_settings { assumed_gamma 1.0 }

@@ -1,7 +1,7 @@
 // povml fidelity scene: lights_ortho_angle
 // Rule: orthographic camera with angle 40: direction set from the angle, then right and up
 //       scaled by k1/k2 even though right is written: the view is 2·k1·tan(20°) wide
-//       (POVRAY-3.7.md §1.3, §18.4).
+//       (docs/povray-rules.md §1.3, §18.4).
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 camera { orthographic location <0, 3, -6> look_at <0, 0.5, 0> right x*4/3 angle 40 }

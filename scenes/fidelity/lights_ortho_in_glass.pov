@@ -1,6 +1,6 @@
 // povml fidelity scene: lights_ortho_in_glass
 // Rule: an orthographic camera's rays each start from their own point of the screen, and each
-//       ray's interior list is built from the objects containing that point (POVRAY-3.7.md §18.4,
+//       ray's interior list is built from the objects containing that point (docs/povray-rules.md §18.4,
 //       §6.4): the screen straddles a glass sphere, so the rays starting inside it refract as
 //       they leave, the others enter it from outside.
 #version 3.7;

@@ -1,7 +1,7 @@
 // povml fidelity scene: lights_ortho_look_at
 // Rule: orthographic camera with look_at and no up/right: right and up scaled by k1/k2,
 //       k1 = |look_at − location|, k2 = |direction|; parallel rays from the screen's points
-//       (POVRAY-3.7.md §18.4).
+//       (docs/povray-rules.md §18.4).
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 camera { orthographic location <1, 4, -6> look_at <0, 0.5, 0> }

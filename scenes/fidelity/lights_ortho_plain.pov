@@ -1,6 +1,6 @@
 // povml fidelity scene: lights_ortho_plain
 // Rule: orthographic camera without look_at: k1 uses the default look_at <0,0,1>, so the view
-//       is 1.33·k1 wide and k1 high (POVRAY-3.7.md §18.4).
+//       is 1.33·k1 wide and k1 high (docs/povray-rules.md §18.4).
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 camera { orthographic location <0, 1, -3> direction <0, 0, 2> }

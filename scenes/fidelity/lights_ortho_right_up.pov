@@ -1,6 +1,6 @@
 // povml fidelity scene: lights_ortho_right_up
 // Rule: orthographic camera with explicit right and up and no angle: no k1/k2 scaling, the view
-//       is |right| by |up| (POVRAY-3.7.md §18.4); a camera rotate afterwards (§1.3).
+//       is |right| by |up| (docs/povray-rules.md §18.4); a camera rotate afterwards (§1.3).
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 camera { orthographic location <0, 2, -6> right x*8 up y*6 look_at <0, 0.5, 0> rotate <0, -15, 0> }

@@ -1,6 +1,6 @@
 // povml fidelity scene: lights_parallel_default
 // Rule: a parallel light without point_at shines along centre → <0,0,1> everywhere
-//       (POVRAY-3.7.md §18.3).
+//       (docs/povray-rules.md §18.3).
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 camera { location <0, 5, -7> look_at <0, 0.3, 0> right x*image_width/image_height }

@@ -1,6 +1,6 @@
 // povml fidelity scene: lights_parallel_fade
 // Rule: a parallel light's fade uses the point's depth in front of the light's plane, not its
-//       distance to the centre (POVRAY-3.7.md §18.3, §3.4); a spotlight's fade its distance.
+//       distance to the centre (docs/povray-rules.md §18.3, §3.4); a spotlight's fade its distance.
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 camera { location <0, 5, -7> look_at <0, 0.3, 0> right x*image_width/image_height }

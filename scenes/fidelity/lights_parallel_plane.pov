@@ -1,7 +1,7 @@
 // povml fidelity scene: lights_parallel_plane
 // Rule: a parallel light's shadow ray runs only as far as the plane through its centre
 //       perpendicular to its direction: a point behind that plane is lit but never shadowed, and
-//       objects behind it cast no shadow (POVRAY-3.7.md §18.3).
+//       objects behind it cast no shadow (docs/povray-rules.md §18.3).
 // The light's plane is y = 1.2: the sphere above it is lit from above and casts no shadow on the
 // floor, the sphere below it casts one.
 #version 3.7;

@@ -1,6 +1,6 @@
 // povml fidelity scene: lights_parallel_point_at
 // Rule: a parallel light with point_at: L = −normalize(point_at − centre) at every point,
-//       shadows cast along it (POVRAY-3.7.md §18.3).
+//       shadows cast along it (docs/povray-rules.md §18.3).
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 camera { location <0, 5, -7> look_at <0, 0.3, 0> right x*image_width/image_height }

@@ -1,6 +1,6 @@
 // povml fidelity scene: lights_parallel_spot
 // Rule: a parallel spotlight: the light ray is the spot axis itself, cos = 1 in front of the
-//       light's plane, so no cone is seen (POVRAY-3.7.md §18.3).
+//       light's plane, so no cone is seen (docs/povray-rules.md §18.3).
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 camera { location <0, 5, -7> look_at <0, 0.3, 0> right x*image_width/image_height }

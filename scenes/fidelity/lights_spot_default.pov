@@ -1,6 +1,6 @@
 // povml fidelity scene: lights_spot_default
 // Rule: the spotlight keyword's defaults: radius 30, falloff 45, tightness 0, and point_at
-//       <0,0,1> when none is written (POVRAY-3.7.md §18.2).
+//       <0,0,1> when none is written (docs/povray-rules.md §18.2).
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 camera { location <0, 5, -7> look_at <0, 0.3, 0> right x*image_width/image_height }

@@ -1,6 +1,6 @@
 // povml fidelity scene: lights_spot_hard
 // Rule: radius 25 larger than falloff 15: the cubic spline is 0 outside the radius, a hard edge
-//       (POVRAY-3.7.md §18.2).
+//       (docs/povray-rules.md §18.2).
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 camera { location <0, 5, -7> look_at <0, 0.3, 0> right x*image_width/image_height }

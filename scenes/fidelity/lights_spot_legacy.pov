@@ -1,6 +1,6 @@
 // povml fidelity scene: lights_spot_legacy
 // Rule: spotlights and the object flags in a scene without #version (legacy, no gamma): the same
-//       attenuation and ray categories (POVRAY-3.7.md §18.2, §16.6, §8.2).
+//       attenuation and ray categories (docs/povray-rules.md §18.2, §16.6, §8.2).
 camera { location <0, 5, -7> look_at <0, 0.3, 0> }
 background { rgb <0.1, 0.15, 0.25> }
 light_source { <1, 6, -3>, rgb 1.3 spotlight radius 18 falloff 28 tightness 10 point_at <0, 0, 0.5> }

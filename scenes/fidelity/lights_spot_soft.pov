@@ -1,6 +1,6 @@
 // povml fidelity scene: lights_spot_soft
 // Rule: spotlight radius 15 falloff 25 tightness 5: cos^tightness times the cubic spline
-//       between the cosines of falloff and radius (POVRAY-3.7.md §3.4, §18.2).
+//       between the cosines of falloff and radius (docs/povray-rules.md §3.4, §18.2).
 // A spotlight from above and in front, aimed at the middle of the floor.
 #version 3.7;
 global_settings { assumed_gamma 1.0 }

@@ -1,5 +1,5 @@
 // povml fidelity scene: lights_spot_translated
-// Rule: a translate moves a spotlight's centre and its point_at together (POVRAY-3.7.md §14.8);
+// Rule: a translate moves a spotlight's centre and its point_at together (docs/povray-rules.md §14.8);
 //       a rotate after it turns both about the origin.
 #version 3.7;
 global_settings { assumed_gamma 1.0 }

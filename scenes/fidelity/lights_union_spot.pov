@@ -1,6 +1,6 @@
 // povml fidelity scene: lights_union_spot
 // Rule: a spotlight inside a union is a global light; the union's rotate and translate move its
-//       centre and point_at (POVRAY-3.7.md §19.1, §14.8), and object { } copies of a declared
+//       centre and point_at (docs/povray-rules.md §19.1, §14.8), and object { } copies of a declared
 //       parallel light move it too.
 #version 3.7;
 global_settings { assumed_gamma 1.0 }

@@ -1,6 +1,6 @@
 // povml fidelity scene: max_trace_level_low
 // Rule: TraceRay returns BLACK (not the background) once the trace level reaches max_trace_level;
-//       the primary ray is level 0, so max_trace_level 2 allows one bounce (POVRAY-3.7.md §7,
+//       the primary ray is level 0, so max_trace_level 2 allows one bounce (docs/povray-rules.md §7,
 //       pitfall §13.10).
 // A mirror ball in front of a mirror wall: the ball reflects the room (1 bounce) but the
 // wall's reflection seen IN the ball is black, and vice versa.

@@ -3,7 +3,7 @@
 //       its three normalised normals are equal it is treated as FLAT with the GEOMETRIC normal (not the
 //       supplied one); zero-area triangles are dropped silently at parse time; a triangle with its own
 //       texture uses it, the others use the mesh texture; vertices are single-precision floats
-//       (POVRAY-3.7.md §2.6, §13.16, §13.21).
+//       (docs/povray-rules.md §2.6, §13.16, §13.21).
 // One mesh, left to right: a flat red triangle; a smooth green triangle with fanning normals; a
 // yellow smooth_triangle whose three equal normals point up-left (it must shade exactly like a flat
 // triangle facing the camera, not like a face turned toward the light); a grey triangle with no own

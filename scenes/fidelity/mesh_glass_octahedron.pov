@@ -2,7 +2,7 @@
 // Rule: refraction through a closed mesh: every triangle hit toggles the interior list, so the ray
 //       enters (ior 1/1.5) at the front face and leaves (1.5/1) at a back face; transmitted colour is
 //       scaled by filCol; inside_vector makes the mesh a solid whose Inside() counts triangle hits along
-//       it (POVRAY-3.7.md §2.6, §6.2, §6.3, §6.4); flat faces use the geometric normal flipped toward
+//       it (docs/povray-rules.md §2.6, §6.2, §6.3, §6.4); flat faces use the geometric normal flipped toward
 //       the ray (§2.4, §3.1), including the back faces hit from inside.
 // A glass octahedron (8 flat triangles, tilted, vertices given directly) in front of red, green and
 // blue balls and a yellow backdrop: each facet shows a differently displaced, faceted view of them,

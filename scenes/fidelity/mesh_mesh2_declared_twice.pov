@@ -2,7 +2,7 @@
 // Rule: a #declared mesh2 placed with object { M translate <...> } twice: both copies share the same
 //       triangles and texture; translate moves the mesh (rays go to object space, the smooth normal
 //       is computed there and transformed back), shadows and shading follow the moved copies
-//       (POVRAY-3.7.md §2.6, §14.4, §14.5, §14.6).
+//       (docs/povray-rules.md §2.6, §14.4, §14.5, §14.6).
 // A smooth hexagonal bipyramid (8 vertices, 12 faces, one normal per vertex, explicit
 // normal_indices) declared at the origin, instanced at two places: two identical rounded "gems"
 // whose highlights and shading differ only because their positions relative to the light and the

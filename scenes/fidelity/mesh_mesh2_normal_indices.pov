@@ -2,7 +2,7 @@
 // Rule: mesh2 vertex_vectors / normal_vectors / face_indices / normal_indices: face i is smooth with the
 //       normals normal_vectors[normal_indices[i]] (each normalised at parse time), interpolated as for
 //       smooth_triangle; vertices and normals are single-precision floats, and the plane constant is
-//       computed from the float vertices (POVRAY-3.7.md §2.6, §2.5).
+//       computed from the float vertices (docs/povray-rules.md §2.6, §2.5).
 // A wavy vertical strip of 8 triangles (2 rows x 5 columns of vertices) with one normal per column.
 // The 5 normals are listed in a shuffled order and there are fewer normals than vertices, so only
 // normal_indices can pair them correctly; the strip shades smoothly with no creases at the

@@ -1,5 +1,5 @@
 // povml fidelity scene: mesh_mesh2_normal_rules
-// Rule: mesh2 normals without/with partial normal_indices (POVRAY-3.7.md §2.6):
+// Rule: mesh2 normals without/with partial normal_indices (docs/povray-rules.md §2.6):
 //       - no normal_indices and as many normal_vectors as vertex_vectors: face_indices are used as the
 //         normal indices (left sheet: smooth);
 //       - normal_indices with fewer entries than faces: only the first number_of_normal_indices faces

@@ -1,7 +1,7 @@
 // povml fidelity scene: mesh_mesh2_texture_list
 // Rule: mesh2 texture_list { n, texture{...} ... } with a texture index after a face in face_indices
 //       (<a,b,c>, t) gives that face texture t of the list; a face without an index uses the
-//       mesh's own texture; flat faces use the geometric normal (POVRAY-3.7.md §2.6, §2.4).
+//       mesh's own texture; flat faces use the geometric normal (docs/povray-rules.md §2.6, §2.4).
 // A folded panel of 12 flat triangles leaning back, faces coloured red / green / blue from a
 // 3-entry texture_list (blue is shiny), two faces without an index in the mesh's grey texture.
 // The four columns of faces are tilted differently, so each face has its own flat shade.

@@ -1,7 +1,7 @@
 // povml fidelity scene: mesh_smooth_straddle
 // Rule: a STANDALONE smooth_triangle whose vertex normals are not all on the same side of its
 //       geometric normal is flagged degenerate and is INVISIBLE ("Degenerate triangle. Please remove.");
-//       the same triangle inside a mesh is not subject to that rule and is drawn (POVRAY-3.7.md §2.5,
+//       the same triangle inside a mesh is not subject to that rule and is drawn (docs/povray-rules.md §2.5,
 //       §2.6, §13.16).
 // Left: standalone smooth_triangle with straddling normals (N3 points behind the face): nothing is
 // drawn, the backdrop and floor show through and it casts no shadow. Middle: the identical triangle

@@ -1,7 +1,7 @@
 // povml fidelity scene: mesh_smooth_triangle
 // Rule: smooth_triangle shading normal = normalize(w1 N1 + w2 N2 + w3 N3) with barycentric weights
 //       (POV's u/v form N1 + u(N2 - N1 + v(N3 - N2))), vertex normals normalised at parse time
-//       (POVRAY-3.7.md §2.5); the interpolated normal is the one flipped toward the viewer (§3.1, §13.5).
+//       (docs/povray-rules.md §2.5); the interpolated normal is the one flipped toward the viewer (§3.1, §13.5).
 // Two standalone smooth_triangles share a diagonal to form a flat quad with "pillow" normals
 // (tilted outward at the corners, unnormalised on purpose): the diffuse shading varies across the flat
 // face and a phong highlight sweeps across it; a third, separate smooth_triangle on the right has

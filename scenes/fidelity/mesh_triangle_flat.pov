@@ -1,6 +1,6 @@
 // povml fidelity scene: mesh_triangle_flat
 // Rule: a triangle is flat: its normal is the geometric normal normalize((P1-P2)x(P3-P2)) at every
-//       point (POVRAY-3.7.md §2.4), flipped toward the incoming ray (§3.1), so a face seen from its
+//       point (docs/povray-rules.md §2.4), flipped toward the incoming ray (§3.1), so a face seen from its
 //       back is lit like its front. Hits use the dominant-axis edge test, 1e-6 <= t <= 1e7 (§2.4).
 // Three standalone triangles at different tilts, lit from the upper left at an angle: one faces the
 // light, one is steeply inclined, one is seen from the side its normal points away from. Each face

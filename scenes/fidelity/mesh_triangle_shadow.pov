@@ -1,6 +1,6 @@
 // povml fidelity scene: mesh_triangle_shadow
 // Rule: triangles and meshes are opaque shadow casters: a shadow ray toward the light is blocked by
-//       any triangle hit with 1e-3 < t < dist - 1e-3 (POVRAY-3.7.md §4, §2.1), using the same
+//       any triangle hit with 1e-3 < t < dist - 1e-3 (docs/povray-rules.md §4, §2.1), using the same
 //       dominant-axis edge test as camera rays (§2.4, §2.6); a mesh without inside_vector is an open
 //       patch that still blocks light.
 // A tilted standalone triangle over the floor throws a sharp triangular shadow that falls partly on

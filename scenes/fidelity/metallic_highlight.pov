@@ -1,6 +1,6 @@
 // povml fidelity scene: metallic_highlight
 // Rule: with metallic M the highlight colour is lc * (1 + M(1-F)(C.rgb - 1)), F the empirical
-//       Fresnel-like function of acos(N.L); `metallic` alone means 1 (POVRAY-3.7.md §3.3, §10.1).
+//       Fresnel-like function of acos(N.L); `metallic` alone means 1 (docs/povray-rules.md §3.3, §10.1).
 // Back row (phong 1): metallic 0 (white highlight), metallic (=1, gold highlight).
 // Front row (specular 0.9 roughness 0.02): metallic 0, metallic 0.6.
 #version 3.7;

@@ -1,7 +1,7 @@
 // povml fidelity scene: nested_interiors
 // Rule: the interior list decides the ior ratio: entering from atmosphere atm/I; entering while
 //       inside others last/I; leaving the innermost I/(next or atm); leaving an overlap region
-//       ior 1 (straight) (POVRAY-3.7.md §6.2, §6.4).
+//       ior 1 (straight) (docs/povray-rules.md §6.2, §6.4).
 // Left: a glass ball (ior 1.5) containing an air bubble (ior 1.0) off-centre.
 // Middle: glass (ior 1.5) filled with a water ball (ior 1.33), not concentric.
 // Right: two overlapping glass balls with different ior (1.3, 1.7).

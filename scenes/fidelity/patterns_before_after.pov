@@ -1,6 +1,6 @@
 // povml fidelity scene: patterns_before_after
 // Rule: a pigment attached before an object's transforms moves with the object, one attached
-//       after them stays in world space (POVRAY-3.7 §14.7).
+//       after them stays in world space (docs/povray-rules.md §14.7).
 #version 3.7;
 global_settings { assumed_gamma 1 }
 camera { location <0, 4, -7> look_at <0, 1, 0> right x*image_width/image_height }

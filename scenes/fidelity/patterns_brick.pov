@@ -1,6 +1,6 @@
 // povml fidelity scene: patterns_brick
 // Rule: brick: mortar joints just below the multiples of the brick size, odd courses shifted by
-//       half a brick; value 0 is the mortar (POVRAY-3.7 §17.7).
+//       half a brick; value 0 is the mortar (docs/povray-rules.md §17.7).
 #version 3.7;
 global_settings { assumed_gamma 1 }
 camera { location <1, 2, -6> look_at <0, 1.2, 0> right x*image_width/image_height }

@@ -1,6 +1,6 @@
 // povml fidelity scene: patterns_checker_edges
 // Rule: checker takes floor(c + 1e-10) per coordinate, so a coordinate on a cell boundary, or a
-//       rounding error below it, belongs to the cell above (POVRAY-3.7 §17.4).
+//       rounding error below it, belongs to the cell above (docs/povray-rules.md §17.4).
 // The camera looks straight down from height 10 with right 1.6 and up 1.2: pixel centre rays
 // cross the plane at x = (i + 1)/10 − 8 and z = 6 − j/10, so every tenth column and row lands
 // on a whole coordinate, up to the rounding of the ray.

@@ -1,5 +1,5 @@
 // A checker plane whose pattern is scaled and rotated inside the pigment, one colour given
-// (the second is the default green): POVRAY-3.7 §17.4, §17.1.
+// (the second is the default green): docs/povray-rules.md §17.4, §17.1.
 #version 3.7;
 global_settings { assumed_gamma 1 }
 camera { location <0, 6, -8> look_at <0, 0, 0> }

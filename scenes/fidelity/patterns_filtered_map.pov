@@ -1,7 +1,7 @@
 // povml fidelity scene: patterns_filtered_map
 // Rule: map colours keep filter and transmit and blend them like r, g, b; a map with a
 //       transparent entry makes the object non-opaque, and shadow rays evaluate its pigment at
-//       each crossing (POVRAY-3.7 §17.8, §3.5, §4).
+//       each crossing (docs/povray-rules.md §17.8, §3.5, §4).
 #version 3.7;
 global_settings { assumed_gamma 1 }
 camera { location <0, 3, -6> look_at <0, 1, 0> right x*image_width/image_height }

@@ -1,6 +1,6 @@
 // povml fidelity scene: patterns_gradient_edges
 // Rule: gradient passes values up to 1 unchanged (exactly 1 takes the last entry), maps 2, 3 …
-//       and −1, −2 … to 0 (POVRAY-3.7 §17.5, §17.1, §17.2).
+//       and −1, −2 … to 0 (docs/povray-rules.md §17.5, §17.1, §17.2).
 // The camera of patterns_checker_edges: pixel centre rays cross the plane on whole x every
 // tenth column; the map's first and last colours are far from the middle ones.
 #version 3.7;

@@ -1,6 +1,6 @@
 // povml fidelity scene: patterns_gradient_frequency
 // Rule: gradient's vector is normalised; frequency and phase wrap the value by
-//       fmod(v·frequency + phase, 1.00001) (POVRAY-3.7 §17.1, §17.5); waves shape it.
+//       fmod(v·frequency + phase, 1.00001) (docs/povray-rules.md §17.1, §17.5); waves shape it.
 #version 3.7;
 global_settings { assumed_gamma 1 }
 camera { location <0, 6, -6> look_at <0, 0, 0> right x*image_width/image_height }

@@ -1,7 +1,7 @@
 // povml fidelity scene: patterns_gradient_map
 // Rule: map entries are searched in the order written; two entries with the same value make a
 //       sharp step; below the first value the first colour, above the last the last
-//       (POVRAY-3.7 §17.2, §17.3); the pattern is scaled inside the pigment (§17.1).
+//       (docs/povray-rules.md §17.2, §17.3); the pattern is scaled inside the pigment (§17.1).
 #version 3.7;
 global_settings { assumed_gamma 1 }
 camera { location <0, 5, -7> look_at <0, 0.5, 0> right x*image_width/image_height }

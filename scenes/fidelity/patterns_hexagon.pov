@@ -1,6 +1,6 @@
 // povml fidelity scene: patterns_hexagon
 // Rule: hexagon's three-colour tiling of the XZ plane, defaults blue, green, red
-//       (POVRAY-3.7 §17.6); scaled and rotated in the pigment.
+//       (docs/povray-rules.md §17.6); scaled and rotated in the pigment.
 #version 3.7;
 global_settings { assumed_gamma 1 }
 camera { location <0, 7, -6> look_at <0, 0, 0> right x*image_width/image_height }

@@ -1,6 +1,6 @@
 // povml fidelity scene: patterns_legacy_filter
 // Rule: without #version, a transparent map colour uses the legacy att formula and filtered
-//       shadows walk through the patterned sphere (POVRAY-3.7 §3.2, §17.8, §4).
+//       shadows walk through the patterned sphere (docs/povray-rules.md §3.2, §17.8, §4).
 camera { location <0, 3, -6> look_at <0, 1, 0> }
 light_source { <2, 8, -3> color rgb 1 }
 plane { y, 0 pigment { checker rgb 0.9, rgb 0.6 } }

@@ -1,6 +1,6 @@
 // povml fidelity scene: patterns_mesh_faces
 // Rule: a mesh's per-face textures (declared, with patterns) and its own texture move with the
-//       mesh's transforms (POVRAY-3.7 §14.7, §2.6); a texture block's transforms move its pigment;
+//       mesh's transforms (docs/povray-rules.md §14.7, §2.6); a texture block's transforms move its pigment;
 //       a declared colour map of textures.inc is used by a gradient (§17.3).
 #version 3.7;
 global_settings { assumed_gamma 1 }

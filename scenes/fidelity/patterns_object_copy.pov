@@ -1,6 +1,6 @@
 // povml fidelity scene: patterns_object_copy
 // Rule: object { S pigment { checker … } } edits the copy's pigment in place: the new pattern
-//       keeps the transform of S's pigment, S's object transforms included (POVRAY-3.7 §17.9,
+//       keeps the transform of S's pigment, S's object transforms included (docs/povray-rules.md §17.9,
 //       §19.3); a union's texture goes to its members in the union's frame (§14.7).
 #version 3.7;
 global_settings { assumed_gamma 1 }

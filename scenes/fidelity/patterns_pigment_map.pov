@@ -1,7 +1,7 @@
 // povml fidelity scene: patterns_pigment_map
 // Rule: checker pigment {…}, pigment {…} and pigment_map { [v PIGMENT] … } look up whole
 //       pigments by the map rules and evaluate them at the point the outer pattern saw, each
-//       through its own transform, blending their colours (POVRAY-3.7 §17.2, §17.3, §17.4).
+//       through its own transform, blending their colours (docs/povray-rules.md §17.2, §17.3, §17.4).
 #version 3.7;
 global_settings { assumed_gamma 1 }
 camera { location <0, 5, -7> look_at <0, 0.5, 0> right x*image_width/image_height }

@@ -1,6 +1,6 @@
 // povml fidelity scene: patterns_pigment_map_declared
 // Rule: a declared pigment_map is copied by pigment_map { Id } and used with waves and transforms
-//       like a written one (POVRAY-3.7 §17.3, §17.1).
+//       like a written one (docs/povray-rules.md §17.3, §17.1).
 #version 3.7;
 global_settings { assumed_gamma 1 }
 camera { location <0, 3, -6> look_at <0, 1, 0> right x*image_width/image_height }

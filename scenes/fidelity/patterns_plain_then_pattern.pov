@@ -1,6 +1,6 @@
 // povml fidelity scene: patterns_plain_then_pattern
 // Rule: a plain-colour pigment keeps the transforms it received (its own, its texture's, its
-//       object's); a later edit that gives it a pattern keeps them (POVRAY-3.7 §17.9, §14.7).
+//       object's); a later edit that gives it a pattern keeps them (docs/povray-rules.md §17.9, §14.7).
 #version 3.7;
 global_settings { assumed_gamma 1 }
 camera { location <0, 3, -7> look_at <0, 1, 0> right x*image_width/image_height }

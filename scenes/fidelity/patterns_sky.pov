@@ -1,6 +1,6 @@
 // povml fidelity scene: patterns_sky
 // Rule: sky_sphere pigments are evaluated at the unit ray direction taken as a point (the
-//       sky's translate shifts it); a gradient y sky wraps below the horizon (POVRAY-3.7 §18.1,
+//       sky's translate shifts it); a gradient y sky wraps below the horizon (docs/povray-rules.md §18.1,
 //       §17.5).
 #version 3.7;
 global_settings { assumed_gamma 1 }

@@ -1,6 +1,6 @@
 // povml fidelity scene: patterns_sky_layers
 // Rule: several sky pigments are layered from the last written down, then the background
-//       shows through their filter and transmit (POVRAY-3.7 §18.1, 3.7 formula).
+//       shows through their filter and transmit (docs/povray-rules.md §18.1, 3.7 formula).
 #version 3.7;
 global_settings { assumed_gamma 1 }
 camera { location <0, 1, -5> look_at <0, 1.5, 0> right x*image_width/image_height angle 80 }

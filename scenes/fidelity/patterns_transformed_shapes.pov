@@ -1,7 +1,7 @@
 // povml fidelity scene: patterns_transformed_shapes
 // Rule: patterns on an ellipsoid and on a scaled plane are evaluated at the world hit point through
 //       the composed inverse transform; frequency on checker and brick re-enables the value wrap
-//       (POVRAY-3.7 §14.7, §17.1).
+//       (docs/povray-rules.md §14.7, §17.1).
 #version 3.7;
 global_settings { assumed_gamma 1 }
 camera { location <0, 3, -6> look_at <0, 1, 0> right x*image_width/image_height }

@@ -1,6 +1,6 @@
 // povml fidelity scene: patterns_unsorted_map
 // Rule: map entries are not sorted: [0.8 red][0.2 blue] is red below 0.2 and blue from 0.2 up;
-//       a single entry is a constant (POVRAY-3.7 §17.2).
+//       a single entry is a constant (docs/povray-rules.md §17.2).
 #version 3.7;
 global_settings { assumed_gamma 1 }
 camera { location <0, 4, -6> look_at <0, 0.5, 0> right x*image_width/image_height }

@@ -1,6 +1,6 @@
 // povml fidelity scene: phong
 // Rule: phong_term = phong * (R.L)^phong_size * lc with R = D - 2(D.N)N, only if R.L > 0 and
-//       (phong_size < 60 or R.L > 0.0008); not multiplied by the pigment (POVRAY-3.7.md §3.3).
+//       (phong_size < 60 or R.L > 0.0008); not multiplied by the pigment (docs/povray-rules.md §3.3).
 // Left to right: phong 1 with phong_size 3, 40 (default), 300 (the >= 60 cut-off branch).
 #version 3.7;
 global_settings { assumed_gamma 1.0 }

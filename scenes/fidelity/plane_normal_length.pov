@@ -1,6 +1,6 @@
 // povml fidelity scene: plane_normal_length
 // Rule: plane { <n>, d }: n is normalised but d is NOT divided by |n|; the plane is n^.P = d
-//       (POVRAY-3.7.md §2.3, pitfall §13.14).
+//       (docs/povray-rules.md §2.3, pitfall §13.14).
 // plane { <0,2,0>, 1 } lies at y = 1 (not 0.5): the ball (bottom at y = 1.05) floats just above
 // it with a tight shadow. plane { <0,0,-3>, -6 } is the wall z = 6 (not z = 2, which would hide
 // the yellow ball at z = 3).

@@ -1,5 +1,5 @@
 // povml fidelity scene: polygon_alone
-// Rule: polygon { N, P1, … } (POVRAY-3.7.md §15.7): the points, 2-D or 3-D, are projected onto
+// Rule: polygon { N, P1, … } (docs/povray-rules.md §15.7): the points, 2-D or 3-D, are projected onto
 //       the frame u, v, w of the first points; a point equal to the current outline's first point
 //       closes it and the next one starts another outline (holes and islands by the even-odd
 //       rule); an unclosed last outline is closed with its first point (a warning). The ray meets

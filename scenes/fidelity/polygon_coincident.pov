@@ -1,6 +1,6 @@
 // povml fidelity scene: polygon_coincident
 // Rule: a polygon lying in another object's surface ties with it at equal depths, and POV-Ray
-//       keeps the first object its bounding tree meets (POVRAY-3.7.md §2.1, §15.8): the order in
+//       keeps the first object its bounding tree meets (docs/povray-rules.md §2.1, §15.8): the order in
 //       which the ray enters the objects' single-precision boxes. A polygon's box is its points'
 //       extent, an axis thinner than 1e-3 widened by 1e-3 on each side (Polygon::Compute_BBox),
 //       so a flat polygon's box is entered 1e-3 early. Left: a polygon on a box's top face;

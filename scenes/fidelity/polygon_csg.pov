@@ -1,6 +1,6 @@
 // povml fidelity scene: polygon_csg
 // Rule: a polygon is not solid: its Inside is always false and inverse does nothing
-//       (Polygon::Inside, Polygon::Invert; POVRAY-3.7.md §15.7, §16.2, §16.3). So in an
+//       (Polygon::Inside, Polygon::Invert; docs/povray-rules.md §15.7, §16.2, §16.3). So in an
 //       intersection it keeps its own hits inside the other members and hides every other
 //       member's hits; in a difference (the polygon not inverted) the same; in a merge it hides
 //       nothing and keeps its hits outside the others; clipped_by keeps the part inside the clip.

@@ -1,5 +1,5 @@
 // povml fidelity scene: polygon_glass
-// Rule: a transparent polygon with an interior (POVRAY-3.7.md §6.2, §6.4, §15.7): a ray
+// Rule: a transparent polygon with an interior (docs/povray-rules.md §6.2, §6.4, §15.7): a ray
 //       crossing it enters its interior, ior 1.5, and the next surface met is another object's,
 //       so the ray refracts once and goes on inside the polygon's medium; a second polygon
 //       crossed later is a second interior; a polygon crossed twice (a folded sheet) is left again

@@ -1,5 +1,5 @@
 // povml fidelity scene: polygon_shadow
-// Rule: polygons in shadow rays (POVRAY-3.7.md §4, §15.7): an opaque polygon with a hole casts a
+// Rule: polygons in shadow rays (docs/povray-rules.md §4, §15.7): an opaque polygon with a hole casts a
 //       shadow with a hole; a filtered one a coloured shadow; shadow rays from a polygon's own
 //       surface skip it by the 1e-3 tolerance (and the polygon's own 1e-8); a polygon shadowed by
 //       another. Shadows fall on the floor, a sphere and a box.

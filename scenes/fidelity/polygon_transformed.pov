@@ -1,6 +1,6 @@
 // povml fidelity scene: polygon_transformed
 // Rule: a polygon's modifiers compose into its transform after its frame (Polygon::Transform,
-//       POVRAY-3.7.md §14.4, §15.7): rotate, non-uniform and negative scale, a shearing matrix;
+//       docs/povray-rules.md §14.4, §15.7): rotate, non-uniform and negative scale, a shearing matrix;
 //       the ray is moved into polygon space with its direction renormalised and the depth divided
 //       by the length (§14.5 (b)); the normal is (0,0,1) by the inverse transpose, normalised
 //       (§14.6). A checker attached before the transforms moves with the polygon (§14.7). The

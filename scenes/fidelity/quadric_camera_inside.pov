@@ -1,6 +1,6 @@
 // povml fidelity scene: quadric_camera_inside
 // Rule: the camera ray starts inside every top-level object whose box and Inside hold the camera
-//       (POVRAY-3.7.md §6.4): here an unbounded glass cylinder (its box is the huge box) and a
+//       (docs/povray-rules.md §6.4): here an unbounded glass cylinder (its box is the huge box) and a
 //       glass ellipsoid around the camera, and a glass quadric made inside-out by inverse (the
 //       camera outside its surface is inside it). Each surface the ray leaves through refracts
 //       by the right ratio only if the list was right.

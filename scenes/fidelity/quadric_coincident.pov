@@ -3,7 +3,7 @@
 //       one, its coefficients negated, includes it too. Here a box's top face and a plane
 //       quadric coincide at y = 0.5: which of the two surfaces is kept at each pixel depends on
 //       the last bit of each hit point and on ≤ against <, so the speckle must match POV-Ray's
-//       exactly (POVRAY-3.7.md §16.2: avoid coincident faces; here they are the test).
+//       exactly (docs/povray-rules.md §16.2: avoid coincident faces; here they are the test).
 // Left: intersection { y ≤ 0.5, box }; right: difference { box, y ≥ 0.5 }.
 #version 3.7;
 global_settings { assumed_gamma 1.0 }

@@ -1,7 +1,7 @@
 // povml fidelity scene: quadric_csg
 // Rule: a quadric's Inside is its left side ≤ 0, the surface included (Quadric::Inside), and
 //       inverse negates every coefficient (Quadric::Invert), so an inverted quadric holds its
-//       surface too (POVRAY-3.7.md §16.2, §16.3). Intersections, differences (the later members
+//       surface too (docs/povray-rules.md §16.2, §16.3). Intersections, differences (the later members
 //       inverted) and a merge keep each member's hits by those tests; clipped_by keeps the hits
 //       inside the clip (§15.8). Every quadric here is unbounded alone, bounded by its CSG.
 #version 3.7;

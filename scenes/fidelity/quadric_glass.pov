@@ -1,5 +1,5 @@
 // povml fidelity scene: quadric_glass
-// Rule: glass quadrics (POVRAY-3.7.md §6.2, §6.4): a ray refracts into a quadric solid and out
+// Rule: glass quadrics (docs/povray-rules.md §6.2, §6.4): a ray refracts into a quadric solid and out
 //       again, its interior entered and left by the crossings of one surface; the roots of a ray
 //       starting on the surface (≈ 0) fall under 1e-6 or the 1e-4 of every ray (§2.1); filtered
 //       shadows through them (§4); the glass paraboloid and the unbounded cylinder are tested by

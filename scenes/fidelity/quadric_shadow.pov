@@ -1,5 +1,5 @@
 // povml fidelity scene: quadric_shadow
-// Rule: quadrics in shadow rays (POVRAY-3.7.md §4): a shadow ray from a quadric's own surface
+// Rule: quadrics in shadow rays (docs/povray-rules.md §4): a shadow ray from a quadric's own surface
 //       finds a root at ≈ 0, under the 1e-3 shadow tolerance, and its far root beyond it (a
 //       concave part shadows itself); opaque and filtered quadrics shadow the floor, each other
 //       and a sphere; an unbounded cylinder's shadow runs to the horizon.

@@ -1,7 +1,7 @@
 // povml fidelity scene: quadric_ties
 // Rule: a quadric bounded by its CSG ties with a coplanar face of another object, and POV-Ray
 //       keeps the object whose single-precision box its bounding tree enters first
-//       (POVRAY-3.7.md §2.1, §15.8). The CSG's box comes from CSG::Compute_BBox, which bounds a
+//       (docs/povray-rules.md §2.1, §15.8). The CSG's box comes from CSG::Compute_BBox, which bounds a
 //       quadric member last, within the other members' box (Quadric::Compute_BBox with a clip
 //       box); clipped_by does the same for a clipped quadric.
 #version 3.7;

@@ -1,6 +1,6 @@
 // povml fidelity scene: quadrics_camera_in_four
 // Rule: with the camera inside several transparent objects, which one counts as entered last
-//       decides each first crossing's ratio of indices (POVRAY-3.7.md §6.2, §6.4). POV-Ray lists
+//       decides each first crossing's ratio of indices (docs/povray-rules.md §6.2, §6.4). POV-Ray lists
 //       the containing objects in the order of a depth-first walk of its bounding-slab tree
 //       (sort_and_split: sorted along the axis find_axis picks, split by the surface-area rule,
 //       at most 4 to a node), asking each node's box before the object's Inside test; the last

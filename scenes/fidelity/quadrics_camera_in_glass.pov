@@ -1,6 +1,6 @@
 // povml fidelity scene: quadrics_camera_in_glass
 // Rule: the camera inside a closed glass cylinder starts with it in its interior list, found by
-//       the cylinder's Inside test (shrunk by EPSILON) (POVRAY-3.7.md §6.4, §15.2). The camera is
+//       the cylinder's Inside test (shrunk by EPSILON) (docs/povray-rules.md §6.4, §15.2). The camera is
 //       also behind a glass disc (on the side opposite its normal, §15.4) but outside the disc's
 //       thin bounding box, and POV-Ray asks the box first: the disc is NOT in the starting list.
 #version 3.7;

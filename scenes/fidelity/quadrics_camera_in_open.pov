@@ -1,5 +1,5 @@
 // povml fidelity scene: quadrics_camera_in_open
-// Rule: an open cylinder still has a solid inside, grown by EPSILON (POVRAY-3.7.md §15.2, §20 item
+// Rule: an open cylinder still has a solid inside, grown by EPSILON (docs/povray-rules.md §15.2, §20 item
 //       7): a camera inside an open glass cylinder starts with it in its interior list (§6.4), so
 //       the rays leaving through its wall refract as exits. A glass cone stands outside.
 #version 3.7;

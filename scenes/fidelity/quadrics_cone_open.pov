@@ -1,5 +1,5 @@
 // povml fidelity scene: quadrics_cone_open
-// Rule: cone { … open } has no end caps: the inside of the funnel is visible (POVRAY-3.7.md §15.3);
+// Rule: cone { … open } has no end caps: the inside of the funnel is visible (docs/povray-rules.md §15.3);
 //       the lower nappe of the double cone is cut away by dist ≤ z.
 #version 3.7;
 global_settings { assumed_gamma 1.0 }

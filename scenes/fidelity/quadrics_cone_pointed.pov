@@ -1,6 +1,6 @@
 // povml fidelity scene: quadrics_cone_pointed
 // Rule: a cone with r1 = 0 (the ends swapped internally, dist = 0, the base cap a point) and cones
-//       with equal radii, which are cylinders (POVRAY-3.7.md §15.3, §20 item 8); closed and open.
+//       with equal radii, which are cylinders (docs/povray-rules.md §15.3, §20 item 8); closed and open.
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 camera { location <0.8, 3, -6> look_at <0, 0.8, 0> right x*image_width/image_height }

@@ -1,6 +1,6 @@
 // povml fidelity scene: quadrics_cone_specular
 // Rule: cone { P1, r1, P2, r2 }: the bigger end becomes the canonical top z = 1, the apex at z = 0,
-//       the small end at z = dist = r_small/r_big (POVRAY-3.7.md §15.3); side normal (x, y, −z);
+//       the small end at z = dist = r_small/r_big (docs/povray-rules.md §15.3); side normal (x, y, −z);
 //       specular highlights (§3.3). One cone written big end first, one small end first.
 #version 3.7;
 global_settings { assumed_gamma 1.0 }

@@ -1,6 +1,6 @@
 // povml fidelity scene: quadrics_cylinder_open
 // Rule: cylinder { … open }: no caps, so the inner wall is seen through the open ends and is lit
-//       from inside where the light gets in (POVRAY-3.7.md §15.2); the normal is flipped toward
+//       from inside where the light gets in (docs/povray-rules.md §15.2); the normal is flipped toward
 //       the ray (§3.1). A closed twin beside it for comparison.
 #version 3.7;
 global_settings { assumed_gamma 1.0 }

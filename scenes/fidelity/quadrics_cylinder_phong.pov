@@ -1,6 +1,6 @@
 // povml fidelity scene: quadrics_cylinder_phong
 // Rule: cylinder { P1, P2, r } closed by default: the canonical cylinder x²+y² = 1, 0 ≤ z ≤ 1
-//       with P2 at z = 0 (POVRAY-3.7.md §15.2), side and cap normals through the inverse
+//       with P2 at z = 0 (docs/povray-rules.md §15.2), side and cap normals through the inverse
 //       transpose (§14.6), phong highlights (§3.3), shadows on the floor (§4).
 // A vertical and a lying closed cylinder, and a thin one leaning against them.
 #version 3.7;

@@ -1,6 +1,6 @@
 // povml fidelity scene: quadrics_disc_hole
 // Rule: disc { C, N, R, H }: the ring H² ≤ r² ≤ R² in the plane through C with normal N, the
-//       normal normalised at parse time and moved by every modifier (POVRAY-3.7.md §15.4); the disc
+//       normal normalised at parse time and moved by every modifier (docs/povray-rules.md §15.4); the disc
 //       is seen from both sides (the normal is flipped toward the ray, §3.1); shadows through
 //       the hole (§4).
 #version 3.7;

@@ -1,5 +1,5 @@
 // povml fidelity scene: quadrics_glass_cylinder
-// Rule: refraction through a glass cylinder's caps and side (POVRAY-3.7.md §6, §15.2): each crossing
+// Rule: refraction through a glass cylinder's caps and side (docs/povray-rules.md §6, §15.2): each crossing
 //       flips the ray in or out of the interior; a glass cone beside it; filtered shadows (§4).
 #version 3.7;
 global_settings { assumed_gamma 1.0 max_trace_level 10 }

@@ -1,5 +1,5 @@
 // povml fidelity scene: quadrics_inverse_camera
-// Rule: inverse on a primitive negates its Inside test only (POVRAY-3.7.md §15.2, §20 item 7);
+// Rule: inverse on a primitive negates its Inside test only (docs/povray-rules.md §15.2, §20 item 7);
 //       the camera stands inside the glass cylinder's bounding box but outside the cylinder, so
 //       with inverse it starts "inside" it (§6.4) and every first crossing refracts as an exit.
 //       (Without inverse the picture differs in 70% of its pixels.)

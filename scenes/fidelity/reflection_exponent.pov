@@ -1,7 +1,7 @@
 // povml fidelity scene: reflection_exponent
 // Rule: with reflection exponent E != 1 the reflected colour is added as refl * colour_r^(1/E)
 //       per channel; `reflection_exponent E` and `reflection { .. exponent E }` both store 1/E
-//       (POVRAY-3.7.md §5.1, §5.3).
+//       (docs/povray-rules.md §5.1, §5.3).
 // Left: reflection 0.6 (E = 1). Middle: reflection 0.6 reflection_exponent 0.5 (darker reflected
 // image). Right: reflection { 0.6 exponent 2.5 } (brighter, washed-out reflected image).
 #version 3.7;

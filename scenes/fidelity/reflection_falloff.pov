@@ -1,6 +1,6 @@
 // povml fidelity scene: reflection_falloff
 // Rule: reflection { MIN, MAX falloff F }: frac = (1 - ci)^F, refl = frac*MAX + (1-frac)*MIN,
-//       ci = -D.N; child weight = weight * max(MAX, MIN) (POVRAY-3.7.md §5.1, §5.2 type 0).
+//       ci = -D.N; child weight = weight * max(MAX, MIN) (docs/povray-rules.md §5.1, §5.2 type 0).
 // Left: reflection { 0.05, 0.95 falloff 3 } (weak in the centre, mirror-like at the rim).
 // Middle: reflection { 0.1, 0.6 } (falloff 1). Right: reflection 0.5 (old syntax, constant).
 // Small coloured balls and the two-colour floor give something to reflect.

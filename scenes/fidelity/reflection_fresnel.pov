@@ -1,7 +1,7 @@
 // povml fidelity scene: reflection_fresnel
 // Rule: reflection { MIN, MAX fresnel } blends with the exact Fresnel term F(n, ci) where n is the
 //       relative IOR n_t/n_i from interior { ior }; with `fresnel` and one colour MIN = 0
-//       (POVRAY-3.7.md §5.1, §5.2 type 1, pitfall §13.12).
+//       (docs/povray-rules.md §5.1, §5.2 type 1, pitfall §13.12).
 // Left: reflection { 0, 1 fresnel } ior 1.5 (weak centre, strong rim).
 // Middle: reflection { 1 fresnel } ior 2.5 (MIN set to 0; stronger overall).
 // Right: reflection { 0.2, 1 fresnel } with default ior 1 (F = 0, so constant MIN = 0.2).

@@ -1,6 +1,6 @@
 // povml fidelity scene: reflection_metallic
 // Rule: reflection { .. metallic M } scales refl per channel by 1 + M(1-F)(C.rgb - 1), F the
-//       empirical function of acos(ci); `metallic` without a value is 1 (POVRAY-3.7.md §5.1, §5.2).
+//       empirical function of acos(ci); `metallic` without a value is 1 (docs/povray-rules.md §5.1, §5.2).
 // All three balls have a copper pigment. Left: reflection 0.8 (neutral mirror). Middle:
 // reflection { 0.8 metallic } (copper-tinted reflection). Right: reflection { 0.8 metallic 0.5 }.
 #version 3.7;

@@ -1,7 +1,7 @@
 // povml fidelity scene: reflection_mirrors
 // Rule: plain `reflection C`: reflected ray R = D - 2(D.N)N from the hit point, colour added as
 //       refl*colour_r, recursion until max_trace_level (a cut-off ray returns black) or the ray
-//       weight drops below adc_bailout (POVRAY-3.7.md §5.1, §5.3, §7).
+//       weight drops below adc_bailout (docs/povray-rules.md §5.1, §5.3, §7).
 // Two parallel mirror planes (x = -2 and x = +2) face each other; a red and a green ball stand
 // between them, giving a corridor of repeated images that darkens with depth. max_trace_level 12.
 #version 3.7;

@@ -1,6 +1,6 @@
 // povml fidelity scene: refraction_glass
 // Rule: Snell refraction with Heckbert's formula, ior ratio n_i/n_t from the interior list;
-//       transmitted colour scaled by filCol = rgb*filter + transmit (POVRAY-3.7.md §6.1, §6.2, §6.3).
+//       transmitted colour scaled by filCol = rgb*filter + transmit (docs/povray-rules.md §6.1, §6.2, §6.3).
 // A glass ball (rgbf <0.9,1,0.9,0.95>, ior 1.5) in front of a row of coloured balls: they appear
 // inverted and magnified inside it. Its shadow is filtered but not refracted (§4).
 #version 3.7;

@@ -1,6 +1,6 @@
 // povml fidelity scene: shadow_beyond_light
 // Rule: a shadow-ray hit only counts if 1e-3 < t < dist_to_light - 1e-3: objects at or BEYOND
-//       the light never shadow (POVRAY-3.7.md §4, §2.1; lecture "they might be beyond the light!").
+//       the light never shadow (docs/povray-rules.md §4, §2.1; lecture "they might be beyond the light!").
 // The light hangs at y = 2.5 under a big red ball (y 3.5 .. 5.5). Points on the floor whose ray
 // toward the light would continue into the red ball must stay fully lit: the floor shows a lit
 // pool with only the small blue ball's shadow (that ball is between the light and the floor).

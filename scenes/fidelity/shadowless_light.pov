@@ -1,6 +1,6 @@
 // povml fidelity scene: shadowless_light
 // Rule: a `shadowless` light is a fill light: no shadow test and NO phong/specular highlights,
-//       but normal diffuse (POVRAY-3.7.md §3.3, §10.2, pitfall §13.7).
+//       but normal diffuse (docs/povray-rules.md §3.3, §10.2, pitfall §13.7).
 // A dim ordinary light (left, above) gives one highlight per sphere and shadows; the brighter
 // shadowless light (right, low) adds diffuse light only: no second highlight, no second shadow.
 #version 3.7;

@@ -1,6 +1,6 @@
 // povml fidelity scene: sky_sphere
 // Rule: a ray that misses everything returns the sky_sphere colour (an opaque plain pigment hides
-//       the background completely: col += background.rgb * fil with fil = 0) (POVRAY-3.7.md §18.1, §8.4).
+//       the background completely: col += background.rgb * fil with fil = 0) (docs/povray-rules.md §18.1, §8.4).
 // The background is set to pure red on purpose: no red may appear anywhere. The mirror ball
 // reflects the sky colour.
 #version 3.7;

@@ -1,6 +1,6 @@
 // povml fidelity scene: specular_roughness
 // Rule: Blinn specular = specular * (H.N/|H|)^(1/roughness) * lc, H = (-D + L)/2;
-//       roughness is stored as its reciprocal, default 0.05 (POVRAY-3.7.md §3.3, §10.1).
+//       roughness is stored as its reciprocal, default 0.05 (docs/povray-rules.md §3.3, §10.1).
 // Left to right: specular 0.8 with roughness 0.3, default (0.05), 0.003.
 #version 3.7;
 global_settings { assumed_gamma 1.0 }

@@ -1,7 +1,7 @@
 // povml fidelity scene: tir_nested
 // Rule: total internal reflection: when t = 1 + ior^2 (n^2 - 1) < 0 the ray is mirrored instead of
 //       refracted, traced at trace level + 1 and added UNFILTERED, and no separate reflection ray is
-//       traced (POVRAY-3.7.md §6.2, §6.3, §5.3). (A ray that enters a lone sphere from outside can
+//       traced (docs/povray-rules.md §6.2, §6.3, §5.3). (A ray that enters a lone sphere from outside can
 //       never meet TIR, so the TIR here happens at an inner, lower-ior object: ratio n_outer/n_inner.)
 // Left: a diamond-like ball (ior 2.4) with an off-centre core of ior 1.2 (ratio 2.0, critical
 // angle 30 degrees): the core looks like a bright silvery mirror. Right: a glass ball (ior 1.5)

@@ -1,7 +1,7 @@
 // povml fidelity scene: torus_far
 // Rule: a ray starting outside the sphere of radius R + 2r around the torus first moves its
 //       origin to that sphere (the "closer" shift) before the quartic is set up, which keeps the
-//       roots precise from far away (POVRAY-3.7.md §15.5); sturm switches the solver to Sturm
+//       roots precise from far away (docs/povray-rules.md §15.5); sturm switches the solver to Sturm
 //       sequences (§15.6). A narrow camera (angle 6) 60 units away.
 // Five tori: an almost edge-on ring, a thin tube (r = 0.05), a sturm torus, a spindle torus
 // (R = 0.3 < r = 0.5) and a tilted plain one, over a floor, two lights.

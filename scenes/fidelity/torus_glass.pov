@@ -1,5 +1,5 @@
 // povml fidelity scene: torus_glass
-// Rule: a torus is a closed solid (Inside: P.y² + (√(P.x²+P.z²) − R)² ≤ r², POVRAY-3.7.md
+// Rule: a torus is a closed solid (Inside: P.y² + (√(P.x²+P.z²) − R)² ≤ r², docs/povray-rules.md
 //       §15.5): a ray refracts into the tube and out again with the interior list (§6.2, §6.4),
 //       crossing up to four surfaces; shadows through it are filtered (§4).
 // A glass torus standing up and a flatter transparent one, in front of coloured objects.

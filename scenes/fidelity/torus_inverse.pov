@@ -1,5 +1,5 @@
 // povml fidelity scene: torus_inverse
-// Rule: inverse negates a torus's Inside test (POVRAY-3.7.md §15.5). The camera stands in the
+// Rule: inverse negates a torus's Inside test (docs/povray-rules.md §15.5). The camera stands in the
 //       hole of a large inverse glass torus: within its bounding box and outside the tube, so it
 //       counts as inside the object and camera rays start in its interior (§6.4: POV-Ray asks
 //       Inside_BBox before Inside); where they cross the tube's wall they LEAVE the interior, so

@@ -1,7 +1,7 @@
 // povml fidelity scene: torus_mirror
 // Rule: a reflective torus reflects the scene with the reflected ray starting on its surface;
 //       the 1e-4 world depth limit and the solver's root elimination keep it from hitting the
-//       torus again at once (POVRAY-3.7.md §15.5, §15.6, §5.3). The mirrored ring reflects
+//       torus again at once (docs/povray-rules.md §15.5, §15.6, §5.3). The mirrored ring reflects
 //       itself through its hole.
 // A chrome-like torus tilted over a floor, with spheres and a box around it.
 #version 3.7;

@@ -1,6 +1,6 @@
 // povml fidelity scene: torus_shadows
 // Rule: torus { R, r } about the Y axis, intersected as POV-Ray's quartic with the thick-cylinder
-//       pre-test and the 1e-4 world depth limit (POVRAY-3.7.md §15.5, §15.6); every modifier is
+//       pre-test and the 1e-4 world depth limit (docs/povray-rules.md §15.5, §15.6); every modifier is
 //       composed into the torus's transform (§14.4), the normal maps by the inverse transpose
 //       (§14.6). Tori cast shadows on the floor and on each other from two lights (§4); the
 //       root elimination keeps a shadow ray from a torus's own surface from hitting it again.

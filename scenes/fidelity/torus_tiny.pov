@@ -3,7 +3,7 @@
 //       torus scaled up still solves a quartic with tiny coefficients (about R⁴ for the constant
 //       term): difficult() sees coefficients more than 1e12 apart and switches to Sturm
 //       sequences, whose remainders lose coefficients below 1e-10, and root elimination compares
-//       |c4/c3| with 1e-4 in torus units (POVRAY-3.7.md §15.6). Each torus here is about the same
+//       |c4/c3| with 1e-4 in torus units (docs/povray-rules.md §15.6). Each torus here is about the same
 //       size on screen; their pixels show where POV-Ray's solver finds roots and where it loses
 //       them (with difficult() switched off, 540 pixels differ from POV-Ray's picture).
 // Four tori scaled to about the same size, over a floor: R = 1, r = 0.3; R = 0.01, r = 0.003;

@@ -2,7 +2,7 @@
 // Stresses: recursion at POV-Ray's hard limit. Two parallel mirror planes 2 units apart face each
 // other with reflection just below 1 and adc_bailout 0, so no ray is ever cut for its weight: a
 // ray between the mirrors bounces until max_trace_level 256 (the largest value POV-Ray accepts
-// without a warning, POVRAY-3.7.md §7) and gets black there. There is a floor but no ceiling:
+// without a warning, docs/povray-rules.md §7) and gets black there. There is a floor but no ceiling:
 // every camera ray that rises bounces the full 256 levels (255 reflected rays, each with its
 // shadow ray), the others until they reach the floor.
 // A correct image: the camera looks almost straight at one mirror; the red and green balls

@@ -1,4 +1,4 @@
-Pigment patterns (POVRAY-3.7 §17): errors in colour maps and pattern modifiers are located and
+Pigment patterns (docs/povray-rules.md §17): errors in colour maps and pattern modifiers are located and
 exit with status 1; patterns not read yet are "not supported yet" where they are used.
 
 A colour map entry needs a colour keyword or identifier; a bare vector is an error:

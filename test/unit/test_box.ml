@@ -1,4 +1,4 @@
-(* The box (POVRAY-3.7 §15.1): parsing and placing, the slab intersection with its side tie rule
+(* The box (docs/povray-rules.md §15.1): parsing and placing, the slab intersection with its side tie rule
    and depth limits, the normal of the side hit, the closed inside test. *)
 
 open Povml

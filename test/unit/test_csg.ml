@@ -1,4 +1,4 @@
-(* CSG (POVRAY-3.7 §16): parsing (difference, inverse and the De Morgan morph, split_union, members'
+(* CSG (docs/povray-rules.md §16): parsing (difference, inverse and the De Morgan morph, split_union, members'
    textures and interiors), every crossing of each primitive (all-hits), the Inside test of each
    shape and each CSG kind, which hits each kind keeps, the nearest hit and its leaf, coincident
    boundaries, bounding boxes, shading of the primitive hit and the shared interior. *)

@@ -1,4 +1,4 @@
-(* Interp: scene text to Scene.t (POVRAY-3.7 §1.3, §2.3, §5.1, §8.1, §8.4, §10, §11). *)
+(* Interp: scene text to Scene.t (docs/povray-rules.md §1.3, §2.3, §5.1, §8.1, §8.4, §10, §11). *)
 
 open Povml
 open Helpers
@@ -593,7 +593,7 @@ let tests =
 
 (* Found missing by this test, now fixed: POV-Ray's Parse_Sphere and Parse_Plane read the comma
    with Parse_Comma, which accepts a missing comma (it ungets any other token), so
-   sphere { <0,0,0> 1 } is a valid unit sphere. povml requires the comma. Not in POVRAY-3.7.md; from
+   sphere { <0,0,0> 1 } is a valid unit sphere. povml requires the comma. Not in docs/povray-rules.md; from
    the POV-Ray source (parse.cpp). *)
 let test_optional_comma () =
   float_eq "sphere without comma" 1. (radius "sphere { <0,0,0> 1 }");
@@ -603,7 +603,7 @@ let test_optional_comma () =
 (* Found missing by this test, now fixed: in POV-Ray 3.7 (parse.cpp: Parse_Frame, CAMERA_TOKEN, for
    languageVersion ≥ 3.50) a second camera statement starts again from the default camera, with the
    warning "More than one camera in scene. Ignoring previous camera(s).". povml lets the second
-   camera modify the first (interp.ml: parse_camera). Not in POVRAY-3.7.md. *)
+   camera modify the first (interp.ml: parse_camera). Not in docs/povray-rules.md. *)
 let test_second_camera () =
   let s, w = load (v37 ^ "camera { location <1,2,3> }\ncamera { right <2,0,0> }\nsphere { 0, 1 }") in
   vec_eq "the first camera's location is dropped" (v 0. 0. 0.) s.camera.location;
@@ -612,7 +612,7 @@ let test_second_camera () =
 
 (* Found missing by this test, now fixed: POV-Ray's Parse_Global_Settings ignores a second
    assumed_gamma with the warning "New instance of assumed_gamma ignored" (the first one stays);
-   povml keeps the last one. From the POV-Ray source (parse.cpp), not in POVRAY-3.7.md. *)
+   povml keeps the last one. From the POV-Ray source (parse.cpp), not in docs/povray-rules.md. *)
 let test_second_assumed_gamma () =
   let s, w = load "#version 3.7;\nglobal_settings { assumed_gamma 1.0 }\nglobal_settings { assumed_gamma 2.2 }\nsphere { 0, 1 }" in
   Alcotest.(check bool) "the first assumed_gamma stays" true (s.gamma = Scene.Working 1.);

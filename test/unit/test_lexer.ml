@@ -1,4 +1,4 @@
-(* Lexer (POVRAY-3.7 §11.1): tokens, locations and lexical errors. *)
+(* Lexer (docs/povray-rules.md §11.1): tokens, locations and lexical errors. *)
 
 open Povml
 open Helpers
@@ -167,7 +167,7 @@ let test_errors () =
   lex_error "bad character" "sphere $" ~line:1 ~col:8 ~sub:"unexpected character '$'";
   lex_error "bad byte" "a\n  \xC3\xA9" ~line:2 ~col:3 ~sub:"byte 0xC3"
 
-(* Found missing by this test, now fixed: POVRAY-3.7 §11.1 lists the string escape \uXXXX; povml
+(* Found missing by this test, now fixed: docs/povray-rules.md §11.1 lists the string escape \uXXXX; povml
    keeps it as the six characters written. *)
 let test_unicode_escape () = check_kinds "\\u0041" [ Str "A"; Eof ] {|"\u0041"|}
 

@@ -1,4 +1,4 @@
-(* Lights, the orthographic camera and object flags (POVRAY-3.7 §3.4, §16.6, §18.2–§18.4): parsing,
+(* Lights, the orthographic camera and object flags (docs/povray-rules.md §3.4, §16.6, §18.2–§18.4): parsing,
    the spotlight and cylinder attenuation, the parallel light's depth, orthographic ray origins and
    interior lists, the groups image and reflection rays search, and traced values computed by hand. *)
 

@@ -1,5 +1,5 @@
 (* Mesh: storage, set-up, intersection, inside test and per-face textures of meshes
-   (POVRAY-3.7 §2.6), built with Mesh.build or from mesh {} / mesh2 {} scenes. Values by hand. *)
+   (docs/povray-rules.md §2.6), built with Mesh.build or from mesh {} / mesh2 {} scenes. Values by hand. *)
 
 open Povml
 open Helpers

@@ -1,4 +1,4 @@
-(* Pigment patterns (POVRAY-3.7 §17, §18.1, §14.7): each pattern at its boundaries, the value wrap
+(* Pigment patterns (docs/povray-rules.md §17, §18.1, §14.7): each pattern at its boundaries, the value wrap
    and waves, the map lookup rules, parsing (maps, defaults, errors), transforms before and after
    an object's, and evaluation at hit points, shadow crossings and sky directions. *)
 

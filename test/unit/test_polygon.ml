@@ -1,4 +1,4 @@
-(* The polygon (POVRAY-3.7 §15.7): how Parse_Polygon closes outlines, the frame Compute_Polygon
+(* The polygon (docs/povray-rules.md §15.7): how Parse_Polygon closes outlines, the frame Compute_Polygon
    builds, the even-odd test with a hole and an island, the depth limits, transforms and the normal,
    no inside (in CSG too), POV-Ray's box, the errors and warnings. Expected values are worked out
    by hand in the comments. *)

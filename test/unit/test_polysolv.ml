@@ -1,4 +1,4 @@
-(* POV-Ray's polynomial solver (POVRAY-3.7 §15.6): each path on polynomials whose roots are known
+(* POV-Ray's polynomial solver (docs/povray-rules.md §15.6): each path on polynomials whose roots are known
    by hand, the quirks it must keep (root elimination, the pp = 0 sign slip, the signed "biggest"
    of difficult(), a quadruple root lost by the closed form), and Sturm against the quartic. *)
 

@@ -1,4 +1,4 @@
-(* Cylinders, cones and discs (POVRAY-3.7 §15.2–§15.4): the canonical set-up, every hit listed in
+(* Cylinders, cones and discs (docs/povray-rules.md §15.2–§15.4): the canonical set-up, every hit listed in
    POV-Ray's order with its part, the nearest one, normals, the inside tests, and the errors.
    Every expected value is worked out by hand in the comments. *)
 

@@ -1,4 +1,4 @@
-(* The text object (POVRAY-3.7 §15.9): the font tables of cyrvetic.ttf (values checked against the
+(* The text object (docs/povray-rules.md §15.9): the font tables of cyrvetic.ttf (values checked against the
    file with an independent reader), the layout of a string, the glyph intersection and inside
    test on hand-made outlines (a unit square, a parabola arch) whose depths are computed by hand,
    and on real letters: a ray through the stem of an I, through the ring of an O and through its

@@ -1,4 +1,4 @@
-(* The torus (POVRAY-3.7 §15.5): parsing and placing, the intersection (every depth, the nearest,
+(* The torus (docs/povray-rules.md §15.5): parsing and placing, the intersection (every depth, the nearest,
    the thick-cylinder pre-test, the closer shift, the 1e-4 world depth limit, root elimination
    for rays leaving the surface), the normal, the closed inside test, the bounding box and the
    statistics. Depths are computed by hand for R = 1, r = 0.25: the tube crosses the X axis at

@@ -1,4 +1,4 @@
-(* Triangle: set-up, intersection and smooth normals of standalone triangles (POVRAY-3.7 §2.4,
+(* Triangle: set-up, intersection and smooth normals of standalone triangles (docs/povray-rules.md §2.4,
    §2.5), against values computed by hand. *)
 
 open Povml

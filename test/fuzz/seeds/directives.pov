@@ -1,4 +1,4 @@
-// Fuzz seed: directives, macros and nesting (POVRAY-3.7 §11.3).
+// Fuzz seed: directives, macros and nesting (docs/povray-rules.md §11.3).
 #version 3.7;
 #default { finish { ambient 0.2 diffuse 0.7 } }
 global_settings { assumed_gamma 2.2 max_trace_level 8 adc_bailout 0.01 ambient_light rgb 0.5 }

@@ -1,4 +1,4 @@
-// Fuzz seed: the built-in functions, operators and string escapes (POVRAY-3.7 §11.2).
+// Fuzz seed: the built-in functions, operators and string escapes (docs/povray-rules.md §11.2).
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 #declare S = seed(42);
