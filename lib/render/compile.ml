@@ -503,7 +503,6 @@ let scene ?(bounding_threshold = pov_bounding_threshold) (s : Scene.t) : Compile
     start_interiors;
     screen_holders = screen_holders s.camera tops;
     bounding;
-    facets = Normals.facets_cache ();
     crand = [| 0 |];
     uses_crand = !uses_crand;
   }

@@ -249,7 +249,7 @@ type t = {
       (** crand's random stream (POV-Ray's POV_rand, one per render thread, never reset): its one
           cell holds the state, 0 when the render starts, and goes on from block to block in
           render order; with [uses_crand] the render runs in one worker so that order is POV-Ray's
-          one-thread order. A mutable part of the compiled scene, like [facets] *)
+          one-thread order. A mutable part of the compiled scene *)
   uses_crand : bool;  (** some surface has a crand *)
   legacy : bool;  (** effective version < 3.70 *)
   camera : Scene.camera;
@@ -266,9 +266,4 @@ type t = {
           Bounding_Threshold top-level objects (1 by default, 3 in Debian's povray.ini), light
           sources and degenerate triangles included. Without it objects are tested in scene order,
           which decides exact depth ties. *)
-  facets : Normals.facets_cache;
-      (** POV-Ray's facets cache, which a render thread keeps for every facets normal it meets:
-          one for the scene, emptied at the start of each block ([Trace.make_ctx]) as a fresh
-          thread's would be. The only mutable part of the compiled scene; each render worker
-          process has its own. *)
 }

@@ -1,4 +1,5 @@
-(* A render worker's context: the scene, the statistics, the scratch and the shadow cache. *)
+(* A render worker's context: the scene, the statistics, the scratch, the shadow cache and the
+   facets cache. *)
 
 type found = { mutable id : int; mutable part : int; mutable near : bool }
 type reach = { mutable depth : float; mutable least : float; mutable inv_dx : float; mutable inv_dy : float; mutable inv_dz : float }
@@ -14,6 +15,7 @@ type t = {
   found : found;
   reach : reach;
   walk_limit : float array;
+  facets : Normals.facets_cache;
 }
 
 let shadow_cache (scene : Compiled.t) = Array.make (2 * max 1 (Array.length scene.lights)) (-1)
@@ -30,9 +32,11 @@ let make ?(robust = false) ?shadow_cache:cache ?iso (scene : Compiled.t) stats =
     found = { id = -1; part = -1; near = false };
     reach = { depth = 0.; least = 0.; inv_dx = 0.; inv_dy = 0.; inv_dz = 0. };
     walk_limit = [| 0. |];
+    facets = Normals.facets_cache ();
   }
 
 let renew ctx ~shadow_cache ~iso stats =
+  Normals.reset_facets ctx.facets;
   { ctx with stats; shadow_cache; shapes = Scratch.renew ctx.shapes ~iso stats; found = { id = -1; part = -1; near = false };
     reach = { depth = 0.; least = 0.; inv_dx = 0.; inv_dy = 0.; inv_dz = 0. } }
 

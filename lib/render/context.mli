@@ -29,6 +29,9 @@ type t = {
   found : found;
   reach : reach;
   walk_limit : float array;  (** the limit of the hierarchy's walk (one float) *)
+  facets : Normals.facets_cache;
+      (** POV-Ray's facets cache, which a render thread keeps for every facets normal it meets;
+          emptied at the start of each block ({!renew}), as a fresh thread's would be *)
 }
 
 val shadow_cache : Compiled.t -> int array

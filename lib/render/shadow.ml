@@ -91,7 +91,7 @@ let caustic ctx (obj : obj) part (q : Vec.t) (l : Vec.t) =
       | Bumpy nm ->
           let uv = if s.needs_uv then Shape.uv ctx.shapes obj part q else Vec.zero in
           let wn = List.fold_left (fun v ws -> Normals.warp_normal ws ~keep_scale:false v) raw warps in
-          let pn = Normals.perturb ~facets:sc.facets sc.noise_generator nm p { Patterns.normal = raw; dir = l; uv } wn in
+          let pn = Normals.perturb ~facets:ctx.facets sc.noise_generator nm p { Patterns.normal = raw; dir = l; uv } wn in
           List.fold_right (fun ws v -> Normals.unwarp_normal ws ~keep_scale:false v) warps (Normals.layer_normal nm pn)
     in
     1.0 +. Float.pow (Float.abs (Vec.dot n l)) obj.interior.caustics

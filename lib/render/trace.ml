@@ -18,15 +18,8 @@ let f32 = Precision.f32
 type result = Traced.t = { r : float; g : float; b : float; tr : float }
 type nonrec ctx = Context.t
 
-(* A context for one block. POV-Ray's facets cache belongs to a render thread, and a block is
-   rendered as by a fresh thread: the scene's cache is emptied first. *)
-let make_ctx ?robust ?shadow_cache ?iso (sc : Compiled.t) stats =
-  Normals.reset_facets sc.facets;
-  Context.make ?robust ?shadow_cache ?iso sc stats
-
-let renew_ctx (ctx : ctx) ~shadow_cache ~iso stats =
-  Normals.reset_facets ctx.scene.facets;
-  Context.renew ctx ~shadow_cache ~iso stats
+let make_ctx = Context.make
+let renew_ctx = Context.renew
 
 let black = Traced.black
 
@@ -136,7 +129,7 @@ and shade ctx ~reflected obj part depth ~level ~weight ~interiors (o : Vec.t) (d
            patterns see the bent normal [pn]; [sn], the bent normal made unit, shades, reflects and
            refracts, and the raw N keeps the reflected ray on the surface's side (trace.cpp) *)
         let uv = if s.needs_uv then Shape.uv ctx.shapes obj part p else Vec.zero in
-        let pn = match s.bump with Smooth -> n | Bumpy nm -> Normals.perturb ~facets:sc.facets sc.noise_generator nm p { Patterns.normal = n; dir = d; uv } n in
+        let pn = match s.bump with Smooth -> n | Bumpy nm -> Normals.perturb ~facets:ctx.facets sc.noise_generator nm p { Patterns.normal = n; dir = d; uv } n in
         let s = match s.paint with Fixed -> s | Varying at -> at { Patterns.normal = pn; dir = d; uv } p in
         let sn = match s.bump with Smooth -> n | Bumpy nm -> Normals.layer_normal nm pn in
         (* k_r, the reflection colour at the cosine of incidence N·E (E = −d, the way to the eye) *)
@@ -264,7 +257,7 @@ and lighted ctx at (ls : surface array) q warps : result =
         | Smooth -> n
         | Bumpy nm ->
             let wn = List.fold_left (fun v ws -> Normals.warp_normal ws ~keep_scale:false v) n warps in
-            let pn = Normals.perturb ~facets:sc.facets sc.noise_generator nm q { Patterns.normal = at.pnormal; dir = d; uv } wn in
+            let pn = Normals.perturb ~facets:ctx.facets sc.noise_generator nm q { Patterns.normal = at.pnormal; dir = d; uv } wn in
             at.pnormal <- pn;
             List.fold_right (fun ws v -> Normals.unwarp_normal ws ~keep_scale:false v) warps (Normals.layer_normal nm pn)
       in

@@ -8,12 +8,10 @@ type nonrec ctx = Context.t
 (** What a trace reads and writes: one render worker's context. *)
 
 val make_ctx : ?robust:bool -> ?shadow_cache:int array -> ?iso:Scratch.iso_room -> Compiled.t -> Stats.t -> ctx
-(** [make_ctx ?robust ?shadow_cache ?iso scene stats] is [Context.make]: a context for one block of one
-    render worker, with the scene's facets cache emptied (POV-Ray keeps it per render thread). *)
+(** [make_ctx] is {!Context.make}: the context of a render worker's first block. *)
 
 val renew_ctx : ctx -> shadow_cache:int array -> iso:Scratch.iso_room -> Stats.t -> ctx
-(** [renew_ctx ctx ~shadow_cache ~iso stats] is [Context.renew] for the worker's next block, with the
-    scene's facets cache emptied as by {!make_ctx}. *)
+(** [renew_ctx] is {!Context.renew}: the context of the worker's next block. *)
 
 val black : result
 (** [black] is what a ray cut off by max_trace_level or adc_bailout returns. *)
