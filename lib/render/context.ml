@@ -20,6 +20,10 @@ type t = {
 
 let shadow_cache (scene : Compiled.t) = Array.make (2 * max 1 (Array.length scene.lights)) (-1)
 
+(* what the nearest-hit search starts from *)
+let no_hit () = { id = -1; part = -1; near = false }
+let no_reach () = { depth = 0.; least = 0.; inv_dx = 0.; inv_dy = 0.; inv_dz = 0. }
+
 let make ?(robust = false) ?shadow_cache:cache ?iso (scene : Compiled.t) stats =
   {
     scene;
@@ -29,15 +33,14 @@ let make ?(robust = false) ?shadow_cache:cache ?iso (scene : Compiled.t) stats =
     min_depth = (if robust then 0. else Precision.min_isect_depth);
     robust;
     shadow_cache = (match cache with Some c -> c | None -> shadow_cache scene);
-    found = { id = -1; part = -1; near = false };
-    reach = { depth = 0.; least = 0.; inv_dx = 0.; inv_dy = 0.; inv_dz = 0. };
+    found = no_hit ();
+    reach = no_reach ();
     walk_limit = [| 0. |];
     facets = Normals.facets_cache ();
   }
 
 let renew ctx ~shadow_cache ~iso stats =
   Normals.reset_facets ctx.facets;
-  { ctx with stats; shadow_cache; shapes = Scratch.renew ctx.shapes ~iso stats; found = { id = -1; part = -1; near = false };
-    reach = { depth = 0.; least = 0.; inv_dx = 0.; inv_dy = 0.; inv_dz = 0. } }
+  { ctx with stats; shadow_cache; shapes = Scratch.renew ctx.shapes ~iso stats; found = no_hit (); reach = no_reach () }
 
 let[@inline] cache_slot ~level k = (2 * k) + if level = 1 then 0 else 1
