@@ -11,3 +11,23 @@ let keep fd text =
   Unix.ftruncate fd (String.length text)
 
 let set_timer which seconds = ignore (Unix.setitimer which { Unix.it_interval = 0.; it_value = seconds })
+
+exception Out_of_time
+
+let within budget f =
+  let timed_out = ref false in
+  let before = Sys.signal Sys.sigvtalrm (Sys.Signal_handle (fun _ -> timed_out := true; raise Out_of_time)) in
+  set_timer Unix.ITIMER_VIRTUAL budget;
+  set_timer Unix.ITIMER_REAL (10. *. budget);
+  (* the timer may also go off after the run, before it is stopped *)
+  let outcome =
+    try
+      let o = f () in
+      set_timer Unix.ITIMER_VIRTUAL 0.;
+      Some o
+    with Out_of_time -> None
+  in
+  set_timer Unix.ITIMER_VIRTUAL 0.;
+  set_timer Unix.ITIMER_REAL 0.;
+  Sys.set_signal Sys.sigvtalrm before;
+  if !timed_out then None else outcome

@@ -9,3 +9,8 @@ val keep : Unix.file_descr -> string -> unit
 
 val set_timer : Unix.interval_timer -> float -> unit
 (** [set_timer which seconds] arms the timer [which] once, [seconds] from now (0 disarms it). *)
+
+val within : float -> (unit -> 'a) -> 'a option
+(** [within budget f] is [Some (f ())], or [None] when [f] used more than [budget] seconds of CPU
+    time (a CPU-time timer whose handler raises); a wall-clock timer of ten times [budget], whose
+    signal ends the process, catches a run stuck outside OCaml code. *)

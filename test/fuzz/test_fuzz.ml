@@ -20,8 +20,6 @@ let seed = try int_of_string (Sys.getenv "POVML_FUZZ_SEED") with Not_found | Fai
 let budget = 2.
 let max_seed_bytes = 8192
 
-exception Out_of_time
-
 (* the scenes of scenes/bench are left out: their loops run for seconds on purpose *)
 let scene_dirs =
   [ "../../scenes"; "../../scenes/course"; "../../scenes/fidelity"; "../../scenes/stiff"; "seeds"; "../bad"; "../bad/fuzz" ]
@@ -50,8 +48,6 @@ let () =
   let texts = Array.map read seeds in
   (* rewritten in place for each input: opening with truncation costs a millisecond on ext4 *)
   let current = Unix.openfile "fuzz_current.pov" [ O_WRONLY; O_CREAT ] 0o644 in
-  let timed_out = ref false in
-  Sys.set_signal Sys.sigvtalrm (Sys.Signal_handle (fun _ -> timed_out := true; raise Out_of_time));
   let rng = Random.State.make [| seed; 4 |] in
   let scenes = ref 0 and refused = ref 0 and bugs = ref [] in
   let t0 = Unix.gettimeofday () in
@@ -59,24 +55,11 @@ let () =
     let k = Random.State.int rng (Array.length seeds) in
     let text = Mutate.mutate rng ~seeds:texts texts.(k) in
     keep current text;
-    timed_out := false;
-    set_timer Unix.ITIMER_VIRTUAL budget;
-    set_timer Unix.ITIMER_REAL (10. *. budget);
-    (* the timer may also go off after the run, before it is stopped *)
-    let outcome =
-      try
-        let o = Target.run ~file:seeds.(k) text in
-        set_timer Unix.ITIMER_VIRTUAL 0.;
-        o
-      with Out_of_time -> Target.Bug "out of time"
-    in
-    set_timer Unix.ITIMER_VIRTUAL 0.;
-    set_timer Unix.ITIMER_REAL 0.;
-    match outcome with
-    | _ when !timed_out -> bugs := (i, seeds.(k), text, Printf.sprintf "took more than %g s of CPU time" budget) :: !bugs
-    | Scene _ -> incr scenes
-    | Refused _ -> incr refused
-    | Bug msg -> bugs := (i, seeds.(k), text, msg) :: !bugs
+    match within budget (fun () -> Target.run ~file:seeds.(k) text) with
+    | None -> bugs := (i, seeds.(k), text, Printf.sprintf "took more than %g s of CPU time" budget) :: !bugs
+    | Some (Scene _) -> incr scenes
+    | Some (Refused _) -> incr refused
+    | Some (Bug msg) -> bugs := (i, seeds.(k), text, msg) :: !bugs
   done;
   Unix.close current;
   Sys.remove "fuzz_current.pov";

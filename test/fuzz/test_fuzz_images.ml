@@ -21,8 +21,6 @@ let formats =
   | Some l -> List.filter (fun (n, _) -> List.mem n (String.split_on_char ',' l)) Image_target.kinds
   | None -> Image_target.kinds
 
-exception Out_of_time
-
 let read path =
   let ic = open_in_bin path in
   Fun.protect ~finally:(fun () -> close_in ic) (fun () -> really_input_string ic (in_channel_length ic))
@@ -49,8 +47,6 @@ open Fuzz_io
 
 let () =
   Printexc.record_backtrace true;
-  let timed_out = ref false in
-  Sys.set_signal Sys.sigvtalrm (Sys.Signal_handle (fun _ -> timed_out := true; raise Out_of_time));
   let failed = ref false in
   let current = Unix.openfile "fuzz_image_current" [ O_WRONLY; O_CREAT ] 0o644 in
   List.iteri
@@ -82,23 +78,11 @@ let () =
           (* where a crash in C code (libjpeg) leaves the input that caused it *)
           keep current data;
           Option.iter (fun dir -> write (Filename.concat dir (Printf.sprintf "%s_%05d.%s" name i name)) data) dump;
-          timed_out := false;
-          set_timer Unix.ITIMER_VIRTUAL budget;
-          set_timer Unix.ITIMER_REAL (10. *. budget);
-          let outcome =
-            try
-              let o = Image_target.run ~fix_png_crcs:(i land 1 = 0) kind data in
-              set_timer Unix.ITIMER_VIRTUAL 0.;
-              o
-            with Out_of_time -> Image_target.Bug "out of time"
-          in
-          set_timer Unix.ITIMER_VIRTUAL 0.;
-          set_timer Unix.ITIMER_REAL 0.;
-          match outcome with
-          | _ when !timed_out -> bugs := (i, files.(k), data, Printf.sprintf "took more than %g s of CPU time" budget) :: !bugs
-          | Decoded -> incr decoded
-          | Refused _ -> incr refused
-          | Bug m -> bugs := (i, files.(k), data, m) :: !bugs
+          match within budget (fun () -> Image_target.run ~fix_png_crcs:(i land 1 = 0) kind data) with
+          | None -> bugs := (i, files.(k), data, Printf.sprintf "took more than %g s of CPU time" budget) :: !bugs
+          | Some Decoded -> incr decoded
+          | Some (Refused _) -> incr refused
+          | Some (Bug m) -> bugs := (i, files.(k), data, m) :: !bugs
         done;
         let bugs = List.rev !bugs in
         Printf.printf "%s: %d inputs from %d seed and corpus files in %.1f s: %d decoded, %d refused, %d bugs\n" name inputs (Array.length files)

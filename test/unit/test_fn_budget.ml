@@ -34,27 +34,27 @@ let test_calls () =
   | exception Fn_budget.Exhausted -> ());
   Fn_budget.start max_int
 
-(* from the scene language: a limit error at the call, naming the switch *)
-let test_scene () =
-  let limits = { Scene_limits.default with function_steps = 10_000 } in
-  let text = "#declare F = function(n) { sum(i, 1, n, 1/(i*i)) }\n#declare A = F(10);\n#declare B = F(1e12);\n" in
+(* [text] read under [limits] stops with a limit error at [where] ([at], line and column) that
+   names [switch] *)
+let expect_limit limits text ~where ~at ~switch =
   match Interp.load_string { opts with limits } ~file:"t.pov" text with
   | _ -> Alcotest.fail "expected a limit error"
   | exception Error.Scene_error e ->
-      Alcotest.(check (pair int int)) "at the call" (3, 14) (e.loc.line, e.loc.col);
+      Alcotest.(check (pair int int)) where at (e.loc.line, e.loc.col);
       Alcotest.(check bool) "a limit" true (e.kind = Limit);
-      check_contains "the switch" ~sub:"--max-function-steps" e.msg
+      check_contains "the switch" ~sub:switch e.msg
+
+(* from the scene language: a limit error at the call, naming the switch *)
+let test_scene () =
+  expect_limit { Scene_limits.default with function_steps = 10_000 }
+    "#declare F = function(n) { sum(i, 1, n, 1/(i*i)) }\n#declare A = F(10);\n#declare B = F(1e12);\n"
+    ~where:"at the call" ~at:(3, 14) ~switch:"--max-function-steps"
 
 (* strings built by the string functions, all together *)
 let test_strings () =
-  let limits = { Scene_limits.default with string_mb = 1 } in
-  let text = "#declare S = \"\";\n#for (I, 1, 100000) #declare S = concat(S, \"x\"); #end\n" in
-  match Interp.load_string { opts with limits } ~file:"t.pov" text with
-  | _ -> Alcotest.fail "expected a limit error"
-  | exception Error.Scene_error e ->
-      Alcotest.(check (pair int int)) "at concat" (2, 34) (e.loc.line, e.loc.col);
-      Alcotest.(check bool) "a limit" true (e.kind = Limit);
-      check_contains "the switch" ~sub:"--max-strings" e.msg
+  expect_limit { Scene_limits.default with string_mb = 1 }
+    "#declare S = \"\";\n#for (I, 1, 100000) #declare S = concat(S, \"x\"); #end\n"
+    ~where:"at concat" ~at:(2, 34) ~switch:"--max-strings"
 
 let tests =
   [
