@@ -2,8 +2,11 @@
 
 type t = { width : int; height : int; pixels : Bytes.t }
 
+type gamma = Gamma_off | Working of float
+
 (* The sRGB curve with single-precision constants and arithmetic, as POV-Ray evaluates it: it keeps
    colours and gamma curves in single precision (§8.3). *)
+
 let c_threshold = Precision.f32 0.0031308
 let c_linear = Precision.f32 12.92
 let c_scale = Precision.f32 1.055
@@ -18,8 +21,8 @@ let channel gamma x =
   let x = Precision.f32 x in
   let e =
     match gamma with
-    | Scene.Gamma_off -> x
-    | Scene.Working g -> srgb_encode (if g = 1. then Float.max x 0. else Precision.(f32 (Float.pow (Float.max x 0.) (f32 g))))
+    | Gamma_off -> x
+    | Working g -> srgb_encode (if g = 1. then Float.max x 0. else Precision.(f32 (Float.pow (Float.max x 0.) (f32 g))))
   in
   let c = if e < 0. then 0. else if e > 1. then 1. else e in
   (* §8.1: floor(clip(v)·255 + 0.5), the product in single precision *)

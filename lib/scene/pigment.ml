@@ -200,25 +200,3 @@ let default_map (p : Scene.pattern) =
   | Agate _ -> agate_map
   | Marble -> marble_map
   | _ -> grey_map
-
-(* Transform_Tpattern: a transform composes into the head of the warp list when that is a
-   transform, else becomes the new head (created on the identity first) *)
-let transform_warps (ws : Scene.warp list) t : Scene.warp list =
-  match ws with
-  | Transform_warp m :: rest -> Transform_warp (Transform.compose m t) :: rest
-  | _ -> Transform_warp (Transform.compose Transform.identity t) :: ws
-
-let transform (p : Scene.pigment) t : Scene.pigment =
-  (* Transform_Tpattern: composed into the head transform, created on the identity first; a plain
-     colour keeps its transform too, for an edit that gives it a pattern (§17.9). A uv-mapped
-     pigment is unchanged: POV-Ray composes the transform into the UV_MAP_PATTERN wrapper, whose
-     warps its evaluation never applies *)
-  match p with
-  | Solid colour -> Solid_placed { colour; strans = Transform.compose Transform.identity t }
-  | Solid_placed { colour; strans } -> Solid_placed { colour; strans = Transform.compose strans t }
-  | Pattern { uv_mapping = true; _ } -> p
-  | Pattern pp -> Pattern { pp with warps = transform_warps pp.warps t }
-
-let transform_normal (n : Scene.normal) t : Scene.normal =
-  (* as [transform]: a uv-mapped normal's wrapper takes the transform and never uses it *)
-  if n.nuv_mapping then n else { n with nwarps = transform_warps n.nwarps t }

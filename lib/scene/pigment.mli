@@ -1,5 +1,5 @@
-(** Pigment evaluation: patterns, the value wrap and waves, and colour-map lookup; the default maps,
-    and a pigment's transform (docs/povray-rules.md §17). *)
+(** Pigment evaluation: patterns, the value wrap and waves, and colour-map lookup, and the default maps
+    (docs/povray-rules.md §17); moving a pigment is {!Place}'s. *)
 
 val checker : Vec.t -> float
 (** [checker] is {!Patterns.checker} (§17.4). *)
@@ -62,16 +62,3 @@ val default_map : Scene.pattern -> Scene.map_entry array
     checker, blue, green, red for hexagon, grey 0.5 and <0.6,0.15,0.15> for brick (§17.3–§17.7),
     the bozo, wood, mandel, radial, agate, marble, square, triangular and cubic maps, and black to
     white for the others. *)
-
-val transform_warps : Scene.warp list -> Transform.t -> Scene.warp list
-(** [transform_warps ws t] is [ws] with [t] composed into its head transform, or a new head
-    transform when the head is a warp (POV-Ray's Transform_Tpattern). *)
-
-val transform : Scene.pigment -> Transform.t -> Scene.pigment
-(** [transform p t] is [p] with [t] composed after its transform (§14.7, §17.1); a plain colour
-    keeps the same colour and records the transform ([Solid_placed]); a uv-mapped pigment is
-    unchanged (POV-Ray moves only the wrapper it never warps). *)
-
-val transform_normal : Scene.normal -> Transform.t -> Scene.normal
-(** [transform_normal n t] is [n] with [t] composed into its warps ([transform_warps]), or [n]
-    itself when it is uv-mapped, as [transform] for a pigment. *)

@@ -44,20 +44,42 @@ let move_point op (p : Vec.t) =
   | Scale s -> Vec.mul p s
   | Rotate _ | Transform _ -> Transform.point (op_transform op) p
 
+(* Transform_Tpattern: a transform composes into the head of the warp list when that is a
+   transform, else becomes the new head (created on the identity first) *)
+let transform_warps (ws : Scene.warp list) t : Scene.warp list =
+  match ws with
+  | Transform_warp m :: rest -> Transform_warp (Transform.compose m t) :: rest
+  | _ -> Transform_warp (Transform.compose Transform.identity t) :: ws
+
+let transform_pigment (p : Scene.pigment) t : Scene.pigment =
+  (* Transform_Tpattern: composed into the head transform, created on the identity first; a plain
+     colour keeps its transform too, for an edit that gives it a pattern (§17.9). A uv-mapped
+     pigment is unchanged: POV-Ray composes the transform into the UV_MAP_PATTERN wrapper, whose
+     warps its evaluation never applies *)
+  match p with
+  | Solid colour -> Solid_placed { colour; strans = Transform.compose Transform.identity t }
+  | Solid_placed { colour; strans } -> Solid_placed { colour; strans = Transform.compose strans t }
+  | Pattern { uv_mapping = true; _ } -> p
+  | Pattern pp -> Pattern { pp with warps = transform_warps pp.warps t }
+
+let transform_normal (n : Scene.normal) t : Scene.normal =
+  (* as [transform_pigment]: a uv-mapped normal's wrapper takes the transform and never uses it *)
+  if n.nuv_mapping then n else { n with nwarps = transform_warps n.nwarps t }
+
 (* §14.7: a texture attached before a transform moves with the object *)
 let transform_layer (t : Scene.layer) m =
-  let normal = match t.normal with None -> None | Some n -> Some (Pigment.transform_normal n m) in
-  { t with pigment = Pigment.transform t.pigment m; normal }
+  let normal = match t.normal with None -> None | Some n -> Some (transform_normal n m) in
+  { t with pigment = transform_pigment t.pigment m; normal }
 
 (* Transform_Textures: every layer's pigment and normal; a patterned texture's own pattern only,
    its entries living in the space the pattern sees *)
 let transform_texture (t : Scene.texture) m : Scene.texture =
   match t with
   | Layers ls -> Layers (List.map (fun l -> transform_layer l m) ls)
-  | Texture_pattern p -> Texture_pattern { p with tpat = { p.tpat with warps = Pigment.transform_warps p.tpat.warps m } }
+  | Texture_pattern p -> Texture_pattern { p with tpat = { p.tpat with warps = transform_warps p.tpat.warps m } }
   | Cutaway -> Cutaway
-  | Uv_mapped u -> Uv_mapped { u with uwarps = Pigment.transform_warps u.uwarps m }
-  | Material_map mm -> Material_map { mm with mwarps = Pigment.transform_warps mm.mwarps m }
+  | Uv_mapped u -> Uv_mapped { u with uwarps = transform_warps u.uwarps m }
+  | Material_map mm -> Material_map { mm with mwarps = transform_warps mm.mwarps m }
 
 let layer t op = transform_layer t (op_transform op)
 let texture t op = transform_texture t (op_transform op)

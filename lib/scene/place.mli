@@ -1,7 +1,7 @@
 (** Moving shapes: what one [translate], [rotate], [scale], [matrix] or [transform] modifier does
     to a shape (docs/povray-rules.md §14.4), shape by shape as POV-Ray's [Translate], [Rotate], [Scale] and
-    [Transform] methods do it. Apply the modifiers one by one in text order. Also the whole scene
-    moved, for [--scene-scale] and [--scene-translate]. *)
+    [Transform] methods do it. Apply the modifiers one by one in text order. Also pigments, normals and textures moved
+    with their object (§14.7), and the whole scene moved, for [--scene-scale] and [--scene-translate]. *)
 
 (** One object modifier. [Scale] vectors arrive with zero components already replaced by 1
     (§14.2); [Transform] carries a matrix or a whole [transform {…}] (inverse already applied). *)
@@ -9,6 +9,19 @@ type op = Translate of Vec.t | Rotate of Vec.t | Scale of Vec.t | Transform of T
 
 val op_transform : op -> Transform.t
 (** [op_transform op] is the transform [op] stands for (rotations in degrees, §14.2). *)
+
+val transform_warps : Scene.warp list -> Transform.t -> Scene.warp list
+(** [transform_warps ws t] is [ws] with [t] composed into its head transform, or a new head
+    transform when the head is a warp (POV-Ray's Transform_Tpattern). *)
+
+val transform_pigment : Scene.pigment -> Transform.t -> Scene.pigment
+(** [transform_pigment p t] is [p] with [t] composed after its transform (§14.7, §17.1); a plain colour
+    keeps the same colour and records the transform ([Solid_placed]); a uv-mapped pigment is
+    unchanged (POV-Ray moves only the wrapper it never warps). *)
+
+val transform_normal : Scene.normal -> Transform.t -> Scene.normal
+(** [transform_normal n t] is [n] with [t] composed into its warps ([transform_warps]), or [n]
+    itself when it is uv-mapped, as [transform_pigment] for a pigment. *)
 
 val layer : Scene.layer -> op -> Scene.layer
 (** [layer l op] is the layer [l] moved by [op]: its pattern pigment's transform gets [op] composed

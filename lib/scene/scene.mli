@@ -142,7 +142,7 @@ type wave = Ramp | Triangle_wave | Sine_wave | Scallop_wave | Cubic_wave | Poly_
 
 (** Turbulence: the amount per axis, octaves (1…10, 6 by default), omega (0.5) and lambda (2),
     the last two in single precision. *)
-type turb = { turbulence : Vec.t; octaves : int; omega : float; lambda : float }
+type turb = Noise.turb = { turbulence : Vec.t; octaves : int; omega : float; lambda : float }
 
 (** A warp of pattern space (warps.cpp). A pattern's warps are a list whose head is the last one
     written: the point is taken through them from the head (undoing the last transform first). *)
@@ -485,7 +485,7 @@ type projection =
 type camera = { location : Vec.t; direction : Vec.t; up : Vec.t; right : Vec.t; projection : projection }
 
 (** How the working colour space maps to the file (§8.1). *)
-type gamma =
+type gamma = Encode.gamma =
   | Gamma_off  (** legacy scene without assumed_gamma: output = clip(linear) *)
   | Working of float  (** working gamma G (1.0 neutral); the file is sRGB-encoded *)
 

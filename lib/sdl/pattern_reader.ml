@@ -377,7 +377,7 @@ let modifier st (h : header) : header option =
   | Ident "warp" -> advance st; Some { h with warps = parse_warp st h.warps }
   | Ident ("translate" | "rotate" | "scale" | "matrix" | "transform") ->
       let t = Place.op_transform (parse_op st) in
-      Some { h with warps = Pigment.transform_warps h.warps t }
+      Some { h with warps = Place.transform_warps h.warps t }
   (* §17.1: frequency, phase and the poly_wave exponent are stored in single precision *)
   | Ident "frequency" -> advance st; Some { h with frequency = f32 (parse_float st) }
   | Ident "phase" -> advance st; Some { h with phase = f32 (parse_float st) }

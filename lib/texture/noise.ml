@@ -16,8 +16,11 @@ let[@inline] lcg_step n = ((n * 1812433253) + 12345) land 0xFFFFFFFF
 (* The 15-bit value C takes from a step: ((int)(next >> 16) & 0x7FFF), bits 16 to 30. *)
 let[@inline] lcg_bits n = (n lsr 16) land 0x7FFF
 
+type turb = { turbulence : Vec.t; octaves : int; omega : float; lambda : float }
+
 (* C's (int) cast of a double on x86-64 (cvttsd2si): truncation toward zero, and the "integer
    indefinite" 0x80000000 for NaN and for anything outside the 32-bit range. *)
+
 let c_int = C_float.c_int
 
 (* ---------------------------------------------------------------------------------------------- *)
@@ -278,7 +281,7 @@ let dnoise (p : Vec.t) =
    weighs it by omega^(i−1), the powers built by repeated products as POV-Ray does. Generators 2
    and 3 use 2·noise − 0.5 per octave, the first octave's clipped to [0, 1]. *)
 
-let turbulence (t : Scene.turb) gen (p : Vec.t) =
+let turbulence (t : turb) gen (p : Vec.t) =
   let x = p.x and y = p.y and z = p.z in
   let value = ref (if gen > 1 then clamp01 ((2.0 *. noise_xyz gen x y z) -. 0.5) else noise_xyz gen x y z) in
   let lambda = t.lambda and omega = t.omega in
@@ -293,7 +296,7 @@ let turbulence (t : Scene.turb) gen (p : Vec.t) =
   done;
   !value
 
-let dturbulence (t : Scene.turb) (p : Vec.t) =
+let dturbulence (t : turb) (p : Vec.t) =
   let x = p.x and y = p.y and z = p.z in
   let acc = { ax = 0.; ay = 0.; az = 0. } in
   dnoise_into acc ~replace:true 1. x y z;

@@ -7,6 +7,10 @@
     functions allocate nothing, except a three-float scratch record in [dnoise] and
     [dturbulence]. *)
 
+(** Turbulence: the amount per axis, octaves (1…10, 6 by default), omega (0.5) and lambda (2),
+    the last two in single precision (the scene's [turb]). *)
+type turb = { turbulence : Vec.t; octaves : int; omega : float; lambda : float }
+
 val noise : int -> Vec.t -> float
 (** [noise gen p] is POV-Ray's scalar noise at [p] with noise generator [gen]: 1 (the original
     lattice noise, plus 0.5 and clipped), 2 (the same, range-corrected: 3.7's default) or 3
@@ -18,14 +22,14 @@ val dnoise : Vec.t -> Vec.t
 (** [dnoise p] is POV-Ray's vector noise at [p] (DNoise, each component roughly in [-1, 1]). It
     is the same for every noise generator: POV-Ray has no vector form of generator 3. *)
 
-val turbulence : Scene.turb -> int -> Vec.t -> float
+val turbulence : turb -> int -> Vec.t -> float
 (** [turbulence t gen p] is POV-Ray's Turbulence with generator [gen]: [noise] at [p] plus, for
     each octave i from 2 to [t.octaves], [t.omega]^(i−1) times [noise] at [t.lambda]^(i−1)·[p].
     Generators 2 and 3 use 2·noise − 0.5 in every octave, the first clipped to [0, 1]. The
     amount [t.turbulence] is not applied: marble, spiral and agate scale the result themselves.
     [t.omega] and [t.lambda] must be single precision, as POV-Ray stores them. *)
 
-val dturbulence : Scene.turb -> Vec.t -> Vec.t
+val dturbulence : turb -> Vec.t -> Vec.t
 (** [dturbulence t p] is POV-Ray's DTurbulence: the octaves of [turbulence] with [dnoise] in
     place of [noise]; one octave is [dnoise p] itself. The amount vector is not applied (a
     turbulence warp multiplies by it). *)
