@@ -1,7 +1,5 @@
 (* povml's exit statuses, and the last word on a run that ends by a signal or an exception. *)
 
-open Povml
-
 let scene_error (k : Error.kind) = match k with Scene -> 1 | Limit -> 3 | Access -> 4
 let cannot_write = 5
 

@@ -1,7 +1,7 @@
 (** povml's exit statuses, documented in [--help] and README.md, and the last word on a run that
     ends by a signal or an unexpected exception. *)
 
-val scene_error : Povml.Error.kind -> int
+val scene_error : Error.kind -> int
 (** [scene_error k] is the status for a scene error of kind [k]: 1 (the scene is wrong), 3 (a limit
     was reached), 4 (file access refused). *)
 

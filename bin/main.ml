@@ -1,7 +1,6 @@
 (* povml's command line: POV-Ray-style switches translated to long options, the options record
    [run] takes, one error printer, the statistics. Everything it renders comes from the library. *)
 
-open Povml
 open Cmdliner
 
 (* ---------------------------------------------------------------------------------------------- *)

@@ -1,7 +1,6 @@
 (* povml check and povml report: their command lines. POV-Ray switches are taken out of the
    arguments before cmdliner sees the rest; the work is done by the library (Check, Report). *)
 
-open Povml
 open Cmdliner
 
 let exit_usage = 2

@@ -36,7 +36,7 @@ let fix_png_crcs_of data =
     if pos + 12 <= n then begin
       let len = be32 data pos in
       if len >= 0 && len <= n - pos - 12 then begin
-        let crc = Povml.Png_text.crc (String.sub data (pos + 4) (len + 4)) in
+        let crc = Png_text.crc (String.sub data (pos + 4) (len + 4)) in
         for k = 0 to 3 do Bytes.set b (pos + 8 + len + k) (Char.chr ((crc lsr (8 * (3 - k))) land 0xff)) done;
         go (pos + 12 + len)
       end
@@ -62,9 +62,9 @@ let read_back (img : Image_file.t) =
 let lay_out font =
   let codes s = Array.init (String.length s) (fun i -> Char.code s.[i]) in
   List.iter
-    (fun s -> ignore (Povml.Font.layout font (codes s) ~offset:(Povml.Vec.make 0.1 0. 0.)))
+    (fun s -> ignore (Font.layout font (codes s) ~offset:(Vec.make 0.1 0. 0.)))
     [ "AVgW i"; "POV-Ray 3.7"; String.init 32 (fun i -> Char.chr (i + 96)) ];
-  ignore (Povml.Font.layout ~utf8:true font [| 0x263A; 0xE9; 0x41 |] ~offset:(Povml.Vec.make 0. 0. 0.))
+  ignore (Font.layout ~utf8:true font [| 0x263A; 0xE9; 0x41 |] ~offset:(Vec.make 0. 0. 0.))
 
 let describe e =
   let bt = Printexc.get_backtrace () in
@@ -79,7 +79,7 @@ let run ?(fix_png_crcs = false) kind data =
       | Ok img -> ( match read_back img with () -> Decoded | exception e -> Bug ("reading the decoded image back: " ^ describe e))
       | exception e -> Bug (describe e))
   | Font -> (
-      match Povml.Font.parse data with
+      match Font.parse data with
       | Error m -> Refused m
       | Ok font -> ( match lay_out font with () -> Decoded | exception e -> Bug ("laying out text: " ^ describe e))
       | exception e -> Bug (describe e))

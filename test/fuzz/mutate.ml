@@ -3,8 +3,6 @@
    reaches the interpreter's deeper states (directives, macros, nesting) far more often than random
    bytes do. *)
 
-open Povml
-
 let punctuation =
   [ "{"; "}"; "("; ")"; "<"; ">"; "["; "]"; ","; ";"; "="; "+"; "-"; "*"; "/"; "."; "!"; "!="; "<="; ">=";
     "&"; "|"; "?"; ":"; "\""; "/*"; "*/"; "//"; "\\"; "#" ]

@@ -1,8 +1,6 @@
 (* The fuzz target. The only acceptable outcomes of reading a scene are a scene (with warnings) and
    [Error.Scene_error]; Not_found, Invalid_argument, Stack_overflow, Out_of_memory … are bugs. *)
 
-open Povml
-
 (* Lower than the defaults, so that a scene that is merely big ends in well under AFL++'s time
    limit for one input. The macro depth especially: every identifier is looked up through one
    table per macro call in progress, so a recursion 10,000 deep (the default) takes one to three

@@ -29,7 +29,7 @@ let read path =
 let seed_files name =
   match name with
   | "ttf" ->
-      List.map (Filename.concat Povml.Access.standard_include_dir) [ "povlogo.ttf"; "crystal.ttf" ] |> List.filter Sys.file_exists
+      List.map (Filename.concat Access.standard_include_dir) [ "povlogo.ttf"; "crystal.ttf" ] |> List.filter Sys.file_exists
   | _ ->
       let dir = Filename.concat "image_seeds" (if name = "pot" then "gif" else name) in
       Sys.readdir dir |> Array.to_list |> List.sort compare |> List.map (Filename.concat dir)

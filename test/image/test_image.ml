@@ -37,7 +37,7 @@ let run_povml args =
 
 let render case out extra = run_povml ([ "+I" ^ case.scene; "+O" ^ out; "-D" ] @ case.options @ extra)
 
-let load path = match Povml.Output.read_png path with Ok i -> i | Error e -> Alcotest.failf "%s: %s" path e
+let load path = match Output.read_png path with Ok i -> i | Error e -> Alcotest.failf "%s: %s" path e
 
 let check case () =
   let out = Filename.temp_file ("povml-" ^ case.name) ".png" in
@@ -45,10 +45,10 @@ let check case () =
   Alcotest.(check int) (case.name ^ ": povml exit status") 0 code;
   let mine = load out and theirs = load (Filename.concat "reference" (case.name ^ ".png")) in
   Sys.remove out;
-  match Povml.Compare.images mine theirs with
+  match Compare.images mine theirs with
   | Error e -> Alcotest.fail e
   | Ok c ->
-      let share = Povml.Compare.identical_share c in
+      let share = Compare.identical_share c in
       summary :=
         Printf.sprintf "%-36s %9.4f%% identical %6d differing  peak %3d/255   (needs <= %d differing, peak <= %d)" case.name
           (100. *. share) c.differing c.peak case.max_differing case.max_peak

@@ -5,8 +5,6 @@
    comparisons in POV-Ray's mode are printed for the record (POV-Ray's fixed 1e-4 / 1e-3 / 1e7
    limits make its pictures depend on the scene's size), not asserted. *)
 
-open Povml
-
 let min_psnr = 50.
 
 let fidelity =

@@ -6,8 +6,6 @@
      statistics' deepest level is 256, and the render returns (no Stack_overflow, no crash).
    Their pixels are compared with POV-Ray's by the image tests (reference/manifest.tsv). *)
 
-open Povml
-
 let dir = "../../scenes/stiff"
 
 let scenes () =

@@ -6,7 +6,7 @@ let le16 n = String.init 2 (fun i -> Char.chr ((n lsr (8 * i)) land 0xff))
 
 (* a PNG chunk with its length and CRC; [bad_crc] spoils the CRC *)
 let chunk ?(bad_crc = false) kind body =
-  let crc = Povml.Png_text.crc (kind ^ body) in
+  let crc = Png_text.crc (kind ^ body) in
   be32 (String.length body) ^ kind ^ body ^ be32 (if bad_crc then crc lxor 1 else crc)
 
 let ihdr ?(depth = 8) ?(ctype = 2) w h = chunk "IHDR" (be32 w ^ be32 h ^ String.make 1 (Char.chr depth) ^ String.make 1 (Char.chr ctype) ^ "\000\000\000")

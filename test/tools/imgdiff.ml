@@ -3,12 +3,12 @@
 let () =
   match Sys.argv with
   | [| _; a; b |] -> (
-      match (Povml.Output.read_png a, Povml.Output.read_png b) with
+      match (Output.read_png a, Output.read_png b) with
       | Ok ia, Ok ib -> (
-          match Povml.Compare.images ia ib with
+          match Compare.images ia ib with
           | Ok c ->
               Printf.printf "differing %d/%d (%.4f%% identical) peak %d rmse %.4f psnr %.2f\n" c.differing c.pixels
-                (100. *. Povml.Compare.identical_share c) c.peak c.rmse (Povml.Compare.psnr c)
+                (100. *. Compare.identical_share c) c.peak c.rmse (Compare.psnr c)
           | Error e -> prerr_endline e; exit 1)
       | Error e, _ | _, Error e -> prerr_endline e; exit 1)
   | [| _; _; _; "-v" |] -> ()
@@ -18,7 +18,7 @@ let () =
 let () =
   match Sys.argv with
   | [| _; a; b; "-v" |] -> (
-      match (Povml.Output.read_png a, Povml.Output.read_png b) with
+      match (Output.read_png a, Output.read_png b) with
       | Ok ia, Ok ib ->
           for p = 0 to (ia.width * ia.height) - 1 do
             let g i = Char.code (Bytes.get ia.pixels i) and h i = Char.code (Bytes.get ib.pixels i) in

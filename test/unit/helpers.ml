@@ -1,7 +1,5 @@
 (* Shared helpers for the unit tests. *)
 
-open Povml
-
 let opts = Interp.default_options ~width:160 ~height:120
 
 (* [load text] interprets [text] as the file "t.pov". *)

@@ -2,7 +2,6 @@
    and errors; crossings and interpolated normals against POV-Ray's own trace() (the numbers
    printed by test/unit/data/bicubic_trace.pov); the crossing on the patch's triangles; no inside. *)
 
-open Povml
 open Helpers
 
 let v37 = "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"

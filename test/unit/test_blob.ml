@@ -4,7 +4,6 @@
    the normal against the field's gradient and POV-Ray's, the inside test, the bounding sphere
    hierarchy (same field with and without), the texture weights and the box. *)
 
-open Povml
 open Helpers
 
 let v37 = "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"

@@ -1,7 +1,6 @@
 (* The box (docs/povray-rules.md §15.1): parsing and placing, the slab intersection with its side tie rule
    and depth limits, the normal of the side hit, the closed inside test. *)
 
-open Povml
 open Helpers
 
 let v37 = "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"

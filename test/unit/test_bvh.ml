@@ -1,7 +1,6 @@
 (* Bvh: the hierarchy's traversal against a brute-force slab test over every primitive box, the
    root box, the pruning by the limit, and flat boxes. *)
 
-open Povml
 open Helpers
 
 let stack () = Array.make 512 0.

@@ -1,8 +1,6 @@
 (* povml check and povml report, their pure parts: the heat map, Pareto fronts, the sweep, the
    thresholds, the CSV, Markdown and SVG writers, the switch lists. *)
 
-open Povml
-
 let img w h f = { Encode.width = w; height = h; pixels = Bytes.init (3 * w * h) (fun i -> Char.chr (f i)) }
 let rgb (i : Encode.t) p = (Char.code (Bytes.get i.pixels (3 * p)), Char.code (Bytes.get i.pixels ((3 * p) + 1)), Char.code (Bytes.get i.pixels ((3 * p) + 2)))
 let triple = Alcotest.(triple int int int)

@@ -1,7 +1,5 @@
 (* Compare: counts, peak, RMSE and PSNR of two encoded images. *)
 
-open Povml
-
 let img w h f = { Encode.width = w; height = h; pixels = Bytes.init (3 * w * h) (fun i -> Char.chr (f i)) }
 
 let get = function Ok c -> c | Error m -> Alcotest.failf "unexpected error: %s" m

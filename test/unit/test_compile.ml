@@ -1,6 +1,5 @@
 (* Compile: inside tests (§2.2, §2.3), shadow strategy (§4), starting interiors (§6.4), surfaces (§3.2). *)
 
-open Povml
 open Helpers
 
 let v37 = "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"

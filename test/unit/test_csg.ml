@@ -3,7 +3,6 @@
    shape and each CSG kind, which hits each kind keeps, the nearest hit and its leaf, coincident
    boundaries, bounding boxes, shading of the primitive hit and the shared interior. *)
 
-open Povml
 open Helpers
 
 let v37 = "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"

@@ -2,8 +2,6 @@
    inflate bound, PNG's CRCs and IHDR rules, GIF's code sizes, PPM's ASCII numbers as POV-Ray's
    atoi stores them. *)
 
-open Povml
-
 let options : Image_file.options =
   { gamma_correct = false; default_gamma = None; working_gamma = Neutral; gamma_override = false; premultiply = None; max_pixels = 1 lsl 20; max_memory_mb = 64 }
 

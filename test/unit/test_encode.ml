@@ -1,7 +1,5 @@
 (* Encode (§8.1): working value → 8-bit file value. *)
 
-open Povml
-
 let ch msg expected gamma x = Alcotest.(check int) msg expected (Encode.channel gamma x)
 
 let test_gamma_off () =

@@ -1,7 +1,6 @@
 (* Fn_budget: the steps user functions take while the scene is read (issue 34: a sum of 10¹² terms
    and 64 functions each calling the one before twice ran until killed). *)
 
-open Povml
 open Helpers
 
 let compile params body = Fn_compile.compile ~name:"F" ~params ~loc:Loc.none ~warn:(fun _ _ -> ()) body

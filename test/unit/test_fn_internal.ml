@@ -6,8 +6,6 @@
    types, fractional octaves, the noise generators). POV-Ray prints each value as a mantissa and
    a power of two, so nothing is lost in printing, and every value must be equal to the bit. *)
 
-open Povml
-
 (* the values of internal(k) at the calls the scene makes of it, in its order: a single
    function per k, as the scene has one declaration, so that f_ridged_mf's first call fixes
    its weights for the others *)

@@ -2,7 +2,6 @@
    test/unit/data/hfield.pov (17 digits), hits against brute-force sampling of the triangle
    surface, Inside, how image samples become heights, the blocks, and the parser's errors. *)
 
-open Povml
 open Helpers
 
 let v = Vec.make

@@ -3,7 +3,6 @@
    test/unit/data/images.pov (16 decimals; the colours are single precision, so they must agree
    to the last digit). *)
 
-open Povml
 open Helpers
 
 (* the repository's root: the directory above the working directory that holds scenes/images *)

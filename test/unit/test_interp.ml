@@ -1,6 +1,5 @@
 (* Interp: scene text to Scene.t (docs/povray-rules.md §1.3, §2.3, §5.1, §8.1, §8.4, §10, §11). *)
 
-open Povml
 open Helpers
 
 let v37 = "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"
@@ -548,7 +547,7 @@ let test_macro_after_declared_texture () =
 (* Parse_Object_Id: an object identifier right inside a shape's braces makes the shape a copy of
    that object with the modifiers that follow, whatever the keyword *)
 let test_shape_of_identifier () =
-  let dumps text = List.map Povml.Dump.obj (scene ("#version 3.7;\n#declare S = sphere { 0, 1 pigment { rgb x } }\n" ^ text)).objects in
+  let dumps text = List.map Dump.obj (scene ("#version 3.7;\n#declare S = sphere { 0, 1 pigment { rgb x } }\n" ^ text)).objects in
   let as_object = dumps "object { S translate x scale 2 }" in
   Alcotest.(check (list string)) "sphere { S ... }" as_object (dumps "sphere { S translate x scale 2 }");
   Alcotest.(check (list string)) "box { S ... }: still the sphere" as_object (dumps "box { S translate x scale 2 }");

@@ -1,8 +1,6 @@
 (* Interrupt, and what Output and Pool do with it. Signal handlers belong to the whole process, so
    each case runs in a forked process of its own, which reports by its exit status. *)
 
-open Povml
-
 let in_own_process name f () =
   flush_all ();
   match Unix.fork () with

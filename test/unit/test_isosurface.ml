@@ -3,7 +3,6 @@
    test/unit/data/iso_trace.pov), the cache of the last missed segment included; depths and
    normals against a sphere's; the end-of-render warning. *)
 
-open Povml
 open Helpers
 
 let v37 = "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"

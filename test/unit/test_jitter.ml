@@ -1,7 +1,5 @@
 (* Jitter (§9.2): deterministic offsets in [-0.5, 0.5]. *)
 
-open Povml
-
 let positions =
   List.concat_map
     (fun i -> List.map (fun j -> ((float_of_int i *. 0.37) -. 3., (float_of_int j *. 0.71) -. 2.)) (List.init 40 Fun.id))

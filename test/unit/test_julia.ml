@@ -3,7 +3,6 @@
    and inside() (the numbers printed by test/unit/data/julia_trace.pov); the crossing checked
    against the iteration by sampling; the inverted flag's life. *)
 
-open Povml
 open Helpers
 
 let v37 = "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"

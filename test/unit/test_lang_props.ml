@@ -2,8 +2,6 @@
    small scene whose #debug lines print values, interprets it, and checks the printed values. The
    random state is fixed, so a failure is reproducible. *)
 
-open Povml
-
 (* Runs [text] and returns the text of its #debug directives. *)
 let debug_of text =
   let buf = Buffer.create 64 in

@@ -1,6 +1,5 @@
 (* Lexer (docs/povray-rules.md §11.1): tokens, locations and lexical errors. *)
 
-open Povml
 open Helpers
 
 let kind_t =

@@ -2,7 +2,6 @@
    the spotlight and cylinder attenuation, the parallel light's depth, orthographic ray origins and
    interior lists, the groups image and reflection rays search, and traced values computed by hand. *)
 
-open Povml
 open Helpers
 
 let v37 = "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"

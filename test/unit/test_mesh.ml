@@ -1,7 +1,6 @@
 (* Mesh: storage, set-up, intersection, inside test and per-face textures of meshes
    (docs/povray-rules.md §2.6), built with Mesh.build or from mesh {} / mesh2 {} scenes. Values by hand. *)
 
-open Povml
 open Helpers
 
 let f32 x = Int32.float_of_bits (Int32.bits_of_float x)

@@ -1,6 +1,5 @@
 (* Small modules: Suggest, Value, Colour, Rgb, Stats, Error, Image, Output, Defaults. *)
 
-open Povml
 open Helpers
 
 (* ---- Suggest ---- *)

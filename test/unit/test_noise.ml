@@ -9,8 +9,6 @@
    noise.pov also shows that f_noise3d uses the scene's noise_generator (1 there): its values are
    the generator-1 ones. *)
 
-open Povml
-
 (* ---------------------------------------------------------------------------------------------- *)
 (* POV-Ray's numbers (generated from the scenes' output) *)
 

@@ -4,7 +4,6 @@
    −(0.4/3)·bump along x whatever δ is. The normal's warps, no_bump_scale, slope_map and
    normal_map, average, quilted and POV-Ray's cycloidal are checked the same way. *)
 
-open Povml
 open Helpers
 
 let up = v 0. 1. 0.

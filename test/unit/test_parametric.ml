@@ -3,7 +3,6 @@
    printed by test/unit/data/parametric_trace.pov); the precomputed table; the box it is bounded
    by; its statistics. *)
 
-open Povml
 open Helpers
 
 let v37 = "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"

@@ -4,7 +4,6 @@
    without noise are one suite and those built on Noise another; aoi and slope, which POV-Ray
    evaluates only at an intersection, are checked against their formulas. *)
 
-open Povml
 module D = Test_pattern_values_data
 
 (* what POV-Ray's function printed for a raw value [x] *)

@@ -3,8 +3,6 @@
    stores it, its warps (for the classic turbulence), its noise generator, how the value was
    printed, the points and POV-Ray's value at each. *)
 
-open Povml
-
 type route =
   | Raw  (** a pattern function with frequency 0: the raw value, a negative one v as v - floor v *)
   | Wrapped of float * float

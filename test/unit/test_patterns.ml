@@ -2,7 +2,6 @@
    and waves, the map lookup rules, parsing (maps, defaults, errors), transforms before and after
    an object's, and evaluation at hit points, shadow crossings and sky directions. *)
 
-open Povml
 open Helpers
 
 let v37 = "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"

@@ -4,7 +4,6 @@
    surface, the gradient normal, the inside test, the statistics, and Sturm sequences above
    degree 4. *)
 
-open Povml
 open Helpers
 
 let v37 = "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"

@@ -3,7 +3,6 @@
    no inside (in CSG too), POV-Ray's box, the errors and warnings. Expected values are worked out
    by hand in the comments. *)
 
-open Povml
 open Helpers
 
 let v37 = "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"

@@ -2,7 +2,6 @@
    by hand, the quirks it must keep (root elimination, the pp = 0 sign slip, the signed "biggest"
    of difficult(), a quadruple root lost by the closed form), and Sturm against the quartic. *)
 
-open Povml
 open Helpers
 
 let w = Polysolv.create ()

@@ -2,7 +2,6 @@
    3.7.0.10 printed for the same calls with #debug vstr(3, V, ",", 0, 16) (the scene's objects are
    in [decls]); each result is read back as the centre of a sphere. *)
 
-open Povml
 open Helpers
 
 let decls =

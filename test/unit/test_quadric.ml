@@ -3,7 +3,6 @@
    implicit surface by sampling; Inside with the surface, inverse; the gradient normal; the
    transform of the coefficients; POV-Ray's box. *)
 
-open Povml
 open Helpers
 
 let v37 = "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"

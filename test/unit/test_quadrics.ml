@@ -2,7 +2,6 @@
    POV-Ray's order with its part, the nearest one, normals, the inside tests, and the errors.
    Every expected value is worked out by hand in the comments. *)
 
-open Povml
 open Helpers
 
 let v37 = "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"

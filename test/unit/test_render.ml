@@ -1,6 +1,5 @@
 (* Render: camera rays (§1.4) and the render loop. *)
 
-open Povml
 open Helpers
 
 let default_cam = (scene "").camera

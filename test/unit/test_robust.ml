@@ -1,7 +1,6 @@
 (* The robust mode (Limits.robust, lifted secondary-ray origins) and moving a whole scene
    (Place.scene): analytic cases whose answer does not depend on the scene's size. *)
 
-open Povml
 open Helpers
 
 let v37 = "#version 3.7;\nglobal_settings { assumed_gamma 1.0 }\n"

@@ -4,8 +4,6 @@
    ulps off, and met a quilted box exactly on a cell boundary (x = 0.2, scale 0.2) on the other
    side of it. *)
 
-open Povml
-
 let bits msg (e : float) (a : float) = Alcotest.(check int64) msg (Int64.bits_of_float e) (Int64.bits_of_float a)
 
 let reciprocal () =

@@ -3,7 +3,6 @@
    sampling of the inside test along the ray, normals, the inside rule, hit points and normals
    that POV-Ray's trace() printed, and the degree-6 solver. *)
 
-open Povml
 open Helpers
 
 let v37 = "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"

@@ -3,7 +3,6 @@
    its entries and read from its block, evaluated with its own kind and with each of the four,
    every term compared with what POV-Ray printed (20 decimals). *)
 
-open Povml
 module D = Test_spline_values_data
 
 let calls = [| None; Some Spline.Linear; Some Spline.Quadratic; Some Spline.Cubic; Some Spline.Natural |]

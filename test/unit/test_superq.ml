@@ -4,7 +4,6 @@
    against brute-force sampling of each shape's implicit surface or inside test; normals against
    the gradient; the parser's rules and errors; the dump; the degree-10 solver. *)
 
-open Povml
 open Helpers
 
 let v37 = "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"

@@ -3,7 +3,6 @@
    effect on a render like povml's, and the reserved words povml does not read yet, which say
    "not supported yet" where they stand. Each case was checked with the installed POV-Ray. *)
 
-open Povml
 open Helpers
 
 let v37 = "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"

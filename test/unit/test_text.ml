@@ -4,7 +4,6 @@
    and on real letters: a ray through the stem of an I, through the ring of an O and through its
    counter. *)
 
-open Povml
 open Helpers
 
 let v37 = "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"

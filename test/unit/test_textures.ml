@@ -1,7 +1,6 @@
 (* Layered and patterned textures, materials and interior textures as they are read: the layer
    order, texture maps and listed textures, tiles, materials, and POV-Ray's errors. *)
 
-open Povml
 open Helpers
 
 let v37 = "#version 3.7; global_settings { assumed_gamma 1 }\n"

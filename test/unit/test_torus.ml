@@ -4,7 +4,6 @@
    statistics. Depths are computed by hand for R = 1, r = 0.25: the tube crosses the X axis at
    x = ±0.75 and ±1.25. *)
 
-open Povml
 open Helpers
 
 let v37 = "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"

@@ -1,7 +1,6 @@
 (* Trace: one ray through tiny scenes, against shading values computed by hand (§3–§8). Colours are
    single precision in the tracer, so results are compared within 1e-6. *)
 
-open Povml
 open Helpers
 
 let v37 = "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"

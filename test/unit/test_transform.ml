@@ -1,7 +1,6 @@
 (* Transform (§14.1–§14.3) against matrices and points computed by hand, Place (§14.4) on each
    shape, and hits on transformed shapes against analytic answers (§14.5, §14.6). *)
 
-open Povml
 open Helpers
 
 let v = Vec.make

@@ -1,7 +1,6 @@
 (* Triangle: set-up, intersection and smooth normals of standalone triangles (docs/povray-rules.md §2.4,
    §2.5), against values computed by hand. *)
 
-open Povml
 open Helpers
 
 let s2 = sqrt 2.

@@ -1,7 +1,5 @@
 (* Access (which files a scene may touch) and User_files (what #write writes, what #read reads). *)
 
-open Povml
-
 (* ---- Access ---- *)
 
 (* Removes [path] and what it holds, without following links. *)

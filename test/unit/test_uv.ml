@@ -12,7 +12,6 @@
 
    rendered with +W1 +H1 -A +FN16 File_Gamma=1.0 (and gradient y for v); the pixel's red is u. *)
 
-open Povml
 open Helpers
 
 let the_compiled text = (compile ("#version 3.7;\n" ^ text)).objects.(0)

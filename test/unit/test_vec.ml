@@ -1,6 +1,5 @@
 (* Vec: vector algebra, every value computed by hand. *)
 
-open Povml
 open Helpers
 
 let a = v 1. 2. 3.

@@ -5,8 +5,6 @@
    show that marble skips the classic turbulence in its warps: its value is x + 0.3·Turbulence(p)
    at the unwarped point. Every value must print the same 20 decimals: bit-exact. *)
 
-open Povml
-
 (* ---------------------------------------------------------------------------------------------- *)
 (* POV-Ray's numbers (generated from the scene's output) *)
 

@@ -1,8 +1,6 @@
 (* Whole_file: a file written whole or not at all; and Png_text.whole, which Output checks the
    encoder's bytes with. *)
 
-open Povml
-
 let with_dir f =
   let dir = Filename.temp_file "povml-whole" "" in
   Sys.remove dir;

@@ -1,4 +1,4 @@
-(* JPEG files as POV-Ray 3.7 reads them (jpeg.cpp), through libjpeg (lib/jpeg_stubs.c). *)
+(* JPEG files as POV-Ray 3.7 reads them (jpeg.cpp), through libjpeg (lib/image_files/jpeg_stubs.c). *)
 open Image_file
 
 (* status (0 decoded, 1 above the caps, 2 refused), width, height, components, samples or message *)

@@ -1,5 +1,5 @@
 (** JPEG files as POV-Ray 3.7 reads them (jpeg.cpp): libjpeg's 8-bit grey or RGB samples, sRGB
-    unless told otherwise, through a binding of povml's own (lib/jpeg_stubs.c) whose error manager
+    unless told otherwise, through a binding of povml's own (lib/image_files/jpeg_stubs.c) whose error manager
     returns libjpeg's message instead of printing it. *)
 
 val read_jpeg : Image_file.options -> string -> Image_file.t
