@@ -34,10 +34,7 @@ let function_names =
 let unsupported_functions = [ "datetime" ]
 
 let function_set = set_of function_names
-let object_set =
-  set_of
-    [ "sphere"; "box"; "cylinder"; "cone"; "disc"; "torus"; "plane"; "object"; "triangle"; "smooth_triangle"; "mesh"; "mesh2";
-      "union"; "merge"; "intersection"; "difference"; "text"; "polygon"; "quadric"; "cubic"; "quartic"; "poly"; "polynomial"; "blob"; "height_field"; "superellipsoid"; "ovus"; "sphere_sweep"; "prism"; "lathe"; "sor"; "julia_fractal"; "bicubic_patch"; "parametric"; "isosurface" ]
+let object_set = set_of (Keywords.words (fun s -> s = Keywords.Object))
 
 let truth x = Float.abs x > 1e-10
 

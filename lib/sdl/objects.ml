@@ -9,8 +9,7 @@ open Object_value
 open Csg_build
 
 (* Objects povml does not render yet: inside a union they are reported as "not supported yet". *)
-let unsupported_objects =
-  [ "composite" ]
+let unsupported_objects = Keywords.words (fun s -> s = Keywords.Object_not_supported)
 
 let show_vec (v : Vec.t) = Printf.sprintf "<%g, %g, %g>" v.x v.y v.z
 

@@ -193,8 +193,20 @@ let test_object_modifiers () =
   check_warned "quick colour" ~sub:"Quick color belongs in texture. Color ignored." text;
   check_warned "a bare colour keyword" ~sub:"Quick color" (v37 ^ "sphere { 0, 1 red 1 }")
 
+(* The keyword table: each word once with one status, and the interpreter's word sets taken from
+   it *)
+let test_keyword_table () =
+  let words = List.map fst Keywords.table in
+  Alcotest.(check int) "each word once" (List.length words) (List.length (List.sort_uniq compare words));
+  let objects = Keywords.words (fun s -> s = Keywords.Object) in
+  Alcotest.(check bool) "sphere starts an object" true (List.mem "sphere" objects);
+  Alcotest.(check bool) "composite is not supported" true (List.mem "composite" Reader.unsupported);
+  Alcotest.(check bool) "objects are keywords" true (List.for_all Reader.is_keyword objects);
+  Alcotest.(check bool) "reserved words are keywords" true (List.for_all Reader.is_keyword (Keywords.words (fun s -> s = Keywords.Reserved)))
+
 let tests =
   [
+    Alcotest.test_case "the keyword table" `Quick test_keyword_table;
     Alcotest.test_case "what follows a '#'" `Quick test_hash;
     Alcotest.test_case "vectors: commas and a sixth term" `Quick test_vectors;
     Alcotest.test_case "strings over several lines" `Quick test_multiline_strings;
