@@ -1,7 +1,7 @@
 Image files made to break the decoders (test/tools/hostile_image.ml writes them, the large ones
 here at test time): each is refused with a located error, exit status 1 (3 for one above a
 limit), within 20 seconds and 1 GiB of address space, and no image is written. The decoders are
-a library of their own built without -unsafe (lib/dune), so an index they forgot to check would
+a library of their own built without -unsafe (lib/image_files/dune), so an index they forgot to check would
 raise rather than read outside an array.
 
   $ mk() { ../tools/hostile_image.exe "$@"; }
@@ -153,7 +153,7 @@ Targa: sizes against the cap and the file's length.
         |                                    ^
   [exit 1, no image]
 
-JPEG, through povml's own libjpeg binding (lib/jpeg_stubs.c) rather than camlimages': libjpeg's
+JPEG, through povml's own libjpeg binding (lib/image_files/jpeg_stubs.c) rather than camlimages': libjpeg's
 own lines ("Premature end of JPEG file") no longer come before the located error; a file that
 ends early is refused, as POV-Ray refuses it; a damaged Huffman table, which made camlimages'
 binding segfault, is libjpeg's message, as in POV-Ray; a declared size above the cap is refused
