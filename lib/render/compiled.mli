@@ -1,5 +1,9 @@
 (** The scene as the tracer uses it: built once by [Compile] from the immutable [Scene.t], holding
-    only what this scene needs, in flat unboxed records. *)
+    only what this scene needs, in flat unboxed records. It is immutable: nothing here has a
+    mutable field, and nothing is written once it is compiled but the lazy [group.pov], which is
+    made on first use from the scene alone. Everything a render writes (statistics, scratch,
+    caches, random streams, what it keeps for each isosurface and height field) is its worker's
+    ({!Context.t}), so that workers share the compiled scene and nothing else. *)
 
 (** Everything about a surface that does not depend on the hit point, derived once from a
     plain pigment and its finish (§3.2, §3.5, §5). A pattern pigment's surface holds the finish's
@@ -199,7 +203,7 @@ type shadow_mode =
 (** POV-Ray's own order of search, for the scenes whose image depends on it (see [group]). *)
 type order =
   | Tree of {
-      walk : Slab_tree.search;  (** POV-Ray's bounding tree over every top-level object *)
+      tree : Slab_tree.t;  (** POV-Ray's bounding tree over every top-level object *)
       member : bool array;  (** by object id: whether the group holds the object *)
     }  (** with its bounding tree: nearest box first *)
   | Listed of obj array  (** without it: the group's objects, every one, in scene order *)
@@ -220,7 +224,10 @@ type group = {
   pov : order Lazy.t;
       (** the group searched as POV-Ray searches it (through its bounding tree, or in scene order
           without it): replayed for a ray on which two top-level objects' hits nearly tie (equal
-          but for rounding), where which one POV-Ray finds depends on its order of search *)
+          but for rounding), where which one POV-Ray finds depends on its order of search. Made
+          when a ray first needs it, a function of the group's objects alone (so that a scene of a
+          million objects builds POV-Ray's tree only if some ray asks for it); its walk's room is
+          the worker's ({!Context.t.pov_room}) *)
   pov_always : bool;
       (** every ray searches [pov]: scenes with isosurfaces, whose shared cache of the last
           segment without a root (isosurf.cpp) answers according to which isosurface was searched
@@ -245,12 +252,10 @@ type t = {
   adc_bailout : float;
   noise_generator : int;  (** the scene's, for patterns that name none *)
   irid_wavelength : Rgb.t;  (** the wavelengths of iridescence *)
-  crand : int array;
-      (** crand's random stream (POV-Ray's POV_rand, one per render thread, never reset): its one
-          cell holds the state, 0 when the render starts, and goes on from block to block in
-          render order; with [uses_crand] the render runs in one worker so that order is POV-Ray's
-          one-thread order. A mutable part of the compiled scene *)
-  uses_crand : bool;  (** some surface has a crand *)
+  uses_crand : bool;
+      (** some surface has a crand: its random stream ({!Context.t.crand}) runs through the blocks
+          in render order, so the render runs in one worker, whose order is POV-Ray's one-thread
+          order *)
   legacy : bool;  (** effective version < 3.70 *)
   camera : Scene.camera;
   start_interiors : int list;  (** interiors containing the camera, last entered first (§6.4) *)

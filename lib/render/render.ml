@@ -281,8 +281,7 @@ let render opts (sc : Compiled.t) (gamma : Scene.gamma) : Image.t * Stats.t =
      come, so which cache a block starts with varies from run to run) every block starts with an
      empty cache, so that the image does not depend on which worker renders which block. The
      isosurfaces' cache of the last missed root search is carried the same way. *)
-  let carried = if workers = 1 then Some (Context.shadow_cache sc) else None in
-  let carried_iso = if workers = 1 then Some (Scratch.iso_room ()) else None in
+  let carry = workers = 1 in
   (* Blocks leave garbage in the major heap (their pixel buffers, antialiasing's grids and the
      samples they hold), which the nearly idle major collector (below) would let pile up without
      end in a large image: after every [major_budget] words of it a full collection runs. A
@@ -309,12 +308,10 @@ let render opts (sc : Compiled.t) (gamma : Scene.gamma) : Image.t * Stats.t =
     Lazy.force quiet;
     bound_garbage ~compact:false;
     let stats = Stats.create () in
-    let shadow_cache = match carried with Some c -> c | None -> Context.shadow_cache sc in
-    let iso = match carried_iso with Some r -> r | None -> Scratch.iso_room () in
     let ctx =
       match !worker with
-      | None -> Trace.make_ctx ~robust:opts.robust ~shadow_cache ~iso sc stats
-      | Some ctx -> Trace.renew_ctx ctx ~shadow_cache ~iso stats
+      | None -> Trace.make_ctx ~robust:opts.robust sc stats
+      | Some ctx -> Trace.renew_ctx ctx ~carry stats
     in
     worker := Some ctx;
     let px = render_block ctx opts enc b in
