@@ -3,7 +3,10 @@
     mutable field, and nothing is written once it is compiled but the lazy [group.pov], which is
     made on first use from the scene alone. Everything a render writes (statistics, scratch,
     caches, random streams, what it keeps for each isosurface and height field) is its worker's
-    ({!Context.t}), so that workers share the compiled scene and nothing else. *)
+    ({!Context.t}). The one exception is hidden in closures that come from the scene: a user
+    function's call sites keep the frames of the functions they call ([Fn_compile]), and an object
+    pattern's Inside test its traversal room ([Inside_test]); both are scratch, written before
+    they are read, and each worker is a process of its own. *)
 
 (** Everything about a surface that does not depend on the hit point, derived once from a
     plain pigment and its finish (§3.2, §3.5, §5). A pattern pigment's surface holds the finish's
@@ -103,14 +106,17 @@ type shape =
   | Polygon of Polygon.t  (** §15.7, §14.5 (b): the outline in polygon space, placed by its transform *)
   | Quadric of Quadric.t  (** quadrics.cpp: in world space, the ray as it is *)
   | Blob of Blob.compiled  (** shape/blob.cpp: in blob space, through its transform if it has one *)
-  | Height_field of Hfield.t  (** hfield.cpp: the field walked in its own space, through its transform *)
+  | Height_field of Hfield.t
+      (** hfield.cpp: the field walked in its own space, through its transform; a smooth one's
+          vertex normals are the worker's *)
   | Superellipsoid of Superellipsoid.t  (** super.cpp: its own root search in its own space *)
   | Ovus of Ovus.t  (** ovus.cpp: the part hit decides the normal *)
   | Sphere_sweep of Sphere_sweep.compiled  (** sphsweep.cpp: segments and single spheres, the part hit names the normal *)
   | Prism of Prism.t  (** prism.cpp: through its transform *)
   | Lathe of Lathe.t  (** lathe.cpp: through its transform *)
   | Sor of Sor.t  (** sor.cpp: through its transform *)
-  | Isosurface of Isosurface.compiled  (** isosurf.cpp: searched in its own space, with the worker's cache *)
+  | Isosurface of Isosurface.compiled
+      (** isosurf.cpp: searched in its own space, with the worker's cache, frame and max_gradient *)
   | Julia of Julia.t  (** fractal.cpp: the ray taken into fractal space, its direction renormalised *)
   | Parametric of Parametric.t  (** fpmetric.cpp: the ray taken into parametric space, not renormalised *)
   | Bicubic of Bezier.t  (** bezier.cpp: in world space, type 1 with its tree of bounding spheres *)
@@ -258,7 +264,9 @@ type t = {
           order *)
   legacy : bool;  (** effective version < 3.70 *)
   camera : Scene.camera;
-  start_interiors : int list;  (** interiors containing the camera, last entered first (§6.4) *)
+  start_interiors : int list;
+      (** interiors containing the camera, last entered first (§6.4): a perspective camera's rays
+          start in them ({!Camera}) *)
   shift : float;
       (** the scene's {!Scene.t.shift}: the rounding of a move of the whole scene leaves surfaces
           that were coplanar apart by a few units in the last place of it *)

@@ -26,6 +26,17 @@ let shadow_cache (scene : Compiled.t) = Array.make (2 * max 1 (Array.length scen
 let no_hit () = { id = -1; part = -1; near = false }
 let no_reach () = { depth = 0.; least = 0.; inv_dx = 0.; inv_dy = 0.; inv_dz = 0. }
 
+(* the same values written into a worker's records, which its next block reuses *)
+let restart (f : found) (r : reach) =
+  f.id <- -1;
+  f.part <- -1;
+  f.near <- false;
+  r.depth <- 0.;
+  r.least <- 0.;
+  r.inv_dx <- 0.;
+  r.inv_dy <- 0.;
+  r.inv_dz <- 0.
+
 let make ?(robust = false) (scene : Compiled.t) stats =
   {
     scene;
@@ -48,6 +59,7 @@ let renew ctx ~carry stats =
   let shapes = Scratch.renew ctx.shapes stats in
   if not carry then Scratch.forget_iso_cache shapes;
   let shadow_cache = if carry then ctx.shadow_cache else shadow_cache ctx.scene in
-  { ctx with stats; shadow_cache; shapes; found = no_hit (); reach = no_reach () }
+  restart ctx.found ctx.reach;
+  { ctx with stats; shadow_cache; shapes }
 
 let[@inline] cache_slot ~level k = (2 * k) + if level = 1 then 0 else 1

@@ -48,6 +48,7 @@ let of_object (o : Scene.obj) =
   match shape o.shape with
   | None -> fun _ -> false
   | Some compiled ->
-      (* the traversal room of mesh Inside tests, as Compile gives the camera's test *)
+      (* the traversal room of mesh Inside tests, the pattern's own (a pattern is given no
+         worker's room): written by each test before it is read, and each worker is a process *)
       let stack = Array.make 512 0. in
       fun p -> Shape.inside stack compiled p

@@ -98,15 +98,16 @@ let vertex_normal (map : f32s) width height (out : f32s) j i =
    ([vertex_normal]): NaN until then. POV-Ray makes them all when the field is built; a render
    needs those of the cells its rays meet, which in a large field seen from near are far fewer, so
    each worker keeps its own, made as its rays need them ({!Scratch.vertex_normals}). *)
-let vertex_normals (w : Scratch.t) f =
-  let kept = w.vertex_normals in
-  match List.assq_opt f.map kept.fields with
-  | Some normals -> normals
-  | None ->
+let rec vertex_normals_in (w : Scratch.t) f = function
+  | (map, normals) :: rest -> if map == f.map then normals else vertex_normals_in w f rest
+  | [] ->
       let normals = Array1.create float32 c_layout (3 * f.width * f.height) in
       Array1.fill normals Float.nan;
-      kept.fields <- (f.map, normals) :: kept.fields;
+      w.vertex_normals.fields <- (f.map, normals) :: w.vertex_normals.fields;
       normals
+
+(* looked up without an option allocated per normal *)
+let vertex_normals (w : Scratch.t) f = vertex_normals_in w f w.vertex_normals.fields
 
 (* build_hfield_blocks: about √n blocks along each axis, each with the height range of its
    vertices (water included) widened by HFIELD_OFFSET; one block without the hierarchy *)
@@ -508,6 +509,14 @@ let flat_normal t x z tri =
 
 (* HField::Normal of a smooth field: the four corner normals of the cell, each by the inverse
    transpose and normalised, blended bilinearly, normalised *)
+(* the normal of vertex (i, j) of [t]'s field, from the worker's vertex normals [n] (made first if
+   need be), by the inverse transpose and normalised *)
+let corner t n i j =
+  let f = t.field in
+  let o = 3 * ((j * f.width) + i) in
+  if Float.is_nan (Array1.unsafe_get n o) then vertex_normal f.map f.width f.height n i j;
+  Transform.normalize (Transform.normal t.tr (Vec.make (Array1.unsafe_get n o) (Array1.unsafe_get n (o + 1)) (Array1.unsafe_get n (o + 2))))
+
 let smooth_normal w t (p : Vec.t) =
   let f = t.field in
   let n = vertex_normals w f in
@@ -515,12 +524,7 @@ let smooth_normal w t (p : Vec.t) =
   let px = min (int_of_float q.x) (f.width - 2) and pz = min (int_of_float q.z) (f.height - 2) in
   let px = max px 0 and pz = max pz 0 in
   let x = q.x -. float_of_int px and z = q.z -. float_of_int pz in
-  let corner i j =
-    let o = 3 * ((j * f.width) + i) in
-    if Float.is_nan (Array1.unsafe_get n o) then vertex_normal f.map f.width f.height n i j;
-    Transform.normalize (Transform.normal t.tr (Vec.make (Array1.unsafe_get n o) (Array1.unsafe_get n (o + 1)) (Array1.unsafe_get n (o + 2))))
-  in
-  let n0 = corner px pz and n1 = corner (px + 1) pz and n2 = corner px (pz + 1) and n3 = corner (px + 1) (pz + 1) in
+  let n0 = corner t n px pz and n1 = corner t n (px + 1) pz and n2 = corner t n px (pz + 1) and n3 = corner t n (px + 1) (pz + 1) in
   let u = 1.0 -. x and v = 1.0 -. z in
   let blend a0 a1 a2 a3 = (v *. ((u *. a0) +. (x *. a1))) +. (z *. ((u *. a2) +. (x *. a3))) in
   Transform.normalize (Vec.make (blend n0.x n1.x n2.x n3.x) (blend n0.y n1.y n2.y n3.y) (blend n0.z n1.z n2.z n3.z))

@@ -1,6 +1,8 @@
 (** The scratch space of the intersection routines, one per render worker: what a shape test
     leaves behind besides its depth (the part hit, the CSG member hit), room for the crossings
-    of one shape, the hits of a CSG's members, a mesh's traversal and a torus's quartic. Named
+    of one shape, the hits of a CSG's members, a mesh's traversal and a torus's quartic, and what
+    a worker keeps of the shapes it meets (the isosurfaces' state, the smooth height fields'
+    vertex normals), which the compiled scene does not hold because it is never written. Named
     fields, stored flat where they are floats, so that the hot path allocates nothing. *)
 
 type slab = { mutable t_near : float; mutable t_far : float }
