@@ -275,6 +275,8 @@ let scene ?(bounding_threshold = pov_bounding_threshold) (s : Scene.t) : Compile
   (* Objects are numbered in scene order, each CSG before its members (the numbering keeps the
      scene order of top-level objects, which decides ties without a bounding hierarchy). *)
   let next = ref 0 and built = ref [] in
+  (* isosurfaces are numbered apart, for the state a worker keeps for each *)
+  let iso_slots = ref 0 in
   let rec build ?(cache = -1) ?(wrapper = -1) ~top ~iid ~inverted (o : Scene.obj) : obj option =
     let id = !next in
     (* POV-Ray's object of this node: its clipped_by and bounded_by wrappers are the node *)
@@ -311,8 +313,9 @@ let scene ?(bounding_threshold = pov_bounding_threshold) (s : Scene.t) : Compile
           Some (Csg { kind; members; cbox })
       | _ ->
           (* a primitive: [Shape.compile] knows every one *)
-          let sh = Shape.compile o.shape in
+          let sh = Shape.compile ~iso_slot:!iso_slots o.shape in
           if sh <> None then incr next;
+          (match sh with Some (Isosurface _) -> incr iso_slots | Some _ | None -> ());
           sh
     in
     match shape with
@@ -448,7 +451,7 @@ let scene ?(bounding_threshold = pov_bounding_threshold) (s : Scene.t) : Compile
       (if bounding then begin
          let member = Array.make (Array.length objects) false in
          List.iter (fun o -> member.(o.id) <- true) members;
-         Tree { walk = Slab_tree.searcher (Lazy.force slabs); member }
+         Tree { tree = Lazy.force slabs; member }
        end
        else
          let listed = Array.of_list members in
@@ -503,6 +506,5 @@ let scene ?(bounding_threshold = pov_bounding_threshold) (s : Scene.t) : Compile
     start_interiors;
     screen_holders = screen_holders s.camera tops;
     bounding;
-    crand = [| 0 |];
     uses_crand = !uses_crand;
   }

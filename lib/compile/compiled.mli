@@ -1,5 +1,12 @@
 (** The scene as the tracer uses it: built once by [Compile] from the immutable [Scene.t], holding
-    only what this scene needs, in flat unboxed records. *)
+    only what this scene needs, in flat unboxed records. It is immutable: nothing here has a
+    mutable field, and nothing is written once it is compiled but the lazy [group.pov], which is
+    made on first use from the scene alone. Everything a render writes (statistics, scratch,
+    caches, random streams, what it keeps for each isosurface and height field) is its worker's
+    ({!Context.t}). The one exception is hidden in closures that come from the scene: a user
+    function's call sites keep the frames of the functions they call ([Fn_compile]), and an object
+    pattern's Inside test its traversal room ([Inside_test]); both are scratch, written before
+    they are read, and each worker is a process of its own. *)
 
 (** Everything about a surface that does not depend on the hit point, derived once from a
     plain pigment and its finish (§3.2, §3.5, §5). A pattern pigment's surface holds the finish's
@@ -99,14 +106,17 @@ type shape =
   | Polygon of Polygon.t  (** §15.7, §14.5 (b): the outline in polygon space, placed by its transform *)
   | Quadric of Quadric.t  (** quadrics.cpp: in world space, the ray as it is *)
   | Blob of Blob.compiled  (** shape/blob.cpp: in blob space, through its transform if it has one *)
-  | Height_field of Hfield.t  (** hfield.cpp: the field walked in its own space, through its transform *)
+  | Height_field of Hfield.t
+      (** hfield.cpp: the field walked in its own space, through its transform; a smooth one's
+          vertex normals are the worker's *)
   | Superellipsoid of Superellipsoid.t  (** super.cpp: its own root search in its own space *)
   | Ovus of Ovus.t  (** ovus.cpp: the part hit decides the normal *)
   | Sphere_sweep of Sphere_sweep.compiled  (** sphsweep.cpp: segments and single spheres, the part hit names the normal *)
   | Prism of Prism.t  (** prism.cpp: through its transform *)
   | Lathe of Lathe.t  (** lathe.cpp: through its transform *)
   | Sor of Sor.t  (** sor.cpp: through its transform *)
-  | Isosurface of Isosurface.compiled  (** isosurf.cpp: searched in its own space, with the worker's cache *)
+  | Isosurface of Isosurface.compiled
+      (** isosurf.cpp: searched in its own space, with the worker's cache, frame and max_gradient *)
   | Julia of Julia.t  (** fractal.cpp: the ray taken into fractal space, its direction renormalised *)
   | Parametric of Parametric.t  (** fpmetric.cpp: the ray taken into parametric space, not renormalised *)
   | Bicubic of Bezier.t  (** bezier.cpp: in world space, type 1 with its tree of bounding spheres *)
@@ -199,7 +209,7 @@ type shadow_mode =
 (** POV-Ray's own order of search, for the scenes whose image depends on it (see [group]). *)
 type order =
   | Tree of {
-      walk : Slab_tree.search;  (** POV-Ray's bounding tree over every top-level object *)
+      tree : Slab_tree.t;  (** POV-Ray's bounding tree over every top-level object *)
       member : bool array;  (** by object id: whether the group holds the object *)
     }  (** with its bounding tree: nearest box first *)
   | Listed of obj array  (** without it: the group's objects, every one, in scene order *)
@@ -220,7 +230,10 @@ type group = {
   pov : order Lazy.t;
       (** the group searched as POV-Ray searches it (through its bounding tree, or in scene order
           without it): replayed for a ray on which two top-level objects' hits nearly tie (equal
-          but for rounding), where which one POV-Ray finds depends on its order of search *)
+          but for rounding), where which one POV-Ray finds depends on its order of search. Made
+          when a ray first needs it, a function of the group's objects alone (so that a scene of a
+          million objects builds POV-Ray's tree only if some ray asks for it); its walk's room is
+          the worker's ({!Context.t.pov_room}) *)
   pov_always : bool;
       (** every ray searches [pov]: scenes with isosurfaces, whose shared cache of the last
           segment without a root (isosurf.cpp) answers according to which isosurface was searched
@@ -245,15 +258,15 @@ type t = {
   adc_bailout : float;
   noise_generator : int;  (** the scene's, for patterns that name none *)
   irid_wavelength : Rgb.t;  (** the wavelengths of iridescence *)
-  crand : int array;
-      (** crand's random stream (POV-Ray's POV_rand, one per render thread, never reset): its one
-          cell holds the state, 0 when the render starts, and goes on from block to block in
-          render order; with [uses_crand] the render runs in one worker so that order is POV-Ray's
-          one-thread order. A mutable part of the compiled scene *)
-  uses_crand : bool;  (** some surface has a crand *)
+  uses_crand : bool;
+      (** some surface has a crand: its random stream ({!Context.t.crand}) runs through the blocks
+          in render order, so the render runs in one worker, whose order is POV-Ray's one-thread
+          order *)
   legacy : bool;  (** effective version < 3.70 *)
   camera : Scene.camera;
-  start_interiors : int list;  (** interiors containing the camera, last entered first (§6.4) *)
+  start_interiors : int list;
+      (** interiors containing the camera, last entered first (§6.4): a perspective camera's rays
+          start in them ({!Camera}) *)
   shift : float;
       (** the scene's {!Scene.t.shift}: the rounding of a move of the whole scene leaves surfaces
           that were coplanar apart by a few units in the last place of it *)

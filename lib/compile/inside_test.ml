@@ -41,12 +41,14 @@ let rec shape (s : Scene.shape) : Compiled.shape option =
       in
       Some (Csg { kind; members = Array.of_list members; cbox = [||] })
   | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Polygon _ | Quadric _ | Poly _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Glyph _ | Blob _ | Height_field _ | Prism _ | Lathe _ | Sor _ | Julia _ | Isosurface _ | Parametric _ | Bicubic _ ->
-      Shape.compile s
+      (* an Inside test never searches an isosurface, so never asks a worker for its state *)
+      Shape.compile ~iso_slot:0 s
 
 let of_object (o : Scene.obj) =
   match shape o.shape with
   | None -> fun _ -> false
   | Some compiled ->
-      (* the traversal room of mesh Inside tests, as Compile gives the camera's test *)
+      (* the traversal room of mesh Inside tests, the pattern's own (a pattern is given no
+         worker's room): written by each test before it is read, and each worker is a process *)
       let stack = Array.make 512 0. in
       fun p -> Shape.inside stack compiled p

@@ -7,7 +7,7 @@ let finite (t : Transform.t) =
     [ t.m00; t.m01; t.m02; t.m10; t.m11; t.m12; t.m20; t.m21; t.m22; t.m30; t.m31; t.m32;
       t.i00; t.i01; t.i02; t.i10; t.i11; t.i12; t.i20; t.i21; t.i22; t.i30; t.i31; t.i32 ]
 
-let compile (s : Scene.shape) =
+let compile ~iso_slot (s : Scene.shape) =
   match s with
   | Sphere { centre; radius; trans = None; uv_trans = None } -> Some (Sphere (Sphere.make centre radius))
   | Sphere { centre; radius; trans = None; uv_trans = Some u } -> Some (Sphere_placed (Sphere.placed (Sphere.make centre radius) u))
@@ -38,7 +38,7 @@ let compile (s : Scene.shape) =
   | Lathe l -> Some (Lathe l)
   | Sor s -> Some (Sor s)
   | Julia f -> Some (Julia f)
-  | Isosurface i -> Some (Isosurface (Isosurface.compile i))
+  | Isosurface i -> Some (Isosurface (Isosurface.compile ~slot:iso_slot i))
   | Parametric m -> Some (Parametric m)
   | Bicubic { patch_type; u_steps; v_steps; flatness; points; uv_vectors } ->
       Some (Bicubic (Bezier.make ~patch_type ~u_steps ~v_steps ~flatness ~st:uv_vectors points))
@@ -174,7 +174,7 @@ let cached_depth w shape o d lo hi =
 
 let hit_object (w : Scratch.t) ob = if Csg.is_csg ob.shape then w.leaf else ob.id
 
-let normal obj part p =
+let normal w obj part p =
   match obj.shape with
   | Cone c -> Cone.normal c part p
   | Disc dc -> Disc.normal dc
@@ -193,7 +193,7 @@ let normal obj part p =
   | Polygon pg -> Polygon.normal pg p
   | Quadric q -> Quadric.normal q p
   | Blob b -> Blob.normal b p
-  | Height_field h -> Hfield.normal h part p
+  | Height_field h -> Hfield.normal w h part p
   | Superellipsoid q -> Superellipsoid.normal q p
   | Ovus v -> Ovus.normal v part p
   | Sphere_sweep s -> Sphere_sweep.normal s part p
@@ -205,13 +205,13 @@ let normal obj part p =
   | Bicubic _ | Parametric _ -> Vec.make 1. 0. 0. (* its normal is the crossing's: hit_normal *)
   | Poly pl -> Poly.normal pl p
 
-let geometric_normal obj part p =
+let geometric_normal w obj part p =
   match obj.shape with
   | Smooth_triangle t -> Triangle.flat_normal t
   | Mesh m -> Mesh.placed_face_normal m part
   | Sphere _ | Sphere_placed _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _
   | Quadric _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Csg _ | Prism _ | Lathe _ | Sor _ | Julia _ | Isosurface _ | Parametric _ | Bicubic _ ->
-      normal obj part p
+      normal w obj part p
 
 let hit_normal (w : Scratch.t) obj part p =
   match obj.shape with
@@ -221,7 +221,7 @@ let hit_normal (w : Scratch.t) obj part p =
   | Sphere _ | Sphere_placed _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _
   | Torus _ | Glyph _ | Polygon _ | Quadric _ | Csg _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Prism _ | Lathe _ | Sor _
   | Isosurface _ ->
-      normal obj part p
+      normal w obj part p
 
 let hit_point w obj o depth d =
   match obj.shape with

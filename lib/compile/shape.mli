@@ -3,11 +3,12 @@
     search's flat-array sphere test, [Sphere.depth_at], and [Csg.is_csg]). A new shape is a module
     of its own and one case in each function here. *)
 
-val compile : Scene.shape -> Compiled.shape option
-(** [compile s] is the primitive [s] ready to trace; None for a CSG (the compile step builds it,
-    numbering its members) and for a shape POV-Ray never hits (a triangle without area, a standalone
-    smooth triangle whose vertex normals straddle its face, a cylinder, disc or letter whose
-    transform has no inverse). *)
+val compile : iso_slot:int -> Scene.shape -> Compiled.shape option
+(** [compile ~iso_slot s] is the primitive [s] ready to trace; None for a CSG (the compile step
+    builds it, numbering its members) and for a shape POV-Ray never hits (a triangle without area,
+    a standalone smooth triangle whose vertex normals straddle its face, a cylinder, disc or
+    letter whose transform has no inverse). An isosurface is numbered [iso_slot] among the
+    scene's ({!Isosurface.compiled.slot}); other shapes ignore it. *)
 
 val depth : Scratch.t -> Compiled.shape -> Vec.t -> Vec.t -> float -> float
 (** [depth w shape o d lo] is the nearest depth along the unit direction [d] at which the ray from
@@ -24,12 +25,13 @@ val hit_object : Scratch.t -> Compiled.obj -> int
 (** [hit_object w ob] is the id of the object a [depth] test of [ob] found: [ob] itself, or for a
     CSG the member primitive hit. *)
 
-val normal : Compiled.obj -> int -> Vec.t -> Vec.t
-(** [normal obj part p] is the unit normal of [obj] at its surface point [p] ([part] as [depth]
-    left it), before it is turned toward the ray (§3.1, §14.6). *)
+val normal : Scratch.t -> Compiled.obj -> int -> Vec.t -> Vec.t
+(** [normal w obj part p] is the unit normal of [obj] at its surface point [p] ([part] as [depth]
+    left it), before it is turned toward the ray (§3.1, §14.6); a smooth height field's vertex
+    normals are the worker [w]'s. *)
 
-val geometric_normal : Compiled.obj -> int -> Vec.t -> Vec.t
-(** [geometric_normal obj part p] is the flat normal of the surface at [p]: a smooth triangle's or
+val geometric_normal : Scratch.t -> Compiled.obj -> int -> Vec.t -> Vec.t
+(** [geometric_normal w obj part p] is the flat normal of the surface at [p]: a smooth triangle's or
     face's own plane, else [normal]. The robust mode lifts secondary rays along it. *)
 
 val uv : Scratch.t -> Compiled.obj -> int -> Vec.t -> Vec.t
@@ -41,7 +43,7 @@ val uv : Scratch.t -> Compiled.obj -> int -> Vec.t -> Vec.t
     world point's x and y. *)
 
 val hit_normal : Scratch.t -> Compiled.obj -> int -> Vec.t -> Vec.t
-(** [hit_normal w obj part p] is [normal obj part p] for every shape but the julia fractal, whose
+(** [hit_normal w obj part p] is [normal w obj part p] for every shape but the julia fractal, whose
     normal at a crossing its march reported is the one computed there (Julia.hit_normal). *)
 
 val hit_point : Scratch.t -> Compiled.obj -> Vec.t -> float -> Vec.t -> Vec.t

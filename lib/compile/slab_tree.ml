@@ -157,7 +157,7 @@ let infinite_depth = -1e7
 (* POV-Ray's binary heap of (entry depth, node), 1-based (priority_queue_insert,
    Priority_Queue_Delete), with its exact moves: equal depths are ordered by the mechanics of
    the heap, not by insertion. *)
-type heap = { depths : float array; held : node array; mutable size : int }
+type heap = { mutable depths : float array; mutable held : node array; mutable size : int }
 
 let insert h depth n =
   h.size <- h.size + 1;
@@ -221,10 +221,16 @@ let traverse t h ri (o : Vec.t) (d : Vec.t) limit leaf =
       in
       next ()
 
-let heap_for t = match t.queued with None -> { depths = [||]; held = [||]; size = 0 } | Some root -> { depths = Array.make (t.nodes + 1) 0.; held = Array.make (t.nodes + 1) root; size = 0 }
+(* A walk's room: the heap, grown to the tree's size when a walk first needs it (it never holds
+   more than every node), and the ray's slab data. *)
+type room = { heap : heap; ray : Pov_box.ray_info }
 
-type search = { tree : t; heap : heap; ray : Pov_box.ray_info }
+let room () = { heap = { depths = [||]; held = [||]; size = 0 }; ray = Pov_box.ray_info () }
 
-let searcher tree = { tree; heap = heap_for tree; ray = Pov_box.ray_info () }
-
-let search s o d limit test = traverse s.tree s.heap s.ray o d limit (fun id -> test id; false)
+let search t room o d limit test =
+  (match t.queued with
+  | Some root when Array.length room.heap.depths < t.nodes + 1 ->
+      room.heap.depths <- Array.make (t.nodes + 1) 0.;
+      room.heap.held <- Array.make (t.nodes + 1) root
+  | Some _ | None -> ());
+  traverse t room.heap room.ray o d limit (fun id -> test id; false)

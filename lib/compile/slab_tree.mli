@@ -14,15 +14,15 @@ val walk : t -> (float array -> bool) -> int list
     [in_box] holds for its box (InitRayContainerStateTree): the unbounded objects first, then the
     bounded ones whose box and ancestors' boxes pass, in tree order. *)
 
-type search
-(** A walk of the tree in POV-Ray's order with its own heap, reused from ray to ray (each render
-    worker is a process; a walk never starts while another runs). *)
+type room
+(** What a walk of a tree writes: its heap and the ray's slab data. A render worker owns one
+    ({!Context.t.pov_room}) and lends it to each walk in turn; the tree itself is never written. *)
 
-val searcher : t -> search
-(** [searcher t] walks [t]. *)
+val room : unit -> room
+(** [room ()] is an empty room, fitted to a tree when a walk first needs it. *)
 
-val search : search -> Vec.t -> Vec.t -> (unit -> float) -> (int -> unit) -> unit
-(** [search s o d limit test] is POV-Ray's search of the ray from [o] along [d] through its
-    bounding tree (Intersect_BBox_Tree): [test id] for every object whose leaf it pops, nodes
-    popped nearest entry first (unbounded ones first), until the heap is empty or the node popped
-    is entered beyond [limit ()], the best depth so far. *)
+val search : t -> room -> Vec.t -> Vec.t -> (unit -> float) -> (int -> unit) -> unit
+(** [search t room o d limit test] is POV-Ray's search of the ray from [o] along [d] through its
+    bounding tree [t] (Intersect_BBox_Tree), in [room]: [test id] for every object whose leaf it
+    pops, nodes popped nearest entry first (unbounded ones first), until the heap is empty or the
+    node popped is entered beyond [limit ()], the best depth so far. *)

@@ -1,5 +1,5 @@
-(* The render loop: camera rays (§1.4), antialiasing methods 1 (§9.3) and 2 (§9.4) in blocks, and
-   the split of blocks over processes. Every block is computed independently from the scene alone,
+(* The render loop: antialiasing methods 1 (§9.3) and 2 (§9.4) in blocks, each sample a camera
+   ray ({!Camera}) traced, and the split of blocks over processes. Every block is computed independently from the scene alone,
    so the image is the same for any number of workers. *)
 
 open Compiled
@@ -41,46 +41,20 @@ let defaults w h =
     robust = false;
   }
 
-(* §1.4: the ray through the (possibly fractional) pixel position (x, y). *)
-let camera_dir (cam : Scene.camera) w h x y =
-  let x0 = ((x +. 0.5) /. float_of_int w) -. 0.5 in
-  let y0 = ((float_of_int (h - 1) -. (y -. 0.5)) /. float_of_int h) -. 0.5 in
-  let d = cam.direction and r = cam.right and u = cam.up in
-  Vec.normalize
-    (Vec.make
-       (d.x +. (x0 *. r.x) +. (y0 *. u.x))
-       (d.y +. (x0 *. r.y) +. (y0 *. u.y))
-       (d.z +. (x0 *. r.z) +. (y0 *. u.z)))
+(* A camera ray traced: a new ray from trace level 0 with weight 1 (§1.4) *)
+let traced ctx interiors o d = Trace.trace ctx ~level:0 ~weight:1. ~interiors ~continued:false o d
 
-(* §18.4: an orthographic ray's origin, the point of the screen at (x, y). *)
-let ortho_origin (cam : Scene.camera) w h x y =
-  let x0 = ((x +. 0.5) /. float_of_int w) -. 0.5 in
-  let y0 = ((float_of_int (h - 1) -. (y -. 0.5)) /. float_of_int h) -. 0.5 in
-  let l = cam.location and r = cam.right and u = cam.up in
-  Vec.make (l.x +. (x0 *. r.x) +. (y0 *. u.x)) (l.y +. (x0 *. r.y) +. (y0 *. u.y)) (l.z +. (x0 *. r.z) +. (y0 *. u.z))
-
-let sample ctx opts x y =
-  let sc = ctx.Context.scene in
-  ctx.stats.camera_rays <- ctx.stats.camera_rays + 1;
-  match sc.camera.projection with
-  | Perspective ->
-      let interiors = if ctx.robust then sc.robust_start_interiors else sc.start_interiors in
-      Trace.trace ctx ~level:0 ~weight:1. ~interiors ~continued:false sc.camera.location
-        (camera_dir sc.camera opts.width opts.height x y)
-  | Orthographic ->
-      (* every ray has its own origin, so its own interior list *)
-      let o = ortho_origin sc.camera opts.width opts.height x y in
-      let interiors = Interiors.at sc.screen_holders ctx.shapes.mesh_stack o in
-      let interiors = if ctx.robust then Interiors.innermost_first sc.objects interiors else interiors in
-      Trace.trace ctx ~level:0 ~weight:1. ~interiors ~continued:false o
-        (Vec.normalize sc.camera.direction)
+(* One sample: the camera ray through the image position (x, y), traced *)
+let sample ctx cam x y =
+  ctx.Context.stats.camera_rays <- ctx.stats.camera_rays + 1;
+  Camera.ray cam ctx x y traced
 
 (* §9.1: colours are compared after x ↦ max(x,0)^(1/aa_gamma), in the working space. *)
 let aa_distance enc (a : Trace.result) (b : Trace.result) =
   Float.abs (enc a.r -. enc b.r) +. Float.abs (enc a.g -. enc b.g) +. Float.abs (enc a.b -. enc b.b) +. Float.abs (a.tr -. b.tr)
 
 (* §9.3: supersample pixel (x, y) whose first sample is [c]. *)
-let supersample ctx opts (c : Trace.result) x y : Trace.result =
+let supersample ctx opts cam (c : Trace.result) x y : Trace.result =
   let depth = opts.aa_depth in
   let step = 1. /. float_of_int depth in
   let js = opts.jitter /. float_of_int depth in
@@ -93,8 +67,8 @@ let supersample ctx opts (c : Trace.result) x y : Trace.result =
     while !xx <= r0 +. 1e-10 do
       let px = fx +. !xx and py = fy +. !yy in
       let s =
-        if js = 0. then sample ctx opts px py
-        else sample ctx opts (px +. (Jitter.jx px py *. js)) (py +. (Jitter.jy px py *. js))
+        if js = 0. then sample ctx cam px py
+        else sample ctx cam (px +. (Jitter.jx px py *. js)) (py +. (Jitter.jy px py *. js))
       in
       ctx.stats.samples <- ctx.stats.samples + 1;
       sr := Precision.f32 (!sr +. s.r);
@@ -111,15 +85,15 @@ let supersample ctx opts (c : Trace.result) x y : Trace.result =
 type block = { bx0 : int; by0 : int; bx1 : int; by1 : int }
 
 (* No antialiasing: one sample at each pixel centre. *)
-let plain_block ctx opts (b : block) store =
+let plain_block ctx cam (b : block) store =
   for y = b.by0 to b.by1 do
     for x = b.bx0 to b.bx1 do
-      store x y (sample ctx opts (float_of_int x) (float_of_int y))
+      store x y (sample ctx cam (float_of_int x) (float_of_int y))
     done
   done
 
 (* §9.3, method 1. *)
-let non_adaptive_block ctx opts enc thr (b : block) store =
+let non_adaptive_block ctx opts cam enc thr (b : block) store =
   let bw = b.bx1 - b.bx0 + 1 and bh = b.by1 - b.by0 + 1 in
   (* A (bw+1)×(bh+1) grid whose row 0 and column 0 are the re-traced row above and column left
      of the block; those are never supersampled (§9.3). *)
@@ -127,7 +101,7 @@ let non_adaptive_block ctx opts enc thr (b : block) store =
   let px = Array.make (gw * (bh + 1)) Trace.black in
   let done_ = Array.make (gw * (bh + 1)) false in
   let at x y = ((y - b.by0 + 1) * gw) + (x - b.bx0 + 1) in
-  let tr x y = sample ctx opts (float_of_int x) (float_of_int y) in
+  let tr x y = sample ctx cam (float_of_int x) (float_of_int y) in
   for x = b.bx0 to b.bx1 do
     px.(at x (b.by0 - 1)) <- tr x (b.by0 - 1);
     done_.(at x (b.by0 - 1)) <- true
@@ -143,15 +117,15 @@ let non_adaptive_block ctx opts enc thr (b : block) store =
       let sl = (not done_.(at (x - 1) y)) && ld in
       let st = (not done_.(at x (y - 1))) && td in
       if sl then begin
-        px.(at (x - 1) y) <- supersample ctx opts px.(at (x - 1) y) (x - 1) y;
+        px.(at (x - 1) y) <- supersample ctx opts cam px.(at (x - 1) y) (x - 1) y;
         done_.(at (x - 1) y) <- true
       end;
       if st then begin
-        px.(at x (y - 1)) <- supersample ctx opts px.(at x (y - 1)) x (y - 1);
+        px.(at x (y - 1)) <- supersample ctx opts cam px.(at x (y - 1)) x (y - 1);
         done_.(at x (y - 1)) <- true
       end;
       if ld || td then begin
-        px.(at x y) <- supersample ctx opts c x y;
+        px.(at x y) <- supersample ctx opts cam c x y;
         done_.(at x y) <- true
       end
     done
@@ -173,14 +147,14 @@ let mean4 (a : Trace.result) (b : Trace.result) (c : Trace.result) (d : Trace.re
    depth−1 times (so every other lattice line stays unused, and depth 1 is the mean of the corners),
    and the jitter is scaled by 1/(S+1). Corners are re-traced by each block at the same positions,
    so unlike method 1 the image does not depend on the block size. *)
-let adaptive_block ctx opts enc thr (b : block) store =
+let adaptive_block ctx opts cam enc thr (b : block) store =
   let bw = b.bx1 - b.bx0 + 1 and bh = b.by1 - b.by0 + 1 in
   (* corners.(i + j·cw) is the top-left corner of pixel (bx0 + i, by0 + j) *)
   let cw = bw + 1 in
   let corners = Array.make (cw * (bh + 1)) Trace.black in
   for j = 0 to bh do
     for i = 0 to bw do
-      corners.(i + (j * cw)) <- sample ctx opts (float_of_int (b.bx0 + i) -. 0.5) (float_of_int (b.by0 + j) -. 0.5)
+      corners.(i + (j * cw)) <- sample ctx cam (float_of_int (b.bx0 + i) -. 0.5) (float_of_int (b.by0 + j) -. 0.5)
     done
   done;
   let s = 1 lsl opts.aa_depth in
@@ -198,7 +172,7 @@ let adaptive_block ctx opts enc thr (b : block) store =
   let take i j x y =
     if stamp.(i + (j * n)) <> !pixel then begin
       let c =
-        if js > 0. then sample ctx opts (x +. (Jitter.jx x y *. js)) (y +. (Jitter.jy x y *. js)) else sample ctx opts x y
+        if js > 0. then sample ctx cam (x +. (Jitter.jx x y *. js)) (y +. (Jitter.jy x y *. js)) else sample ctx cam x y
       in
       ctx.stats.samples <- ctx.stats.samples + 1;
       put i j c
@@ -237,7 +211,7 @@ let adaptive_block ctx opts enc thr (b : block) store =
   done
 
 (* One block: its pixels as r g b triples, row-major. *)
-let render_block ctx opts enc (b : block) =
+let render_block ctx opts cam enc (b : block) =
   let bw = b.bx1 - b.bx0 + 1 and bh = b.by1 - b.by0 + 1 in
   let out = Float.Array.make (3 * bw * bh) 0. in
   let store x y (c : Trace.result) =
@@ -247,9 +221,9 @@ let render_block ctx opts enc (b : block) =
     Float.Array.set out (i + 2) c.b
   in
   (match (opts.antialias, opts.aa_method) with
-  | None, _ -> plain_block ctx opts b store
-  | Some thr, Non_adaptive -> non_adaptive_block ctx opts enc thr b store
-  | Some thr, Adaptive -> adaptive_block ctx opts enc thr b store);
+  | None, _ -> plain_block ctx cam b store
+  | Some thr, Non_adaptive -> non_adaptive_block ctx opts cam enc thr b store
+  | Some thr, Adaptive -> adaptive_block ctx opts cam enc thr b store);
   out
 
 let blocks opts =
@@ -272,6 +246,7 @@ let render opts (sc : Compiled.t) (gamma : Scene.gamma) : Image.t * Stats.t =
   let g = match gamma with Scene.Gamma_off -> 1. | Scene.Working g -> g in
   let inv = 1. /. opts.aa_gamma in
   let enc x = if g = 1. then Float.pow (Float.max x 0.) inv else Float.pow (Float.pow (Float.max x 0.) g) inv in
+  let cam = Camera.make sc ~robust:opts.robust ~width:opts.width ~height:opts.height in
   let bl = blocks opts in
   let total = List.length bl in
   (* crand's stream runs through the blocks in order: one worker, as one POV-Ray thread *)
@@ -281,8 +256,7 @@ let render opts (sc : Compiled.t) (gamma : Scene.gamma) : Image.t * Stats.t =
      come, so which cache a block starts with varies from run to run) every block starts with an
      empty cache, so that the image does not depend on which worker renders which block. The
      isosurfaces' cache of the last missed root search is carried the same way. *)
-  let carried = if workers = 1 then Some (Context.shadow_cache sc) else None in
-  let carried_iso = if workers = 1 then Some (Scratch.iso_room ()) else None in
+  let carry = workers = 1 in
   (* Blocks leave garbage in the major heap (their pixel buffers, antialiasing's grids and the
      samples they hold), which the nearly idle major collector (below) would let pile up without
      end in a large image: after every [major_budget] words of it a full collection runs. A
@@ -309,15 +283,13 @@ let render opts (sc : Compiled.t) (gamma : Scene.gamma) : Image.t * Stats.t =
     Lazy.force quiet;
     bound_garbage ~compact:false;
     let stats = Stats.create () in
-    let shadow_cache = match carried with Some c -> c | None -> Context.shadow_cache sc in
-    let iso = match carried_iso with Some r -> r | None -> Scratch.iso_room () in
     let ctx =
       match !worker with
-      | None -> Trace.make_ctx ~robust:opts.robust ~shadow_cache ~iso sc stats
-      | Some ctx -> Trace.renew_ctx ctx ~shadow_cache ~iso stats
+      | None -> Trace.make_ctx ~robust:opts.robust sc stats
+      | Some ctx -> Trace.renew_ctx ctx ~carry stats
     in
     worker := Some ctx;
-    let px = render_block ctx opts enc b in
+    let px = render_block ctx opts cam enc b in
     (* blocks finish in about this order whichever worker renders them *)
     if opts.progress then Printf.eprintf "\rRendering block %d of %d %!" (i + 1) total;
     (b, px, stats)

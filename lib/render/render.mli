@@ -1,4 +1,5 @@
-(** The render loop: camera rays, antialiasing methods 1 and 2 in blocks, and the split over processes. *)
+(** The render loop: antialiasing methods 1 and 2 in blocks, each sample a camera ray
+    ({!Camera}) traced, and the split over processes. *)
 
 type area = { left : int; right : int; top : int; bottom : int }
 (** The pixels to render, 0-based and inclusive (a partial render, §10.3); the rest stays black. *)
@@ -32,13 +33,5 @@ val defaults : int -> int -> options
     jitter 1, gamma 2.5 when turned on), 32-pixel blocks, the POV-Ray mode; one worker, no
     progress line. *)
 
-val camera_dir : Scene.camera -> int -> int -> float -> float -> Vec.t
-(** [camera_dir cam w h x y] is the unit direction of the camera ray through pixel position (x, y)
-    of a w×h image (§1.4); integer positions are pixel centres. *)
-
 val render : options -> Compiled.t -> Scene.gamma -> Image.t * Stats.t
 (** [render opts scene gamma] traces the image and returns it with the merged statistics. *)
-
-val ortho_origin : Scene.camera -> int -> int -> float -> float -> Vec.t
-(** [ortho_origin cam w h x y] is the origin of the orthographic camera ray through pixel position
-    (x, y) of a [w]×[h] image: the location moved across the screen by [right] and [up] (§18.4). *)

@@ -132,7 +132,7 @@ let reader_state opts ~file text =
       frames = [ { lx = lexer; kind = Main; conds = [] } ];
       cur = { Token.kind = Eof; loc = Loc.none }; have = false; cur_elem = None; no_expand = false; defer = false; in_rvalue = false; pending_macro = None; streams = [||];
       depth = 0; parens = 0; opts; global; tables = [ global ]; includes = 0; macro_depth = 0;
-      macro_calls = 0; iterations = 0; string_bytes = 0; nesting = 0; braces = 0; object_count = 0; isosurfaces = 0; split_unions = 0; probe_iso = Scratch.iso_room (); probed = None;
+      macro_calls = 0; iterations = 0; string_bytes = 0; nesting = 0; braces = 0; object_count = 0; isosurfaces = 0; split_unions = 0; probe_work = lazy (Scratch.create ~robust:false (Stats.create ())); probed = None;
       version = 370; version_set = false; charset = Ascii; warnings = [];
       objects = []; lights = []; camera = None; background = None; sky = None;
       assumed_gamma = None; max_trace_level = 5; adc_bailout = 1. /. 255.; noise_generator = 2; irid_wavelength = Rgb.make (Precision.f32 0.70) (Precision.f32 0.52) (Precision.f32 0.48); number_of_waves = 10; ambient_light = Rgb.white;

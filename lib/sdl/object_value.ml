@@ -34,7 +34,7 @@ let built_box (kind : Scene.csg_kind) members =
   | Union | Merge -> (
       let box = function
         | V.Member_light _ -> None
-        | V.Member_obj { shape = Prim s; _ } -> Option.map Shape.pov_box (Shape.compile s)
+        | V.Member_obj { shape = Prim s; _ } -> Option.map Shape.pov_box (Shape.compile ~iso_slot:0 s)
         | V.Member_obj { shape = Csg { box = Some b; _ }; _ } -> Some b
         | V.Member_obj { shape = Csg { box = None; _ }; _ } -> raise Unknown
       in

@@ -48,6 +48,9 @@ let compiled st (o : V.obj) =
         }
       in
       let sc = Compile.scene scene in
+      (* its isosurfaces are numbered anew: what the parser's thread kept for the last object's
+         goes, as the object it was kept for does *)
+      if Lazy.is_val st.probe_work then Scratch.forget_isosurfaces (Lazy.force st.probe_work);
       st.probed <- Some (o, sc);
       sc
 
@@ -57,7 +60,7 @@ let trace st (o : V.obj) (origin : Vec.t) (dir : Vec.t) =
   let sc = compiled st o in
   let ob = top sc in
   let d = Vec.normalize dir in
-  let w = Scratch.create ~robust:false ~iso:st.probe_iso (Stats.create ()) in
+  let w = Scratch.renew (Lazy.force st.probe_work) (Stats.create ()) in
   (* Find_Intersection: the object's box (which spheres, boxes, planes and triangles never
      test), then every hit at MIN_ISECT_DEPTH or beyond, popped from the stack: the first of the
      nearest wins *)

@@ -85,7 +85,7 @@ type st = {
   mutable object_count : int;  (* objects and lights that entered the scene *)
   mutable isosurfaces : int;  (* isosurfaces read: the next one's number *)
   mutable split_unions : int;  (* unions split so far, each its members' shared interior's number *)
-  probe_iso : Scratch.iso_room;  (* the isosurfaces' cache of trace() calls, POV-Ray's parser thread's *)
+  probe_work : Scratch.t Lazy.t;  (* the scratch of trace() calls, renewed for each: POV-Ray's parser thread's data; made by the first *)
   mutable probed : (V.obj * Compiled.t) option;  (* the object trace(), inside() or an extent function compiled last, and its compiled scene *)
   mutable version : int;  (* languageVersion × 100 *)
   mutable version_set : bool;

@@ -82,8 +82,10 @@ type st = {
   mutable object_count : int;  (** objects and lights that entered the scene *)
   mutable isosurfaces : int;  (** isosurfaces read: the next one's number ({!Isosurface.t}'s key) *)
   mutable split_unions : int;  (** unions split so far: each its members' shared interior's number *)
-  probe_iso : Scratch.iso_room;
-      (** the isosurfaces' cache of the parse-time trace() calls (POV-Ray's parser has one thread's) *)
+  probe_work : Scratch.t Lazy.t;
+      (** the scratch of the parse-time trace() calls, made by the first and renewed for each:
+          POV-Ray's parser has one thread's data, whose isosurfaces' state and height fields'
+          vertex normals carry from call to call *)
   mutable probed : (V.obj * Compiled.t) option;  (** the object trace(), inside() or an extent function compiled last, and its compiled scene *)
   mutable version : int;
   mutable version_set : bool;

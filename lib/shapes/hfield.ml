@@ -16,7 +16,6 @@ type field = {
   lo_y : float;  (* bounding_corner1[Y]: max(min_y, water) − HFIELD_OFFSET *)
   hi_y : float;  (* bounding_corner2[Y]: max_y + HFIELD_OFFSET *)
   smooth : bool;
-  normals : f32s;  (* smooth: 3 per vertex, the stored shorts (32767·N truncated) *)
   hierarchy : bool;
   nbx : int;  (* block_max_x *)
   nbz : int;  (* block_max_z *)
@@ -95,15 +94,20 @@ let vertex_normal (map : f32s) width height (out : f32s) j i =
   (* (short)(32767·N): truncated *)
   for a = 0 to 2 do Array1.unsafe_set out (o + a) (float_of_int (int_of_float (32767. *. nt.(a)))) done
 
-(* The vertex normals, each made when it is first asked for ([vertex_normal]): NaN until then.
-   POV-Ray makes them all when the field is built; a render needs those of the cells its rays
-   meet, which in a large field seen from near are far fewer. A vertex has no normal only when the
-   field is one vertex wide or deep, which is refused at once, as POV-Ray does. *)
-let vertex_normals width height =
-  if width < 2 || height < 2 then failwith "Failed to find any normals at.";
-  let out = Array1.create float32 c_layout (3 * width * height) in
-  Array1.fill out Float.nan;
-  out
+(* The worker's vertex normals of field [f], each made when it is first asked for
+   ([vertex_normal]): NaN until then. POV-Ray makes them all when the field is built; a render
+   needs those of the cells its rays meet, which in a large field seen from near are far fewer, so
+   each worker keeps its own, made as its rays need them ({!Scratch.vertex_normals}). *)
+let rec vertex_normals_in (w : Scratch.t) f = function
+  | (map, normals) :: rest -> if map == f.map then normals else vertex_normals_in w f rest
+  | [] ->
+      let normals = Array1.create float32 c_layout (3 * f.width * f.height) in
+      Array1.fill normals Float.nan;
+      w.vertex_normals.fields <- (f.map, normals) :: w.vertex_normals.fields;
+      normals
+
+(* looked up without an option allocated per normal *)
+let vertex_normals (w : Scratch.t) f = vertex_normals_in w f w.vertex_normals.fields
 
 (* build_hfield_blocks: about √n blocks along each axis, each with the height range of its
    vertices (water included) widened by HFIELD_OFFSET; one block without the hierarchy *)
@@ -151,9 +155,11 @@ let make ~width ~height ~heights ~water ~smooth =
   let max_y = Array.fold_left (fun m (h : int) -> if h > m then h else m) 0 heights in
   let lo_y = fmax (float_of_int min_y) water -. hfield_offset in
   let hi_y = float_of_int max_y +. hfield_offset in
-  let normals = if smooth then vertex_normals width height else Array1.create float32 c_layout 0 in
+  (* a vertex has no normal only when the field is one vertex wide or deep, which is refused at
+     once, as POV-Ray does *)
+  if smooth && (width < 2 || height < 2) then failwith "Failed to find any normals at.";
   let nbx, nbz, wbx, wbz, blocks, block_y = blocks_of ~hierarchy:true width height map lo_y hi_y in
-  { width; height; map; min_y; max_y; water; lo_y; hi_y; smooth; normals; hierarchy = true; nbx; nbz; wbx; wbz; blocks; block_y; sealed = false }
+  { width; height; map; min_y; max_y; water; lo_y; hi_y; smooth; hierarchy = true; nbx; nbz; wbx; wbz; blocks; block_y; sealed = false }
 
 let with_hierarchy f on =
   if f.sealed || on = f.hierarchy then f
@@ -503,25 +509,28 @@ let flat_normal t x z tri =
 
 (* HField::Normal of a smooth field: the four corner normals of the cell, each by the inverse
    transpose and normalised, blended bilinearly, normalised *)
-let smooth_normal t (p : Vec.t) =
+(* the normal of vertex (i, j) of [t]'s field, from the worker's vertex normals [n] (made first if
+   need be), by the inverse transpose and normalised *)
+let corner t n i j =
   let f = t.field in
+  let o = 3 * ((j * f.width) + i) in
+  if Float.is_nan (Array1.unsafe_get n o) then vertex_normal f.map f.width f.height n i j;
+  Transform.normalize (Transform.normal t.tr (Vec.make (Array1.unsafe_get n o) (Array1.unsafe_get n (o + 1)) (Array1.unsafe_get n (o + 2))))
+
+let smooth_normal w t (p : Vec.t) =
+  let f = t.field in
+  let n = vertex_normals w f in
   let q = Transform.inv_point t.tr p in
   let px = min (int_of_float q.x) (f.width - 2) and pz = min (int_of_float q.z) (f.height - 2) in
   let px = max px 0 and pz = max pz 0 in
   let x = q.x -. float_of_int px and z = q.z -. float_of_int pz in
-  let corner i j =
-    let o = 3 * ((j * f.width) + i) in
-    let n = f.normals in
-    if Float.is_nan (Array1.unsafe_get n o) then vertex_normal f.map f.width f.height n i j;
-    Transform.normalize (Transform.normal t.tr (Vec.make (Array1.unsafe_get n o) (Array1.unsafe_get n (o + 1)) (Array1.unsafe_get n (o + 2))))
-  in
-  let n0 = corner px pz and n1 = corner (px + 1) pz and n2 = corner px (pz + 1) and n3 = corner (px + 1) (pz + 1) in
+  let n0 = corner t n px pz and n1 = corner t n (px + 1) pz and n2 = corner t n px (pz + 1) and n3 = corner t n (px + 1) (pz + 1) in
   let u = 1.0 -. x and v = 1.0 -. z in
   let blend a0 a1 a2 a3 = (v *. ((u *. a0) +. (x *. a1))) +. (z *. ((u *. a2) +. (x *. a3))) in
   Transform.normalize (Vec.make (blend n0.x n1.x n2.x n3.x) (blend n0.y n1.y n2.y n3.y) (blend n0.z n1.z n2.z n3.z))
 
-let normal t part p =
-  if t.field.smooth || part < 0 then smooth_normal t p
+let normal w t part p =
+  if t.field.smooth || part < 0 then smooth_normal w t p
   else
     let k = part / 2 in
     flat_normal t (k mod t.field.width) (k / t.field.width) (part land 1)

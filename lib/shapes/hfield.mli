@@ -17,10 +17,9 @@ type field = private {
   water : float;  (** 65536 · water_level, as parsed (0 without) *)
   lo_y : float;  (** the box's bottom: max(min_y, water) − 0.001 (HFIELD_OFFSET) *)
   hi_y : float;  (** the box's top: max_y + 0.001 *)
-  smooth : bool;  (** [smooth]: normals blended from the vertex normals *)
-  normals : f32s;
-      (** smooth: 3 per vertex, as POV-Ray stores them (shorts, 32767·N truncated); each vertex's
-          made when a normal first needs it (NaN until then), a cache that changes no result *)
+  smooth : bool;
+      (** [smooth]: normals blended from the vertex normals, which each worker makes as it needs
+          them ({!Scratch.vertex_normals}) *)
   hierarchy : bool;  (** the block grid is built (POV-Ray's default); off: one block *)
   nbx : int;  (** blocks along x *)
   nbz : int;  (** blocks along z *)
@@ -30,14 +29,17 @@ type field = private {
   block_y : float array;  (** 2 per block: its height range (water included), widened by 0.001 *)
   sealed : bool;  (** the object's modifiers are read: [hierarchy] no longer rebuilds the blocks *)
 }
-(** The field as Compute_HField leaves it; shared by every copy of the object. *)
+(** The field as Compute_HField leaves it, but for the vertex normals; shared by every copy of
+    the object, and never written once made. *)
 
 type t = { field : field; tr : Transform.t  (** field space to world *) }
 
 val make : width:int -> height:int -> heights:int array -> water:float -> smooth:bool -> field
-(** [make ~width ~height ~heights ~water ~smooth] is Compute_HField: the box's heights, the vertex
-    normals when [smooth] (smooth_height_field), and the blocks with the hierarchy on
-    (build_hfield_blocks). [water] is 65536 · water_level. *)
+(** [make ~width ~height ~heights ~water ~smooth] is Compute_HField: the box's heights and the
+    blocks with the hierarchy on (build_hfield_blocks). [water] is 65536 · water_level. The
+    vertex normals of a [smooth] field (smooth_height_field) are made by the workers as their
+    rays need them.
+    @raise Failure when a smooth field is one vertex wide or deep (it has no vertex normals). *)
 
 val with_hierarchy : field -> bool -> field
 (** [with_hierarchy f on] is [f] with its blocks built again with the hierarchy [on] or off, while
@@ -60,11 +62,12 @@ val hits : Scratch.t -> t -> int -> Vec.t -> Vec.t -> float -> int -> int
 (** [hits w t id o d lo n] pushes every hit at least [lo], as hits of the member [id]: a height
     field in a CSG walks every cell (IS_CHILD_OBJECT); it is the new count. *)
 
-val normal : t -> int -> Vec.t -> Vec.t
-(** [normal t part p] is the unit world normal: of a flat field, the normal of the triangle hit
+val normal : Scratch.t -> t -> int -> Vec.t -> Vec.t
+(** [normal w t part p] is the unit world normal: of a flat field, the normal of the triangle hit
     ([part] = 2·(z·width + x) + triangle), by the inverse transpose and normalised as
     intersect_pixel stores it; of a smooth one, HField::Normal at [p]: the four vertex normals of
-    the cell, each by the inverse transpose and normalised, blended bilinearly, normalised. *)
+    the cell (as POV-Ray stores them: shorts, 32767·N truncated, kept by the worker [w] once
+    made), each by the inverse transpose and normalised, blended bilinearly, normalised. *)
 
 val inside : t -> Vec.t -> bool
 (** [inside t p] is HField::Inside of the world point [p], before the inverted flag: within the

@@ -17,7 +17,7 @@ type t = {
   copy : bool;
 }
 
-type compiled = { iso : t; frame : float array; box : float array; mutable grad_used : float }
+type compiled = { iso : t; slot : int; box : float array }
 
 let accuracy_default = 0.001
 let max_gradient_default = 1.1
@@ -50,16 +50,21 @@ let mark_copy s = { s with copy = true }
 let[@inline] std_min (a : float) b = if b < a then b else a
 let[@inline] std_max (a : float) b = if a < b then b else a
 
-(* Evaluate_Function: the function at a point of the isosurface's space *)
-let[@inline] value c x y z =
-  let fr = c.frame in
+(* Evaluate_Function: the function at a point of the isosurface's space, in the frame [fr] (the
+   point in its first three cells; the rest are the function's own: parameters beyond x, y, z,
+   which stay 0, and counters, which it sets before it reads them) *)
+let[@inline] value_in fr c x y z =
   fr.(0) <- x;
   fr.(1) <- y;
   fr.(2) <- z;
   c.iso.fn.eval fr
 
-(* Vector_Function: the function less the threshold at P + t·D (VEvaluateRay) *)
-let[@inline] level c (r : Scratch.iso_search) t = value c (r.px +. (t *. r.dx)) (r.py +. (t *. r.dy)) (r.pz +. (t *. r.dz)) -. c.iso.threshold
+(* the same in a frame of its own (Normal and Inside, which may run outside a search) *)
+let value c x y z = Fn.at_point c.iso.fn x y z
+
+(* Vector_Function: the function less the threshold at P + t·D (VEvaluateRay), in the search's frame *)
+let[@inline] level c (r : Scratch.iso_search) t =
+  value_in r.frame c (r.px +. (t *. r.dx)) (r.py +. (t *. r.dy)) (r.pz +. (t *. r.dz)) -. c.iso.threshold
 
 (* Float_Function: the same, times the sign of the search *)
 let[@inline] along c (r : Scratch.iso_search) t = r.inv3 *. level c r t
@@ -106,7 +111,7 @@ let[@inline] gap (r : Scratch.iso_search) t x y z =
    seen exceeds max_gradient times how far this segment's ends are from that one's *)
 let cached_miss c (w : Scratch.t) t1 t2 =
   let room = w.iso and r = w.iso.at in
-  room.cached && room.owner == c.frame
+  room.cached && room.owner = c.slot
   && begin
        let st = w.stats in
        st.iso_cache_tests <- st.iso_cache_tests + 1;
@@ -158,7 +163,7 @@ let find_root c (w : Scratch.t) g t1 t2 =
         (* the segment's ends kept for the next search *)
         let room = w.iso in
         room.cached <- true;
-        room.owner <- c.frame;
+        room.owner <- c.slot;
         r.bx <- r.px +. (t1 *. r.dx);
         r.by <- r.py +. (t1 *. r.dy);
         r.bz <- r.pz +. (t1 *. r.dz);
@@ -284,6 +289,22 @@ let search_inside c (w : Scratch.t) g t1 t2 =
     n
   end
 
+(* What the worker keeps for the isosurface [c], made when it first searches it *)
+let own (w : Scratch.t) c : Scratch.iso_own =
+  let room = w.iso in
+  let k = c.slot in
+  match if k < Array.length room.own then room.own.(k) else None with
+  | Some own -> own
+  | None ->
+      let own = { Scratch.frame = Fn.frame c.iso.fn; grad_used = c.iso.max_gradient } in
+      if k >= Array.length room.own then begin
+        let bigger = Array.make (max (k + 1) (2 * Array.length room.own)) None in
+        Array.blit room.own 0 bigger 0 (Array.length room.own);
+        room.own <- bigger
+      end;
+      room.own.(k) <- Some own;
+      own
+
 (* All_Intersections of the world ray from [o] along [d]: the crossings in [w.iso_hits], their
    count returned *)
 let search c (w : Scratch.t) (o : Vec.t) (d : Vec.t) =
@@ -291,8 +312,9 @@ let search c (w : Scratch.t) (o : Vec.t) (d : Vec.t) =
   st.iso_bound_tests <- st.iso_bound_tests + 1;
   let g = Stats.iso_slot st c.iso.key in
   let p = Transform.inv_point tr o and v = Transform.inv_direction tr d in
-  let r = w.iso.at in
-  r.maxg <- c.grad_used;
+  let r = w.iso.at and own = own w c in
+  r.frame <- own.frame;
+  r.maxg <- own.grad_used;
   let n =
     if not (container_crossed c w p v) then 0
     else begin
@@ -307,7 +329,7 @@ let search c (w : Scratch.t) (o : Vec.t) (d : Vec.t) =
       search_inside c w g t1 w.slab.t_far
     end
   in
-  if c.iso.evaluate <> None then c.grad_used <- std_max c.grad_used r.maxg;
+  if c.iso.evaluate <> None then own.grad_used <- std_max own.grad_used r.maxg;
   n
 
 let depth w c o d lo =
@@ -387,7 +409,7 @@ let pov_box s =
   in
   Pov_box.mapped s.trans b
 
-let compile s = { iso = s; frame = Fn.frame s.fn; box = pov_box s; grad_used = s.max_gradient }
+let compile ~slot s = { iso = s; slot; box = pov_box s }
 
 (* ---------------------------------------------------------------------------------------------- *)
 (* What POV-Ray says at the end of the render (DispatchShutdownMessages) *)

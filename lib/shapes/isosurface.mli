@@ -32,14 +32,14 @@ type t = {
 
 type compiled = {
   iso : t;
-  frame : float array;
-      (** the function's frame, written by every evaluation; its identity is the object's for
-          the cache (POV-Ray's [this]) *)
+  slot : int;
+      (** its number among the compiled scene's isosurfaces (0, 1, …, one for each object): it
+          stands for the object (POV-Ray's [this]) in the worker's cache, and a worker keeps
+          the function's frame and the max_gradient [evaluate] raises under it
+          ({!Scratch.iso_room}) *)
   box : float array;  (** POV-Ray's box of it ({!pov_box}) *)
-  mutable grad_used : float;
-      (** max_gradient as [evaluate] raises it from search to search (POV-Ray writes it into
-          the object); the parsed value otherwise *)
 }
+(** An isosurface ready to trace; immutable, what a search writes is the worker's. *)
 
 val accuracy_default : float
 (** 0.001. *)
@@ -59,13 +59,14 @@ val transform : t -> Transform.t -> t
 val mark_copy : t -> t
 (** [mark_copy s] is [s] as IsoSurface::Copy leaves it: a copy. *)
 
-val compile : t -> compiled
-(** [compile s] is the isosurface ready to trace, with its own frame. *)
+val compile : slot:int -> t -> compiled
+(** [compile ~slot s] is the isosurface ready to trace, numbered [slot] among the scene's. *)
 
 val depth : Scratch.t -> compiled -> Vec.t -> Vec.t -> float -> float
 (** [depth w c o d lo] is the nearest crossing at least [lo] of the ray from [o] along [d]
     (world space) that the search finds (every crossing it would push, as POV-Ray's
-    Find_Intersection takes the nearest), its side left in [w.part]; or infinity. *)
+    Find_Intersection takes the nearest), its side left in [w.part]; or infinity. The search
+    reads and updates the worker's state for [c] ({!Scratch.iso_room}). *)
 
 val hits : Scratch.t -> compiled -> int -> Vec.t -> Vec.t -> float -> int -> int
 (** [hits w c id o d lo n] pushes the crossings the search finds, at least [lo], as hits of the

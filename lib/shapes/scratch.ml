@@ -40,18 +40,25 @@ type iso_search = {
   mutable ex : float;
   mutable ey : float;
   mutable ez : float;
+  mutable frame : float array;
 }
 
-type iso_room = { mutable cached : bool; mutable owner : float array; at : iso_search }
+type iso_own = { frame : float array; mutable grad_used : float }
+
+type iso_room = { mutable cached : bool; mutable owner : int; at : iso_search; mutable own : iso_own option array }
 
 let iso_room () =
   {
     cached = false;
-    owner = [||];
+    owner = -1;
+    own = [||];
     at =
       { px = 0.; py = 0.; pz = 0.; dx = 0.; dy = 0.; dz = 0.; inv3 = 1.; maxg = 0.; fmax = 0.; tl = 0.; vlength = 0.; bx = 0.; by = 0.; bz = 0.;
-        ex = 0.; ey = 0.; ez = 0. };
+        ex = 0.; ey = 0.; ez = 0.; frame = [||] };
   }
+
+type f32s = (float, Bigarray.float32_elt, Bigarray.c_layout) Bigarray.Array1.t
+type vertex_normals = { mutable fields : (f32s * f32s) list }
 
 type t = {
   stats : Stats.t;
@@ -86,6 +93,7 @@ type t = {
   iso : iso_room;
   iso_hits : float array;
   mutable shadow_test : bool;
+  vertex_normals : vertex_normals;
 }
 
 let hit_width = 6
@@ -97,7 +105,7 @@ let report_width = 9
    a torus 4 depths, a quadric 2, a polygon 1. *)
 let max_crossings = 8
 
-let create ~robust ?iso stats =
+let create ~robust stats =
   {
     stats;
     lim = (if robust then Limits.robust else Limits.pov);
@@ -128,13 +136,22 @@ let create ~robust ?iso stats =
     fractal_points = Array.make (report_width * 32) nan;
     fractal_count = 0;
     poly_room = Array.make 512 0.;
-    iso = (match iso with Some r -> r | None -> iso_room ());
+    iso = iso_room ();
     iso_hits = Array.make 32 0.;
     shadow_test = false;
+    vertex_normals = { fields = [] };
   }
 
-let renew w ~iso stats =
-  { w with stats; iso; part = -1; leaf = -1; side_near = 0; side_far = 0; fractal_count = 0; shadow_test = false }
+let renew w stats = { w with stats; part = -1; leaf = -1; side_near = 0; side_far = 0; fractal_count = 0; shadow_test = false }
+
+(* a room whose [cached] is false answers every search as a new one would: the rest of [at] is
+   written by a search before it is read, or read only where [cached] holds *)
+let forget_iso_cache w = w.iso.cached <- false
+
+let forget_isosurfaces w =
+  forget_iso_cache w;
+  w.iso.owner <- -1;
+  w.iso.own <- [||]
 
 let push_hit w n t part id px py pz =
   let width = hit_width in

@@ -1,6 +1,8 @@
 (** The scratch space of the intersection routines, one per render worker: what a shape test
     leaves behind besides its depth (the part hit, the CSG member hit), room for the crossings
-    of one shape, the hits of a CSG's members, a mesh's traversal and a torus's quartic. Named
+    of one shape, the hits of a CSG's members, a mesh's traversal and a torus's quartic, and what
+    a worker keeps of the shapes it meets (the isosurfaces' state, the smooth height fields'
+    vertex normals), which the compiled scene does not hold because it is never written. Named
     fields, stored flat where they are floats, so that the hot path allocates nothing. *)
 
 type slab = { mutable t_near : float; mutable t_far : float }
@@ -43,22 +45,37 @@ type iso_search = {
   mutable ex : float;
   mutable ey : float;
   mutable ez : float;  (** … and ended *)
+  mutable frame : float array;  (** the frame the search evaluates the function in ({!iso_own.frame}) *)
 }
 (** An isosurface's root search in progress, and what the last one without a root leaves for
     the cache (POV-Ray's ISO_ThreadData). *)
 
+type iso_own = {
+  frame : float array;  (** the frame the root search evaluates the isosurface's function in *)
+  mutable grad_used : float;
+      (** max_gradient as [evaluate] raises it from search to search (POV-Ray writes it into the
+          object); the parsed value until then *)
+}
+(** What a worker keeps for one isosurface of the scene, made when it first searches it. *)
+
 type iso_room = {
   mutable cached : bool;  (** the last root search found none, and was not a shadow ray's *)
-  mutable owner : float array;
-      (** the isosurface that search was for, by its function frame (each compiled isosurface
-          has its own) *)
+  mutable owner : int;
+      (** the isosurface that search was for, by its number in the scene
+          ({!Isosurface.compiled.slot}) *)
   at : iso_search;
+  mutable own : iso_own option array;  (** by isosurface number: what the worker keeps for each it has searched *)
 }
 (** The state POV-Ray's isosurfaces keep per render thread: it carries from ray to ray, and a
     root search may answer from it (shape/isosurf.cpp). *)
 
-val iso_room : unit -> iso_room
-(** [iso_room ()] is the state of a thread that has searched nothing yet. *)
+type f32s = (float, Bigarray.float32_elt, Bigarray.c_layout) Bigarray.Array1.t
+
+type vertex_normals = { mutable fields : (f32s * f32s) list }
+(** The vertex normals of the smooth height fields a worker has shaded, each paired with the
+    field's heights (its own array, by which the field is known): 3 per vertex, as POV-Ray stores
+    them, each vertex's made when a normal first needs it (NaN until then) ({!Hfield.normal}). A
+    cache that changes no result. *)
 
 type t = {
   stats : Stats.t;  (** the worker's counters *)
@@ -101,23 +118,35 @@ type t = {
           the depth nor the point alone gives back *)
   mutable fractal_count : int;  (** how many crossings were written there (modulo 32 is the next slot) *)
   poly_room : float array;  (** a poly's powers of the ray, its polynomial in t, roots and depths *)
-  iso : iso_room;  (** the isosurfaces' per-thread state, which may carry from block to block *)
+  iso : iso_room;
+      (** the isosurfaces' per-thread state: the cache, which may carry from block to block, and
+          what the worker keeps for each isosurface, which always does *)
   iso_hits : float array;  (** one isosurface's crossings as (depth, side) pairs, 11 at most *)
   mutable shadow_test : bool;
       (** the ray being tested is a shadow ray (Ray::IsShadowTestRay): an isosurface does not
           leave its misses in the cache for it *)
+  vertex_normals : vertex_normals;  (** the smooth height fields' vertex normals made so far *)
 }
 
-val create : robust:bool -> ?iso:iso_room -> Stats.t -> t
-(** [create ~robust ?iso stats] is fresh scratch for one worker counting into [stats], with POV-Ray's
-    depth limits or, when [robust], the robust mode's; [iso] is the isosurfaces' state carried
-    from an earlier scratch (else a fresh one). *)
+val create : robust:bool -> Stats.t -> t
+(** [create ~robust stats] is fresh scratch for one worker counting into [stats], with POV-Ray's
+    depth limits or, when [robust], the robust mode's, and the isosurfaces' state of a thread
+    that has searched nothing yet. *)
 
-val renew : t -> iso:iso_room -> Stats.t -> t
-(** [renew w ~iso stats] is scratch for the worker's next block, counting into [stats] with the
-    isosurfaces' state [iso]: it shares [w]'s rooms (grown as the earlier blocks needed, and
-    always written before they are read) and starts as {!create} does (no part or leaf found, no
-    fractal crossing reported, not a shadow test). [w] is not used afterwards. *)
+val renew : t -> Stats.t -> t
+(** [renew w stats] is scratch for the worker's next block (or the parser's next trace()),
+    counting into [stats]: it shares [w]'s rooms (grown as the earlier blocks needed, and always
+    written before they are read), its caches and its isosurfaces' state, and starts as {!create}
+    does (no part or leaf found, no fractal crossing reported, not a shadow test). [w] is not
+    used afterwards. *)
+
+val forget_iso_cache : t -> unit
+(** [forget_iso_cache w] empties the isosurfaces' cache of [w], as a new thread's is, keeping
+    what the worker keeps for each isosurface. *)
+
+val forget_isosurfaces : t -> unit
+(** [forget_isosurfaces w] is [w]'s isosurfaces' state as a new thread's, for a newly compiled
+    scene whose isosurfaces are numbered anew: the cache and what was kept for each. *)
 
 val hit_width : int
 (** [hit_width] is the number of floats per hit in [hits]: depth, part, the member's id, and the

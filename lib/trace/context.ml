@@ -1,5 +1,5 @@
-(* A render worker's context: the scene, the statistics, the scratch, the shadow cache and the
-   facets cache. *)
+(* A render worker's context: the scene, the statistics, the scratch, the shadow cache, the
+   facets cache, crand's stream and the room of POV-Ray's tree walk. *)
 
 type found = { mutable id : int; mutable part : int; mutable near : bool }
 type reach = { mutable depth : float; mutable least : float; mutable inv_dx : float; mutable inv_dy : float; mutable inv_dz : float }
@@ -16,6 +16,8 @@ type t = {
   reach : reach;
   walk_limit : float array;
   facets : Normals.facets_cache;
+  crand : Pov_rand.t;
+  pov_room : Slab_tree.room;
 }
 
 let shadow_cache (scene : Compiled.t) = Array.make (2 * max 1 (Array.length scene.lights)) (-1)
@@ -24,23 +26,40 @@ let shadow_cache (scene : Compiled.t) = Array.make (2 * max 1 (Array.length scen
 let no_hit () = { id = -1; part = -1; near = false }
 let no_reach () = { depth = 0.; least = 0.; inv_dx = 0.; inv_dy = 0.; inv_dz = 0. }
 
-let make ?(robust = false) ?shadow_cache:cache ?iso (scene : Compiled.t) stats =
+(* the same values written into a worker's records, which its next block reuses *)
+let restart (f : found) (r : reach) =
+  f.id <- -1;
+  f.part <- -1;
+  f.near <- false;
+  r.depth <- 0.;
+  r.least <- 0.;
+  r.inv_dx <- 0.;
+  r.inv_dy <- 0.;
+  r.inv_dz <- 0.
+
+let make ?(robust = false) (scene : Compiled.t) stats =
   {
     scene;
     stats;
-    shapes = Scratch.create ~robust ?iso stats;
+    shapes = Scratch.create ~robust stats;
     stack = Array.make 512 0.;
     min_depth = (if robust then 0. else Precision.min_isect_depth);
     robust;
-    shadow_cache = (match cache with Some c -> c | None -> shadow_cache scene);
+    shadow_cache = shadow_cache scene;
     found = no_hit ();
     reach = no_reach ();
     walk_limit = [| 0. |];
     facets = Normals.facets_cache ();
+    crand = Pov_rand.create ();
+    pov_room = Slab_tree.room ();
   }
 
-let renew ctx ~shadow_cache ~iso stats =
+let renew ctx ~carry stats =
   Normals.reset_facets ctx.facets;
-  { ctx with stats; shadow_cache; shapes = Scratch.renew ctx.shapes ~iso stats; found = no_hit (); reach = no_reach () }
+  let shapes = Scratch.renew ctx.shapes stats in
+  if not carry then Scratch.forget_iso_cache shapes;
+  let shadow_cache = if carry then ctx.shadow_cache else shadow_cache ctx.scene in
+  restart ctx.found ctx.reach;
+  { ctx with stats; shadow_cache; shapes }
 
 let[@inline] cache_slot ~level k = (2 * k) + if level = 1 then 0 else 1

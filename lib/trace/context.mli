@@ -1,7 +1,8 @@
-(** What one render worker's traces read and write: the compiled scene, the worker's statistics,
-    its scratch space (named fields, stored flat where they are floats, so the hot path allocates
-    nothing) and POV-Ray's shadow cache. Nothing here is shared between workers, so the image does
-    not depend on which worker renders which block. *)
+(** What one render worker's traces read and write: the compiled scene, which they only read, and
+    everything they write: the worker's statistics, its scratch space (named fields, stored flat
+    where they are floats, so the hot path allocates nothing), POV-Ray's shadow cache, its facets
+    cache and crand's stream (POV-Ray's per-thread data, TraceThreadData). Nothing here is shared
+    between workers. *)
 
 type found = { mutable id : int; mutable part : int; mutable near : bool }
 (** The nearest-hit search's best object so far (−1 for none) and the part of it hit (a mesh face,
@@ -32,23 +33,31 @@ type t = {
   facets : Normals.facets_cache;
       (** POV-Ray's facets cache, which a render thread keeps for every facets normal it meets;
           emptied at the start of each block ({!renew}), as a fresh thread's would be *)
+  crand : Pov_rand.t;
+      (** crand's random stream: made with the worker, it runs on from block to block in the
+          order the worker renders them and is never reset; a scene with crand is rendered by one
+          worker, so that its order is POV-Ray's one-thread order *)
+  pov_room : Slab_tree.room;  (** the room of POV-Ray's bounding-tree search ({!Compiled.order}) *)
 }
 
 val shadow_cache : Compiled.t -> int array
 (** [shadow_cache scene] is an empty shadow cache for [scene] (as at the start of a POV-Ray render
     thread). *)
 
-val make : ?robust:bool -> ?shadow_cache:int array -> ?iso:Scratch.iso_room -> Compiled.t -> Stats.t -> t
-(** [make ?robust ?shadow_cache ?iso scene stats] is a context for one render worker, with the shadow
-    cache [shadow_cache] and the isosurfaces' state [iso] (default new empty ones), which it
-    updates; [robust] (default false) selects the robust mode's limits instead of POV-Ray's.
-    A render worker makes one for its first block and {!renew}s it for each next one. *)
+val make : ?robust:bool -> Compiled.t -> Stats.t -> t
+(** [make ?robust scene stats] is a context for one render worker, counting into [stats], as a
+    new POV-Ray render thread starts: an empty shadow cache, the isosurfaces' state of a thread
+    that has searched nothing, crand's stream at its start; [robust] (default false) selects the
+    robust mode's limits instead of POV-Ray's. A render worker makes one for its first block and
+    {!renew}s it for each next one. *)
 
-val renew : t -> shadow_cache:int array -> iso:Scratch.iso_room -> Stats.t -> t
-(** [renew ctx ~shadow_cache ~iso stats] is the context of the worker's next block, counting into
-    [stats], with the shadow cache [shadow_cache] and the isosurfaces' state [iso]: it keeps
-    [ctx]'s rooms (allocated once per worker, not per block: a 67,108,864×1 image has two million
-    blocks) and starts as {!make} does. [ctx] is not used afterwards. *)
+val renew : t -> carry:bool -> Stats.t -> t
+(** [renew ctx ~carry stats] is the context of the worker's next block, counting into [stats]: it
+    keeps [ctx]'s rooms and caches (allocated once per worker, not per block: a 67,108,864×1 image
+    has two million blocks), crand's stream and what it keeps for each isosurface, empties the
+    facets cache, and starts the search as {!make} does. With [carry] the shadow cache and the
+    isosurfaces' cache carry over from the block before, as in POV-Ray's one render thread;
+    without it they start empty, as a new thread's. [ctx] is not used afterwards. *)
 
 val cache_slot : level:int -> int -> int
 (** [cache_slot ~level k] is light [k]'s shadow-cache slot for the shadow tests made while

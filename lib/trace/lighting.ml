@@ -65,12 +65,6 @@ let iridescence (sc : Compiled.t) (s : surface) (l : Vec.t) (d : Vec.t) (n : Vec
   let k wl = f32 (1.0 +. (s.irid *. cos (interference /. wl))) in
   Rgb.make (f32 (c.r *. k w.r)) (f32 (c.g *. k w.g)) (f32 (c.b *. k w.b))
 
-(* POV_rand: the next value of crand's stream, in [0, 1] *)
-let random (state : int array) =
-  let next = ((state.(0) * 1812433253) + 12345) land 0xFFFFFFFF in
-  state.(0) <- next;
-  float_of_int next /. 4294967295.
-
 type memo = { mutable seen : (int * Rgb.t) list; on : bool }
 
 let memo (_ : Compiled.t) = { seen = []; on = true }
@@ -89,8 +83,8 @@ let cached_feeler ctx (m : memo) light ~slot p ng e l dist interiors lc =
       m.seen <- (light, c) :: m.seen;
       c
 
-(* crand: POV_rand times crand off the diffuse intensity [i] *)
-let crand_intensity ctx (s : surface) i = i -. (random ctx.Context.scene.crand *. s.crand)
+(* crand: the worker's next POV_rand value times crand off the diffuse intensity [i] *)
+let crand_intensity ctx (s : surface) i = i -. (Pov_rand.next ctx.Context.crand *. s.crand)
 
 let[@inline] light_terms ctx ~memo ~light ~slot ~di (s : surface) (p : Vec.t) (n : Vec.t) ng e (d : Vec.t) interiors (lt : light) : Rgb.t =
   let acc = Rgb.black in

@@ -106,7 +106,7 @@ let pov_search ctx (ord : order) (o : Vec.t) (d : Vec.t) =
     end
   in
   match ord with
-  | Tree { walk; member } -> Slab_tree.search walk o d (fun () -> r.depth) (fun id -> if member.(id) then test ctx.scene.objects.(id))
+  | Tree { tree; member } -> Slab_tree.search tree ctx.pov_room o d (fun () -> r.depth) (fun id -> if member.(id) then test ctx.scene.objects.(id))
   | Listed obs -> Array.iter (fun (ob : obj) -> if Pov_box.met ob.pbox o d ~within:infinity then test ob) obs
 
 (* povml's search: the unbounded objects one by one, then its own hierarchy *)

@@ -82,7 +82,7 @@ and filter_layers obj ~hit ~caustic ~fades t ls q warps =
    the layer's normal pattern in the space of the patterned textures around it) *)
 let caustic ctx (obj : obj) part (q : Vec.t) (l : Vec.t) =
   let sc = ctx.scene in
-  let raw = Shape.normal obj part q in
+  let raw = Shape.normal ctx.shapes obj part q in
   let raw = if Vec.dot raw l > 0. then Vec.neg raw else raw in
   fun (s : surface) (p : Vec.t) warps ->
     let n =
@@ -98,8 +98,8 @@ let caustic ctx (obj : obj) part (q : Vec.t) (l : Vec.t) =
 
 (* Whether a shadow ray along [l] meets the surface of [obj] at [q] from inside (its normal,
    inverse counted, along the ray): it then sees the interior texture. *)
-let inside_hit (obj : obj) part q l =
-  let dn = Vec.dot (Shape.normal obj part q) l in
+let inside_hit ctx (obj : obj) part q l =
+  let dn = Vec.dot (Shape.normal ctx.shapes obj part q) l in
   if obj.inverted then dn < 0. else dn > 0.
 
 (* ComputeShadowColour for any texture but a plain one without uv_mapping or caustics: the filter
@@ -151,7 +151,7 @@ let rec walk ctx ~slot (p : Vec.t) (lp : Vec.t) lo first (o : Vec.t) (l : Vec.t)
       let part = ctx.found.part in
       (* the crossing, as the shape gives it (a poly's comes back from its own space) *)
       let q = Shape.hit_point ctx.shapes obj o t l in
-      let tex = if obj.inner_tex = None then Surfaces.at obj part else Surfaces.seen obj part ~inside:(inside_hit obj part q l) in
+      let tex = if obj.inner_tex = None then Surfaces.at obj part else Surfaces.seen obj part ~inside:(inside_hit ctx obj part q l) in
       let f =
         match tex with
         | Plain sf when (not obj.uv_mapped) && obj.interior.caustics = 0. ->
@@ -171,7 +171,7 @@ let rec walk ctx ~slot (p : Vec.t) (lp : Vec.t) lo first (o : Vec.t) (l : Vec.t)
       if not ctx.robust then walk ctx ~slot p lp lo false q l (remaining -. t) interiors lc
       else
         let q = Shape.refine obj q in
-        let next = Robust.origin ctx q (Shape.geometric_normal obj part q) (Robust.error_bound ~shift:ctx.scene.shift o q obj.mag) l in
+        let next = Robust.origin ctx q (Shape.geometric_normal ctx.shapes obj part q) (Robust.error_bound ~shift:ctx.scene.shift o q obj.mag) l in
         let l, remaining = aim lp next in
         walk ctx ~slot p lp lo false next l remaining interiors lc
 

@@ -119,7 +119,7 @@ and shade ctx ~reflected obj part depth ~level ~weight ~interiors (o : Vec.t) (d
     let tex = if obj.inner_tex = None then Surfaces.at obj part else Surfaces.seen obj part ~inside:(if obj.inverted then dn < 0. else dn > 0.) in
     let n = if dn > 0. then Vec.neg n else n in
     (* where secondary rays leave from in the robust mode *)
-    let ng = if ctx.robust then Shape.geometric_normal obj part p else n in
+    let ng = if ctx.robust then Shape.geometric_normal ctx.shapes obj part p else n in
     let e = if ctx.robust then Robust.error_bound ~shift:ctx.scene.shift o p obj.mag else 0. in
     match tex with
     | Plain s when not obj.uv_mapped ->

@@ -7,10 +7,10 @@ type result = Traced.t = { r : float; g : float; b : float; tr : float }
 type nonrec ctx = Context.t
 (** What a trace reads and writes: one render worker's context. *)
 
-val make_ctx : ?robust:bool -> ?shadow_cache:int array -> ?iso:Scratch.iso_room -> Compiled.t -> Stats.t -> ctx
+val make_ctx : ?robust:bool -> Compiled.t -> Stats.t -> ctx
 (** [make_ctx] is {!Context.make}: the context of a render worker's first block. *)
 
-val renew_ctx : ctx -> shadow_cache:int array -> iso:Scratch.iso_room -> Stats.t -> ctx
+val renew_ctx : ctx -> carry:bool -> Stats.t -> ctx
 (** [renew_ctx] is {!Context.renew}: the context of the worker's next block. *)
 
 val black : result

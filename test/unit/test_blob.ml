@@ -24,7 +24,7 @@ let compiled (obj : Compiled.obj) = match obj.shape with Blob b -> b | _ -> Alco
 let hit (obj, ctx) o d =
   let d = Transform.normalize d in
   let t = Shape.depth ctx.Context.shapes obj.Compiled.shape o d 0. in
-  (t, d, if t < infinity then Shape.normal obj (-1) (Vec.madd o t d) else Vec.zero)
+  (t, d, if t < infinity then Shape.normal ctx.Context.shapes obj (-1) (Vec.madd o t d) else Vec.zero)
 
 (* the scene of test/unit/data-free POV-Ray check below (printed by trace() in POV-Ray 3.7.0.10):
      #declare B1 = blob { ... as [b1] ... }

@@ -27,7 +27,7 @@ let hit ?(lo = 0.) (obj, ctx) o d =
   ctx.Context.shapes.part <- -1;
   let t = Shape.depth ctx.Context.shapes obj.Compiled.shape o d lo in
   let side = ctx.Context.shapes.part in
-  (t, side, if t < infinity then Shape.normal obj side (Vec.madd o t d) else Vec.zero)
+  (t, side, if t < infinity then Shape.normal ctx.Context.shapes obj side (Vec.madd o t d) else Vec.zero)
 
 let unit_box = "box { <-1,-1,-1>, <1,1,1> }"
 

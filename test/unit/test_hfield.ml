@@ -20,7 +20,7 @@ let field_of text =
   let root = Lazy.force root in
   let opts = { opts with access = Access.allow_read opts.access root } in
   let s, _ = Interp.load_string opts ~file:(Filename.concat root "t.pov") text in
-  match Shape.compile (List.hd s.objects).shape with
+  match Shape.compile ~iso_slot:0 (List.hd s.objects).shape with
   | Some (Compiled.Height_field h) -> h
   | Some _ | None -> Alcotest.fail "expected a height field"
 
@@ -33,7 +33,7 @@ let trace h o d =
   let t = Hfield.depth w h o d Precision.min_isect_depth in
   if t = infinity then Alcotest.fail "expected a hit";
   let p = Vec.add o (Vec.scale t d) in
-  (p, Hfield.normal h w.part p)
+  (p, Hfield.normal w h w.part p)
 
 let test_pov_flat () =
   let h = field_of "height_field { png \"scenes/images/hf_grey8.png\" }" in
@@ -121,11 +121,11 @@ let test_normals () =
   let w = scratch () in
   let o = v 0.4 1. 0.3 and d = v 0. (-1.) 0. in
   let t = Hfield.depth w flat o d 1e-4 in
-  vec_eq ~eps:1e-12 "flat" (expected flat.tr) (Hfield.normal flat w.part (Vec.add o (Vec.scale t d)));
+  vec_eq ~eps:1e-12 "flat" (expected flat.tr) (Hfield.normal w flat w.part (Vec.add o (Vec.scale t d)));
   let t = Hfield.depth w smooth o d 1e-4 in
   (* the stored shorts truncate the vertex normals (their tiny y most, which the scaling then
      magnifies): close to the plane's, not exact *)
-  vec_eq ~eps:1e-2 "smooth" (expected smooth.tr) (Hfield.normal smooth w.part (Vec.add o (Vec.scale t d)))
+  vec_eq ~eps:1e-2 "smooth" (expected smooth.tr) (Hfield.normal w smooth w.part (Vec.add o (Vec.scale t d)))
 
 let test_inside () =
   let h = synthetic 10 10 (fun _ _ -> 32768) in

@@ -171,7 +171,7 @@ let test_inside () =
    sphere's, the normal close to the sphere's, and the inside agrees with the sphere's. *)
 let test_sphere () =
   let r = 0.8 in
-  let c = Isosurface.compile (parse "isosurface { function { x*x + y*y + z*z - 0.64 } max_gradient 2 accuracy 0.0001 }") in
+  let c = Isosurface.compile ~slot:0 (parse "isosurface { function { x*x + y*y + z*z - 0.64 } max_gradient 2 accuracy 0.0001 }") in
   let rng = Random.State.make [| 11 |] in
   let hits = ref 0 in
   for _ = 1 to 200 do
@@ -200,7 +200,7 @@ let test_sphere () =
 
 (* every crossing along a ray: an all_intersections isosurface gives the sphere's two *)
 let test_all_crossings () =
-  let c = Isosurface.compile (parse "isosurface { function { x*x + y*y + z*z - 0.64 } max_gradient 2 all_intersections }") in
+  let c = Isosurface.compile ~slot:0 (parse "isosurface { function { x*x + y*y + z*z - 0.64 } max_gradient 2 all_intersections }") in
   let w = Scratch.create ~robust:false (Stats.create ()) in
   let n = Isosurface.hits w c 7 (v 0. 0. (-3.)) (v 0. 0. 1.) 1e-4 0 in
   Alcotest.(check int) "two crossings" 2 n;
@@ -208,7 +208,7 @@ let test_all_crossings () =
   float_eq ~eps:1e-3 "entry" 2.2 h.(0);
   float_eq ~eps:1e-3 "exit" 3.8 h.(Scratch.hit_width);
   float_eq "member id" 7. h.(2);
-  let one = Isosurface.compile (parse "isosurface { function { x*x + y*y + z*z - 0.64 } max_gradient 2 }") in
+  let one = Isosurface.compile ~slot:1 (parse "isosurface { function { x*x + y*y + z*z - 0.64 } max_gradient 2 }") in
   Alcotest.(check int) "max_trace 1: the first" 1 (Isosurface.hits w one 0 (v 0. 0. (-3.)) (v 0. 0. 1.) 1e-4 0)
 
 (* DispatchShutdownMessages: its tests and numbers *)

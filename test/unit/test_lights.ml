@@ -225,11 +225,14 @@ let test_ortho_camera () =
   vec_eq "perspective right unscaled" (v 1.33 0. 0.) c.right
 
 let test_ortho_origins () =
-  let c = camera "camera { orthographic location <0,0,-4> right x*8 up y*6 look_at 0 }" in
+  let c = compile (v37 ^ "camera { orthographic location <0,0,-4> right x*8 up y*6 look_at 0 }") in
+  let cam = Camera.make c ~robust:false ~width:4 ~height:2 and ctx = Trace.make_ctx c (Stats.create ()) in
+  let origin x y = Camera.ray cam ctx x y (fun _ _ o _ -> o) in
   (* pixel (0,0) of 4×2: x0 = 0.5/4 − 0.5, y0 = 0.5 − 0.5/2 *)
-  vec_eq "top left" (v (-3.) 1.5 (-4.)) (Render.ortho_origin c 4 2 0. 0.);
-  vec_eq "bottom right" (v 3. (-1.5) (-4.)) (Render.ortho_origin c 4 2 3. 1.);
-  vec_eq "the image centre is the location" (v 0. 0. (-4.)) (Render.ortho_origin c 4 2 1.5 0.5);
+  vec_eq "top left" (v (-3.) 1.5 (-4.)) (origin 0. 0.);
+  vec_eq "bottom right" (v 3. (-1.5) (-4.)) (origin 3. 1.);
+  vec_eq "the image centre is the location" (v 0. 0. (-4.)) (origin 1.5 0.5);
+  vec_eq "every ray along the direction" (v 0. 0. 1.) (Camera.ray cam ctx 0. 0. (fun _ _ _ d -> d));
   (* each origin has its own interior list, last entered first *)
   let cs = compile (v37 ^ "sphere { <-2,0,0>, 1 } sphere { 0, 3 } sphere { <2,0,0>, 1 } plane { y, 10 }") in
   let at p = Interiors.at cs.objects (Array.make 512 0.) p in

@@ -197,7 +197,7 @@ let test_trace () =
   let ctx = Trace.make_ctx c (Stats.create ()) in
   float_eq "nearest" 4. (Shape.depth ctx.Context.shapes obj.shape (v 0. 0. (-5.)) (v 0. 0. 1.) 0.);
   float_eq "nearest beyond 5" 6. (Shape.depth ctx.Context.shapes obj.shape (v 0. 0. (-5.)) (v 0. 0. 1.) 5.);
-  vec_eq "normal" (v 0. 0. (-1.)) (Shape.normal obj (-1) (v 0. 0. (-1.)))
+  vec_eq "normal" (v 0. 0. (-1.)) (Shape.normal ctx.Context.shapes obj (-1) (v 0. 0. (-1.)))
 
 (* the intersection allocates nothing: the roots stay unboxed and go into the array *)
 let test_no_allocation () =

@@ -39,7 +39,7 @@ let hit ?(lo = 0.) (obj, ctx) o d =
   ctx.Context.shapes.part <- -1;
   let t = Shape.depth ctx.Context.shapes obj.Compiled.shape o d lo in
   let part = ctx.Context.shapes.part in
-  (t, part, if t < infinity then Shape.normal obj part (Vec.madd o t d) else Vec.zero)
+  (t, part, if t < infinity then Shape.normal ctx.Context.shapes obj part (Vec.madd o t d) else Vec.zero)
 
 let inside (obj : Compiled.obj) p = Shape.inside (Array.make 512 0.) obj.shape p
 let base = 1 and cap = 2 and side = 3
@@ -271,7 +271,7 @@ let test_slab_queue () =
   let o = v 0.5 0.5 (-10.) and d = v 0. 0. 1. in
   let order t o =
     let l = ref [] in
-    Slab_tree.search (Slab_tree.searcher t) o d (fun () -> infinity) (fun id -> l := id :: !l);
+    Slab_tree.search t (Slab_tree.room ()) o d (fun () -> infinity) (fun id -> l := id :: !l);
     List.rev !l
   in
   let t = Slab_tree.build boxes [] in
@@ -289,10 +289,10 @@ let test_slab_search () =
      20); Pov_box.entry_from, the Rayinfo computed once, gives entry's floats on random rays *)
   let b z len = [| 0.; 0.; z; 1.; 1.; len |] in
   let t = Slab_tree.build [ (0, b 0. 1.); (1, b 0. 2.); (2, b 0. 3.); (3, b 10. 1.) ] [ 7 ] in
-  let s = Slab_tree.searcher t in
+  let room = Slab_tree.room () in
   let seen limit =
     let l = ref [] in
-    Slab_tree.search s (v 0.5 0.5 (-10.)) (v 0. 0. 1.) (fun () -> limit) (fun id -> l := id :: !l);
+    Slab_tree.search t room (v 0.5 0.5 (-10.)) (v 0. 0. 1.) (fun () -> limit) (fun id -> l := id :: !l);
     List.rev !l
   in
   Alcotest.(check (list int)) "7, 0, 2, 1, 3" [ 7; 0; 2; 1; 3 ] (seen infinity);

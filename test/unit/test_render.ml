@@ -1,35 +1,40 @@
-(* Render: camera rays (§1.4) and the render loop. *)
+(* Render: camera rays (§1.4, Camera) and the render loop. *)
 
 open Helpers
 
-let default_cam = (scene "").camera
+(* the direction of the camera ray through (x, y) of a w×h image, for the camera of the scene [text] *)
+let camera_dir text w h x y =
+  let c = compile text in
+  Camera.ray (Camera.make c ~robust:false ~width:w ~height:h) (Trace.make_ctx c (Stats.create ())) x y (fun _ _ _ d -> d)
+
+let default_cam = ""
 
 let test_centre_pixel () =
   (* 3×3: x0 = (1 + 0.5)/3 − 0.5 = 0, y0 = 0.5 − (1 + 0.5)/3 = 0: along direction *)
-  vec_eq "3x3 centre" (v 0. 0. 1.) (Render.camera_dir default_cam 3 3 1. 1.);
+  vec_eq "3x3 centre" (v 0. 0. 1.) (camera_dir default_cam 3 3 1. 1.);
   (* 5×3 centre pixel (2,1) *)
-  vec_eq "5x3 centre" (v 0. 0. 1.) (Render.camera_dir default_cam 5 3 2. 1.);
+  vec_eq "5x3 centre" (v 0. 0. 1.) (camera_dir default_cam 5 3 2. 1.);
   (* with look_at the centre ray is the unit direction: location <0,0,0>, look_at <1,1,1> *)
-  let cam = (scene "camera { direction <0,0,2> look_at <1,1,1> }").camera in
+  let cam = "camera { direction <0,0,2> look_at <1,1,1> }" in
   let s3 = 1. /. sqrt 3. in
-  vec_eq ~eps:1e-12 "look_at centre" (v s3 s3 s3) (Render.camera_dir cam 7 5 3. 2.)
+  vec_eq ~eps:1e-12 "look_at centre" (v s3 s3 s3) (camera_dir cam 7 5 3. 2.)
 
 let test_pixel_formula () =
   (* 4×2, pixel (0,0): x0 = 0.5/4 − 0.5 = −0.375, y0 = 0.5 − 0.5/2 = 0.25;
      direction + x0·right + y0·up = <−0.375·1.33, 0.25, 1> = <−0.49875, 0.25, 1>, length 1.1450989 *)
   let l = sqrt ((0.49875 *. 0.49875) +. 0.0625 +. 1.) in
-  vec_eq ~eps:1e-12 "4x2 top left" (v (-0.49875 /. l) (0.25 /. l) (1. /. l)) (Render.camera_dir default_cam 4 2 0. 0.);
-  vec_eq ~eps:1e-7 "4x2 top left, rounded" (v (-0.4355519) 0.2183217 0.8732870) (Render.camera_dir default_cam 4 2 0. 0.);
+  vec_eq ~eps:1e-12 "4x2 top left" (v (-0.49875 /. l) (0.25 /. l) (1. /. l)) (camera_dir default_cam 4 2 0. 0.);
+  vec_eq ~eps:1e-7 "4x2 top left, rounded" (v (-0.4355519) 0.2183217 0.8732870) (camera_dir default_cam 4 2 0. 0.);
   (* pixel (3,1): x0 = 3.5/4 − 0.5 = 0.375, y0 = 0.5 − 1.5/2 = −0.25 *)
-  vec_eq ~eps:1e-12 "4x2 bottom right" (v (0.49875 /. l) (-0.25 /. l) (1. /. l)) (Render.camera_dir default_cam 4 2 3. 1.);
+  vec_eq ~eps:1e-12 "4x2 bottom right" (v (0.49875 /. l) (-0.25 /. l) (1. /. l)) (camera_dir default_cam 4 2 3. 1.);
   (* fractional position (−0.5, −0.5) is the top-left corner of the image: x0 = −0.5, y0 = 0.5 *)
   let c = v (-0.665) 0.5 1. in
-  vec_eq ~eps:1e-12 "image corner" (Vec.normalize c) (Render.camera_dir default_cam 10 10 (-0.5) (-0.5));
+  vec_eq ~eps:1e-12 "image corner" (Vec.normalize c) (camera_dir default_cam 10 10 (-0.5) (-0.5));
   (* the result is unit length *)
-  float_eq ~eps:1e-12 "unit" 1. (Vec.length (Render.camera_dir default_cam 7 3 0.3 2.9));
+  float_eq ~eps:1e-12 "unit" 1. (Vec.length (camera_dir default_cam 7 3 0.3 2.9));
   (* +y is up: the top row looks up, the bottom row down *)
-  Alcotest.(check bool) "top row looks up" true ((Render.camera_dir default_cam 3 3 1. 0.).y > 0.);
-  Alcotest.(check bool) "bottom row looks down" true ((Render.camera_dir default_cam 3 3 1. 2.).y < 0.)
+  Alcotest.(check bool) "top row looks up" true ((camera_dir default_cam 3 3 1. 0.).y > 0.);
+  Alcotest.(check bool) "bottom row looks down" true ((camera_dir default_cam 3 3 1. 2.).y < 0.)
 
 let opts = render_opts
 

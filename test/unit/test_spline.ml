@@ -17,7 +17,7 @@ let hit (obj, ctx) o d =
   let d = Vec.normalize d in
   let t = Shape.depth ctx.Context.shapes obj.Compiled.shape o d 0. in
   let p = Vec.madd o t d in
-  (t, (if t < infinity then Shape.normal obj ctx.Context.shapes.part p else Vec.zero), p)
+  (t, (if t < infinity then Shape.normal ctx.Context.shapes obj ctx.Context.shapes.part p else Vec.zero), p)
 
 let depth s o d = let t, _, _ = hit s o d in t
 let inside (obj, _) p = Shape.inside [||] obj.Compiled.shape p

@@ -69,7 +69,7 @@ let hit (obj, ctx) o d =
   if t = infinity then None
   else
     let p = Vec.madd o t d in
-    Some (t, p, Shape.normal obj ctx.Context.shapes.part p)
+    Some (t, p, Shape.normal ctx.Context.shapes obj ctx.Context.shapes.part p)
 
 let test_traced () =
   List.iter

@@ -33,7 +33,7 @@ let tor (obj : Compiled.obj) = match obj.shape with Torus t -> t | _ -> Alcotest
 let hit ?(lo = 0.) (obj, ctx) o d =
   let d = Vec.normalize d in
   let t = Shape.depth ctx.Context.shapes obj.Compiled.shape o d lo in
-  (t, if t < infinity then Shape.normal obj (-1) (Vec.madd o t d) else Vec.zero)
+  (t, if t < infinity then Shape.normal ctx.Context.shapes obj (-1) (Vec.madd o t d) else Vec.zero)
 
 (* every depth, sorted *)
 let all (obj, ctx) o d =

@@ -98,7 +98,7 @@ let test_ellipsoid_hits () =
   (* from inside, the far root *)
   float_eq ~eps:1e-12 "from the centre" 2. (hit c Vec.zero (v 1. 0. 0.));
   (* normal at (√2, √0.5, 0) ∝ (x/4, y) = (√2/4, √0.5): normalised (1, 2)/√5 *)
-  let n = Shape.normal c.objects.(0) (-1) (v (sqrt 2.) (sqrt 0.5) 0.) in
+  let n = Shape.normal (Scratch.create ~robust:false (Stats.create ())) c.objects.(0) (-1) (v (sqrt 2.) (sqrt 0.5) 0.) in
   vec_eq ~eps:1e-12 "normal by the inverse transpose" (v (1. /. sqrt 5.) (2. /. sqrt 5.) 0.) n;
   (* Inside in object space *)
   let inside p = Shape.inside (Array.make 512 0.) c.objects.(0).shape p in
@@ -120,7 +120,7 @@ let test_plane () =
   let c = placed "plane { y, 0 }" [ Place.Transform sh ] in
   (match c.objects.(0).shape with Compiled.Plane_trans _ -> () | _ -> Alcotest.fail "a matrix gives the plane a transform");
   float_eq ~eps:1e-12 "sheared plane" 4. (hit c (v 2. 5. 0.) (v 0. (-1.) 0.));
-  vec_eq ~eps:1e-12 "sheared normal" (Vec.normalize (v (-0.5) 1. 0.)) (Shape.normal c.objects.(0) (-1) (v 2. 1. 0.));
+  vec_eq ~eps:1e-12 "sheared normal" (Vec.normalize (v (-0.5) 1. 0.)) (Shape.normal (Scratch.create ~robust:false (Stats.create ())) c.objects.(0) (-1) (v 2. 1. 0.));
   let inside p = Shape.inside (Array.make 512 0.) c.objects.(0).shape p in
   Alcotest.(check bool) "below the sheared plane is inside" true (inside (v 2. 0.9 0.));
   Alcotest.(check bool) "above is outside" false (inside (v 2. 1.1 0.))
@@ -132,7 +132,7 @@ let test_triangle () =
   float_eq ~eps:1e-12 "hit at x = 0" 5. (hit c (v (-5.) 0.2 0.) (v 1. 0. 0.));
   (* at y = 0.2 the triangle spans z in [−0.8, 0.8] *)
   Alcotest.(check bool) "miss beside it" true (hit c (v (-5.) 0.2 0.9) (v 1. 0. 0.) = infinity);
-  let n = Shape.normal c.objects.(0) (-1) (v 0. 0.2 0.) in
+  let n = Shape.normal (Scratch.create ~robust:false (Stats.create ())) c.objects.(0) (-1) (v 0. 0.2 0.) in
   vec_eq ~eps:1e-12 "normal along x (either sign)" (v 1. 0. 0.) (if n.x < 0. then Vec.neg n else n);
   (* a smooth triangle's normals go by the inverse transpose: scaling x by 2 halves a normal's x *)
   let s =
@@ -152,7 +152,7 @@ let test_mesh () =
   (* the face now lies in x = 3, spans y in [0, 2] *)
   float_eq ~eps:1e-12 "hit the moved face" 8. (hit c (v (-5.) 1.5 0.) (v 1. 0. 0.));
   Alcotest.(check bool) "miss above it" true (hit c (v (-5.) 2.1 0.) (v 1. 0. 0.) = infinity);
-  let n = Shape.normal c.objects.(0) 0 (v 3. 1.5 0.) in
+  let n = Shape.normal (Scratch.create ~robust:false (Stats.create ())) c.objects.(0) 0 (v 3. 1.5 0.) in
   float_eq ~eps:1e-7 "normal along x" 1. (Float.abs n.x)
 
 let tests =
