@@ -175,8 +175,8 @@ let rec walk ctx ~slot (p : Vec.t) (lp : Vec.t) lo first (o : Vec.t) (l : Vec.t)
         let l, remaining = aim lp next in
         walk ctx ~slot p lp lo false next l remaining interiors lc
 
-let feeler_ray ctx ~slot (p : Vec.t) (ng : Vec.t) e (l : Vec.t) dist interiors (lc : Rgb.t) : Rgb.t =
-  let sc = ctx.scene in
+let feeler_ray ctx (h : Hit.t) ~slot (smp : Light.sample) : Rgb.t =
+  let sc = ctx.scene and p = h.point and l = smp.dir and dist = smp.dist and lc = smp.colour in
   ctx.stats.shadow_rays <- ctx.stats.shadow_rays + 1;
   (* a light at an infinite distance (a coordinate beyond the float range) has no direction: a
      filtered walk towards it would never end (a NaN ray from inside a box's slabs meets the box
@@ -192,7 +192,7 @@ let feeler_ray ctx ~slot (p : Vec.t) (ng : Vec.t) e (l : Vec.t) dist interiors (
            margin relative to the segment's length. *)
         let lp = if ctx.robust then Vec.madd p dist l else p in
         let lo = if ctx.robust then 0. else Precision.shadow_tolerance in
-        let o = Robust.origin ctx p ng e l in
+        let o = Hit.origin ctx h l in
         let l, dist = if ctx.robust then aim lp o else (l, dist) in
         (* a shadow test for a camera ray's hit tries the blocker cached for those, or else the
            one cached for the deeper levels (Trace::TracePointLightShadowRay, where the shadow
@@ -210,11 +210,11 @@ let feeler_ray ctx ~slot (p : Vec.t) (ng : Vec.t) e (l : Vec.t) dist interiors (
           (* a cached CSG shadows only if the member hit is opaque *)
           && ((not (Csg.is_csg shape)) || sc.objects.(ctx.shapes.leaf).opaque)
         in
-        if in_cache then Rgb.black else walk ctx ~slot p lp lo true o l dist interiors lc
+        if in_cache then Rgb.black else walk ctx ~slot p lp lo true o l dist h.ray.interiors lc
 
 (* the shapes know the rays they meet here for shadow rays (an isosurface leaves no cache for them) *)
-let feeler ctx ~slot p ng e l dist interiors lc =
+let feeler ctx h ~slot smp =
   ctx.shapes.shadow_test <- true;
-  let c = feeler_ray ctx ~slot p ng e l dist interiors lc in
+  let c = feeler_ray ctx h ~slot smp in
   ctx.shapes.shadow_test <- false;
   c

@@ -14,10 +14,10 @@ let the_light text = match (scene (v37 ^ text)).lights with [ l ] -> l | l -> Al
 let compiled_light text = (compile (v37 ^ text)).lights.(0)
 
 (* The attenuation of [lt] at [p] for a light at its centre (not parallel): the ray towards it. *)
-let at (lt : Compiled.light) (p : Vec.t) =
+let at (lt : Light.t) (p : Vec.t) =
   let dv = Vec.sub (v lt.lx lt.ly lt.lz) p in
   let dist = Vec.length dv in
-  Lighting.attenuation lt p (Vec.scale (1. /. dist) dv) dist
+  Light.attenuation lt p (Vec.scale (1. /. dist) dv) dist
 
 (* A point at distance 2 from the origin, [a] degrees off the +z axis. *)
 let off_axis a = v (2. *. sin (deg a)) 0. (2. *. cos (deg a))
@@ -75,13 +75,13 @@ let test_light_transforms () =
 (* ---- attenuation (§3.4, §18.2) ---- *)
 
 let test_cubic_spline () =
-  float_eq "below lo" 0. (Lighting.cubic_spline 0.2 0.6 0.1);
-  float_eq "at lo" 0. (Lighting.cubic_spline 0.2 0.6 0.2);
-  float_eq "middle" 0.5 (Lighting.cubic_spline 0.2 0.6 0.4);
+  float_eq "below lo" 0. (Light.cubic_spline 0.2 0.6 0.1);
+  float_eq "at lo" 0. (Light.cubic_spline 0.2 0.6 0.2);
+  float_eq "middle" 0.5 (Light.cubic_spline 0.2 0.6 0.4);
   (* s = 0.25: (3 − 0.5)·0.0625 *)
-  float_eq "a quarter" 0.15625 (Lighting.cubic_spline 0.2 0.6 0.3);
-  float_eq "at hi" 1. (Lighting.cubic_spline 0.2 0.6 0.6);
-  float_eq "beyond hi" 1. (Lighting.cubic_spline 0.2 0.6 0.9)
+  float_eq "a quarter" 0.15625 (Light.cubic_spline 0.2 0.6 0.3);
+  float_eq "at hi" 1. (Light.cubic_spline 0.2 0.6 0.6);
+  float_eq "beyond hi" 1. (Light.cubic_spline 0.2 0.6 0.9)
 
 let test_spot_attenuation () =
   let spot = compiled_light "light_source { 0, rgb 1 spotlight point_at z }" in
@@ -124,7 +124,7 @@ let test_parallel_depth () =
   let depth (p : Vec.t) =
     let dv = Vec.sub (v par.lx par.ly par.lz) p in
     let dist = Vec.length dv in
-    Lighting.parallel_depth par (Vec.scale (1. /. dist) dv) dist
+    Light.parallel_depth par (Vec.scale (1. /. dist) dv) dist
   in
   float_eq ~eps:1e-12 "below the light's plane" 5. (depth (v 3. 0. 4.));
   float_eq ~eps:1e-12 "straight below" 2. (depth (v 0. 3. 0.));
@@ -133,8 +133,8 @@ let test_parallel_depth () =
   (* a parallel spotlight's ray is its axis: cosθ = 1 in front, −1 behind *)
   let spot = compiled_light "light_source { <0,5,0>, rgb 1 spotlight radius 5 falloff 8 tightness 5 parallel point_at 0 }" in
   let up = v 0. 1. 0. in
-  float_eq "parallel spotlight in front" 1. (Lighting.attenuation spot (v 3. 0. 4.) up 5.);
-  float_eq "parallel spotlight behind" 0. (Lighting.attenuation spot (v 3. 7. 4.) up (-2.))
+  float_eq "parallel spotlight in front" 1. (Light.attenuation spot (v 3. 0. 4.) up 5.);
+  float_eq "parallel spotlight behind" 0. (Light.attenuation spot (v 3. 7. 4.) up (-2.))
 
 let diffuse_floor = "plane { y, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }\n"
 
