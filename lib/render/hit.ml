@@ -22,7 +22,7 @@ type t = {
 (* no cache: every test sends its feeler (a plain texture tests each light once anyway) *)
 let no_memo = { seen = []; on = false }
 
-let make (ctx : Context.t) (ray : Ray.t) obj part depth ~level =
+let[@inline] make (ctx : Context.t) (ray : Ray.t) obj part depth ~level =
   let o = ray.origin and d = ray.dir in
   (* the hit point P and its normal N, turned toward the ray (§3.1) *)
   let p = if ctx.robust then Shape.refine obj (Vec.madd o depth d) else Shape.hit_point ctx.shapes obj o depth d in

@@ -4,12 +4,12 @@
 
 val local : Context.t -> Hit.t -> Compiled.surface -> Vec.t -> Rgb.t
 (** [local ctx h s n] is the local illumination of the surface [s] at the hit [h] with the layer
-    normal [n] (turned toward the ray): its ambient and emitted colour plus, when [s] is lit,
-    every light's diffuse, phong and specular terms, each light through its shadow feeler, summed
-    in single precision the way POV-Ray sums them: per light first, then into the colour. An
-    object with double_illuminate is lit from behind too (§16.6). With the hit's light colour
-    cache on ({!Hit.memo}), a light's shadow feeler is sent only the first time the light is
-    tested at this hit (the layers and entries of one texture share it). *)
+    normal [n] (turned toward the ray): its ambient and emitted colour plus, when [s] is lit, the
+    diffuse, phong and specular terms of every sample of every light, each sample through its
+    shadow feeler, summed in single precision the way POV-Ray sums them: per light first, then
+    into the colour. An object with double_illuminate is lit from behind too (§16.6). With the
+    hit's light colour cache on ({!Hit.memo}), a light's shadow feeler is sent only the first time
+    the light is tested at this hit (the layers and entries of one texture share it). *)
 
 val iridescence : Compiled.t -> Compiled.surface -> Vec.t -> Vec.t -> Vec.t -> Vec.t -> Rgb.t -> Rgb.t
 (** [iridescence sc s l d n p c] is [c] tinted by the thin film of [s] (POV-Ray's

@@ -1,15 +1,19 @@
-(* The recursive Whitted tracer, with the steps of the lecture it follows (docs/lecture.md): trace a
-   ray (stopped by termination: the trace level or the ray's weight) → nearest hit → local
-   illumination (ambient, diffuse, specular, each light through its shadow feeler) → transmitted
-   ray → reflected ray. The lecture adds k_r·RayTrace(R) before k_t·RayTrace(T); POV-Ray traces the
-   transmitted ray first, and so does this tracer, because the order shows in the shadow cache.
-   docs/povray-rules.md §2–§7. The colour seen along a ray is a function of the compiled scene and
-   the ray; what each step needs lives in a module of its own: Nearest (the nearest hit and
-   POV-Ray's tie rules), Hit (the point, its normal, the rays leaving it), Layer (one layer of a
-   texture: its normal, pigment, reflectivity and local illumination), Lighting and Shadow (local
-   illumination and shadow feelers), Optics (Fresnel, interiors, fade), Textured (patterned
-   textures down to their layers), Sky. A plain texture (one layer) is shaded by [shade] itself,
-   the layers of any other by [lighted], POV-Ray's ComputeLightedTexture (docs/textures.md). *)
+(* The recursive Whitted tracer (docs/lecture.md; docs/povray-rules.md §2–§7). The colour seen
+   along a ray is a function of the compiled scene and the ray, found in the lecture's steps:
+
+     trace_ray    termination (the trace level, the ray's weight), then the nearest hit
+                  (Nearest), or the sky (Sky) when there is none
+     shade        local illumination at the hit (Hit): the layer's normal, pigment and k_r, and
+                  each light sample through its shadow feeler (Layer, Lighting, Light, Shadow)
+     transmitted  the transmitted ray, weighted by k_t; [refract]: Snell's law, or total internal
+                  reflection
+     reflected    the reflected ray R = −E + 2(N·E)N, weighted by k_r (Optics)
+
+   The lecture adds k_r·RayTrace(R) before k_t·RayTrace(T); POV-Ray traces the transmitted ray
+   first, and so does this tracer, because the order shows in the shadow cache. Secondary rays
+   leave the hit through Hit.spawn; what a ray meets on its way to a hit is Segment's. A texture
+   other than one plain layer is walked down to its layers by Textured, and [lighted] shades
+   them (POV-Ray's ComputeLightedTexture, docs/textures.md). *)
 
 open Compiled
 open Context
@@ -29,13 +33,13 @@ let irid_reflected ctx (s : surface) rd d n p (c : result) : result =
   let k = Lighting.iridescence ctx.scene s rd d n p (Rgb.make c.r c.g c.b) in
   { r = k.r; g = k.g; b = k.b; tr = 0. }
 
-(* What the transmitted ray [ct] adds to the colour [local] (§6.3): faded by the interior when the
-   ray met the hit from inside it, filtered by [filter] unless it was totally reflected ([tir]);
-   the colour, the transmittance the antialiasing compares, and [tir]. *)
+(* What the transmitted ray [ct] adds to the colour [local] (§6.3): times the legacy refraction
+   and what met the ray on its way to the hit (its interior's fade, when it travelled inside the
+   object), filtered by [filter] unless it was totally reflected ([tir]); the colour, the
+   transmittance the antialiasing compares, and [tir]. *)
 let add_transmitted (h : Hit.t) (local : Rgb.t) (ct : result) tir (filter : Rgb.t) trans =
   let obj = h.obj in
-  let att = Rgb.grey obj.old_refract in
-  let att = if Optics.fades obj && List.mem obj.iid h.ray.interiors then Optics.fade obj h.depth att else att in
+  let att = Segment.through h.ray.kind obj h.ray.interiors h.depth (Rgb.grey obj.old_refract) in
   if tir then (Rgb.make (f32 (local.r +. f32 (att.r *. ct.r))) (f32 (local.g +. f32 (att.g *. ct.g))) (f32 (local.b +. f32 (att.b *. ct.b))), 0., true)
   else
     ( Rgb.make
@@ -53,8 +57,9 @@ let add_reflection e (refl : Rgb.t) (c : result) (acc : result) =
     { r = f32 (acc.r +. (refl.r *. Float.pow c.r ie)); g = f32 (acc.g +. (refl.g *. Float.pow c.g ie)); b = f32 (acc.b +. (refl.b *. Float.pow c.b ie)); tr = acc.tr }
   else { r = f32 (acc.r +. f32 (refl.r *. c.r)); g = f32 (acc.g +. f32 (refl.g *. c.g)); b = f32 (acc.b +. f32 (refl.b *. c.b)); tr = acc.tr }
 
-(* The mirror direction R = −E + 2(N·E)N of the ray [d] (E = −d) off the layer normal [n], made
-   unit; off a normal bent by a pattern, kept above the shape's own normal [raw] (§5.3). *)
+(* The mirror direction R = −E + 2(N·E)N of the ray [d] (E = −d, the way to the eye) off the layer
+   normal [n], made unit; off a normal bent by a pattern, kept above the shape's own normal [raw]
+   (§5.3). *)
 let mirror (d : Vec.t) (n : Vec.t) ~raw (bump : bump) =
   match bump with Smooth -> Vec.normalize (Vec.madd d (-2. *. Vec.dot d n) n) | Bumpy _ -> Optics.bent_reflection d n raw
 
