@@ -5,7 +5,6 @@
 
 open Compiled
 
-let epsilon = Precision.epsilon
 let f32 = Precision.f32
 
 (* §18.4: the top-level objects, in scene order, whose box an orthographic ray's origin can lie in:
@@ -393,37 +392,7 @@ let scene ?(bounding_threshold = pov_bounding_threshold) (s : Scene.t) : Compile
     else Filtered
   in
   let stack = Array.make 512 0. in
-  let lights =
-    Array.of_list
-      (List.map
-         (fun (l : Scene.light) ->
-           (* §14.8: normalize(point_at − centre), left as it is when shorter than EPSILON *)
-           let dir =
-             let v = Vec.sub l.point_at l.position in
-             let len = Vec.length v in
-             if len > epsilon then Vec.make (v.x /. len) (v.y /. len) (v.z /. len) else v
-           in
-           {
-             lx = l.position.x;
-             ly = l.position.y;
-             lz = l.position.z;
-             lcolour = rgb32 l.colour;
-             shadowless = l.shadowless;
-             fade = l.fade_power > 0. && Float.abs l.fade_distance > epsilon;
-             lfade_distance = l.fade_distance;
-             lfade_power = l.fade_power;
-             spread =
-               (match l.kind with
-               | Point_light -> Everywhere
-               | Spotlight -> Spot { radius_cos = l.radius; falloff_cos = l.falloff; tightness = l.tightness }
-               | Cylinder_light -> Beam { beam_radius = l.radius; beam_falloff = l.falloff; beam_tightness = l.tightness });
-             parallel = l.parallel;
-             dx = dir.x;
-             dy = dir.y;
-             dz = dir.z;
-           })
-         s.lights)
-  in
+  let lights = Array.of_list (List.map Light.compile s.lights) in
   let cam = s.camera.location in
   let bounding = count > 0 && count >= bounding_threshold in
   let finite, infinite = List.partition (fun o -> Array.length o.pbox > 0) tops in

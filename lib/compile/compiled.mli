@@ -177,29 +177,6 @@ and obj = {
   double_illuminate : bool;  (** §16.6: lights behind the surface light it too *)
 }
 
-(** How a light's colour is attenuated by the lit point's place, besides fade (§3.4, §18.2). *)
-type spread =
-  | Everywhere  (** a point or parallel light: no cone, no beam *)
-  | Spot of { radius_cos : float; falloff_cos : float; tightness : float }  (** a spotlight *)
-  | Beam of { beam_radius : float; beam_falloff : float; beam_tightness : float }  (** a cylinder light *)
-
-(** A light with its attenuation settings. *)
-type light = {
-  lx : float;
-  ly : float;
-  lz : float;
-  lcolour : Rgb.t;
-  shadowless : bool;
-  fade : bool;  (** fade_power > 0 and |fade_distance| > EPSILON (§3.4) *)
-  lfade_distance : float;
-  lfade_power : float;
-  spread : spread;
-  parallel : bool;  (** §18.3: light arrives along −dir, up to the plane through the centre *)
-  dx : float;
-  dy : float;
-  dz : float;  (** the unit direction from the centre to point_at (§14.8) *)
-}
-
 (** How a shadow ray is answered, chosen once for the scene (§4). *)
 type shadow_mode =
   | No_occluders  (** nothing casts shadows *)
@@ -251,7 +228,7 @@ type t = {
       (** what reflection rays can hit: the objects without no_reflection ([all] when none has it) *)
   occluders : group;  (** objects without no_shadow *)
   shadow_mode : shadow_mode;
-  lights : light array;
+  lights : Light.t array;
   background : Colour.t;
   sky : Scene.sky option;
   max_trace_level : int;

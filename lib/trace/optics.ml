@@ -46,12 +46,25 @@ let reflectivity sc (s : surface) obj interiors ci : Rgb.t =
       let a = (g -. ci) /. (g +. ci) in
       let b = ((ci *. (g +. ci)) -. 1.) /. ((ci *. (g -. ci)) +. 1.) in
       let f = 0.5 *. a *. a *. (1. +. (b *. b)) in
-      let f = Float.min 1. (Float.max 0. f) in
+      let f = Floats.min 1. (Floats.max 0. f) in
       blend f r.rmax r.rmin
     else r.rmax
 
 let conserved (s : surface) (refl : Rgb.t) =
   if s.conserve && s.reflects then
-    let k x = f32 (Float.min 1. (1. -. x)) in
+    let k x = f32 (Floats.min 1. (1. -. x)) in
     Rgb.make (f32 (s.filcol.r *. k refl.r)) (f32 (s.filcol.g *. k refl.g)) (f32 (s.filcol.b *. k refl.b))
   else s.filcol
+
+(* ComputeReflection's direction off a bent normal [n]: the mirror direction, unless it points
+   below the surface by the raw normal [raw] (the "reflection bugfix" of trace.cpp): then the
+   mirror direction off [raw] when it is below the bent normal's plane too, else the mirror
+   direction reflected again in the raw normal's plane. Normalised last. *)
+let bent_reflection (d : Vec.t) (n : Vec.t) (raw : Vec.t) =
+  let r = Vec.madd d (-2. *. Vec.dot d n) n in
+  let below = Vec.dot r raw in
+  let r =
+    if below < 0. then if Vec.dot r n < 0. then Vec.madd d (-2. *. Vec.dot d raw) raw else Vec.madd r (below *. -2.) raw
+    else r
+  in
+  Vec.normalize r

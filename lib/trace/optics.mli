@@ -20,3 +20,9 @@ val reflectivity : Compiled.t -> Compiled.surface -> Compiled.obj -> int list ->
 val conserved : Compiled.surface -> Rgb.t -> Rgb.t
 (** [conserved s refl] is the surface's transmitted filter colour, reduced by what is reflected
     when it conserves energy (§5.4). *)
+
+val bent_reflection : Vec.t -> Vec.t -> Vec.t -> Vec.t
+(** [bent_reflection d n raw] is the reflected direction of the ray [d] off a normal [n] bent by a
+    normal pattern (§5.3, trace.cpp's ComputeReflection): the mirror direction, unless it points
+    below the surface by the shape's own normal [raw]; then the mirror direction off [raw] when it
+    is below [n]'s plane too, else the mirror direction reflected again in [raw]'s plane; made unit. *)

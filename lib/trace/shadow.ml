@@ -19,18 +19,19 @@ let robust_margin ~shift (p : Vec.t) (lp : Vec.t) remaining = (1e-9 *. remaining
 
 (* ComputeShadowTexture for a texture at the point [q] of a shadow ray's crossing: the product of
    its layers' filter colours (each times the interior's faked caustics, [caustic], when it has
-   them), then the interior's fade over the [t] travelled inside (with [fades]), as an rgb with
-   filter 1; a patterned texture's entries blended in all four channels (ComputeOneTextureColour).
-   [warps]: the patterned textures around, the outermost first, whose spaces bend the normals. *)
-let rec filter obj ~hit ~uv ~caustic ~fades t (tex : texture) (q : Vec.t) warps : filtered =
+   them), then what the shadow ray met along the [t] it travelled inside [interiors] (the
+   interior's fade, Segment.through), as an rgb with filter 1; a patterned texture's entries
+   blended in all four channels (ComputeOneTextureColour). [warps]: the patterned textures
+   around, the outermost first, whose spaces bend the normals. *)
+let rec filter obj ~hit ~uv ~caustic ~interiors t (tex : texture) (q : Vec.t) warps : filtered =
   match tex with
-  | Uv_mapped u -> filter obj ~hit ~uv ~caustic ~fades t u.uinner (uv ()) (warps @ [ u.uwarps ])
+  | Uv_mapped u -> filter obj ~hit ~uv ~caustic ~interiors t u.uinner (uv ()) (warps @ [ u.uwarps ])
   | Cutaway -> { r = 0.; g = 0.; b = 0.; filter = 0. } (* never inside another texture *)
   | Chosen c ->
       let tq = c.cwarp q in
-      filter obj ~hit ~uv ~caustic ~fades t c.textures.(c.choose tq) tq (warps @ [ c.cwarps ])
-  | Plain s -> filter_layers obj ~hit ~caustic ~fades t [| s |] q warps
-  | Layered ls -> filter_layers obj ~hit ~caustic ~fades t ls q warps
+      filter obj ~hit ~uv ~caustic ~interiors t c.textures.(c.choose tq) tq (warps @ [ c.cwarps ])
+  | Plain s -> filter_layers obj ~hit ~caustic ~interiors t [| s |] q warps
+  | Layered ls -> filter_layers obj ~hit ~caustic ~interiors t ls q warps
   | Blended b ->
       let tq = b.warp q in
       let warps = warps @ [ b.nwarps ] in
@@ -38,7 +39,7 @@ let rec filter obj ~hit ~uv ~caustic ~fades t (tex : texture) (q : Vec.t) warps 
         let r = ref 0. and g = ref 0. and bl = ref 0. and fl = ref 0. and total = ref 0. in
         Array.iteri
           (fun i e ->
-            let c = filter obj ~hit ~uv ~caustic ~fades t e tq warps in
+            let c = filter obj ~hit ~uv ~caustic ~interiors t e tq warps in
             let v = b.values.(i) in
             r := f32 (!r +. f32 (c.r *. v));
             g := f32 (!g +. f32 (c.g *. v));
@@ -52,16 +53,16 @@ let rec filter obj ~hit ~uv ~caustic ~fades t (tex : texture) (q : Vec.t) warps 
       else
         let v = b.value Patterns.no_hit tq in
         let prev, cur = Surfaces.around b.values v in
-        let c1 = filter obj ~hit ~uv ~caustic ~fades t b.entries.(cur) tq warps in
+        let c1 = filter obj ~hit ~uv ~caustic ~interiors t b.entries.(cur) tq warps in
         if prev = cur then c1
         else
-          let c2 = filter obj ~hit ~uv ~caustic ~fades t b.entries.(prev) tq warps in
+          let c2 = filter obj ~hit ~uv ~caustic ~interiors t b.entries.(prev) tq warps in
           let v1 = (v -. b.values.(prev)) /. (b.values.(cur) -. b.values.(prev)) in
           let v2 = 1. -. v1 in
           let mix x y = f32 (f32 (v1 *. x) +. f32 (v2 *. y)) in
           { r = mix c1.r c2.r; g = mix c1.g c2.g; b = mix c1.b c2.b; filter = mix c1.filter c2.filter }
 
-and filter_layers obj ~hit ~caustic ~fades t ls q warps =
+and filter_layers obj ~hit ~caustic ~interiors t ls q warps =
   let c =
     Array.fold_left
       (fun (c : Rgb.t) (s : surface) ->
@@ -74,7 +75,7 @@ and filter_layers obj ~hit ~caustic ~fades t ls q warps =
             Rgb.make (f32 (c.r *. k)) (f32 (c.g *. k)) (f32 (c.b *. k)))
       Rgb.white ls
   in
-  let c = if fades then Optics.fade obj t c else c in
+  let c = Segment.through Shadow obj interiors t c in
   { r = c.r; g = c.g; b = c.b; filter = 1. }
 
 (* Faked caustics (ComputeShadowTexture): a layer lets through 1 + |N·L|^caustics times more,
@@ -106,7 +107,6 @@ let inside_hit ctx (obj : obj) part q l =
    colour at the crossing [q], [t] along the shadow ray [l] from its last origin. *)
 let textured ctx (obj : obj) part (q : Vec.t) (l : Vec.t) t interiors (tex : texture) : Rgb.t =
   let sc = ctx.scene in
-  let fades = List.mem obj.iid interiors && obj.interior.fade_power > 0. && Optics.fades obj in
   let hit (s : surface) = if s.needs_uv then { Patterns.no_hit with uv = Shape.uv ctx.shapes obj part q } else Patterns.no_hit in
   let caustic = if obj.interior.caustics = 0. then None else Some (caustic ctx obj part q l) in
   let uv () = Shape.uv ctx.shapes obj part q in
@@ -119,7 +119,7 @@ let textured ctx (obj : obj) part (q : Vec.t) (l : Vec.t) t interiors (tex : tex
           (fun (acc : filtered) (w, tex) ->
             if w < sc.adc_bailout then acc
             else
-              let c = filter obj ~hit ~uv ~caustic ~fades t tex q' [] in
+              let c = filter obj ~hit ~uv ~caustic ~interiors t tex q' [] in
               { r = f32 (acc.r +. f32 (w *. c.r)); g = f32 (acc.g +. f32 (w *. c.g)); b = f32 (acc.b +. f32 (w *. c.b)); filter = f32 (acc.filter +. f32 (w *. c.filter)) })
           { r = 0.; g = 0.; b = 0.; filter = 0. }
           (Surfaces.cutaway ctx.stack sc obj q)
@@ -128,23 +128,26 @@ let textured ctx (obj : obj) part (q : Vec.t) (l : Vec.t) t interiors (tex : tex
   | Plain _ | Layered _ | Blended _ | Uv_mapped _ | Chosen _ ->
       (* the filter colour, weighed in by its filter channel; an object's uv_mapping evaluates its
          textures at the crossing's (u, v, 0) *)
-      let c = filter obj ~hit ~uv ~caustic ~fades t tex q' [] in
+      let c = filter obj ~hit ~uv ~caustic ~interiors t tex q' [] in
       Rgb.make (f32 (c.r *. c.filter)) (f32 (c.g *. c.filter)) (f32 (c.b *. c.filter))
 
-(* The walk of a shadow ray from [o] along [l] towards the light at [lp], [remaining] from it,
-   through non-opaque occluders; [first] on the first segment, whose opaque blocker is cached. *)
-let rec walk ctx ~slot (p : Vec.t) (lp : Vec.t) lo first (o : Vec.t) (l : Vec.t) remaining interiors (lc : Rgb.t) =
+(* The walk of a shadow ray from the hit [h] through non-opaque occluders towards the light: from
+   [o] along [l] inside [interiors], the light [remaining] away (at [light] in the robust mode),
+   [lc] the light's colour left; [cache]: the shadow-cache slot an opaque blocker of the first
+   segment fills, −1 on the others. *)
+let rec walk ctx (h : Hit.t) ~cache ~light (o : Vec.t) (l : Vec.t) interiors remaining (lc : Rgb.t) =
   let sc = ctx.scene in
+  let lo = if ctx.robust then 0. else Precision.shadow_tolerance in
   let i = Nearest.search ctx sc.occluders o l lo remaining in
   let t = ctx.reach.depth in
-  if i < 0 || t >= remaining -. (if ctx.robust then robust_margin ~shift:ctx.scene.shift p lp remaining else Precision.shadow_tolerance) then lc
+  if i < 0 || t >= remaining -. (if ctx.robust then robust_margin ~shift:ctx.scene.shift h.point light remaining else Precision.shadow_tolerance) then lc
   else
     let obj = sc.objects.(i) in
     if obj.opaque then begin
       (* the cache holds POV-Ray's Intersection.Csg (the outermost intersection, merge or
          clipped union around the member), else the primitive, and a CSG only when its own
          texture is opaque: POV-Ray tests the OPAQUE flag of that object *)
-      if first && not sc.objects.(obj.cache).clear then ctx.shadow_cache.(slot) <- obj.cache;
+      if cache >= 0 && not sc.objects.(obj.cache).clear then ctx.shadow_cache.(cache) <- obj.cache;
       Rgb.black
     end
     else
@@ -163,20 +166,20 @@ let rec walk ctx ~slot (p : Vec.t) (lp : Vec.t) lo first (o : Vec.t) (l : Vec.t)
               | Varying at ->
                   (at (if sf.needs_uv then { Patterns.no_hit with uv = Shape.uv ctx.shapes obj part q } else Patterns.no_hit) q).filcol
             in
-            if List.mem obj.iid interiors && obj.interior.fade_power > 0. && Optics.fades obj then Optics.fade obj t f else f
+            Segment.through Shadow obj interiors t f
         | Plain _ | Layered _ | Blended _ | Uv_mapped _ | Chosen _ | Cutaway -> textured ctx obj part q l t interiors tex
       in
       let lc = Rgb.make (f32 (lc.r *. f.r)) (f32 (lc.g *. f.g)) (f32 (lc.b *. f.b)) in
       let interiors = if List.mem obj.iid interiors then Optics.remove obj.iid interiors else obj.iid :: interiors in
-      if not ctx.robust then walk ctx ~slot p lp lo false q l (remaining -. t) interiors lc
+      if not ctx.robust then walk ctx h ~cache:(-1) ~light q l interiors (remaining -. t) lc
       else
         let q = Shape.refine obj q in
         let next = Robust.origin ctx q (Shape.geometric_normal ctx.shapes obj part q) (Robust.error_bound ~shift:ctx.scene.shift o q obj.mag) l in
-        let l, remaining = aim lp next in
-        walk ctx ~slot p lp lo false next l remaining interiors lc
+        let l, remaining = aim light next in
+        walk ctx h ~cache:(-1) ~light next l interiors remaining lc
 
-let feeler_ray ctx ~slot (p : Vec.t) (ng : Vec.t) e (l : Vec.t) dist interiors (lc : Rgb.t) : Rgb.t =
-  let sc = ctx.scene in
+let feeler_ray ctx (h : Hit.t) ~slot (smp : Light.sample) : Rgb.t =
+  let sc = ctx.scene and p = h.point and l = smp.dir and dist = smp.dist and lc = smp.colour in
   ctx.stats.shadow_rays <- ctx.stats.shadow_rays + 1;
   (* a light at an infinite distance (a coordinate beyond the float range) has no direction: a
      filtered walk towards it would never end (a NaN ray from inside a box's slabs meets the box
@@ -192,7 +195,7 @@ let feeler_ray ctx ~slot (p : Vec.t) (ng : Vec.t) e (l : Vec.t) dist interiors (
            margin relative to the segment's length. *)
         let lp = if ctx.robust then Vec.madd p dist l else p in
         let lo = if ctx.robust then 0. else Precision.shadow_tolerance in
-        let o = Robust.origin ctx p ng e l in
+        let o = Hit.origin ctx h l in
         let l, dist = if ctx.robust then aim lp o else (l, dist) in
         (* a shadow test for a camera ray's hit tries the blocker cached for those, or else the
            one cached for the deeper levels (Trace::TracePointLightShadowRay, where the shadow
@@ -210,11 +213,11 @@ let feeler_ray ctx ~slot (p : Vec.t) (ng : Vec.t) e (l : Vec.t) dist interiors (
           (* a cached CSG shadows only if the member hit is opaque *)
           && ((not (Csg.is_csg shape)) || sc.objects.(ctx.shapes.leaf).opaque)
         in
-        if in_cache then Rgb.black else walk ctx ~slot p lp lo true o l dist interiors lc
+        if in_cache then Rgb.black else walk ctx h ~cache:slot ~light:lp o l h.ray.interiors dist lc
 
 (* the shapes know the rays they meet here for shadow rays (an isosurface leaves no cache for them) *)
-let feeler ctx ~slot p ng e l dist interiors lc =
+let feeler ctx h ~slot smp =
   ctx.shapes.shadow_test <- true;
-  let c = feeler_ray ctx ~slot p ng e l dist interiors lc in
+  let c = feeler_ray ctx h ~slot smp in
   ctx.shapes.shadow_test <- false;
   c

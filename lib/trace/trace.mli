@@ -16,8 +16,11 @@ val renew_ctx : ctx -> carry:bool -> Stats.t -> ctx
 val black : result
 (** [black] is what a ray cut off by max_trace_level or adc_bailout returns. *)
 
+val trace_ray : ctx -> Ray.t -> result
+(** [trace_ray ctx ray] is the colour seen along [ray] (§7): black past max_trace_level or below
+    adc_bailout, the sky when nothing is hit, else the shaded surface. *)
+
 val trace : ctx -> level:int -> weight:float -> interiors:int list -> continued:bool -> Vec.t -> Vec.t -> result
-(** [trace ctx ~level ~weight ~interiors ~continued origin dir] is the colour seen from [origin]
-    along the unit direction [dir] (§7): black past max_trace_level or below adc_bailout, the sky
-    when nothing is hit, else the shaded surface. [interiors] are the objects the ray is inside,
-    last entered first; a [continued] ray (ior 1 transmission) does not use up a trace level. *)
+(** [trace ctx ~level ~weight ~interiors ~continued origin dir] is {!trace_ray} of the ray
+    {!Ray.start} makes: from [origin] along the unit direction [dir], inside [interiors] (last
+    entered first); a [continued] ray (ior 1 transmission) does not use up a trace level. *)

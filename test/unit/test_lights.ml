@@ -13,10 +13,10 @@ let the_light text = match (scene (v37 ^ text)).lights with [ l ] -> l | l -> Al
 let compiled_light text = (compile (v37 ^ text)).lights.(0)
 
 (* The attenuation of [lt] at [p] for a light at its centre (not parallel): the ray towards it. *)
-let at (lt : Compiled.light) (p : Vec.t) =
+let at (lt : Light.t) (p : Vec.t) =
   let dv = Vec.sub (v lt.lx lt.ly lt.lz) p in
   let dist = Vec.length dv in
-  Lighting.attenuation lt p (Vec.scale (1. /. dist) dv) dist
+  Light.attenuation lt p (Vec.scale (1. /. dist) dv) dist
 
 (* A point at distance 2 from the origin, [a] degrees off the +z axis. *)
 let off_axis a = v (2. *. sin (deg a)) 0. (2. *. cos (deg a))
@@ -74,13 +74,13 @@ let test_light_transforms () =
 (* ---- attenuation (§3.4, §18.2) ---- *)
 
 let test_cubic_spline () =
-  float_eq "below lo" 0. (Lighting.cubic_spline 0.2 0.6 0.1);
-  float_eq "at lo" 0. (Lighting.cubic_spline 0.2 0.6 0.2);
-  float_eq "middle" 0.5 (Lighting.cubic_spline 0.2 0.6 0.4);
+  float_eq "below lo" 0. (Light.cubic_spline 0.2 0.6 0.1);
+  float_eq "at lo" 0. (Light.cubic_spline 0.2 0.6 0.2);
+  float_eq "middle" 0.5 (Light.cubic_spline 0.2 0.6 0.4);
   (* s = 0.25: (3 − 0.5)·0.0625 *)
-  float_eq "a quarter" 0.15625 (Lighting.cubic_spline 0.2 0.6 0.3);
-  float_eq "at hi" 1. (Lighting.cubic_spline 0.2 0.6 0.6);
-  float_eq "beyond hi" 1. (Lighting.cubic_spline 0.2 0.6 0.9)
+  float_eq "a quarter" 0.15625 (Light.cubic_spline 0.2 0.6 0.3);
+  float_eq "at hi" 1. (Light.cubic_spline 0.2 0.6 0.6);
+  float_eq "beyond hi" 1. (Light.cubic_spline 0.2 0.6 0.9)
 
 let test_spot_attenuation () =
   let spot = compiled_light "light_source { 0, rgb 1 spotlight point_at z }" in
@@ -123,7 +123,7 @@ let test_parallel_depth () =
   let depth (p : Vec.t) =
     let dv = Vec.sub (v par.lx par.ly par.lz) p in
     let dist = Vec.length dv in
-    Lighting.parallel_depth par (Vec.scale (1. /. dist) dv) dist
+    Light.parallel_depth par (Vec.scale (1. /. dist) dv) dist
   in
   float_eq ~eps:1e-12 "below the light's plane" 5. (depth (v 3. 0. 4.));
   float_eq ~eps:1e-12 "straight below" 2. (depth (v 0. 3. 0.));
@@ -132,8 +132,32 @@ let test_parallel_depth () =
   (* a parallel spotlight's ray is its axis: cosθ = 1 in front, −1 behind *)
   let spot = compiled_light "light_source { <0,5,0>, rgb 1 spotlight radius 5 falloff 8 tightness 5 parallel point_at 0 }" in
   let up = v 0. 1. 0. in
-  float_eq "parallel spotlight in front" 1. (Lighting.attenuation spot (v 3. 0. 4.) up 5.);
-  float_eq "parallel spotlight behind" 0. (Lighting.attenuation spot (v 3. 7. 4.) up (-2.))
+  float_eq "parallel spotlight in front" 1. (Light.attenuation spot (v 3. 0. 4.) up 5.);
+  float_eq "parallel spotlight behind" 0. (Light.attenuation spot (v 3. 7. 4.) up (-2.))
+
+(* ---- the samples a light gives a point (Light.sample) ---- *)
+
+let test_samples () =
+  let pt = compiled_light "light_source { <0,3,4>, rgb <1,0.5,0.25> }" in
+  Alcotest.(check int) "a point light gives one sample" 1 (Light.samples pt);
+  let s = Light.sample pt (v 0. 0. 0.) 0 in
+  vec_eq ~eps:1e-15 "towards the light" (v 0. 0.6 0.8) s.dir;
+  float_eq "as far as the light" 5. s.dist;
+  rgb_eq "its colour" (Rgb.make 1. 0.5 0.25) s.colour;
+  (* §18.3: a parallel light's sample runs along −dir, as far as the plane through the centre *)
+  let par = compiled_light "light_source { <0,5,0>, rgb 1 parallel point_at 0 }" in
+  let s = Light.sample par (v 3. 0. 4.) 0 in
+  vec_eq "along −dir" (v 0. 1. 0.) s.dir;
+  float_eq ~eps:1e-12 "as far as the plane" 5. s.dist;
+  (* a spotlight's colour is its colour times the attenuation, in single precision; 15° off the
+     axis lies between the radius (10°) and the falloff (20°) *)
+  let spot = compiled_light "light_source { <0,5,0>, rgb 1 spotlight radius 10 falloff 20 tightness 0 point_at 0 }" in
+  let p = v (5. *. tan (deg 15.)) 0. 0. in
+  let s = Light.sample spot p 0 in
+  let a = Light.attenuation spot p s.dir s.dist in
+  Alcotest.(check bool) "in the soft edge" true (a > 0. && a < 1.);
+  float_eq ~eps:0. "attenuated in single precision" (Precision.f32 a) s.colour.r;
+  rgb_eq "outside the cone: black" Rgb.black (Light.sample spot (v (5. *. tan (deg 30.)) 0. 0.) 0).colour
 
 let diffuse_floor = "plane { y, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }\n"
 
@@ -288,6 +312,7 @@ let tests =
     Alcotest.test_case "spotlight attenuation" `Quick test_spot_attenuation;
     Alcotest.test_case "cylinder attenuation" `Quick test_cylinder_attenuation;
     Alcotest.test_case "parallel depth" `Quick test_parallel_depth;
+    Alcotest.test_case "light samples" `Quick test_samples;
     Alcotest.test_case "parallel light traced" `Quick test_parallel_trace;
     Alcotest.test_case "double_illuminate" `Quick test_double_illuminate;
     Alcotest.test_case "no_image and no_reflection groups" `Quick test_flag_groups;

@@ -408,6 +408,20 @@ let test_interior_fade () =
     (trace_text (glass ~interior:"interior { fade_distance 1 fade_power 2 fade_color rgb <1,0,0> }" "rgbt <1,1,1,1>")
        origin plus_z)
 
+(* Segment.through: what a ray meets on its way to a hit, the interior's fade by the ray's kind *)
+let test_segment () =
+  let glass interior = (compile (v37 ^ "sphere { 0, 1 pigment { rgbt 1 } interior { " ^ interior ^ " } }")).objects.(0) in
+  let o = glass "fade_distance 1" in
+  (* §13.11: fade_power 0 gives (d/fd)^0 = 1, the factor 1/2 for the rays but shadow rays *)
+  rgb_eq ~eps:1e-7 "camera ray inside, fade_power 0" (Rgb.grey 0.5) (Segment.through Ray.Camera o [ o.iid ] 2. Rgb.white);
+  rgb_eq ~eps:1e-7 "transmitted ray inside, fade_power 0" (Rgb.grey 0.5) (Segment.through Ray.Transmitted o [ o.iid ] 2. Rgb.white);
+  rgb_eq "shadow ray inside, fade_power 0: no fade (§4)" Rgb.white (Segment.through Ray.Shadow o [ o.iid ] 2. Rgb.white);
+  rgb_eq "outside the interior: no fade" Rgb.white (Segment.through Ray.Camera o [] 2. Rgb.white);
+  let o = glass "fade_distance 1 fade_power 2" in
+  (* 1/(1 + (2/1)²) *)
+  rgb_eq ~eps:1e-7 "shadow ray inside, fade_power 2" (Rgb.grey 0.2) (Segment.through Ray.Shadow o [ o.iid ] 2. Rgb.white);
+  rgb_eq "no fade_distance: no fade" Rgb.white (Segment.through Ray.Reflected (glass "fade_power 2") [ 0 ] 2. Rgb.white)
+
 let test_camera_inside () =
   (* the camera at the centre of a transmit-1 sphere of radius 1 with fade: start_interiors = [0], so the
      exit at distance 1 fades by 1/(1 + (1/1)²) = 0.5; with interiors [] it would not fade *)
@@ -484,6 +498,7 @@ let tests =
     Alcotest.test_case "transmit and levels" `Quick test_transmit;
     Alcotest.test_case "att" `Quick test_att;
     Alcotest.test_case "interior fade" `Quick test_interior_fade;
+    Alcotest.test_case "what a ray meets on its way (Segment)" `Quick test_segment;
     Alcotest.test_case "camera inside" `Quick test_camera_inside;
     Alcotest.test_case "conserve_energy" `Quick test_conserve_energy;
     Alcotest.test_case "metallic reflection" `Quick test_metallic_reflection;

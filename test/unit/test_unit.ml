@@ -6,6 +6,7 @@ let () =
   Alcotest.run "povml"
     ([
       ("Vec", Test_vec.tests);
+      ("Floats", Test_floats.tests);
       ("Lexer", Test_lexer.tests);
       ("Syntax (POV-Ray 3.7 forms)", Test_syntax.tests);
       ("Interp", Test_interp.tests);
