@@ -5,8 +5,9 @@
     caches, random streams, what it keeps for each isosurface and height field) is its worker's
     ({!Context.t}). The one exception is hidden in closures that come from the scene: a user
     function's call sites keep the frames of the functions they call ([Fn_compile]), and an object
-    pattern's Inside test its traversal room ([Inside_test]); both are scratch, written before
-    they are read, and each worker is a process of its own. *)
+    pattern's Inside test its traversal room ([Inside_test]), both scratch written before they are
+    read; and [f_ridged_mf] keeps the octave weights of its first call ([Fn_noise]). Each worker is
+    a process of its own. *)
 
 (** Everything about a surface that does not depend on the hit point, derived once from a
     plain pigment and its finish (§3.2, §3.5, §5). A pattern pigment's surface holds the finish's
