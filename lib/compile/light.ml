@@ -53,13 +53,15 @@ let compile (l : Scene.light) =
 
 let cubic_spline lo hi p = if p < lo then 0. else if p >= hi then 1. else let s = (p -. lo) /. (hi -. lo) in (3. -. (2. *. s)) *. s *. s
 
-let attenuation (lt : t) (p : Vec.t) (l : Vec.t) dist =
+(* the attenuation of a light ray along (lx, ly, lz), inlined where a sample is written so that
+   its value is not boxed *)
+let[@inline] attenuation_along (lt : t) (p : Vec.t) lx ly lz dist =
   let a =
     match lt.spread with
     | Everywhere -> 1.
     | Spot c ->
         (* the ray's cosine with the spot axis, turned round for a light in front of the point *)
-        let ct = (l.x *. lt.dx) +. (l.y *. lt.dy) +. (l.z *. lt.dz) in
+        let ct = (lx *. lt.dx) +. (ly *. lt.dy) +. (lz *. lt.dz) in
         let ct = if dist > 0. then -.ct else ct in
         if ct > 0. then
           let a = Float.pow ct c.tightness in
@@ -81,24 +83,42 @@ let attenuation (lt : t) (p : Vec.t) (l : Vec.t) dist =
   in
   if a > 0. && lt.fade then a *. (2. /. (1. +. Float.pow (dist /. lt.lfade_distance) lt.lfade_power)) else a
 
+let attenuation lt p (l : Vec.t) dist = attenuation_along lt p l.x l.y l.z dist
+
 (* ComputeOneWhiteLightRay: dist·(−dir·l), the signed distance of the point in front of the plane
    through the centre perpendicular to dir. *)
-let parallel_depth (lt : t) (l : Vec.t) dist = dist *. -.((lt.dx *. l.x) +. (lt.dy *. l.y) +. (lt.dz *. l.z))
+let[@inline] parallel_depth_along (lt : t) lx ly lz dist = dist *. -.((lt.dx *. lx) +. (lt.dy *. ly) +. (lt.dz *. lz))
+let parallel_depth lt (l : Vec.t) dist = parallel_depth_along lt l.x l.y l.z dist
 
-type sample = { dir : Vec.t; dist : float; colour : Rgb.t }
+type sample = { mutable dx : float; mutable dy : float; mutable dz : float; mutable dist : float; mutable atten : float }
 
+let room () = { dx = 0.; dy = 0.; dz = 0.; dist = 0.; atten = 1. }
 let samples (_ : t) = 1
 
-let sample lt (p : Vec.t) (_ : int) =
+let sample lt (p : Vec.t) (_ : int) (s : sample) =
   let lvx = lt.lx -. p.x and lvy = lt.ly -. p.y and lvz = lt.lz -. p.z in
   let dist = sqrt ((lvx *. lvx) +. (lvy *. lvy) +. (lvz *. lvz)) in
   (* ComputeOneWhiteLightRay: VInverseScaleEq, times the reciprocal of the distance; the last bit
      decides knife-edge shadow rays, such as one through faces shared by CSG members *)
   let k = 1. /. dist in
-  let l = Vec.make (lvx *. k) (lvy *. k) (lvz *. k) in
-  (* §18.3: a parallel light's ray runs along −dir, as far as the plane through the centre *)
-  let dist = if lt.parallel then parallel_depth lt l dist else dist in
-  let l = if lt.parallel then Vec.make (-.lt.dx) (-.lt.dy) (-.lt.dz) else l in
-  let a = attenuation lt p l dist in
-  let colour = if a <> 1. then Rgb.make (f32 (lt.lcolour.r *. a)) (f32 (lt.lcolour.g *. a)) (f32 (lt.lcolour.b *. a)) else lt.lcolour in
-  { dir = l; dist; colour }
+  let lx = lvx *. k and ly = lvy *. k and lz = lvz *. k in
+  if lt.parallel then begin
+    (* §18.3: a parallel light's ray runs along −dir, as far as the plane through the centre *)
+    s.dist <- parallel_depth_along lt lx ly lz dist;
+    s.dx <- -.lt.dx;
+    s.dy <- -.lt.dy;
+    s.dz <- -.lt.dz
+  end
+  else begin
+    s.dist <- dist;
+    s.dx <- lx;
+    s.dy <- ly;
+    s.dz <- lz
+  end;
+  s.atten <- attenuation_along lt p s.dx s.dy s.dz s.dist
+
+let[@inline] colour lt (s : sample) =
+  let a = s.atten in
+  if a <> 1. then Rgb.make (f32 (lt.lcolour.r *. a)) (f32 (lt.lcolour.g *. a)) (f32 (lt.lcolour.b *. a)) else lt.lcolour
+
+let[@inline] direction (s : sample) = Vec.make s.dx s.dy s.dz

@@ -31,24 +31,39 @@ val compile : Scene.light -> t
     direction normalize(point_at − centre) (left as it is when shorter than EPSILON, §14.8). *)
 
 type sample = {
-  dir : Vec.t;  (** the unit direction from the lit point towards the light *)
-  dist : float;
-      (** how far the light is along [dir]: what a shadow feeler must cross (infinite for a light at
-          an infinite distance; 0 or less behind a parallel light's plane, where nothing shadows) *)
-  colour : Rgb.t;  (** the light's colour arriving at the point: attenuated by its cone, beam and fade *)
+  mutable dx : float;
+  mutable dy : float;
+  mutable dz : float;  (** the unit direction from the lit point towards the light *)
+  mutable dist : float;
+      (** how far the light is along the direction: what a shadow feeler must cross (infinite for a
+          light at an infinite distance; 0 or less behind a parallel light's plane, where nothing
+          shadows) *)
+  mutable atten : float;  (** the factor of the light's colour at the point: its cone, beam and fade *)
 }
-(** One sample of the light a point receives: where it comes from and how strong it is. *)
+(** One sample of the light a point receives: where it comes from and how strong it is. A render
+    worker owns one and {!sample} writes it (its fields are floats only, so that writing it
+    allocates nothing). *)
+
+val room : unit -> sample
+(** [room ()] is a sample for a worker to be written by {!sample}. *)
 
 val samples : t -> int
 (** [samples light] is how many samples [light] gives a lit point: 1 for every light povml has
     (point, spot, cylinder and parallel lights). *)
 
-val sample : t -> Vec.t -> int -> sample
-(** [sample light p i] is the [i]th sample (from 0 to [samples light − 1]) of the light [p]
-    receives from [light] (POV-Ray's ComputeOneWhiteLightRay and Attenuate_Light): the direction
-    from [p] to the centre, made unit by the reciprocal of the distance (§3.3), or along −dir up
-    to the plane through the centre for a parallel light (§18.3); the colour times
-    {!attenuation}, in single precision. *)
+val sample : t -> Vec.t -> int -> sample -> unit
+(** [sample light p i s] writes into [s] the [i]th sample (from 0 to [samples light − 1]) of the
+    light [p] receives from [light] (POV-Ray's ComputeOneWhiteLightRay and Attenuate_Light): the
+    direction from [p] to the centre, made unit by the reciprocal of the distance (§3.3), or along
+    −dir up to the plane through the centre for a parallel light (§18.3); the {!attenuation} of its
+    colour. *)
+
+val colour : t -> sample -> Rgb.t
+(** [colour light s] is the light's colour the sample [s] brings: [light]'s colour times the
+    sample's attenuation in single precision (the colour itself when the attenuation is 1). *)
+
+val direction : sample -> Vec.t
+(** [direction s] is the sample's direction as a vector. *)
 
 val attenuation : t -> Vec.t -> Vec.t -> float -> float
 (** [attenuation light p l dist] is the factor of [light]'s colour at the point [p] whose light ray

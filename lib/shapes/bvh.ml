@@ -340,7 +340,7 @@ let recip x = if x = 0. then 1e300 else 1. /. x
 (* Visit the primitives whose boxes the ray meets, nearer boxes first: [visit state i] for each,
    which may lower the limit in [lim.(0)] beyond which boxes are skipped. The visitor and its state
    are passed apart, so that a caller whose visitor is a toplevel function allocates nothing. *)
-let walk_with bvh (stack : float array) ox oy oz dx dy dz (lim : float array) visit state =
+let walk_with bvh (stack : float array) ox oy oz dx dy dz (lim : float array) visit a b c e =
   (* the stack holds (node, entry distance) pairs; a node whose box starts beyond the current
      limit when it is popped is skipped *)
   if bvh.nodes > 0 then begin
@@ -357,7 +357,7 @@ let walk_with bvh (stack : float array) ox oy oz dx dy dz (lim : float array) vi
         if axis < 0 then begin
           let first = iget l (3 * k) and cnt = iget l ((3 * k) + 1) in
           for j = first to first + cnt - 1 do
-            visit state (iget bvh.order j)
+            visit a b c e (iget bvh.order j)
           done
         end
         else begin
@@ -385,7 +385,7 @@ let walk_with bvh (stack : float array) ox oy oz dx dy dz (lim : float array) vi
 (* [walk] with the limit in a one-slot array, lowered to what [visit] returns. *)
 let walk bvh stack ox oy oz dx dy dz limit0 visit =
   let lim = [| limit0 |] in
-  walk_with bvh stack ox oy oz dx dy dz lim (fun visit i -> lim.(0) <- fmin lim.(0) (visit i)) visit
+  walk_with bvh stack ox oy oz dx dy dz lim (fun visit () () () i -> lim.(0) <- fmin lim.(0) (visit i)) visit () () ()
 
 let box_min t a = fget t.boxes a
 let box_max t a = fget t.boxes (3 + a)

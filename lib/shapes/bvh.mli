@@ -41,11 +41,26 @@ val walk : t -> float array -> float -> float -> float -> float -> float -> floa
     of the tree (512 is ample). *)
 
 val walk_with :
-  t -> float array -> float -> float -> float -> float -> float -> float -> float array -> ('a -> int -> unit) -> 'a -> unit
-(** [walk_with bvh stack ox oy oz dx dy dz lim visit state] is [walk] with the limit kept in
-    [lim.(0)]: it calls [visit state i] for every primitive [i] in a leaf whose box the ray meets
-    before the current [lim.(0)], nearer boxes first, and [visit] may lower [lim.(0)]. With a
-    toplevel [visit] it allocates nothing. *)
+  t ->
+  float array ->
+  float ->
+  float ->
+  float ->
+  float ->
+  float ->
+  float ->
+  float array ->
+  ('a -> 'b -> 'c -> 'd -> int -> unit) ->
+  'a ->
+  'b ->
+  'c ->
+  'd ->
+  unit
+(** [walk_with bvh stack ox oy oz dx dy dz lim visit a b c d] is [walk] with the limit kept in
+    [lim.(0)]: it calls [visit a b c d i] for every primitive [i] in a leaf whose box the ray meets
+    before the current [lim.(0)], nearer boxes first, and [visit] may lower [lim.(0)]. The four
+    values are passed through to [visit] so that a search needs neither a closure nor a record of
+    them: with a toplevel [visit] a walk allocates nothing. *)
 
 val box_min : t -> int -> float
 (** [box_min bvh a] is the root box's minimum along axis [a] (the tree must not be empty). *)

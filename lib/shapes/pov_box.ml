@@ -16,44 +16,67 @@ let mapped tr b =
   let m = Transform.bounds tr (Array.append lo hi) in
   of_min_max (Array.sub m 0 3) (Array.sub m 3 3)
 
+(* The depth where the ray from [o] along [d] enters the box [b] (POV-Ray's Intersect_BBox), or
+   infinity: the X slab's interval, narrowed by the Y and Z slabs in single precision. Written
+   without closures, options or tuples, so that it allocates nothing. *)
 let entry (b : float array) (o : Vec.t) (d : Vec.t) =
   let bound_huge = 2e10 in
-  let exception Miss in
-  let slab ll len on dn =
-    (* the interval of the slab along the ray, or None for a direction parallel to it *)
-    if dn <> 0. then begin
-      let sd = f32 (1. /. dn) in
-      let near = f32 (f32 (ll -. f32 on) *. sd) in
-      let span = f32 (len *. sd) in
-      Some (if dn > 0. then (near, near +. span) else (near +. span, near))
+  let miss = ref false and dmin = ref (-.bound_huge) and dmax = ref bound_huge in
+  (* the X slab: its interval along the ray, or the whole ray for a direction parallel to it *)
+  let dn = d.x in
+  if dn <> 0. then begin
+    let sd = f32 (1. /. dn) in
+    let near = f32 (f32 (b.(0) -. f32 o.x) *. sd) in
+    let span = f32 (b.(3) *. sd) in
+    let lo = if dn > 0. then near else near +. span and hi = if dn > 0. then near +. span else near in
+    if hi < epsilon || lo > hi then miss := true
+    else begin
+      dmin := lo;
+      dmax := hi
     end
-    else
-      let sn = f32 on in
-      if sn < ll || sn > f32 (len +. ll) then raise Miss else None
-  in
-  try
-    let dmin, dmax =
-      match slab b.(0) b.(3) o.x d.x with
-      | Some (lo, hi) -> if hi < epsilon || lo > hi then raise Miss else (lo, hi)
-      | None -> (-.bound_huge, bound_huge)
-    in
-    let narrow ~last (dmin, dmax) = function
-      | None -> (dmin, dmax)
-      | Some (tmin, tmax) ->
-          if tmax < dmax then begin
-            if tmax < epsilon then raise Miss;
-            let dmin =
-              if tmin > dmin then (if tmin > tmax then raise Miss; tmin) else if dmin > tmax then raise Miss else dmin
-            in
-            (* the Z step does not lower dmax: it is not used afterwards *)
-            (dmin, if last then dmax else tmax)
-          end
-          else if tmin > dmin then (if tmin > dmax then raise Miss; (tmin, dmax))
-          else (dmin, dmax)
-    in
-    let r = narrow ~last:false (dmin, dmax) (slab b.(1) b.(4) o.y d.y) in
-    fst (narrow ~last:true r (slab b.(2) b.(5) o.z d.z))
-  with Miss -> infinity
+  end
+  else begin
+    let sn = f32 o.x in
+    if sn < b.(0) || sn > f32 (b.(3) +. b.(0)) then miss := true
+  end;
+  (* the Y slab narrows the interval *)
+  (if not !miss then
+     let dn = d.y in
+     if dn <> 0. then begin
+       let sd = f32 (1. /. dn) in
+       let near = f32 (f32 (b.(1) -. f32 o.y) *. sd) in
+       let span = f32 (b.(4) *. sd) in
+       let tmin = if dn > 0. then near else near +. span and tmax = if dn > 0. then near +. span else near in
+       if tmax < !dmax then begin
+         if tmax < epsilon then miss := true
+         else if tmin > !dmin then (if tmin > tmax then miss := true else dmin := tmin)
+         else if !dmin > tmax then miss := true;
+         dmax := tmax
+       end
+       else if tmin > !dmin then if tmin > !dmax then miss := true else dmin := tmin
+     end
+     else
+       let sn = f32 o.y in
+       if sn < b.(1) || sn > f32 (b.(4) +. b.(1)) then miss := true);
+  (* the Z slab: only the entry is used afterwards, so dmax is not lowered *)
+  (if not !miss then
+     let dn = d.z in
+     if dn <> 0. then begin
+       let sd = f32 (1. /. dn) in
+       let near = f32 (f32 (b.(2) -. f32 o.z) *. sd) in
+       let span = f32 (b.(5) *. sd) in
+       let tmin = if dn > 0. then near else near +. span and tmax = if dn > 0. then near +. span else near in
+       if tmax < !dmax then begin
+         if tmax < epsilon then miss := true
+         else if tmin > !dmin then if tmin > tmax then miss := true else dmin := tmin
+         else if !dmin > tmax then miss := true
+       end
+       else if tmin > !dmin then if tmin > !dmax then miss := true else dmin := tmin
+     end
+     else
+       let sn = f32 o.z in
+       if sn < b.(2) || sn > f32 (b.(5) +. b.(2)) then miss := true);
+  if !miss then infinity else !dmin
 
 (* The same entry with the ray's Rayinfo computed once: per axis whether the direction is not 0,
    the origin in single precision and the reciprocal direction in single precision. *)

@@ -18,6 +18,7 @@ type t = {
   facets : Normals.facets_cache;
   crand : Pov_rand.t;
   pov_room : Slab_tree.room;
+  sample : Light.sample;
 }
 
 let shadow_cache (scene : Compiled.t) = Array.make (2 * max 1 (Array.length scene.lights)) (-1)
@@ -52,6 +53,7 @@ let make ?(robust = false) (scene : Compiled.t) stats =
     facets = Normals.facets_cache ();
     crand = Pov_rand.create ();
     pov_room = Slab_tree.room ();
+    sample = Light.room ();
   }
 
 let renew ctx ~carry stats =

@@ -38,6 +38,7 @@ type t = {
           order the worker renders them and is never reset; a scene with crand is rendered by one
           worker, so that its order is POV-Ray's one-thread order *)
   pov_room : Slab_tree.room;  (** the room of POV-Ray's bounding-tree search ({!Compiled.order}) *)
+  sample : Light.sample;  (** the light sample local illumination writes and reads ({!Light.sample}) *)
 }
 
 val shadow_cache : Compiled.t -> int array

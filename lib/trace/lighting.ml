@@ -33,12 +33,12 @@ let iridescence (sc : Compiled.t) (s : surface) (l : Vec.t) (d : Vec.t) (n : Vec
 
 (* the light colour cache of ComputeOneDiffuseLight: one feeler per light for every layer and
    entry of the texture shaded at this point (kept out of [local], which is inlined) *)
-let cached_feeler ctx (h : Hit.t) light ~slot (l : Light.sample) =
+let cached_feeler ctx (h : Hit.t) light ~slot (smp : Light.sample) lc =
   let m = h.memo in
   match List.assq_opt light m.seen with
   | Some c -> c
   | None ->
-      let c = Shadow.feeler ctx h ~slot l in
+      let c = Shadow.feeler ctx h ~slot smp lc in
       m.seen <- (light, c) :: m.seen;
       c
 
@@ -52,24 +52,25 @@ let[@inline] local ctx (h : Hit.t) (s : surface) (n : Vec.t) =
   if not s.lit then s.emitted
   else begin
     let p = h.point and d = h.ray.dir in
-    let lights = ctx.Context.scene.lights in
+    let lights = ctx.Context.scene.lights and smp = ctx.Context.sample in
     let r = ref s.emitted.r and g = ref s.emitted.g and b = ref s.emitted.b in
     for k = 0 to Array.length lights - 1 do
       let light = lights.(k) in
       let slot = Context.cache_slot ~level:h.level k in
       let lr = ref 0. and lg = ref 0. and lb = ref 0. in
       for j = 0 to Light.samples light - 1 do
-        let smp = Light.sample light p j in
-        let l = smp.dir and lc = smp.colour in
-        let nl = Vec.dot n l in
+        Light.sample light p j smp;
+        let lx = smp.dx and ly = smp.dy and lz = smp.dz in
+        let lc = Light.colour light smp in
+        let nl = (n.x *. lx) +. (n.y *. ly) +. (n.z *. lz) in
         (* a light too dim to matter; §16.6: double_illuminate skips the test of the side the light
            is on *)
         if (not (Float.abs lc.r < epsilon && Float.abs lc.g < epsilon && Float.abs lc.b < epsilon)) && (h.obj.double_illuminate || not (nl < epsilon)) then begin
           (* the shadow feeler; a point behind a parallel light's plane is never shadowed (§18.3) *)
           let lc =
             if light.shadowless || smp.dist <= 0. then lc
-            else if not h.memo.on then Shadow.feeler ctx h ~slot smp
-            else cached_feeler ctx h k ~slot smp
+            else if not h.memo.on then Shadow.feeler ctx h ~slot smp lc
+            else cached_feeler ctx h k ~slot smp lc
           in
           if not (Float.abs lc.r <= epsilon && Float.abs lc.g <= epsilon && Float.abs lc.b <= epsilon) then begin
             (* diffuse: the colour times (N·L)^brilliance *)
@@ -87,7 +88,7 @@ let[@inline] local ctx (h : Hit.t) (s : surface) (n : Vec.t) =
               (* Phong: the mirror direction R = d − 2(d·N)N's cosine with L, to the phong_size *)
               if s.phong > 0. then begin
                 let m = -2. *. Vec.dot d n in
-                let c = ((d.x +. (m *. n.x)) *. l.x) +. ((d.y +. (m *. n.y)) *. l.y) +. ((d.z +. (m *. n.z)) *. l.z) in
+                let c = ((d.x +. (m *. n.x)) *. lx) +. ((d.y +. (m *. n.y)) *. ly) +. ((d.z +. (m *. n.z)) *. lz) in
                 if c > 0. && (s.phong_size < 60. || c > 0.0008) then begin
                   let i = s.phong *. Float.pow c s.phong_size in
                   lr := f32 (!lr +. f32 (i *. hl.r));
@@ -97,7 +98,7 @@ let[@inline] local ctx (h : Hit.t) (s : surface) (n : Vec.t) =
               end;
               (* specular: the halfway vector H = (L − d)/2's cosine with N, to 1/roughness *)
               if s.specular > 0. then begin
-                let hx = 0.5 *. (l.x -. d.x) and hy = 0.5 *. (l.y -. d.y) and hz = 0.5 *. (l.z -. d.z) in
+                let hx = 0.5 *. (lx -. d.x) and hy = 0.5 *. (ly -. d.y) and hz = 0.5 *. (lz -. d.z) in
                 let hlen = sqrt ((hx *. hx) +. (hy *. hy) +. (hz *. hz)) in
                 if hlen > 0. then begin
                   let c = ((hx *. n.x) +. (hy *. n.y) +. (hz *. n.z)) /. hlen in
@@ -112,7 +113,7 @@ let[@inline] local ctx (h : Hit.t) (s : surface) (n : Vec.t) =
             end;
             (* the film's interference tints what this light gave *)
             if s.irid > 0. then begin
-              let c = iridescence ctx.Context.scene s l d n p (Rgb.make !lr !lg !lb) in
+              let c = iridescence ctx.Context.scene s (Vec.make lx ly lz) d n p (Rgb.make !lr !lg !lb) in
               lr := c.r;
               lg := c.g;
               lb := c.b

@@ -40,10 +40,6 @@ let[@inline] fmin (a : float) b = if a < b then a else b
 let[@inline] fmax (a : float) b = if a > b then a else b
 let[@inline] recip x = if x = 0. then 1e300 else 1. /. x
 
-(* The ray of one search and what it searches, for its visitor (a toplevel function, so that no
-   closure is built per call); immutable, so that building it needs no write barrier. *)
-type ray = { sctx : Context.t; sgroup : group; so : Vec.t; sd : Vec.t }
-
 (* the test of the object [ob], the best so far in [ctx.found] and [ctx.reach] *)
 let try_obj ctx (ob : obj) (o : Vec.t) (d : Vec.t) =
   let f = ctx.found and r = ctx.reach in
@@ -54,9 +50,9 @@ let try_obj ctx (ob : obj) (o : Vec.t) (d : Vec.t) =
     f.part <- ctx.shapes.part
   end
 
-(* the visitor of the bounded object [i] met by the walk *)
-let visit_bounded st i =
-  let ctx = st.sctx and g = st.sgroup and o = st.so and d = st.sd in
+(* the visitor of the bounded object [i] of [g] met by the walk of the ray from [o] along [d] (a
+   toplevel function, its values passed through the walk: a search builds no closure or record) *)
+let visit_bounded ctx (g : group) (o : Vec.t) (d : Vec.t) i =
   let f = ctx.found and r = ctx.reach in
   let sp = g.spheres and bx = g.boxes in
   let r2 = Array.unsafe_get sp ((4 * i) + 3) in
@@ -119,7 +115,7 @@ let bvh_search ctx (g : group) (o : Vec.t) (d : Vec.t) hi =
   r.inv_dz <- recip d.z;
   if g.bvh.nodes > 0 then begin
     ctx.walk_limit.(0) <- hi;
-    Bvh.walk_with g.bvh ctx.stack o.x o.y o.z d.x d.y d.z ctx.walk_limit visit_bounded { sctx = ctx; sgroup = g; so = o; sd = d }
+    Bvh.walk_with g.bvh ctx.stack o.x o.y o.z d.x d.y d.z ctx.walk_limit visit_bounded ctx g o d
   end
 
 let search ctx (g : group) (o : Vec.t) (d : Vec.t) lo hi =

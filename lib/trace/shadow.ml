@@ -178,8 +178,8 @@ let rec walk ctx (h : Hit.t) ~cache ~light (o : Vec.t) (l : Vec.t) interiors rem
         let l, remaining = aim light next in
         walk ctx h ~cache:(-1) ~light next l interiors remaining lc
 
-let feeler_ray ctx (h : Hit.t) ~slot (smp : Light.sample) : Rgb.t =
-  let sc = ctx.scene and p = h.point and l = smp.dir and dist = smp.dist and lc = smp.colour in
+let feeler_ray ctx (h : Hit.t) ~slot (smp : Light.sample) (lc : Rgb.t) : Rgb.t =
+  let sc = ctx.scene and p = h.point and l = Light.direction smp and dist = smp.dist in
   ctx.stats.shadow_rays <- ctx.stats.shadow_rays + 1;
   (* a light at an infinite distance (a coordinate beyond the float range) has no direction: a
      filtered walk towards it would never end (a NaN ray from inside a box's slabs meets the box
@@ -216,8 +216,8 @@ let feeler_ray ctx (h : Hit.t) ~slot (smp : Light.sample) : Rgb.t =
         if in_cache then Rgb.black else walk ctx h ~cache:slot ~light:lp o l h.ray.interiors dist lc
 
 (* the shapes know the rays they meet here for shadow rays (an isosurface leaves no cache for them) *)
-let feeler ctx h ~slot smp =
+let feeler ctx h ~slot smp lc =
   ctx.shapes.shadow_test <- true;
-  let c = feeler_ray ctx h ~slot smp in
+  let c = feeler_ray ctx h ~slot smp lc in
   ctx.shapes.shadow_test <- false;
   c

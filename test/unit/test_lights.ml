@@ -140,24 +140,30 @@ let test_parallel_depth () =
 let test_samples () =
   let pt = compiled_light "light_source { <0,3,4>, rgb <1,0.5,0.25> }" in
   Alcotest.(check int) "a point light gives one sample" 1 (Light.samples pt);
-  let s = Light.sample pt (v 0. 0. 0.) 0 in
-  vec_eq ~eps:1e-15 "towards the light" (v 0. 0.6 0.8) s.dir;
+  let sample light p =
+    let s = Light.room () in
+    Light.sample light p 0 s;
+    s
+  in
+  let s = sample pt (v 0. 0. 0.) in
+  vec_eq ~eps:1e-15 "towards the light" (v 0. 0.6 0.8) (Light.direction s);
   float_eq "as far as the light" 5. s.dist;
-  rgb_eq "its colour" (Rgb.make 1. 0.5 0.25) s.colour;
+  rgb_eq "its colour" (Rgb.make 1. 0.5 0.25) (Light.colour pt s);
   (* §18.3: a parallel light's sample runs along −dir, as far as the plane through the centre *)
   let par = compiled_light "light_source { <0,5,0>, rgb 1 parallel point_at 0 }" in
-  let s = Light.sample par (v 3. 0. 4.) 0 in
-  vec_eq "along −dir" (v 0. 1. 0.) s.dir;
+  let s = sample par (v 3. 0. 4.) in
+  vec_eq "along −dir" (v 0. 1. 0.) (Light.direction s);
   float_eq ~eps:1e-12 "as far as the plane" 5. s.dist;
   (* a spotlight's colour is its colour times the attenuation, in single precision; 15° off the
      axis lies between the radius (10°) and the falloff (20°) *)
   let spot = compiled_light "light_source { <0,5,0>, rgb 1 spotlight radius 10 falloff 20 tightness 0 point_at 0 }" in
   let p = v (5. *. tan (deg 15.)) 0. 0. in
-  let s = Light.sample spot p 0 in
-  let a = Light.attenuation spot p s.dir s.dist in
+  let s = sample spot p in
+  let a = Light.attenuation spot p (Light.direction s) s.dist in
   Alcotest.(check bool) "in the soft edge" true (a > 0. && a < 1.);
-  float_eq ~eps:0. "attenuated in single precision" (Precision.f32 a) s.colour.r;
-  rgb_eq "outside the cone: black" Rgb.black (Light.sample spot (v (5. *. tan (deg 30.)) 0. 0.) 0).colour
+  float_eq ~eps:0. "the sample's attenuation" a s.atten;
+  float_eq ~eps:0. "attenuated in single precision" (Precision.f32 a) (Light.colour spot s).r;
+  rgb_eq "outside the cone: black" Rgb.black (Light.colour spot (sample spot (v (5. *. tan (deg 30.)) 0. 0.)))
 
 let diffuse_floor = "plane { y, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }\n"
 
