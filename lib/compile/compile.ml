@@ -156,8 +156,6 @@ let surface_with ~finished ~legacy ~noise ~ambient_light (t : Scene.layer) =
          pattern lets light through, which the shadow cache asks of a CSG's own texture *)
       { base with paint = Varying at; transparent = not (Pigment.opaque t.pigment) }
 
-let surface = surface_with ~finished
-
 (* An object stops a shadow ray at once when none of its pigments lets light through (§4, §17.8). *)
 let pigment_opaque (p : Scene.pigment) =
   match p with
@@ -224,6 +222,9 @@ let blended ~noise (tpat : Scene.patterned) values entries : blended =
     nwarps = warps;
   }
 
+(* a member's geometry is its object's: the same shape and box *)
+let member (ob : obj) : member = { id = ob.id; inverted = ob.inverted; shape = ob.shape; pbox = ob.pbox; mag = ob.mag }
+
 (* POV-Ray's Bounding_Threshold when no ini file sets it (scene.cpp) *)
 let pov_bounding_threshold = 1
 
@@ -287,6 +288,8 @@ let scene ?(bounding_threshold = pov_bounding_threshold) (s : Scene.t) : Compile
       | Csg { kind = Bounded | Boxed; members = m :: _ } -> union_core m.mobj
       | _ -> false
     in
+    (* a CSG is opaque when every member is *)
+    let members_opaque = ref true in
     let shape =
       match o.shape with
       | Csg { kind; members; box } ->
@@ -306,7 +309,8 @@ let scene ?(bounding_threshold = pov_bounding_threshold) (s : Scene.t) : Compile
               members
             |> List.filter_map Fun.id
           in
-          let members = Array.of_list members in
+          members_opaque := List.for_all (fun (m : obj) -> m.opaque) members;
+          let members = Array.of_list (List.map member members) in
           (* the box its history gave it, else one made from its members *)
           let cbox = match box with Some b -> b | None -> Shape.pov_box (Csg { kind; members; cbox = [||] }) in
           Some (Csg { kind; members; cbox })
@@ -331,7 +335,7 @@ let scene ?(bounding_threshold = pov_bounding_threshold) (s : Scene.t) : Compile
         let face_texs = Array.map texture_of face_textures in
         let opaque =
           match shape with
-          | Csg { members; _ } -> Array.for_all (fun m -> m.opaque) members
+          | Csg _ -> !members_opaque
           | _ ->
               (* §17.8: opaque only if no colour the pigments can give is transparent *)
               texture_opaque o.texture

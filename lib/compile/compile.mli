@@ -11,9 +11,6 @@ val scene : ?bounding_threshold:int -> Scene.t -> Compiled.t
     {!pov_bounding_threshold}) objects and light sources together; [max_int] never uses it
     (Bounding=off). *)
 
-
-val surface : legacy:bool -> noise:int -> ambient_light:Rgb.t -> Scene.layer -> Compiled.surface
-(** [surface ~legacy ~noise ~ambient_light l] is the compiled surface of the layer [l]: its finish
-    in single precision, its colour-dependent fields folded for a plain colour, or computed at each
-    point for a pattern ([noise]: the scene's noise generator); [legacy] selects the formula of
-    scenes before version 3.70. *)
+val member : Compiled.obj -> Compiled.member
+(** [member ob] is the geometry of the object [ob] as a CSG holds its member: its id, inversion,
+    shape, POV-Ray box and magnitude, the values [ob] holds (not copies). *)

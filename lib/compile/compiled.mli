@@ -126,8 +126,21 @@ type shape =
 (** A CSG's members and how their hits are kept (§16.2, §16.3). *)
 and csg = {
   kind : Scene.csg_kind;
-  members : obj array;
+  members : member array;  (** in the order written (§16.2) *)
   cbox : float array;  (** POV-Ray's box of the CSG, as [obj.pbox]; the ray is tested against it first *)
+}
+
+(** A CSG member's geometry: what the CSG's search, Inside test and boxes read of it. Its
+    appearance is the object [t.objects.(id)]'s, whose values these are (the same shape and box,
+    not copies); the tracer shades a member hit through that object. *)
+and member = {
+  id : int;
+      (** the member's object in [t.objects]: a hit on a primitive member is reported with it
+          (its leaf id) *)
+  inverted : bool;  (** its Inside is negated (§16.3), as [obj.inverted] *)
+  shape : shape;
+  pbox : float array;  (** POV-Ray's box of the member, as [obj.pbox]: bounding objects are tested against it *)
+  mag : float;  (** as [obj.mag]: a CSG's magnitude is its largest member's *)
 }
 
 (** An object's interior as the tracer uses it (POV-Ray's Interior), its values in single
@@ -140,8 +153,9 @@ and interior = {
   caustics : float;  (** the faked caustics (0: none), as stored *)
 }
 
-(** An object ready to trace: a top-level object, or a member of a CSG. *)
-and obj = {
+(** An object ready to trace: a top-level object, or a member of a CSG (whose geometry its
+    CSG holds again as a {!member}). *)
+type obj = {
   id : int;  (** its index in [t.objects]: top-level objects and their members in scene order *)
   iid : int;
       (** the identity of its interior in interior lists: its own id, or for a CSG member that

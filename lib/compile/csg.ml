@@ -7,7 +7,7 @@ let is_csg = function Csg _ -> true | _ -> false
 
 (* Keeps the hits [start, e) of member [skip] whose point is Inside ([want]) or outside every other
    member, in place; [reverse]d when they come off a local stack. Returns the new end. *)
-let keep_hits ~inside (w : Scratch.t) (members : obj array) ~skip ~want ~reverse start e =
+let keep_hits ~inside (w : Scratch.t) (members : member array) ~skip ~want ~reverse start e =
   let width = Scratch.hit_width in
   let nm = Array.length members in
   let k = ref start in
@@ -42,7 +42,7 @@ let keep_hits ~inside (w : Scratch.t) (members : obj array) ~skip ~want ~reverse
 (* Ray_In_Bound: the ray meets the object only if it meets every bounding object (members 1 …)
    at a depth of at least MIN_ISECT_DEPTH, their boxes tested first as Find_Intersection does, or
    starts inside it. The bounding objects' hits are pushed above [n] and dropped. *)
-let in_bound ~all_hits ~inside (w : Scratch.t) (members : obj array) o d n =
+let in_bound ~all_hits ~inside (w : Scratch.t) (members : member array) o d n =
   let stats = w.stats and nm = Array.length members in
   let rec from k =
     k >= nm
@@ -170,12 +170,12 @@ let bounded_box (c : csg) =
    inverted members and height fields left out, the quadrics taken last *)
 let intersection_bounds ~member_box c =
   let overlap a b = Array.init 6 (fun i -> if i < 3 then Float.max a.(i) b.(i) else Float.min a.(i) b.(i)) in
-  let is_quadric m = match m.shape with Quadric _ -> true | _ -> false in
+  let is_quadric (m : member) = match m.shape with Quadric _ -> true | _ -> false in
   (* CSG::Compute_BBox leaves an intersection's height fields out too *)
-  let is_hfield m = match (c.kind, m.shape) with Intersection, Height_field _ -> true | _ -> false in
+  let is_hfield (m : member) = match (c.kind, m.shape) with Intersection, Height_field _ -> true | _ -> false in
   let b =
     Array.fold_left
-      (fun acc m ->
+      (fun acc (m : member) ->
         match (m.inverted || is_quadric m || is_hfield m, acc, member_box m) with
         | false, None, Some b -> Some b
         | false, Some a, Some b -> Some (overlap a b)
@@ -186,7 +186,7 @@ let intersection_bounds ~member_box c =
      (Quadric::Compute_BBox with that box as its clip); clipped_by does the same *)
   let b =
     Array.fold_left
-      (fun acc m ->
+      (fun acc (m : member) ->
         match (m.inverted, m.shape) with
         | false, Quadric q -> (
             let lo, hi = match acc with Some a -> (Array.sub a 0 3, Array.sub a 3 3) | None -> (Array.make 3 (-2e10), Array.make 3 2e10) in
@@ -211,14 +211,14 @@ let bounds ~bounds c =
       else Some [| b.(0); b.(1); b.(2); Precision.f32 (b.(0) +. b.(3)); Precision.f32 (b.(1) +. b.(4)); Precision.f32 (b.(2) +. b.(5)) |]
   | (Union | Merge), None ->
       Array.fold_left
-        (fun acc m ->
+        (fun acc (m : member) ->
           match (acc, bounds m.shape) with
           | Some a, Some b -> Some (Array.init 6 (fun i -> if i < 3 then Float.min a.(i) b.(i) else Float.max a.(i) b.(i)))
           | None, _ | _, None -> None)
         (Some [| infinity; infinity; infinity; neg_infinity; neg_infinity; neg_infinity |])
         c.members
       |> Option.map (fun b -> if b.(0) > b.(3) then [| 0.; 0.; 0.; 0.; 0.; 0. |] else b)
-  | (Intersection | Clipped), None -> intersection_bounds ~member_box:(fun m -> bounds m.shape) c
+  | (Intersection | Clipped), None -> intersection_bounds ~member_box:(fun (m : member) -> bounds m.shape) c
 
 let union_box boxes =
   (* the members' single-precision boxes, their upper corners added in double precision; a box
@@ -245,11 +245,11 @@ let pov_box ~pov_box c =
       let b = bounded_box c in
       if b == huge_box then [||] else b
   | (Union | Merge), None when Array.length c.cbox > 0 -> c.cbox
-  | (Union | Merge), None -> union_box (Array.to_list (Array.map (fun m -> m.pbox) c.members))
+  | (Union | Merge), None -> union_box (Array.to_list (Array.map (fun (m : member) -> m.pbox) c.members))
   | (Intersection | Clipped), None -> (
       (* the members' POV-Ray boxes, as POV-Ray keeps them (not the tighter ones povml's own
          hierarchy uses) *)
-      let member_box m =
+      let member_box (m : member) =
         let b = m.pbox in
         if Array.length b = 0 then None else Some [| b.(0); b.(1); b.(2); b.(0) +. b.(3); b.(1) +. b.(4); b.(2) +. b.(5) |]
       in
@@ -257,7 +257,7 @@ let pov_box ~pov_box c =
       | None -> [||]
       | Some b -> Pov_box.of_min_max (Array.sub b 0 3) (Array.sub b 3 3))
 
-let magnitude c = Array.fold_left (fun m o -> Float.max m o.mag) 0. c.members
+let magnitude c = Array.fold_left (fun m (o : member) -> Float.max m o.mag) 0. c.members
 
 let stats_rows (s : Stats.t) =
   [

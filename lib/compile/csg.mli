@@ -7,8 +7,8 @@ val is_csg : Compiled.shape -> bool
 (** [is_csg s] is true for a CSG, false for a primitive. *)
 
 val hits :
-  all_hits:(Scratch.t -> Compiled.obj -> Vec.t -> Vec.t -> float -> int -> int) ->
-  inside:(float array -> Compiled.obj -> Vec.t -> bool) ->
+  all_hits:(Scratch.t -> Compiled.member -> Vec.t -> Vec.t -> float -> int -> int) ->
+  inside:(float array -> Compiled.member -> Vec.t -> bool) ->
   Scratch.t -> Compiled.csg -> Vec.t -> Vec.t -> float -> int -> int
 (** [hits ~all_hits ~inside w c o d lo n] appends to [w.hits], after its first [n], every hit at
     least [lo] that the CSG keeps (§16.2), in the order POV-Ray pushes them, and is the new count:
@@ -22,8 +22,8 @@ val hits :
     (Ray_In_Bound); none otherwise. [all_hits] lists a member's hits, [inside] is a member's Inside test. *)
 
 val depth :
-  all_hits:(Scratch.t -> Compiled.obj -> Vec.t -> Vec.t -> float -> int -> int) ->
-  inside:(float array -> Compiled.obj -> Vec.t -> bool) ->
+  all_hits:(Scratch.t -> Compiled.member -> Vec.t -> Vec.t -> float -> int -> int) ->
+  inside:(float array -> Compiled.member -> Vec.t -> bool) ->
   Scratch.t -> Compiled.csg -> Vec.t -> Vec.t -> float -> float
 (** [depth ~all_hits ~inside w c o d lo] is the nearest kept hit, or infinity: the hits are popped
     from the stack, last pushed first, and the first of the smallest depth wins; the member hit is
@@ -32,12 +32,12 @@ val depth :
     the CSG. The robust mode decides by the geometry alone. *)
 
 val depth_unboxed :
-  all_hits:(Scratch.t -> Compiled.obj -> Vec.t -> Vec.t -> float -> int -> int) ->
-  inside:(float array -> Compiled.obj -> Vec.t -> bool) ->
+  all_hits:(Scratch.t -> Compiled.member -> Vec.t -> Vec.t -> float -> int -> int) ->
+  inside:(float array -> Compiled.member -> Vec.t -> bool) ->
   Scratch.t -> Compiled.csg -> Vec.t -> Vec.t -> float -> float
 (** [depth_unboxed] is [depth] without the test of the CSG's own box. *)
 
-val inside : inside:(float array -> Compiled.obj -> Vec.t -> bool) -> float array -> Compiled.csg -> Vec.t -> bool
+val inside : inside:(float array -> Compiled.member -> Vec.t -> bool) -> float array -> Compiled.csg -> Vec.t -> bool
 (** [inside ~inside stack c p] is §16.3: inside any member (union, merge), or inside every member
     (intersection; a clipped object's Inside asks its clip objects too); a bounded object's is
     its own. *)
@@ -52,7 +52,7 @@ val bounds : bounds:(Compiled.shape -> float array option) -> Compiled.csg -> fl
     the other members. A bounded object's box is the overlap of its bounding objects' boxes
     when that is the smaller, by POV-Ray's single-precision volumes (Parse_Object_Mods). *)
 
-val lone_inverted : Compiled.csg -> Compiled.obj option
+val lone_inverted : Compiled.csg -> Compiled.member option
 (** [lone_inverted c] is the member of an intersection that holds one inverted primitive alone (an
     inverted primitive written by itself), whose own box POV-Ray keeps. *)
 

@@ -1,43 +1,19 @@
-(* An object's Inside test for an object pattern: the object compiled as Compile compiles a scene
-   object, keeping only what the Inside tests read (shapes, CSG kinds, inversion); surfaces,
-   interiors and ids are never read by [Shape.inside] and get neutral values. *)
+(* An object's Inside test for an object pattern: the object's geometry compiled as Compile
+   compiles a scene object's, keeping only what the Inside tests read (shapes, CSG kinds,
+   inversion); it has no surface, interior or place among a scene's objects. *)
 
 open Compiled
-
-(* what the Inside tests never read, in the fields a compiled object must have: the default
-   texture's surface *)
-let no_surface = Compile.surface ~legacy:false ~noise:2 ~ambient_light:Rgb.black Defaults.layer
-
-let clear_interior : Compiled.interior = { ior = 1.; fade_distance = 0.; fade_power = 0.; fade_colour = Rgb.black; caustics = 0. }
-
-let member ~inverted shape =
-  {
-    id = 0;
-    iid = 0;
-    top = 0;
-    cache = 0;
-    inverted;
-    shape;
-    tex = Plain no_surface;
-    inner_tex = None;
-    face_texs = [||];
-    clear = false;
-    uv_mapped = false;
-    difference = false;
-    interior = clear_interior;
-    old_refract = 1.;
-    opaque = true;
-    mag = 0.;
-    pbox = [||];
-    double_illuminate = false;
-  }
 
 (* the compiled shape of [s], its members compiled the same way (Compile.scene's [build]) *)
 let rec shape (s : Scene.shape) : Compiled.shape option =
   match s with
   | Csg { kind; members } ->
       let members =
-        List.filter_map (fun (m : Scene.member) -> Option.map (member ~inverted:m.inverted) (shape m.mobj.shape)) members
+        List.filter_map
+          (fun (m : Scene.member) ->
+            (* an Inside test reads a member's shape and inversion only: no id, box or magnitude *)
+            Option.map (fun sh -> { id = 0; inverted = m.inverted; shape = sh; pbox = [||]; mag = 0. }) (shape m.mobj.shape))
+          members
       in
       Some (Csg { kind; members = Array.of_list members; cbox = [||] })
   | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Polygon _ | Quadric _ | Poly _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Glyph _ | Blob _ | Height_field _ | Prism _ | Lathe _ | Sor _ | Julia _ | Isosurface _ | Parametric _ | Bicubic _ ->

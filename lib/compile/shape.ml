@@ -79,9 +79,9 @@ let rec depth w shape o d lo =
   | Bicubic b -> Bezier.depth w b o d lo
   | Poly p -> Poly.depth w p o d lo
 
-and all_hits w ob o d lo n =
-  let id = ob.id in
-  match ob.shape with
+and all_hits w (m : member) o d lo n =
+  let id = m.id in
+  match m.shape with
   | Csg c -> Csg.hits ~all_hits ~inside:inside_member w c o d lo n
   | Sphere s | Sphere_placed { ps = s; _ } -> Sphere.hits w s id o d lo n
   | Ellipsoid e -> Sphere.ellipsoid_hits w e id o d lo n
@@ -141,7 +141,7 @@ and inside stack shape p =
   | Bicubic _ | Parametric _ -> false (* Parametric::Inside is always false *)
   | Poly pl -> Poly.inside pl p
 
-and inside_member stack (m : obj) p =
+and inside_member stack (m : member) p =
   match m.shape with
   | Csg _ ->
       (* an inverted CSG was morphed: its own Inside already holds the inversion (§16.3) *)

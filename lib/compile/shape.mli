@@ -16,10 +16,11 @@ val depth : Scratch.t -> Compiled.shape -> Vec.t -> Vec.t -> float -> float
     part hit (mesh face, box side, cylinder part, letter part) is left in [w.part], the member hit
     by a CSG in [w.leaf]. *)
 
-val all_hits : Scratch.t -> Compiled.obj -> Vec.t -> Vec.t -> float -> int -> int
-(** [all_hits w ob o d lo n] appends to [w.hits], after its first [n], every crossing at depth ≥
-    [lo] of the primitive or CSG [ob] that POV-Ray's All_Intersections keeps (§16.2), in the order
-    it pushes them; it is the new count. *)
+val all_hits : Scratch.t -> Compiled.member -> Vec.t -> Vec.t -> float -> int -> int
+(** [all_hits w m o d lo n] appends to [w.hits], after its first [n], every crossing at depth ≥
+    [lo] of the primitive or CSG [m] (a member's geometry, or an object's as {!Compile.member}
+    gives it) that POV-Ray's All_Intersections keeps (§16.2), in the order it pushes them; it is
+    the new count. *)
 
 val hit_object : Scratch.t -> Compiled.obj -> int
 (** [hit_object w ob] is the id of the object a [depth] test of [ob] found: [ob] itself, or for a
@@ -60,7 +61,7 @@ val inside : float array -> Compiled.shape -> Vec.t -> bool
 (** [inside stack shape p] is POV-Ray's Inside test of [shape] (§2.2, §2.3, §2.6, §15.1–§15.5,
     §15.9, §16.3); [stack] is traversal room for meshes (512 floats). *)
 
-val inside_member : float array -> Compiled.obj -> Vec.t -> bool
+val inside_member : float array -> Compiled.member -> Vec.t -> bool
 (** [inside_member stack m p] is the Inside test of the CSG member [m]: a primitive's negated when
     it is inverted; an inverted (morphed) CSG's and an inverted quadric's (its coefficients negated)
     as they are (§16.3). *)

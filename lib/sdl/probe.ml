@@ -67,7 +67,7 @@ let trace st (o : V.obj) (origin : Vec.t) (dir : Vec.t) =
   let boxed = Array.length ob.pbox > 0 && not (Shape.box_test_free ob.shape) in
   if boxed && Pov_box.entry ob.pbox origin d = infinity then None
   else begin
-    let n = Shape.all_hits w ob origin d Precision.min_isect_depth 0 in
+    let n = Shape.all_hits w (Compile.member ob) origin d Precision.min_isect_depth 0 in
     let h = w.hits.room and width = Scratch.hit_width in
     let best = ref (-1) in
     for j = n - 1 downto 0 do

@@ -20,10 +20,12 @@ let around (values : float array) v =
 (* CSG::Determine_Textures: the textures of the members of [c] that [p] lies in, in member order,
    each CSG member's own found the same way; those found at one level weighed equally (a
    difference: its first member's alone) *)
-let rec around_point stack (c : Compiled.obj) (p : Vec.t) : (float * Compiled.texture) list =
-  let own (m : Compiled.obj) =
+let rec around_point stack (sc : Compiled.t) (c : Compiled.obj) (p : Vec.t) : (float * Compiled.texture) list =
+  (* a member's texture is its object's *)
+  let own (m : Compiled.member) =
+    let m = sc.objects.(m.id) in
     match m.shape with
-    | Csg _ -> around_point stack m p
+    | Csg _ -> around_point stack sc m p
     | _ -> ( match m.tex with Cutaway -> [] | t -> [ (1., t) ])
   in
   match c.shape with
@@ -41,4 +43,4 @@ let cutaway stack (sc : Compiled.t) (obj : Compiled.obj) p =
       (* Blob::Determine_Textures: the components' own textures, the blob's (last) for the others *)
       let own = Array.length obj.face_texs - 1 in
       List.map (fun (w, t) -> (w, obj.face_texs.(if t < 0 then own else t))) (Blob.weights b p)
-  | _ -> around_point stack sc.objects.(obj.top) p
+  | _ -> around_point stack sc sc.objects.(obj.top) p

@@ -144,7 +144,7 @@ let setup text =
 
 (* The hits of object [i] along the ray: (depth, sub, leaf id) each. *)
 let hits ?(i = 0) ?(lo = 1e-4) (c, ctx) o d =
-  let n = Shape.all_hits ctx.Context.shapes c.Compiled.objects.(i) o (Vec.normalize d) lo 0 in
+  let n = Shape.all_hits ctx.Context.shapes (Compile.member c.Compiled.objects.(i)) o (Vec.normalize d) lo 0 in
   List.init n (fun j ->
       let h = ctx.Context.shapes.hits.room and b = j * Scratch.hit_width in
       (h.(b), int_of_float h.(b + 1), int_of_float h.(b + 2)))
