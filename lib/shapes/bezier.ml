@@ -352,4 +352,6 @@ let pov_box b =
   let lo, hi = min_max b in
   Pov_box.of_min_max lo hi
 
+let traits = { Traits.default with name = "bicubic_patch"; inverse_flag = false; patch = true }
+
 let stats_rows (s : Stats.t) = [ { Stats.name = "Bicubic Patch"; tests = s.bicubic_tests; hits = s.bicubic_hits } ]

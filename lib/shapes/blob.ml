@@ -336,6 +336,8 @@ let weights c p =
 let bounds c = c.exact
 let pov_box c = c.cbox
 
+let traits = { Traits.default with name = "blob"; sturm = Sturm_float }
+
 let stats_rows (s : Stats.t) =
   [
     { Stats.name = "Blob"; tests = s.blob_tests; hits = s.blob_hits };

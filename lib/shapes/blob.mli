@@ -133,6 +133,9 @@ val bounds : compiled -> float array
 val pov_box : compiled -> float array
 (** [pov_box c] is POV-Ray's box of the blob. *)
 
+val traits : Traits.t
+(** [traits] is its kind's traits: [sturm] takes an optional float. *)
+
 val stats_rows : Stats.t -> Stats.row list
 (** [stats_rows s] is the "Blob", "Blob Component" and "Blob Bound" rows, as POV-Ray names them. *)
 

@@ -134,6 +134,9 @@ let moved_bounds { bx = b; btr } = Transform.bounds btr [| b.x0; b.y0; b.z0; b.x
 let pov_box b = Pov_box.of_min_max [| b.x0; b.y0; b.z0 |] [| b.x1; b.y1; b.z1 |]
 let moved_pov_box { bx; btr } = Pov_box.mapped btr (pov_box bx)
 
+let traits = { Traits.default with name = "box"; costly = false; box_test_free = true }
+let moved_traits = { traits with costly = true }
+
 let stats_rows (s : Stats.t) =
   [ { Stats.name = "Box"; tests = s.box_tests; hits = s.box_hits } ]
 

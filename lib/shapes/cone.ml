@@ -129,5 +129,7 @@ let pov_box c =
   let f32 = Precision.f32 in
   Pov_box.mapped c.ctr [| f32 (-1.); f32 (-1.); f32 c.dist; f32 2.; f32 2.; f32 (1. -. c.dist) |]
 
+let traits = { Traits.default with name = "cone" }
+
 let stats_rows (s : Stats.t) =
   [ { Stats.name = "Cone/Cylinder"; tests = s.cone_tests; hits = s.cone_hits } ]

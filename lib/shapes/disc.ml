@@ -57,5 +57,7 @@ let pov_box dc =
   let f32 = Precision.f32 and r = sqrt dc.or2 in
   Pov_box.mapped dc.dtr [| f32 (-.r); f32 (-.r); f32 (-.small_tolerance); f32 (2. *. r); f32 (2. *. r); f32 (2. *. small_tolerance) |]
 
+let traits = { Traits.default with name = "disc" }
+
 let stats_rows (s : Stats.t) =
   [ { Stats.name = "Disc"; tests = s.disc_tests; hits = s.disc_hits } ]

@@ -38,5 +38,8 @@ val bounds : t -> float array
 val pov_box : t -> float array
 (** [pov_box dc] is Disc::Compute_BBox: Make_BBox(−r, −r, −1e-3, 2r, 2r, 2e-3) through the transform. *)
 
+val traits : Traits.t
+(** [traits] is its kind's traits: [Traits.default]. *)
+
 val stats_rows : Stats.t -> Stats.row list
 (** [stats_rows s] is the statistics rows of discs, as POV-Ray names them. *)

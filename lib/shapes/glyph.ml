@@ -270,5 +270,7 @@ let hits (w : Scratch.t) g id o d lo n =
 let bounds g = Transform.bounds g.tr (box g)
 let pov_box g = let b = box g in Pov_box.mapped g.tr (Pov_box.of_min_max (Array.sub b 0 3) (Array.sub b 3 3))
 
+let traits = { Traits.default with name = "glyph" }
+
 let stats_rows (s : Stats.t) =
   [ { Stats.name = "True Type Font"; tests = s.ttf_tests; hits = s.ttf_hits } ]

@@ -569,6 +569,8 @@ let pov_box t =
   Pov_box.mapped t.tr (Pov_box.of_min_max (Array.sub b 0 3) (Array.sub b 3 3))
 
 (* POV-Ray 3.7's build counts the walk's stages too (HFIELD_EXTRA_STATS) *)
+let traits = { Traits.default with name = "height_field" }
+
 let stats_rows (s : Stats.t) =
   [
     { Stats.name = "Height Field"; tests = s.hfield_tests; hits = s.hfield_hits };

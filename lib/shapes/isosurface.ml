@@ -448,6 +448,8 @@ let warning s (stats : Stats.t) =
              (f eval_max) (f (sum /. cnt)) (f var))
       else None
 
+let traits = { Traits.default with name = "isosurface" }
+
 let stats_rows (s : Stats.t) =
   [
     { Stats.name = "Isosurface"; tests = s.iso_tests; hits = s.iso_hits };

@@ -503,4 +503,6 @@ let pov_box f =
   let b = [| Precision.f32 (-.r); Precision.f32 (-.r); Precision.f32 (-.r); Precision.f32 (2.0 *. r); Precision.f32 (2.0 *. r); Precision.f32 (2.0 *. r) |] in
   match f.trans with None -> b | Some m -> Pov_box.mapped m b
 
+let traits = { Traits.default with name = "julia_fractal"; inverse_flag = false; inside_holds_inverse = true }
+
 let stats_rows (s : Stats.t) = [ { Stats.name = "Fractal"; tests = s.fractal_tests; hits = s.fractal_hits } ]

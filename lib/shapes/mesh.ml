@@ -345,5 +345,7 @@ let placed_pov_box m =
   let b = Pov_box.of_min_max (Array.sub (extent m.mesh) 0 3) (Array.sub (extent m.mesh) 3 3) in
   if m.moved then Pov_box.mapped m.tr b else b
 
+let traits = { Traits.default with name = "mesh"; costly = false }
+
 let stats_rows (s : Stats.t) =
   [ { Stats.name = "Mesh"; tests = s.mesh_tests; hits = s.mesh_hits } ]

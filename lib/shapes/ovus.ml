@@ -228,4 +228,6 @@ let uv v (p : Vec.t) =
     in
     Vec.make theta phi 0.
 
+let traits = { Traits.default with name = "ovus"; sturm = Sturm_bool }
+
 let stats_rows (s : Stats.t) = [ { Stats.name = "Ovus"; tests = s.ovus_tests; hits = s.ovus_hits } ]

@@ -389,6 +389,8 @@ let pov_box s =
   in
   Pov_box.mapped s.trans b
 
+let traits = { Traits.default with name = "parametric"; inverse_flag = false; patch = true }
+
 let stats_rows (s : Stats.t) =
   [
     { Stats.name = "Parametric"; tests = s.parametric_tests; hits = s.parametric_hits };

@@ -47,5 +47,7 @@ let moved_magnitude { pl; ptr; _ } =
   let q = Transform.point ptr (Vec.make (-.pl.dist *. pl.nx) (-.pl.dist *. pl.ny) (-.pl.dist *. pl.nz)) in
   Array.fold_left (fun m x -> Float.max m (Float.abs x)) 0. [| q.x; q.y; q.z |]
 
+let traits = { Traits.default with name = "plane"; costly = false; box_test_free = true; inverse_flag = false }
+
 let stats_rows (s : Stats.t) =
   [ { Stats.name = "Plane"; tests = s.plane_tests; hits = s.plane_hits } ]

@@ -372,4 +372,6 @@ let normal p pt =
     Vec.make (g.x *. k) (g.y *. k) (g.z *. k)
   else Vec.make 1. 0. 0.
 
+let traits = { Traits.default with name = "poly"; box_test_free = true; sturm = Sturm_bool }
+
 let stats_rows (s : Stats.t) = [ { Stats.name = "Quartic/Poly"; tests = s.poly_tests; hits = s.poly_hits } ]

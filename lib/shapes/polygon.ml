@@ -178,4 +178,6 @@ let hits (w : Scratch.t) p id o d lo n =
   let k = intersect w.stats w.lim p o d w.crossings in
   if k > 0 then Scratch.push_ray w n lo w.crossings.(0) (-1) id o d else n
 
+let traits = { Traits.default with name = "polygon"; inverse_flag = false }
+
 let stats_rows (s : Stats.t) = [ { Stats.name = "Polygon"; tests = s.polygon_tests; hits = s.polygon_hits } ]

@@ -473,6 +473,8 @@ let make ~spline ~conic ~height1 ~height2 ~closed ~sturm ~degenerate pts =
       let t = { spline; conic; height1; height2; closed; sturm; degenerate; x1; y1; x2; y2; u1; v1; u2; v2; segs; tr = Transform.identity; pbox = [||] } in
       Ok { t with pbox = pov_box t }
 
+let traits = { Traits.default with name = "prism"; sturm = Sturm_flag }
+
 let stats_rows (s : Stats.t) =
   [
     { Stats.name = "Prism"; tests = s.prism_tests; hits = s.prism_hits };

@@ -292,4 +292,6 @@ let hits (w : Scratch.t) q id o d lo n =
   let n = if k > 0 then Scratch.push_ray w n lo w.crossings.(0) (-1) id o d else n in
   if k > 1 then Scratch.push_ray w n lo w.crossings.(1) (-1) id o d else n
 
+let traits = { Traits.default with name = "quadric"; inside_holds_inverse = true }
+
 let stats_rows (s : Stats.t) = [ { Stats.name = "Quadric"; tests = s.quadric_tests; hits = s.quadric_hits } ]

@@ -224,6 +224,8 @@ let uv t part (p : Vec.t) =
 let box t = Curve_hits.revolution_box ~radius2:t.radius2 ~height1:t.height1 ~height2:t.height2
 let bounds t = Transform.bounds t.tr (box t)
 
+let traits = { Traits.default with name = "sor"; sturm = Sturm_flag }
+
 let stats_rows (s : Stats.t) =
   [
     { Stats.name = "Surface of Revolution"; tests = s.sor_tests; hits = s.sor_hits };

@@ -189,5 +189,8 @@ let ellipsoid_uv { sp; euv; _ } p =
   | Some f -> uv_of (Transform.inv_point f.uv_trans p) f.uv_centre
   | None -> uv_of p (Vec.make sp.cx sp.cy sp.cz)
 
+let traits = { Traits.default with name = "sphere"; costly = false; box_test_free = true }
+let ellipsoid_traits = { traits with costly = true }
+
 let stats_rows (s : Stats.t) =
   [ { Stats.name = "Sphere"; tests = s.sphere_tests; hits = s.sphere_hits } ]

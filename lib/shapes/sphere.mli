@@ -97,5 +97,11 @@ val ellipsoid_uv : ellipsoid -> Vec.t -> Vec.t
 (** [ellipsoid_uv e p] is those of an ellipsoid, in its UV frame (else [p] and the object-space
     centre as they are, as POV-Ray without a UV_Trans). *)
 
+val traits : Traits.t
+(** [traits] is its kind's traits: a sphere is cheaper to test than its box, and its box test is free. *)
+
+val ellipsoid_traits : Traits.t
+(** [ellipsoid_traits] is the traits of an ellipsoid: a sphere's, but costlier to test than its box. *)
+
 val stats_rows : Stats.t -> Stats.row list
 (** [stats_rows s] is the statistics rows of spheres and ellipsoids, as POV-Ray names them. *)

@@ -517,4 +517,6 @@ let depth (w : Scratch.t) c o d lo =
 let hits (w : Scratch.t) c id o d lo n =
   Array.fold_left (fun n (t, p, _) -> Scratch.push_ray w n lo t p id o d) n (counted w c o d)
 
+let traits = { Traits.default with name = "sphere_sweep" }
+
 let stats_rows (s : Stats.t) = [ { Stats.name = "Sphere Sweep"; tests = s.sphere_sweep_tests; hits = s.sphere_sweep_hits } ]

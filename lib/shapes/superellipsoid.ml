@@ -290,4 +290,6 @@ let hits (w : Scratch.t) s id o d lo n =
   done;
   !n
 
+let traits = { Traits.default with name = "superellipsoid" }
+
 let stats_rows (s : Stats.t) = [ { Stats.name = "Superellipsoid"; tests = s.superellipsoid_tests; hits = s.superellipsoid_hits } ]

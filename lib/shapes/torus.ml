@@ -177,6 +177,8 @@ let hits (w : Scratch.t) t id o d lo n =
 let bounds t = Transform.bounds t.tr (box t)
 let pov_box t = let b = box t in Pov_box.mapped t.tr (Pov_box.of_min_max (Array.sub b 0 3) (Array.sub b 3 3))
 
+let traits = { Traits.default with name = "torus"; sturm = Sturm_flag }
+
 let stats_rows (s : Stats.t) =
   [
     { Stats.name = "Torus"; tests = s.torus_tests; hits = s.torus_hits };

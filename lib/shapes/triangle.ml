@@ -141,5 +141,8 @@ let pov_box t =
   let mn a b c = Float.min a (Float.min b c) -. e and mx a b c = Float.max a (Float.max b c) +. e in
   Pov_box.of_min_max [| mn t.x1 t.x2 t.x3; mn t.y1 t.y2 t.y3; mn t.z1 t.z2 t.z3 |] [| mx t.x1 t.x2 t.x3; mx t.y1 t.y2 t.y3; mx t.z1 t.z2 t.z3 |]
 
+let traits = { Traits.default with name = "triangle"; costly = false; box_test_free = true; patch = true }
+let smooth_traits = { traits with name = "smooth_triangle"; scale_by_matrix = true }
+
 let stats_rows (s : Stats.t) =
   [ { Stats.name = "Triangle"; tests = s.triangle_tests; hits = s.triangle_hits } ]

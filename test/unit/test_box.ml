@@ -8,7 +8,7 @@ let v37 = "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"
 let box_of (o : Scene.obj) =
   match o.shape with
   | Box { lo; hi; trans } -> (lo, hi, trans)
-  | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Prism _ | Lathe _ | Sor _ | Quadric _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Julia _ | Isosurface _ | Parametric _ | Bicubic _ | Csg _ -> Alcotest.fail "expected a box"
+  | _ -> Alcotest.fail "expected a box"
 
 let vec_eq ?(eps = 1e-12) msg (e : Vec.t) (a : Vec.t) =
   float_eq ~eps (msg ^ " x") e.x a.x;

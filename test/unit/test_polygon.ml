@@ -29,7 +29,7 @@ let depths_eq msg e a = Alcotest.(check (list (float 1e-12))) msg e a
 let polygon_of (o : Scene.obj) =
   match o.shape with
   | Polygon p -> p
-  | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Glyph _ | Prism _ | Lathe _ | Sor _ | Quadric _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Julia _ | Isosurface _ | Parametric _ | Bicubic _ | Csg _ ->
+  | _ ->
       Alcotest.fail "expected a polygon"
 
 let test_close () =

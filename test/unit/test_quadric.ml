@@ -187,7 +187,7 @@ let test_parse () =
       vec_eq "mixed" (v 4. 5. 6.) (v x.xy x.xz x.yz);
       vec_eq "linear" (v 7. 8. 9.) (v x.lx x.ly x.lz);
       float_eq "constant" 10. x.k
-  | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Glyph _ | Prism _ | Lathe _ | Sor _ | Polygon _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Julia _ | Isosurface _ | Parametric _ | Bicubic _ | Csg _ ->
+  | _ ->
       Alcotest.fail "expected a quadric"
 
 let test_trace () =

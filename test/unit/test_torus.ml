@@ -16,7 +16,7 @@ let rec torus_of (o : Scene.obj) =
   | Csg { kind = Intersection; members = [ m ]; _ } ->
       let major, minor, sturm, inverse, trans = torus_of m.mobj in
       (major, minor, sturm, inverse <> m.inverted, trans)
-  | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Csg _ | Glyph _ | Polygon _ | Quadric _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Prism _ | Lathe _ | Sor _ | Julia _ | Isosurface _ | Parametric _ | Bicubic _ -> Alcotest.fail "expected a torus"
+  | _ -> Alcotest.fail "expected a torus"
 
 let vec_eq ?(eps = 1e-12) msg (e : Vec.t) (a : Vec.t) =
   float_eq ~eps (msg ^ " x") e.x a.x;
