@@ -351,9 +351,3 @@ let face_texture obj part =
   match obj.shape with
   | Mesh m when part >= 0 -> Mesh.texture m.mesh part
   | _ -> -1 (* only a mesh's faces have textures of their own *)
-
-let stats_rows s =
-  List.concat
-    [ Blob.stats_rows s; Bezier.stats_rows s; Box.stats_rows s; Cone.stats_rows s; Disc.stats_rows s; Csg.stats_rows s; Hfield.stats_rows s; Isosurface.stats_rows s; Lathe.stats_rows s; Julia.stats_rows s; Plane.stats_rows s; Polygon.stats_rows s; Prism.stats_rows s; Parametric.stats_rows s; Quadric.stats_rows s; Poly.stats_rows s;
-      Triangle.stats_rows s;
-      Mesh.stats_rows s; Ovus.stats_rows s; Sphere.stats_rows s; Sphere_sweep.stats_rows s; Superellipsoid.stats_rows s; Sor.stats_rows s; Torus.stats_rows s; Glyph.stats_rows s; Csg.bound_rows s ]

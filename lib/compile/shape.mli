@@ -96,9 +96,6 @@ val face_texture : Compiled.obj -> int -> int
 (** [face_texture obj part] is the index of the texture of the mesh face [part] in [obj.face_surfs],
     or −1 when the object's own surface is shaded there. *)
 
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is every shape's statistics rows, in the order POV-Ray prints them. *)
-
 val cached_depth : Scratch.t -> Compiled.shape -> Vec.t -> Vec.t -> float -> float -> float
 (** [cached_depth w s o d lo hi] is Trace::FindIntersection of the one object [s] (the shadow cache's
     test) up to the depth [hi]: [depth], but a sphere, box, plane or triangle under clipped_by or

@@ -65,6 +65,3 @@ val pov_box : t -> float array
 
 val traits : Traits.t
 (** [traits] is its kind's traits: flat, without an inside, and [inverse] does nothing (BicubicPatch::Invert). *)
-
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is the "Bicubic Patch" row. *)

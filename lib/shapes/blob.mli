@@ -136,9 +136,6 @@ val pov_box : compiled -> float array
 val traits : Traits.t
 (** [traits] is its kind's traits: [sturm] takes an optional float. *)
 
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is the "Blob", "Blob Component" and "Blob Bound" rows, as POV-Ray names them. *)
-
 val describe : (float -> string) -> (Vec.t -> string) -> (Transform.t -> string) -> t -> string
 (** [describe num vec matrix b] is the [--dump] text of [b] (without its own transform), numbers
     written by [num], vectors by [vec] and the components' transforms by [matrix]. *)

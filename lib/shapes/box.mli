@@ -69,6 +69,3 @@ val traits : Traits.t
 
 val moved_traits : Traits.t
 (** [moved_traits] is the traits of a box mapped by a transform: costlier to test than its box. *)
-
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is the statistics rows of boxes, as POV-Ray names them. *)

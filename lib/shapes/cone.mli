@@ -50,6 +50,3 @@ val pov_box : t -> float array
 
 val traits : Traits.t
 (** [traits] is its kind's traits (cylinders and cones): [Traits.default]. *)
-
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is the statistics rows of cylinders and cones, as POV-Ray names them. *)

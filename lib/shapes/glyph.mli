@@ -75,6 +75,3 @@ val pov_box : t -> float array
 
 val traits : Traits.t
 (** [traits] is its kind's traits (a letter of a text object): [Traits.default]. *)
-
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is the statistics rows of text letters, as POV-Ray names them. *)

@@ -83,7 +83,3 @@ val pov_box : t -> float array
 
 val traits : Traits.t
 (** [traits] is its kind's traits: [Traits.default]. *)
-
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is POV-Ray's "Height Field" rows: the tests, the box, the triangles, the blocks
-    and the cells (POV-Ray 3.7's build counts them all, HFIELD_EXTRA_STATS). *)

@@ -96,6 +96,3 @@ val warning : t -> Stats.t -> string option
 
 val traits : Traits.t
 (** [traits] is its kind's traits: [Traits.default]. *)
-
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is the "Isosurface", "Isosurface Container" and "Isosurface Cache" rows. *)

@@ -117,6 +117,3 @@ val pov_box : t -> float array
 
 val traits : Traits.t
 (** [traits] is its kind's traits: [inverse] toggles the fractal's own flag (Fractal::Invert), which its Inside holds. *)
-
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is the "Fractal" row. *)

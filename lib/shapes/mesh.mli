@@ -136,6 +136,3 @@ val placed_pov_box : placed -> float array
 
 val traits : Traits.t
 (** [traits] is its kind's traits: tested through its own hierarchy, not after its box (a patch unless it has an inside_vector, which its value tells). *)
-
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is the statistics rows of meshes, as POV-Ray names them. *)

@@ -60,6 +60,3 @@ val uv : t -> Vec.t -> Vec.t
 
 val traits : Traits.t
 (** [traits] is its kind's traits: [sturm] takes an optional boolean. *)
-
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is the "Ovus" row. *)

@@ -79,9 +79,6 @@ val pov_box : t -> float array
 val traits : Traits.t
 (** [traits] is its kind's traits: flat, without an inside, and [inverse] does nothing (Parametric::Invert). *)
 
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is the "Parametric" and "Parametric Bound" rows. *)
-
 val max_pieces : int
 (** [max_pieces] is 20,000: the pieces one search may test before povml stops it with what it
     found (counted in [Stats.parametric_cut], warned of at the end of the render). A surface whose

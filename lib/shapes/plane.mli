@@ -36,6 +36,3 @@ val moved_magnitude : moved -> float
 
 val traits : Traits.t
 (** [traits] is its kind's traits: tested at once, its box test free, and [inverse] turns it over (Plane::Invert) instead of setting the flag. *)
-
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is the statistics rows of planes, as POV-Ray names them. *)

@@ -73,6 +73,3 @@ val normal : t -> Vec.t -> Vec.t
 
 val traits : Traits.t
 (** [traits] is its kind's traits (poly, cubic, quartic): its box test is free, and [sturm] takes an optional boolean. *)
-
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is the "Quartic/Poly" row. *)

@@ -60,6 +60,3 @@ val hits : Scratch.t -> t -> int -> Vec.t -> Vec.t -> float -> int -> int
 
 val traits : Traits.t
 (** [traits] is its kind's traits: [inverse] does nothing to it (Polygon::Invert). *)
-
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is the "Polygon" row. *)

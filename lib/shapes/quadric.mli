@@ -82,6 +82,3 @@ val hits : Scratch.t -> t -> int -> Vec.t -> Vec.t -> float -> int -> int
 
 val traits : Traits.t
 (** [traits] is its kind's traits: [inverse] negates its coefficients (and sets the flag), so its own Inside holds the inversion. *)
-
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is the "Quadric" row. *)

@@ -70,6 +70,3 @@ val pov_box : t -> float array
 
 val traits : Traits.t
 (** [traits] is its kind's traits: [sturm] alone turns Sturm sequences on. *)
-
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is "Surface of Revolution" and "Surface of Rev. Bound". *)

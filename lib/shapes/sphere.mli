@@ -102,6 +102,3 @@ val traits : Traits.t
 
 val ellipsoid_traits : Traits.t
 (** [ellipsoid_traits] is the traits of an ellipsoid: a sphere's, but costlier to test than its box. *)
-
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is the statistics rows of spheres and ellipsoids, as POV-Ray names them. *)

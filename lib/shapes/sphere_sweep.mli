@@ -93,6 +93,3 @@ val hits : Scratch.t -> compiled -> int -> Vec.t -> Vec.t -> float -> int -> int
 
 val traits : Traits.t
 (** [traits] is its kind's traits: [Traits.default]. *)
-
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is the "Sphere Sweep" row. *)

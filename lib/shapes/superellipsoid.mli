@@ -59,6 +59,3 @@ val hits : Scratch.t -> t -> int -> Vec.t -> Vec.t -> float -> int -> int
 
 val traits : Traits.t
 (** [traits] is its kind's traits: [Traits.default]. *)
-
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is the "Superellipsoid" row. *)

@@ -76,9 +76,6 @@ val pov_box : t -> float array
 val traits : Traits.t
 (** [traits] is its kind's traits: [Traits.default], and [sturm] alone turns Sturm sequences on. *)
 
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is the statistics rows of tori, and their thick-cylinder pre-test, as POV-Ray names them. *)
-
 val uv : t -> Vec.t -> Vec.t
 (** [uv t p] is Torus::UVCoord at the world point [p], in torus space: u = 1 − (atan2(z, x) + π)/2π,
     v = (atan2(y, √(x² + z²) − R) + π)/2π, as (u, v, 0). *)

@@ -126,9 +126,9 @@ let bounds t =
 
 let depth (w : Scratch.t) t o d lo =
   let stats = w.stats in
-  stats.triangle_tests <- stats.triangle_tests + 1;
+  Stats.test stats Stats.triangle;
   let depth = intersect_within w.lim t o d in
-  if depth >= lo && depth < infinity then (stats.triangle_hits <- stats.triangle_hits + 1; depth) else infinity
+  if depth >= lo && depth < infinity then (Stats.hit stats Stats.triangle; depth) else infinity
 
 let hits w t id o d lo n =
   let depth = depth w t o d lo in
@@ -143,6 +143,3 @@ let pov_box t =
 
 let traits = { Traits.default with name = "triangle"; costly = false; box_test_free = true; patch = true }
 let smooth_traits = { traits with name = "smooth_triangle"; scale_by_matrix = true }
-
-let stats_rows (s : Stats.t) =
-  [ { Stats.name = "Triangle"; tests = s.triangle_tests; hits = s.triangle_hits } ]

@@ -63,6 +63,3 @@ val traits : Traits.t
 
 val smooth_traits : Traits.t
 (** [smooth_traits] is the traits of a smooth triangle: a flat one's, but the whole scene's scale moves it as a matrix (its Scale renormalises the vertex normals). *)
-
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is the statistics rows of triangles and smooth triangles, as POV-Ray names them. *)

@@ -177,8 +177,8 @@ let test_stats () =
   let ((_, ctx) as b) = setup unit_box in
   ignore (hit b (v 0. 0. (-5.)) (v 0. 0. 1.));
   ignore (hit b (v 0. 5. (-5.)) (v 0. 0. 1.));
-  Alcotest.(check int) "tests" 2 ctx.stats.box_tests;
-  Alcotest.(check int) "hits" 1 ctx.stats.box_hits
+  Alcotest.(check int) "tests" 2 (Stats.tests ctx.stats Stats.box);
+  Alcotest.(check int) "hits" 1 (Stats.hits ctx.stats Stats.box)
 
 let tests =
   [

@@ -94,10 +94,10 @@ let test_hits () =
   (* a degenerate polygon is never tested *)
   let stats = Stats.create () in
   depths_eq "degenerate" [] (crossing ~stats (Polygon.make [| Vec.zero; v2 1. 1.; v2 2. 2.; Vec.zero |]) (v 0.5 0.5 (-1.)) (v 0. 0. 1.));
-  Alcotest.(check int) "degenerate: no test counted" 0 stats.polygon_tests;
+  Alcotest.(check int) "degenerate: no test counted" 0 (Stats.tests stats Stats.polygon);
   ignore (crossing ~stats p (v 1.5 0. (-5.)) (v 0. 0. 1.));
   ignore (crossing ~stats p (v 0.75 0. (-5.)) (v 0. 0. 1.));
-  Alcotest.(check (pair int int)) "tests and hits" (2, 1) (stats.polygon_tests, stats.polygon_hits)
+  Alcotest.(check (pair int int)) "tests and hits" (2, 1) (Stats.tests stats Stats.polygon, Stats.hits stats Stats.polygon)
 
 let test_transform () =
   (* scale <2,2,3> then translate z*2: the hole is now |x|, |y| < 2, the plane z = 2; in polygon

@@ -56,7 +56,7 @@ let test_roots () =
   ignore (roots ~stats sphere (v 1. 0. 0.) (v 1. 0. 0.));
   ignore (roots ~stats sphere (v 1. 0. (-5.)) (v 0. 0. 1.));
   ignore (roots ~stats floor (v 0. 2. 0.) (v 0. (-1.) 0.));
-  Alcotest.(check (pair int int)) "tests and successes" (3, 2) (stats.quadric_tests, stats.quadric_hits)
+  Alcotest.(check (pair int int)) "tests and successes" (3, 2) (Stats.tests stats Stats.quadric, Stats.hits stats Stats.quadric)
 
 (* Random quadrics and rays: every root lies on the surface, and wherever the left side changes
    sign along the ray (sampled every 1e-3 up to 20) a root was found there. *)
