@@ -27,7 +27,7 @@ let tests s k = s.counts.(k)
 let hits s k = s.counts.(k + 1)
 
 (* the counters: the solvers', then those of the table's lines; a new one takes the next even
-   number *)
+   number, and goes in [solvers] or [table] *)
 let roots = 0
 let isosurface_roots = 2
 let parametric_cut = 4
@@ -120,8 +120,13 @@ let table =
     ("Bounding Object", bounding_object);
   ]
 
-(* the solvers' three counters, and the table's *)
-let counters = 3 + List.length table
+(* the counters that are no line of the table *)
+let solvers = [ roots; isosurface_roots; parametric_cut ]
+
+let counters = List.length solvers + List.length table
+
+(* every counter once, its tests and hits within [counts]: the keys are 0, 2, … in some order *)
+let () = assert (List.sort compare (solvers @ List.map snd table) = List.init counters (fun i -> 2 * i))
 
 let iso_width = 5
 
