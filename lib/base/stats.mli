@@ -92,8 +92,8 @@ val csg_merge : key
 (** [csg_merge], the line "CSG Merge": merges searched; hits: searches that kept a hit. *)
 
 val csg_union : key
-(** [csg_union], the line "CSG Union": kept unions searched (§16.2); hits: searches that kept a hit.
-    *)
+(** [csg_union], the line "CSG Union": kept unions searched (§16.2); hits: searches that kept a
+    hit. *)
 
 val hfield : key
 (** [hfield], the line "Height Field": height fields tested; hits: tests whose walk found a hit,

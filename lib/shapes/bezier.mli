@@ -64,4 +64,5 @@ val pov_box : t -> float array
 (** [pov_box b] is BicubicPatch::Compute_BBox: Make_BBox_from_min_max of the control points. *)
 
 val traits : Traits.t
-(** [traits] is its kind's traits: flat, without an inside, and [inverse] does nothing (BicubicPatch::Invert). *)
+(** [traits] is its kind's traits: flat, without an inside, and [inverse] does nothing
+    (BicubicPatch::Invert). *)

@@ -116,4 +116,5 @@ val pov_box : t -> float array
     through the transform when there is one. *)
 
 val traits : Traits.t
-(** [traits] is its kind's traits: [inverse] toggles the fractal's own flag (Fractal::Invert), which its Inside holds. *)
+(** [traits] is its kind's traits: [inverse] toggles the fractal's own flag (Fractal::Invert),
+    which its Inside holds. *)

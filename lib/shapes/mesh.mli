@@ -135,4 +135,5 @@ val placed_pov_box : placed -> float array
 (** [placed_pov_box m] is POV-Ray's box: its single-precision vertices' extent, mapped when moved. *)
 
 val traits : Traits.t
-(** [traits] is its kind's traits: tested through its own hierarchy, not after its box (a patch unless it has an inside_vector, which its value tells). *)
+(** [traits] is its kind's traits: tested through its own hierarchy, not after its box (a patch
+    unless it has an inside_vector, which its value tells). *)

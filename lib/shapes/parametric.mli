@@ -77,7 +77,8 @@ val pov_box : t -> float array
     Recompute_BBox through the transform. *)
 
 val traits : Traits.t
-(** [traits] is its kind's traits: flat, without an inside, and [inverse] does nothing (Parametric::Invert). *)
+(** [traits] is its kind's traits: flat, without an inside, and [inverse] does nothing
+    (Parametric::Invert). *)
 
 val max_pieces : int
 (** [max_pieces] is 20,000: the pieces one search may test before povml stops it with what it

@@ -35,4 +35,5 @@ val moved_magnitude : moved -> float
 (** [moved_magnitude] is the largest coordinate of that point, mapped. *)
 
 val traits : Traits.t
-(** [traits] is its kind's traits: tested at once, its box test free, and [inverse] turns it over (Plane::Invert) instead of setting the flag. *)
+(** [traits] is its kind's traits: tested at once, its box test free, and [inverse] turns it over
+    (Plane::Invert) instead of setting the flag. *)

@@ -72,4 +72,5 @@ val normal : t -> Vec.t -> Vec.t
     times the reciprocal of its length; <1, 0, 0> where the gradient vanishes. *)
 
 val traits : Traits.t
-(** [traits] is its kind's traits (poly, cubic, quartic): its box test is free, and [sturm] takes an optional boolean. *)
+(** [traits] is its kind's traits (poly, cubic, quartic): its box test is free, and [sturm] takes
+    an optional boolean. *)

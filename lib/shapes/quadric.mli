@@ -81,4 +81,5 @@ val hits : Scratch.t -> t -> int -> Vec.t -> Vec.t -> float -> int -> int
     member [id] (Quadric::All_Intersections); it is the new count. *)
 
 val traits : Traits.t
-(** [traits] is its kind's traits: [inverse] negates its coefficients (and sets the flag), so its own Inside holds the inversion. *)
+(** [traits] is its kind's traits: [inverse] negates its coefficients (and sets the flag), so its
+    own Inside holds the inversion. *)

@@ -1,21 +1,26 @@
 (** What a kind of shape is: the answers the stages ask of a shape's kind rather than of the shape
-    itself. Each shape's module writes its kind's traits once ([Torus.traits]); [Shape_kind.of_shape]
-    (a scene shape) and [Shape.traits] (a compiled shape) are the one exhaustive match from a shape
-    to them, so that a new shape is one line there and the stages ask its traits instead of
-    listing shapes. *)
+    itself. Each shape's module writes its kind's traits once ([Torus.traits]);
+    [Shape_kind.of_shape] (a scene shape) and [Shape.traits] (a compiled shape) are the one
+    exhaustive match from a shape to them, so that a new shape is one line there and the stages
+    ask its traits instead of listing shapes. *)
 
 (** How a shape reads the [sturm] keyword among its modifiers. *)
 type sturm =
   | No_sturm  (** it takes none: [sturm] is not one of its modifiers *)
   | Sturm_flag  (** [sturm] alone turns it on (torus, prism, lathe, sor: Set_Flag) *)
-  | Sturm_bool  (** [sturm] with an optional boolean (poly, ovus: Bool_Flag of Allow_Float(1.0) > 0) *)
-  | Sturm_float  (** [sturm] with an optional float, on when above 0 (blob: Allow_Float(1.0) > 0.0) *)
+  | Sturm_bool
+      (** [sturm] with an optional boolean (poly, ovus: Bool_Flag of Allow_Float(1.0) > 0) *)
+  | Sturm_float
+      (** [sturm] with an optional float, on when above 0 (blob: Allow_Float(1.0) > 0.0) *)
 
 type t = {
-  name : string;  (** the keyword that writes the shape ("torus"; a text object's letter: "glyph") *)
+  name : string;
+      (** the keyword that writes the shape ("torus"; a cylinder's is "cone", a text object's
+          letter's "glyph") *)
   costly : bool;
-      (** testing the shape costs more than testing its box: the scene's search tries the box first
-          (docs/povray-rules.md §2.1); false for spheres, planes, triangles, meshes and unmoved boxes *)
+      (** testing the shape costs more than testing its box: the scene's search tries the box
+          first (docs/povray-rules.md §2.1); false for spheres, planes, triangles, meshes and
+          unmoved boxes *)
   box_test_free : bool;
       (** POV-Ray's Intersect_BBox of the shape always passes (spheres, ellipsoids, boxes, planes,
           triangles, polys): a clipped_by or bounded_by around it skips its wrapper's box test *)

@@ -59,7 +59,9 @@ val pov_box : t -> float array
 (** [pov_box t] is POV-Ray's box: the corners' extent widened by EPSILON, in single precision. *)
 
 val traits : Traits.t
-(** [traits] is the traits of a flat triangle: tested at once, its box test free, a patch without an inside. *)
+(** [traits] is the traits of a flat triangle: tested at once, its box test free, a patch without
+    an inside. *)
 
 val smooth_traits : Traits.t
-(** [smooth_traits] is the traits of a smooth triangle: a flat one's, but the whole scene's scale moves it as a matrix (its Scale renormalises the vertex normals). *)
+(** [smooth_traits] is the traits of a smooth triangle: a flat one's, but the whole scene's scale
+    moves it as a matrix (its Scale renormalises the vertex normals). *)
