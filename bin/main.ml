@@ -90,14 +90,15 @@ let print_stats (r : Pipeline.result) (o : Render.options) =
     (if pixels = 0 then 0. else float_of_int s.samples /. float_of_int pixels);
   Printf.eprintf "Rays:        %11d   Max Level: %d/%d\n%s\n" rays s.max_level r.scene.max_trace_level line;
   Printf.eprintf "Ray->Shape Intersection          Tests       Succeeded  Percentage\n%s\n" line;
-  (* each shape's rows, as its module names them, in POV-Ray's order; a shape never tested has none *)
+  (* the table's lines in POV-Ray's order; a counter never tested has none *)
   List.iter
     (fun (r : Stats.row) -> if r.tests > 0 then Printf.eprintf "%-27s%11d     %11d  %10.2f\n" r.name r.tests r.hits (pct r.hits r.tests))
-    (Shape.stats_rows s);
+    (Stats.rows s);
   Printf.eprintf "%s\n" line;
-  if s.roots_tested > 0 then
-    Printf.eprintf "Roots tested:%22d   eliminated:%21d\n" s.roots_tested s.roots_eliminated;
-  if s.iso_roots > 0 then Printf.eprintf "Isosurface roots:          %11d\n" s.iso_roots;
+  if Stats.tests s Stats.roots > 0 then
+    Printf.eprintf "Roots tested:%22d   eliminated:%21d\n" (Stats.tests s Stats.roots) (Stats.hits s Stats.roots);
+  let iso_roots = Stats.tests s Stats.isosurface_roots in
+  if iso_roots > 0 then Printf.eprintf "Isosurface roots:          %11d\n" iso_roots;
   Printf.eprintf "Camera Rays:               %11d\n" s.camera_rays;
   Printf.eprintf "Shadow Ray Tests:          %11d\n" s.shadow_rays;
   Printf.eprintf "Reflected Rays:            %11d\n" s.reflected_rays;

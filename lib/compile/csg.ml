@@ -48,13 +48,13 @@ let in_bound ~all_hits ~inside (w : Scratch.t) (members : member array) o d n =
     k >= nm
     ||
     let b = members.(k) in
-    stats.bound_tests <- stats.bound_tests + 1;
+    Stats.test stats Stats.bounding_object;
     let met =
       (Array.length b.pbox = 0 || Pov_box.entry b.pbox o d < infinity) && all_hits w b o d Precision.min_isect_depth n > n
     in
     (met || inside w.mesh_stack b o)
     && begin
-         stats.bound_hits <- stats.bound_hits + 1;
+         Stats.hit stats Stats.bounding_object;
          from (k + 1)
        end
   in
@@ -67,14 +67,14 @@ let hits ~all_hits ~inside (w : Scratch.t) (c : csg) o d lo n =
   let n =
     match c.kind with
     | Union ->
-        stats.csg_union_tests <- stats.csg_union_tests + 1;
+        Stats.test stats Stats.csg_union;
         let n = ref n in
         Array.iter (fun m -> n := all_hits w m o d lo !n) members;
         !n
     | Intersection | Merge ->
         (match c.kind with
-        | Intersection -> stats.csg_intersection_tests <- stats.csg_intersection_tests + 1
-        | Merge | Union | Clipped | Bounded | Boxed -> stats.csg_merge_tests <- stats.csg_merge_tests + 1);
+        | Intersection -> Stats.test stats Stats.csg_intersection
+        | Merge | Union | Clipped | Bounded | Boxed -> Stats.test stats Stats.csg_merge);
         let want = match c.kind with Intersection -> true | Merge | Union | Clipped | Bounded | Boxed -> false in
         let n = ref n in
         for k = 0 to nm - 1 do
@@ -89,7 +89,7 @@ let hits ~all_hits ~inside (w : Scratch.t) (c : csg) o d lo n =
     | Clipped -> (
         match members.(0).shape with
         | Csg { kind = Union; members = um; _ } ->
-            stats.csg_union_tests <- stats.csg_union_tests + 1;
+            Stats.test stats Stats.csg_union;
             let n = ref n in
             Array.iter
               (fun u ->
@@ -97,7 +97,7 @@ let hits ~all_hits ~inside (w : Scratch.t) (c : csg) o d lo n =
                 let e = all_hits w u o d lo start in
                 n := keep_hits ~inside w members ~skip:0 ~want:true ~reverse:true start e)
               um;
-            if !n > n0 then stats.csg_union_hits <- stats.csg_union_hits + 1;
+            if !n > n0 then Stats.hit stats Stats.csg_union;
             !n
         | _ ->
             (* a clipped primitive or a clipped merge or intersection *)
@@ -106,9 +106,9 @@ let hits ~all_hits ~inside (w : Scratch.t) (c : csg) o d lo n =
   in
   (if n > n0 then
      match c.kind with
-     | Union -> stats.csg_union_hits <- stats.csg_union_hits + 1
-     | Intersection -> stats.csg_intersection_hits <- stats.csg_intersection_hits + 1
-     | Merge -> stats.csg_merge_hits <- stats.csg_merge_hits + 1
+     | Union -> Stats.hit stats Stats.csg_union
+     | Intersection -> Stats.hit stats Stats.csg_intersection
+     | Merge -> Stats.hit stats Stats.csg_merge
      | Clipped | Bounded | Boxed -> ());
   n
 
@@ -258,12 +258,3 @@ let pov_box ~pov_box c =
       | Some b -> Pov_box.of_min_max (Array.sub b 0 3) (Array.sub b 3 3))
 
 let magnitude c = Array.fold_left (fun m (o : member) -> Float.max m o.mag) 0. c.members
-
-let stats_rows (s : Stats.t) =
-  [
-    { Stats.name = "CSG Intersection"; tests = s.csg_intersection_tests; hits = s.csg_intersection_hits };
-    { Stats.name = "CSG Merge"; tests = s.csg_merge_tests; hits = s.csg_merge_hits };
-    { Stats.name = "CSG Union"; tests = s.csg_union_tests; hits = s.csg_union_hits };
-  ]
-
-let bound_rows (s : Stats.t) = [ { Stats.name = "Bounding Object"; tests = s.bound_tests; hits = s.bound_hits } ]

@@ -70,9 +70,3 @@ val union_box : float array list -> float array
 
 val magnitude : Compiled.csg -> float
 (** [magnitude c] is the largest magnitude of its members. *)
-
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is the statistics rows of intersections (and differences), merges and kept unions, as POV-Ray names them. *)
-
-val bound_rows : Stats.t -> Stats.row list
-(** [bound_rows s] is the row of bounding objects' tests (Ray_In_Bound), as POV-Ray names it. *)

@@ -16,9 +16,9 @@ let rec shape (s : Scene.shape) : Compiled.shape option =
           members
       in
       Some (Csg { kind; members = Array.of_list members; cbox = [||] })
-  | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Polygon _ | Quadric _ | Poly _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Glyph _ | Blob _ | Height_field _ | Prism _ | Lathe _ | Sor _ | Julia _ | Isosurface _ | Parametric _ | Bicubic _ ->
+  | primitive ->
       (* an Inside test never searches an isosurface, so never asks a worker for its state *)
-      Shape.compile ~iso_slot:0 s
+      Shape.compile ~iso_slot:0 primitive
 
 let of_object (o : Scene.obj) =
   match shape o.shape with

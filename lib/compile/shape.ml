@@ -45,6 +45,36 @@ let compile ~iso_slot (s : Scene.shape) =
   | Poly p -> Some (Poly p)
   | Csg _ -> None
 
+let traits = function
+  | Sphere _ | Sphere_placed _ -> Sphere.traits
+  | Ellipsoid _ -> Sphere.ellipsoid_traits
+  | Plane _ | Plane_trans _ -> Plane.traits
+  | Triangle _ -> Triangle.traits
+  | Smooth_triangle _ -> Triangle.smooth_traits
+  | Mesh _ -> Mesh.traits
+  | Box _ -> Box.traits
+  | Box_trans _ -> Box.moved_traits
+  | Cone _ -> Cone.traits
+  | Disc _ -> Disc.traits
+  | Torus _ -> Torus.traits
+  | Csg _ -> Shape_kind.csg
+  | Glyph _ -> Glyph.traits
+  | Polygon _ -> Polygon.traits
+  | Quadric _ -> Quadric.traits
+  | Blob _ -> Blob.traits
+  | Height_field _ -> Hfield.traits
+  | Superellipsoid _ -> Superellipsoid.traits
+  | Ovus _ -> Ovus.traits
+  | Sphere_sweep _ -> Sphere_sweep.traits
+  | Prism _ -> Prism.traits
+  | Lathe _ -> Lathe.traits
+  | Sor _ -> Sor.traits
+  | Isosurface _ -> Isosurface.traits
+  | Julia _ -> Julia.traits
+  | Parametric _ -> Parametric.traits
+  | Bicubic _ -> Bezier.traits
+  | Poly _ -> Poly.traits
+
 (* a primitive crossed once at most *)
 let[@inline] one_hit w t id o d lo n = if t < infinity then Scratch.push_ray w n lo t (-1) id o d else n
 
@@ -142,29 +172,15 @@ and inside stack shape p =
   | Poly pl -> Poly.inside pl p
 
 and inside_member stack (m : member) p =
-  match m.shape with
-  | Csg _ ->
-      (* an inverted CSG was morphed: its own Inside already holds the inversion (§16.3) *)
-      inside stack m.shape p
-  | Quadric _ ->
-      (* Quadric::Invert negated the coefficients, and its Inside is then asked as it is: an
-         inverted quadric holds its surface too *)
-      inside stack m.shape p
-  | Julia _ ->
-      (* Fractal::Invert toggles the fractal's own flag, which its Inside holds *)
-      inside stack m.shape p
-  | Sphere _ | Sphere_placed _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _
-  | Disc _ | Torus _ | Glyph _ | Polygon _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Prism _ | Lathe _ | Sor _ | Isosurface _ | Parametric _ | Bicubic _ ->
-      inside stack m.shape p <> m.inverted
+  (* a member's Inside is negated when it is inverted, unless its own Inside already holds the
+     inversion (a morphed CSG, a quadric's negated coefficients, a julia fractal's flag: §16.3) *)
+  if (traits m.shape).inside_holds_inverse then inside stack m.shape p else inside stack m.shape p <> m.inverted
 
-(* Spheres, ellipsoids, boxes, planes, triangles and polys answer every box test of POV-Ray's
-   Intersect_BBox with yes; their clipped_by and bounded_by wrappers are theirs *)
+(* a shape whose box test POV-Ray's Intersect_BBox always passes, and such a shape under
+   clipped_by or bounded_by: the wrappers are its *)
 let rec box_test_free = function
-  | Sphere _ | Sphere_placed _ | Ellipsoid _ | Box _ | Box_trans _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Poly _ -> true
   | Csg { kind = Clipped | Bounded | Boxed; members; _ } when Array.length members > 0 -> box_test_free members.(0).shape
-  | Csg _ | Mesh _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _
-  | Prism _ | Lathe _ | Sor _ | Julia _ | Isosurface _ | Parametric _ | Bicubic _ ->
-      false
+  | shape -> (traits shape).box_test_free
 
 let cached_depth w shape o d lo hi =
   match shape with
@@ -205,13 +221,12 @@ let normal w obj part p =
   | Bicubic _ | Parametric _ -> Vec.make 1. 0. 0. (* its normal is the crossing's: hit_normal *)
   | Poly pl -> Poly.normal pl p
 
+(* the shapes whose normal is blended from vertex normals; any other's is its surface's own *)
 let geometric_normal w obj part p =
   match obj.shape with
   | Smooth_triangle t -> Triangle.flat_normal t
   | Mesh m -> Mesh.placed_face_normal m part
-  | Sphere _ | Sphere_placed _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _
-  | Quadric _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Csg _ | Prism _ | Lathe _ | Sor _ | Julia _ | Isosurface _ | Parametric _ | Bicubic _ ->
-      normal w obj part p
+  | _ -> normal w obj part p
 
 let hit_normal (w : Scratch.t) obj part p =
   match obj.shape with
@@ -235,9 +250,7 @@ let refine obj p =
   match obj.shape with
   | Sphere s | Sphere_placed { ps = s; _ } -> Sphere.refine s p
   | Ellipsoid e -> Sphere.ellipsoid_refine e p
-  | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _
-  | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Julia _ | Isosurface _ | Parametric _ | Bicubic _ | Csg _ | Prism _ | Lathe _ | Sor _ ->
-      p
+  | _ -> p (* no other shape puts a point back on its surface *)
 
 (* Every shape's UVCoord in POV-Ray 3.7: spheres, boxes, tori and meshes have their own; every
    other shape (planes, triangles, cones and cylinders, discs, polygons, quadrics, letters) the
@@ -298,8 +311,7 @@ let magnitude shape =
   | None, Csg c -> Csg.magnitude c
   | _, Polygon p -> Polygon.magnitude p
   | _, Quadric q -> Quadric.magnitude q
-  | None, Poly _ -> 0.
-  | None, (Sphere _ | Sphere_placed _ | Ellipsoid _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Prism _ | Lathe _ | Sor _ | Julia _ | Isosurface _ | Parametric _ | Bicubic _) -> 0.
+  | None, _ -> 0. (* a poly: POV-Ray's unbounded box tells nothing *)
 
 let rec pov_box shape =
   match shape with
@@ -331,25 +343,11 @@ let rec pov_box shape =
   | Poly _ -> [||]
   | Csg c -> Csg.pov_box ~pov_box c
 
-let costly = function
-  | Ellipsoid _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Prism _ | Lathe _ | Sor _ | Julia _ | Isosurface _ | Parametric _ | Bicubic _ -> true
-  | Sphere _ | Sphere_placed _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Csg _ -> false
+let costly shape = (traits shape).costly
 
-let as_sphere = function
-  | Sphere s | Sphere_placed { ps = s; _ } -> Some s
-  | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _
-  | Quadric _ | Julia _ | Isosurface _ | Parametric _ | Bicubic _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Csg _ | Prism _ | Lathe _ | Sor _ ->
-      None
+let as_sphere = function Sphere s | Sphere_placed { ps = s; _ } -> Some s | _ -> None
 
 let face_texture obj part =
   match obj.shape with
   | Mesh m when part >= 0 -> Mesh.texture m.mesh part
-  | Sphere _ | Sphere_placed _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _
-  | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Julia _ | Isosurface _ | Parametric _ | Bicubic _ | Csg _ | Prism _ | Lathe _ | Sor _ ->
-      -1
-
-let stats_rows s =
-  List.concat
-    [ Blob.stats_rows s; Bezier.stats_rows s; Box.stats_rows s; Cone.stats_rows s; Disc.stats_rows s; Csg.stats_rows s; Hfield.stats_rows s; Isosurface.stats_rows s; Lathe.stats_rows s; Julia.stats_rows s; Plane.stats_rows s; Polygon.stats_rows s; Prism.stats_rows s; Parametric.stats_rows s; Quadric.stats_rows s; Poly.stats_rows s;
-      Triangle.stats_rows s;
-      Mesh.stats_rows s; Ovus.stats_rows s; Sphere.stats_rows s; Sphere_sweep.stats_rows s; Superellipsoid.stats_rows s; Sor.stats_rows s; Torus.stats_rows s; Glyph.stats_rows s; Csg.bound_rows s ]
+  | _ -> -1 (* only a mesh's faces have textures of their own *)

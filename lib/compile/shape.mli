@@ -1,7 +1,8 @@
 (** Every operation on a shape, dispatched by one direct [match] to the shape's own module
     (lib/shapes/). The tracer and the compile step reach shapes through it (besides the scene
     search's flat-array sphere test, [Sphere.depth_at], and [Csg.is_csg]). A new shape is a module
-    of its own and one case in each function here. *)
+    of its own, one case in each operation here and one line in [traits]; what a kind of shape is
+    (costly, its box test free, …) is asked of its traits. *)
 
 val compile : iso_slot:int -> Scene.shape -> Compiled.shape option
 (** [compile ~iso_slot s] is the primitive [s] ready to trace; None for a CSG (the compile step
@@ -9,6 +10,11 @@ val compile : iso_slot:int -> Scene.shape -> Compiled.shape option
     a standalone smooth triangle whose vertex normals straddle its face, a cylinder, disc or
     letter whose transform has no inverse). An isosurface is numbered [iso_slot] among the
     scene's ({!Isosurface.compiled.slot}); other shapes ignore it. *)
+
+val traits : Compiled.shape -> Traits.t
+(** [traits shape] is the traits of [shape]'s kind, as its module writes them (a sphere's, an
+    ellipsoid's, a moved box's, …; a CSG's are [Shape_kind.csg]): the one place that lists every
+    compiled shape for what a kind of shape is. *)
 
 val depth : Scratch.t -> Compiled.shape -> Vec.t -> Vec.t -> float -> float
 (** [depth w shape o d lo] is the nearest depth along the unit direction [d] at which the ray from
@@ -79,9 +85,9 @@ val pov_box : Compiled.shape -> float array
 (** [pov_box shape] is POV-Ray's box of the shape as it stores it ([Pov_box]); [[||]] when unbounded. *)
 
 val costly : Compiled.shape -> bool
-(** [costly shape] is true for the shapes costlier to test than their own box (ellipsoid,
-    transformed box, cylinder and cone, disc, torus, letter, polygon, quadric): the scene's search
-    tries the box first. *)
+(** [costly shape] is true for the shapes costlier to test than their own box (its traits'
+    [costly]: every shape but spheres, planes, triangles, meshes, boxes in world space and CSGs):
+    the scene's search tries the box first. *)
 
 val as_sphere : Compiled.shape -> Sphere.t option
 (** [as_sphere shape] is the sphere that [shape] is, which the scene's search tests straight from
@@ -91,9 +97,6 @@ val face_texture : Compiled.obj -> int -> int
 (** [face_texture obj part] is the index of the texture of the mesh face [part] in [obj.face_surfs],
     or −1 when the object's own surface is shaded there. *)
 
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is every shape's statistics rows, in the order POV-Ray prints them. *)
-
 val cached_depth : Scratch.t -> Compiled.shape -> Vec.t -> Vec.t -> float -> float -> float
 (** [cached_depth w s o d lo hi] is Trace::FindIntersection of the one object [s] (the shadow cache's
     test) up to the depth [hi]: [depth], but a sphere, box, plane or triangle under clipped_by or
@@ -101,5 +104,6 @@ val cached_depth : Scratch.t -> Compiled.shape -> Vec.t -> Vec.t -> float -> flo
     passes, and an isosurface is tried only when the ray meets its box before [hi]. *)
 
 val box_test_free : Compiled.shape -> bool
-(** [box_test_free s] holds for a sphere, ellipsoid, box, plane or triangle, and such a shape under
-    clipped_by or bounded_by: POV-Ray's Intersect_BBox of those always passes. *)
+(** [box_test_free s] holds for a shape whose traits say its box test is free (a sphere, ellipsoid,
+    box, plane, triangle or poly), and such a shape under clipped_by or bounded_by: POV-Ray's
+    Intersect_BBox of those always passes. *)

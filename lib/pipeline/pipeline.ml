@@ -26,8 +26,9 @@ let watched (scene : Scene.t) =
 let shutdown_warnings (w : watched) (stats : Stats.t) =
   let iso = List.filter_map (fun (s : Isosurface.t) -> Option.map (Error.warning s.fn.floc) (Isosurface.warning s stats)) w.isosurfaces in
   (* povml's own limit on a parametric surface's search, said once, at the first one *)
+  let cut = Stats.tests stats Stats.parametric_cut in
   let cut =
-    if stats.parametric_cut = 0 then []
+    if cut = 0 then []
     else
       match w.first_parametric with
       | None -> []
@@ -35,7 +36,7 @@ let shutdown_warnings (w : watched) (stats : Stats.t) =
           [ Error.warning p.fx.floc
               (Printf.sprintf
                  "povml stopped %d searches of parametric surfaces after %d pieces each (its limit: their u and v ranges are far wider than max_gradient lets the search tell apart); those rays may miss the surface"
-                 stats.parametric_cut Parametric.max_pieces) ]
+                 cut Parametric.max_pieces) ]
   in
   iso @ cut
 

@@ -235,19 +235,14 @@ let rec shape (s : Scene.shape) op : Scene.shape =
 let scene ~scale ~translate (s : Scene.t) : Scene.t =
   let sv = Vec.make scale scale scale in
   let rec obj (o : Scene.obj) =
-    (* a smooth triangle's Scale renormalises its vertex normals, which changes how they blend;
-       as a matrix the uniform scale only multiplies all three by the same factor *)
-    let scaling =
-      match o.shape with
-      | Smooth_triangle _ -> Transform (Transform.scale sv)
-      | Sphere _ | Plane _ | Triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Csg _ | Glyph _ | Polygon _ | Quadric _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Prism _ | Lathe _ | Sor _ | Julia _ | Isosurface _ | Parametric _ | Bicubic _ -> Scale sv
-    in
+    (* a shape whose own Scale would change it (a smooth triangle's renormalised vertex normals)
+       is scaled as a matrix, which only multiplies its vertex normals by the same factor *)
+    let scaling = if (Shape_kind.of_shape o.shape).scale_by_matrix then Transform (Transform.scale sv) else Scale sv in
     let sh =
       match o.shape with
       | Csg { kind; members; box } ->
           Scene.Csg { kind; members = List.map (fun (m : Scene.member) -> { m with mobj = obj m.mobj }) members; box = csg_box (csg_box box (Scale sv)) (Translate translate) }
-      | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Prism _ | Lathe _ | Sor _ | Julia _ | Isosurface _ | Parametric _ | Bicubic _ ->
-          shape (shape o.shape scaling) (Translate translate)
+      | primitive -> shape (shape primitive scaling) (Translate translate)
     in
     let moved t = texture (texture t (Scale sv)) (Translate translate) in
     {

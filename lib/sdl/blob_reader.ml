@@ -103,12 +103,9 @@ let parse st =
   Scene.Blob
     { blob = { components; threshold; sturm = false; hierarchy = true; trans = None; box = None }; textures = Array.of_list textures }
 
-let is_blob (o : V.obj) = match o.shape with Prim (Blob _) -> true | Prim _ | Csg _ -> false
-
 let set (o : V.obj) f =
   match o.shape with Prim (Blob { blob; textures }) -> { o with shape = Prim (Blob { blob = f blob; textures }) } | Prim _ | Csg _ -> o
 
-let set_sturm on o = set o (fun b -> { b with sturm = on })
 (* the hierarchy is built by Make_Blob: the flag changes nothing once the blob is set up *)
 let set_hierarchy on o = set o (fun b -> if b.box = None then { b with hierarchy = on } else b)
 

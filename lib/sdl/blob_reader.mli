@@ -8,12 +8,6 @@ val parse : Reader.st -> Scene.shape
     Errors: no component ("Need at least one component in a blob."), a cylinder whose ends are
     within 1e-10 ("Degenerate cylindrical component in blob."). *)
 
-val is_blob : Value.obj -> bool
-(** [is_blob o] holds when [o] is a blob, which takes [sturm] and [hierarchy]. *)
-
-val set_sturm : bool -> Value.obj -> Value.obj
-(** [set_sturm on o] is the blob [o] solved with Sturm sequences or not; any other object unchanged. *)
-
 val set_hierarchy : bool -> Value.obj -> Value.obj
 (** [set_hierarchy on o] is the blob [o] with or without its bounding sphere hierarchy, while its
     own block is read; a blob already set up keeps the hierarchy it was built with. *)

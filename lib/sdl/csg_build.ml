@@ -3,23 +3,25 @@
 
 open Reader
 
-(* §16.3, Invert_Object and Invert_CSG_Object: a plane turns over (normal and distance negated),
-   another primitive toggles its inverted flag, a CSG inverts every member and morphs by De
-   Morgan's rule: an inverted union or merge is an intersection, an inverted intersection a merge.
-   A light has no geometry to invert. *)
+(* §16.3, Invert_Object and Invert_CSG_Object: a primitive's own Invert changes it where it has
+   one (a plane turns over, its normal and distance negated; a quadric negates its coefficients; a
+   julia fractal toggles its own flag), and sets POV-Ray's INVERTED_FLAG as its traits say (every
+   shape but the plane, the julia fractal, and those whose Invert does nothing: polygon, bicubic
+   patch, parametric); a CSG inverts every member and morphs by De Morgan's rule: an inverted
+   union or merge is an intersection, an inverted intersection a merge. A light has no geometry to
+   invert. *)
 let rec invert (o : V.obj) : V.obj =
   match o.shape with
-  | Prim (Plane { normal; offset; trans }) -> { o with shape = Prim (Plane { normal = Vec.neg normal; offset = -.offset; trans }) }
-  | Prim (Sphere _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Cone _ | Disc _ | Torus _ | Csg _ | Glyph _ | Blob _ | Height_field _) -> { o with inverted = not o.inverted }
-  | Prim (Superellipsoid _ | Ovus _ | Sphere_sweep _) -> { o with inverted = not o.inverted }
-  | Prim (Prism _ | Lathe _ | Sor _) -> { o with inverted = not o.inverted } (* Invert_Flag of INVERTED_FLAG *)
-  | Prim (Poly _) -> { o with inverted = not o.inverted } (* Poly::Invert toggles its flag *)
-  | Prim (Isosurface _) -> { o with inverted = not o.inverted } (* IsoSurface::Invert: Invert_Flag of INVERTED_FLAG *)
-  | Prim (Polygon _) -> o (* Polygon::Invert does nothing, not even the flag *)
-  | Prim (Bicubic _) -> o (* BicubicPatch::Invert does nothing *)
-  | Prim (Parametric _) -> o (* Parametric::Invert does nothing *)
-  | Prim (Julia f) -> { o with shape = Prim (Julia (Julia.invert f)) } (* Fractal::Invert: its own flag, not INVERTED_FLAG *)
-  | Prim (Quadric q) -> { o with shape = Prim (Quadric (Quadric.invert q)); inverted = not o.inverted }
+  | Prim s ->
+      let shape : Scene.shape =
+        match s with
+        | Plane { normal; offset; trans } -> Plane { normal = Vec.neg normal; offset = -.offset; trans }
+        | Quadric q -> Quadric (Quadric.invert q)
+        | Julia f -> Julia (Julia.invert f)
+        | _ -> s
+      in
+      let inverted = if (Shape_kind.of_shape s).inverse_flag then not o.inverted else o.inverted in
+      { o with shape = Prim shape; inverted }
   | Csg { members; _ } when List.for_all (function V.Member_light _ -> true | V.Member_obj _ -> false) members ->
       o (* lights only (a light in object position): nothing to invert *)
   | Csg { kind = (Clipped | Bounded | Boxed) as kind; members = V.Member_obj c :: clips; split; box } ->
@@ -159,9 +161,8 @@ let wrap kind (o : V.obj) objs =
    mesh without inside_vector, a bicubic patch) *)
 let rec patch (o : V.obj) =
   match o.shape with
-  | Prim (Triangle _ | Smooth_triangle _ | Bicubic _ | Parametric _) -> true
   | Prim (Mesh { mesh; _ }) -> mesh.inside_vector = None
-  | Prim _ -> false
+  | Prim s -> (Shape_kind.of_shape s).patch
   | Csg { members; _ } -> List.exists (function V.Member_obj c -> patch c | V.Member_light _ -> false) members
 
 (* Link_To_Frame keeps the bounding objects of a top-level union, intersection or merge (a text

@@ -72,10 +72,6 @@ let rec set_double_illuminate b (o : V.obj) =
       let member = function V.Member_obj c -> V.Member_obj (set_double_illuminate b c) | V.Member_light _ as m -> m in
       { o with double_illuminate = b; shape = Csg { c with members = List.map member c.members } }
 
-(* §15.5: a torus takes [sturm] (solve with Sturm sequences) among its modifiers, wherever it
-   stands *)
-let is_poly (o : V.obj) = match o.shape with Prim (Poly _) -> true | Prim _ | Csg _ -> false
-
 (* IsoSurface::Copy marks the copy (its max_gradient is never reported); a CSG's copy copies its
    members *)
 let rec copied (o : V.obj) : V.obj =
@@ -88,18 +84,20 @@ let rec copied (o : V.obj) : V.obj =
   | Prim s -> { o with shape = Prim (scene_shape s) }
   | Csg c -> { o with shape = Csg { c with members = List.map (function V.Member_obj m -> V.Member_obj (copied m) | V.Member_light _ as l -> l) c.members } }
 
-let set_poly_sturm on (o : V.obj) =
-  match o.shape with Prim (Poly p) -> { o with shape = Prim (Poly { p with sturm = on }) } | Prim _ | Csg _ -> o
+(* §15.5: the shapes that take [sturm] (solve with Sturm sequences) among their modifiers, wherever
+   it stands, read it as their traits say *)
+let sturm (o : V.obj) : Traits.sturm = match o.shape with Prim s -> (Shape_kind.of_shape s).sturm | Csg _ -> No_sturm
 
-let is_torus (o : V.obj) = match o.shape with Prim (Torus _) -> true | Prim _ | Csg _ -> false
-
-let set_sturm (o : V.obj) =
-  match o.shape with
-  | Prim (Torus t) -> { o with shape = Prim (Torus { t with sturm = true }) }
-  | Prim (Prism p) -> { o with shape = Prim (Prism { p with sturm = true }) }
-  | Prim (Lathe l) -> { o with shape = Prim (Lathe { l with sturm = true }) }
-  | Prim (Sor s) -> { o with shape = Prim (Sor { s with sturm = true }) }
-  | Prim _ | Csg _ -> o
-
-(* prism, lathe and sor are STURM_OK objects too *)
-let is_spline_shape (o : V.obj) = match o.shape with Prim (Prism _ | Lathe _ | Sor _) -> true | Prim _ | Csg _ -> false
+let set_sturm on (o : V.obj) =
+  let shape : Scene.shape option =
+    match o.shape with
+    | Prim (Torus t) -> Some (Torus { t with sturm = on })
+    | Prim (Prism p) -> Some (Prism { p with sturm = on })
+    | Prim (Lathe l) -> Some (Lathe { l with sturm = on })
+    | Prim (Sor s) -> Some (Sor { s with sturm = on })
+    | Prim (Poly p) -> Some (Poly { p with sturm = on })
+    | Prim (Ovus v) -> Some (Ovus { v with sturm = on })
+    | Prim (Blob b) -> Some (Blob { b with blob = { b.blob with sturm = on } })
+    | Prim _ | Csg _ -> None
+  in
+  match shape with Some s -> { o with shape = Prim s } | None -> o

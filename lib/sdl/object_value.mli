@@ -27,18 +27,10 @@ val copied : Value.obj -> Value.obj
 (** [copied o] is [o] as POV-Ray's Copy_Object leaves it, for an object made from an identifier:
     its isosurfaces, members' included, marked as copies. *)
 
-val is_poly : Value.obj -> bool
-(** [is_poly o] holds when [o] is a poly, cubic or quartic, which take [sturm] too. *)
+val sturm : Value.obj -> Traits.sturm
+(** [sturm o] is how [o] reads [sturm] among its modifiers (§15.5): as its shape's traits say
+    (torus, prism, lathe, sor, poly, ovus, blob); a CSG takes none. *)
 
-val set_poly_sturm : bool -> Value.obj -> Value.obj
-(** [set_poly_sturm on o] is the poly [o] with [sturm] set to [on] (POV-Ray's [sturm [BOOL]]); any
-    other object unchanged. *)
-
-val is_torus : Value.obj -> bool
-(** [is_torus o] holds when [o] is a torus, the one object that takes [sturm] (§15.5). *)
-
-val is_spline_shape : Value.obj -> bool
-(** [is_spline_shape o] holds when [o] is a prism, lathe or sor, which take [sturm] too. *)
-
-val set_sturm : Value.obj -> Value.obj
-(** [set_sturm o] is the torus [o] solved with Sturm sequences; any other object unchanged. *)
+val set_sturm : bool -> Value.obj -> Value.obj
+(** [set_sturm on o] is the shape [o] that takes [sturm], solved with Sturm sequences or not
+    ([on]); any other object unchanged. *)

@@ -331,18 +331,15 @@ and parse_object_mods st (o : V.obj) what : V.obj =
     | Ident "no_image" -> advance st; loop { o with no_image = parse_bool_opt st }
     | Ident "no_reflection" -> advance st; loop { o with no_reflection = parse_bool_opt st }
     | Ident "double_illuminate" -> advance st; loop (set_double_illuminate (parse_bool_opt st) o)
-    | Ident "sturm" when is_torus o -> advance st; loop (set_sturm o)
-    | Ident "sturm" when Blob_reader.is_blob o ->
-        (* Allow_Float(1.0) > 0.0 *)
+    | Ident "sturm" when sturm o <> No_sturm ->
         advance st;
-        loop (Blob_reader.set_sturm ((not (float_follows st)) || parse_float st > 0.) o)
-    | Ident "sturm" when (match o.shape with Prim (Ovus _) -> true | Prim _ | Csg _ -> false) -> (
-        (* Ovus is STURM_OK: Bool_Flag(STURM_FLAG, Allow_Float(1.0) > 0) *)
-        advance st;
-        let on = parse_bool_opt st in
-        match o.shape with Prim (Ovus v) -> loop { o with shape = Prim (Ovus { v with sturm = on }) } | Prim _ | Csg _ -> loop o)
-    | Ident "sturm" when is_spline_shape o -> advance st; loop (set_sturm o)
-    | Ident "sturm" when is_poly o -> advance st; loop (set_poly_sturm (parse_bool_opt st) o)
+        let on =
+          match sturm o with
+          | No_sturm | Sturm_flag -> true
+          | Sturm_bool -> parse_bool_opt st (* Bool_Flag(STURM_FLAG, Allow_Float(1.0) > 0) *)
+          | Sturm_float -> (not (float_follows st)) || parse_float st > 0. (* Allow_Float(1.0) > 0.0 *)
+        in
+        loop (set_sturm on o)
     | Ident "hollow" -> advance st; ignore (parse_bool_opt st); loop o
     | Ident "inverse" -> advance st; loop (invert o)
     | Ident "split_union" -> (

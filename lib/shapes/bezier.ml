@@ -299,7 +299,7 @@ let make ~patch_type ~u_steps ~v_steps ~flatness ~st cp =
 (* All_Intersections: every crossing, in POV-Ray's push order, to [emit] *)
 let crossings (w : Scratch.t) b o d emit =
   let stats = w.stats in
-  stats.bicubic_tests <- stats.bicubic_tests + 1;
+  Stats.test stats Stats.bicubic;
   let found = ref false in
   let emit t p n u v =
     found := true;
@@ -307,7 +307,7 @@ let crossings (w : Scratch.t) b o d emit =
     emit t p n tu tv
   in
   (match b.tree with None -> subdivide b o d b.cp 0.0 1.0 0.0 1.0 0 emit | Some node -> walk b o d node emit);
-  if !found then stats.bicubic_hits <- stats.bicubic_hits + 1
+  if !found then Stats.hit stats Stats.bicubic
 
 let depth (w : Scratch.t) b o d lo =
   let best = w.depths in
@@ -352,4 +352,4 @@ let pov_box b =
   let lo, hi = min_max b in
   Pov_box.of_min_max lo hi
 
-let stats_rows (s : Stats.t) = [ { Stats.name = "Bicubic Patch"; tests = s.bicubic_tests; hits = s.bicubic_hits } ]
+let traits = { Traits.default with name = "bicubic_patch"; inverse_flag = false; patch = true }

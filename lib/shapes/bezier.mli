@@ -63,5 +63,6 @@ val bounds : t -> float array
 val pov_box : t -> float array
 (** [pov_box b] is BicubicPatch::Compute_BBox: Make_BBox_from_min_max of the control points. *)
 
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is the "Bicubic Patch" row. *)
+val traits : Traits.t
+(** [traits] is its kind's traits: flat, without an inside, and [inverse] does nothing
+    (BicubicPatch::Invert). *)

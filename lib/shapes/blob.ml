@@ -336,12 +336,7 @@ let weights c p =
 let bounds c = c.exact
 let pov_box c = c.cbox
 
-let stats_rows (s : Stats.t) =
-  [
-    { Stats.name = "Blob"; tests = s.blob_tests; hits = s.blob_hits };
-    { Stats.name = "Blob Component"; tests = s.blob_element_tests; hits = s.blob_element_hits };
-    { Stats.name = "Blob Bound"; tests = s.blob_bound_tests; hits = s.blob_bound_hits };
-  ]
+let traits = { Traits.default with name = "blob"; sturm = Sturm_float }
 
 (* ---------------------------------------------------------------------------------------------- *)
 

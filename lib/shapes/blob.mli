@@ -133,8 +133,8 @@ val bounds : compiled -> float array
 val pov_box : compiled -> float array
 (** [pov_box c] is POV-Ray's box of the blob. *)
 
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is the "Blob", "Blob Component" and "Blob Bound" rows, as POV-Ray names them. *)
+val traits : Traits.t
+(** [traits] is its kind's traits: [sturm] takes an optional float. *)
 
 val describe : (float -> string) -> (Vec.t -> string) -> (Transform.t -> string) -> t -> string
 (** [describe num vec matrix b] is the [--dump] text of [b] (without its own transform), numbers

@@ -153,7 +153,7 @@ let cylinder_span r e px py pz dx dy dz mindist =
 
 let element_span (w : Scratch.t) r e px py pz dx dy dz mindist =
   let s = w.stats in
-  s.blob_element_tests <- s.blob_element_tests + 1;
+  Stats.test s Stats.blob_element;
   let hit =
     match e.ekind with
     | Sphere -> sphere_span r e px py pz dx dy dz mindist
@@ -161,7 +161,7 @@ let element_span (w : Scratch.t) r e px py pz dx dy dz mindist =
     | Base_hemisphere | Apex_hemisphere -> hemisphere_span r e px py pz dx dy dz mindist
     | Cylinder -> cylinder_span r e px py pz dx dy dz mindist
   in
-  if hit then s.blob_element_hits <- s.blob_element_hits + 1;
+  if hit then Stats.hit s Stats.blob_element;
   hit
 
 (* one depth [t] with mark [m] put in the sorted list of [cnt] entries, searched from [from]: it is
@@ -221,12 +221,12 @@ let influences (w : Scratch.t) r c px py pz dx dy dz mindist =
       else
         for j = 0 to ne - 1 do
           let ch = tr.kids.(tr.first.(nd) + j) in
-          s.blob_bound_tests <- s.blob_bound_tests + 1;
+          Stats.test s Stats.blob_bound;
           let vx = tr.cx.(ch) -. px and vy = tr.cy.(ch) -. py and vz = tr.cz.(ch) -. pz in
           let b = (vx *. dx) +. (vy *. dy) +. (vz *. dz) in
           let t = (vx *. vx) +. (vy *. vy) +. (vz *. vz) in
           if t -. (b *. b) <= tr.r2.(ch) then begin
-            s.blob_bound_hits <- s.blob_bound_hits + 1;
+            Stats.hit s Stats.blob_bound;
             q.(!size) <- ch;
             incr size
           end
@@ -294,9 +294,9 @@ let interval (w : Scratch.t) (r : Scratch.blob_room) c bd i len start max_bound 
   then false
   else begin
     let s = w.stats in
-    s.roots_tested <- s.roots_tested + 1;
+    Stats.test s Stats.roots;
     let k = Polysolv.solve w.quartic acc 4 ~sturm:c.csturm ~eps:root_epsilon w.roots in
-    if Polysolv.eliminated w.quartic then s.roots_eliminated <- s.roots_eliminated + 1;
+    if Polysolv.eliminated w.quartic then Stats.hit s Stats.roots;
     let found = ref false in
     let mindist = if w.robust then 0. else depth_tolerance in
     for j = 0 to k - 1 do
@@ -316,7 +316,7 @@ let interval (w : Scratch.t) (r : Scratch.blob_room) c bd i len start max_bound 
    interval, a blob on its own stops at the first one with a root, all later ones being farther *)
 let intersect (w : Scratch.t) c ~child (o : Vec.t) (d : Vec.t) =
   let s = w.stats in
-  s.blob_tests <- s.blob_tests + 1;
+  Stats.test s Stats.blob;
   let mindist = if w.robust then 0. else depth_tolerance in
   let px, py, pz, dx, dy, dz, len =
     match c.ctr with
@@ -389,7 +389,7 @@ let intersect (w : Scratch.t) c ~child (o : Vec.t) (d : Vec.t) =
           if found && not child then true else step (i + 1) in_flag found
     in
     let found = step 0 0 false in
-    if found then s.blob_hits <- s.blob_hits + 1;
+    if found then Stats.hit s Stats.blob;
     !n
   end
 

@@ -69,7 +69,7 @@ let crossed (w : Scratch.t) (b : t) px py pz vx vy vz =
   not (!miss || !tmax < w.lim.near)
 
 let slabs (w : Scratch.t) b px py pz vx vy vz =
-  w.stats.box_tests <- w.stats.box_tests + 1;
+  Stats.test w.stats Stats.box;
   crossed w b px py pz vx vy vz
 
 let depth_along (w : Scratch.t) b px py pz vx vy vz lo =
@@ -80,12 +80,12 @@ let depth_along (w : Scratch.t) b px py pz vx vy vz lo =
       (* both crossings are candidates, the far one pushed last; POV-Ray takes candidates from the
          top of its stack and keeps a strictly nearer one, so of two equal depths (a ray through an
          edge) the far crossing's side wins *)
-      stats.box_hits <- stats.box_hits + 1;
+      Stats.hit stats Stats.box;
       w.part <- w.side_near;
       tmin
     end
     else if tmax >= lo then begin
-      stats.box_hits <- stats.box_hits + 1;
+      Stats.hit stats Stats.box;
       w.part <- w.side_far;
       tmax
     end
@@ -107,7 +107,7 @@ let moved_depth w { bx = b; btr = t } (o : Vec.t) (d : Vec.t) lo =
 let pair (w : Scratch.t) n lo id o d =
   let tmin = w.slab.t_near and tmax = w.slab.t_far in
   let smin = w.side_near and smax = w.side_far in
-  w.stats.box_hits <- w.stats.box_hits + 1;
+  Stats.hit w.stats Stats.box;
   let n = if tmin > w.lim.near then Scratch.push_ray w n lo tmin smin id o d else n in
   Scratch.push_ray w n lo tmax smax id o d
 
@@ -134,8 +134,8 @@ let moved_bounds { bx = b; btr } = Transform.bounds btr [| b.x0; b.y0; b.z0; b.x
 let pov_box b = Pov_box.of_min_max [| b.x0; b.y0; b.z0 |] [| b.x1; b.y1; b.z1 |]
 let moved_pov_box { bx; btr } = Pov_box.mapped btr (pov_box bx)
 
-let stats_rows (s : Stats.t) =
-  [ { Stats.name = "Box"; tests = s.box_tests; hits = s.box_hits } ]
+let traits = { Traits.default with name = "box"; costly = false; box_test_free = true }
+let moved_traits = { traits with costly = true }
 
 (* Box::UVCoord: the object-space point made relative to the box (0 to 1 along each axis), then
    placed on the cross of a cube map: each side a quarter of the width and a third of the height,

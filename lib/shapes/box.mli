@@ -64,5 +64,9 @@ val uv : t -> int -> Vec.t -> Vec.t
 val moved_uv : moved -> int -> Vec.t -> Vec.t
 (** [moved_uv m side p] is [uv] of the object-space point. *)
 
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is the statistics rows of boxes, as POV-Ray names them. *)
+val traits : Traits.t
+(** [traits] is the traits of a box in world space: as cheap as its own box, which is free to
+    test. *)
+
+val moved_traits : Traits.t
+(** [moved_traits] is the traits of a box mapped by a transform: costlier to test than its box. *)

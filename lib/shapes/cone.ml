@@ -18,7 +18,7 @@ let[@inline] put (out : float array) n depth part =
 (* The ray is brought into canonical space with its direction renormalised. Nothing is allocated. *)
 let crossings (w : Scratch.t) (c : t) (o : Vec.t) (d : Vec.t) (out : float array) =
   let stats = w.stats in
-  stats.cone_tests <- stats.cone_tests + 1;
+  Stats.test stats Stats.cone;
   let t = c.ctr in
   let px = (o.x *. t.i00) +. (o.y *. t.i10) +. (o.z *. t.i20) +. t.i30 in
   let py = (o.x *. t.i01) +. (o.y *. t.i11) +. (o.z *. t.i21) +. t.i31 in
@@ -89,7 +89,7 @@ let crossings (w : Scratch.t) (c : t) (o : Vec.t) (d : Vec.t) (out : float array
     end
     else n
   in
-  if n > 0 then stats.cone_hits <- stats.cone_hits + 1;
+  if n > 0 then Stats.hit stats Stats.cone;
   n
 
 let depth (w : Scratch.t) c o d lo = Scratch.nearest_crossing w (crossings w c o d w.crossings) lo
@@ -129,5 +129,4 @@ let pov_box c =
   let f32 = Precision.f32 in
   Pov_box.mapped c.ctr [| f32 (-1.); f32 (-1.); f32 c.dist; f32 2.; f32 2.; f32 (1. -. c.dist) |]
 
-let stats_rows (s : Stats.t) =
-  [ { Stats.name = "Cone/Cylinder"; tests = s.cone_tests; hits = s.cone_hits } ]
+let traits = { Traits.default with name = "cone" }

@@ -48,5 +48,5 @@ val bounds : t -> float array
 val pov_box : t -> float array
 (** [pov_box c] is Cone::Compute_BBox: Make_BBox(−1, −1, dist, 2, 2, 1 − dist) through the transform. *)
 
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is the statistics rows of cylinders and cones, as POV-Ray names them. *)
+val traits : Traits.t
+(** [traits] is its kind's traits (cylinders and cones): [Traits.default]. *)

@@ -7,7 +7,7 @@ let make ~(normal : Vec.t) ~radius ~hole dtr = { dtr; dnx = normal.x; dny = norm
 
 let crossings (w : Scratch.t) (dc : t) (o : Vec.t) (d : Vec.t) (out : float array) =
   let stats = w.stats in
-  stats.disc_tests <- stats.disc_tests + 1;
+  Stats.test stats Stats.disc;
   let t = dc.dtr in
   let vx = (d.x *. t.i00) +. (d.y *. t.i10) +. (d.z *. t.i20) in
   let vy = (d.x *. t.i01) +. (d.y *. t.i11) +. (d.z *. t.i21) in
@@ -26,7 +26,7 @@ let crossings (w : Scratch.t) (dc : t) (o : Vec.t) (d : Vec.t) (out : float arra
       if r2 >= dc.ir2 && r2 <= dc.or2 then begin
         let depth = s /. len in
         if depth > w.lim.near && depth < w.lim.far then begin
-          stats.disc_hits <- stats.disc_hits + 1;
+          Stats.hit stats Stats.disc;
           out.(0) <- depth;
           out.(1) <- 0.;
           1
@@ -57,5 +57,4 @@ let pov_box dc =
   let f32 = Precision.f32 and r = sqrt dc.or2 in
   Pov_box.mapped dc.dtr [| f32 (-.r); f32 (-.r); f32 (-.small_tolerance); f32 (2. *. r); f32 (2. *. r); f32 (2. *. small_tolerance) |]
 
-let stats_rows (s : Stats.t) =
-  [ { Stats.name = "Disc"; tests = s.disc_tests; hits = s.disc_hits } ]
+let traits = { Traits.default with name = "disc" }

@@ -30,7 +30,8 @@ val inside : t -> Vec.t -> bool
 (** [inside dc p] is Disc::Inside: the open half-space behind the plane, z < 0 in canonical space. *)
 
 val small_tolerance : float
-(** [small_tolerance] is SMALL_TOLERANCE, 1e-3: a disc's box is this thick on each side of its plane. *)
+(** [small_tolerance] is SMALL_TOLERANCE, 1e-3: a disc's box is this thick on each side of its
+    plane. *)
 
 val bounds : t -> float array
 (** [bounds dc] is the box of the canonical [−r, r]² × [−1e-3, 1e-3] box's mapped corners. *)
@@ -38,5 +39,5 @@ val bounds : t -> float array
 val pov_box : t -> float array
 (** [pov_box dc] is Disc::Compute_BBox: Make_BBox(−r, −r, −1e-3, 2r, 2r, 2e-3) through the transform. *)
 
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is the statistics rows of discs, as POV-Ray names them. *)
+val traits : Traits.t
+(** [traits] is its kind's traits: [Traits.default]. *)

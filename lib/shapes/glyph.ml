@@ -237,11 +237,11 @@ let box g =
    (depth, part) pairs in [w.glyph_crossings]. *)
 let counted_crossings (w : Scratch.t) g o d =
   let stats = w.stats in
-  stats.ttf_tests <- stats.ttf_tests + 1;
+  Stats.test stats Stats.glyph;
   let room = max_hits g.outline in
   if Array.length w.glyph_crossings.room < room then w.glyph_crossings.room <- Array.make room 0.;
   let k = crossings g o d w.glyph_crossings.room in
-  if k > 0 then stats.ttf_hits <- stats.ttf_hits + 1;
+  if k > 0 then Stats.hit stats Stats.glyph;
   k
 
 let depth (w : Scratch.t) g o d lo =
@@ -270,5 +270,4 @@ let hits (w : Scratch.t) g id o d lo n =
 let bounds g = Transform.bounds g.tr (box g)
 let pov_box g = let b = box g in Pov_box.mapped g.tr (Pov_box.of_min_max (Array.sub b 0 3) (Array.sub b 3 3))
 
-let stats_rows (s : Stats.t) =
-  [ { Stats.name = "True Type Font"; tests = s.ttf_tests; hits = s.ttf_hits } ]
+let traits = { Traits.default with name = "glyph" }

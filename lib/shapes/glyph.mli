@@ -73,5 +73,5 @@ val pov_box : t -> float array
 (** [pov_box g] is TrueType::Compute_BBox: Make_BBox of [box g] (z from −1e-6 to depth + 1e-6),
     then Recompute_BBox through the letter's whole transform (§15.9). *)
 
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is the statistics rows of text letters, as POV-Ray names them. *)
+val traits : Traits.t
+(** [traits] is its kind's traits (a letter of a text object): [Traits.default]. *)

@@ -215,7 +215,7 @@ let found r depth x z tri =
 let[@inline] triangle r x z fx fz height1 height2 y min23 max23 nx nz px pz part =
   if fmax y max23 >= height1 && fmin y min23 <= height2 then begin
     let stats = r.w.stats in
-    stats.hfield_triangle_tests <- stats.hfield_triangle_tests + 1;
+    Stats.test stats Stats.hfield_triangle;
     let dot = (nx *. r.dx) +. r.dy +. (nz *. r.dz) in
     if dot > epsilon || dot < -.epsilon then begin
       let depth = ((nx *. (px -. r.ox)) +. (y -. r.oy) +. (nz *. (pz -. r.oz))) /. dot in
@@ -225,7 +225,7 @@ let[@inline] triangle r x z fx fz height1 height2 y min23 max23 nx nz px pz part
           if part = 0 then s >= -0.0001 && t >= -0.0001 && s +. t <= 1.0001 else s <= 1.0001 && t <= 1.0001 && s +. t >= 0.9999
         in
         if inside then begin
-          stats.hfield_triangle_hits <- stats.hfield_triangle_hits + 1;
+          Stats.hit stats Stats.hfield_triangle;
           found r depth x z part;
           true
         end
@@ -242,7 +242,7 @@ let[@inline] triangle r x z fx fz height1 height2 y min23 max23 nx nz px pz part
 let intersect_pixel r x z height1 height2 =
   let f = r.f in
   let stats = r.w.stats in
-  stats.hfield_cell_tests <- stats.hfield_cell_tests + 1;
+  Stats.test stats Stats.hfield_cell;
   (* clamped to the last cell; below 0 (never reached by POV-Ray's walk) to the first *)
   let z = if z > f.height - 2 then f.height - 2 else if z < 0 then 0 else z in
   let x = if x > f.width - 2 then f.width - 2 else if x < 0 then 0 else x in
@@ -251,7 +251,7 @@ let intersect_pixel r x z height1 height2 =
   let min_height = fmin (fmin y1 y4) min23 and max_height = fmax (fmax y1 y4) max23 in
   if max_height < height1 || min_height > height2 then false
   else begin
-    stats.hfield_cell_hits <- stats.hfield_cell_hits + 1;
+    Stats.hit stats Stats.hfield_cell;
     let fx = float_of_int x and fz = float_of_int z in
     (* the first triangle: (x, y1, z) with N = <y1 − y2, 1, y1 − y3> *)
     let hit1 = triangle r x z fx fz height1 height2 y1 min23 max23 (y1 -. y2) (y1 -. y3) fx fz 0 in
@@ -369,7 +369,7 @@ let block_traversal r sx sy sz =
     let found = ref false and stop = ref false and continue = ref true in
     let stats = r.w.stats in
     while !continue do
-      stats.hfield_block_tests <- stats.hfield_block_tests + 1;
+      Stats.test stats Stats.hfield_block;
       let b = (!z * f.nbx) + !x in
       let k1 =
         if dx_zero then bound_huge
@@ -389,7 +389,7 @@ let block_traversal r sx sy sz =
       let fx = r.ox +. (dist *. dx) and fy = r.oy +. (dist *. dy) and fz = r.oz +. (dist *. dz) in
       let y1 = if !neary < fy then !neary else fy and y2 = if !neary < fy then fy else !neary in
       if y1 <= f.block_y.((2 * b) + 1) +. epsilon && y2 >= f.block_y.(2 * b) -. epsilon then begin
-        stats.hfield_block_hits <- stats.hfield_block_hits + 1;
+        Stats.hit stats Stats.hfield_block;
         if dda_traversal r !nx_ !ny_ !nz_ b then if r.all then found := true else stop := true
       end;
       if !stop then continue := false
@@ -453,7 +453,8 @@ let box_crossings r =
    POV-Ray counts "Height Field": a success is a walk that found a hit, whatever its depth. *)
 let walk (w : Scratch.t) t ~all id (o : Vec.t) (d : Vec.t) lo n =
   let stats = w.stats in
-  stats.hfield_tests <- stats.hfield_tests + 1;
+  Stats.test stats Stats.hfield;
+  Stats.test stats Stats.hfield_box;
   let m = t.tr in
   let r =
     {
@@ -470,7 +471,7 @@ let walk (w : Scratch.t) t ~all id (o : Vec.t) (d : Vec.t) lo n =
   in
   let entered =
     box_crossings r
-    && (stats.hfield_box_hits <- stats.hfield_box_hits + 1;
+    && (Stats.hit stats Stats.hfield_box;
         true)
     && (r.mindist >= hfield_tolerance
        ||
@@ -479,7 +480,7 @@ let walk (w : Scratch.t) t ~all id (o : Vec.t) (d : Vec.t) lo n =
   in
   if entered then begin
     let sx = r.ox +. (r.mindist *. r.dx) and sy = r.oy +. (r.mindist *. r.dy) and sz = r.oz +. (r.mindist *. r.dz) in
-    if block_traversal r sx sy sz then stats.hfield_hits <- stats.hfield_hits + 1
+    if block_traversal r sx sy sz then Stats.hit stats Stats.hfield
   end;
   r
 
@@ -569,11 +570,4 @@ let pov_box t =
   Pov_box.mapped t.tr (Pov_box.of_min_max (Array.sub b 0 3) (Array.sub b 3 3))
 
 (* POV-Ray 3.7's build counts the walk's stages too (HFIELD_EXTRA_STATS) *)
-let stats_rows (s : Stats.t) =
-  [
-    { Stats.name = "Height Field"; tests = s.hfield_tests; hits = s.hfield_hits };
-    { Stats.name = "Height Field Box"; tests = s.hfield_tests; hits = s.hfield_box_hits };
-    { Stats.name = "Height Field Triangle"; tests = s.hfield_triangle_tests; hits = s.hfield_triangle_hits };
-    { Stats.name = "Height Field Block"; tests = s.hfield_block_tests; hits = s.hfield_block_hits };
-    { Stats.name = "Height Field Cell"; tests = s.hfield_cell_tests; hits = s.hfield_cell_hits };
-  ]
+let traits = { Traits.default with name = "height_field" }

@@ -81,6 +81,5 @@ val pov_box : t -> float array
 (** [pov_box t] is HField::Compute_BBox: the field's box in single precision, then Recompute_BBox
     through the transform. *)
 
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is POV-Ray's "Height Field" rows: the tests, the box, the triangles, the blocks
-    and the cells (POV-Ray 3.7's build counts them all, HFIELD_EXTRA_STATS). *)
+val traits : Traits.t
+(** [traits] is its kind's traits: [Traits.default]. *)

@@ -114,11 +114,11 @@ let cached_miss c (w : Scratch.t) t1 t2 =
   room.cached && room.owner = c.slot
   && begin
        let st = w.stats in
-       st.iso_cache_tests <- st.iso_cache_tests + 1;
+       Stats.test st Stats.isosurface_cache;
        let l_b = gap r t1 r.bx r.by r.bz and l_e = gap r t2 r.ex r.ey r.ez in
        r.fmax -. (r.maxg *. std_max l_b l_e) > 0.
        && begin
-            st.iso_cache_hits <- st.iso_cache_hits + 1;
+            Stats.hit st Stats.isosurface_cache;
             true
           end
      end
@@ -135,7 +135,7 @@ let count_evaluated (w : Scratch.t) g maxg oldmg =
 (* Function_Find_Root over [t1, t2] of the ray in [w.iso.at]: the root in [r.tl] *)
 let find_root c (w : Scratch.t) g t1 t2 =
   let r = w.iso.at and iso = c.iso in
-  w.stats.iso_roots <- w.stats.iso_roots + 1;
+  Stats.test w.stats Stats.isosurface_roots;
   r.vlength <- sqrt ((r.dx *. r.dx) +. (r.dy *. r.dy) +. (r.dz *. r.dz));
   if cached_miss c w t1 t2 then false
   else begin
@@ -209,9 +209,9 @@ let container_crossed c (w : Scratch.t) (p : Vec.t) (v : Vec.t) =
       w.side_near <- 0;
       w.side_far <- 0;
       let st = w.stats in
-      st.sphere_tests <- st.sphere_tests - 1;
+      Stats.untest st Stats.sphere;
       if met then begin
-        st.sphere_hits <- st.sphere_hits - 1;
+        Stats.unhit st Stats.sphere;
         w.slab.t_near <- w.slab.t_near /. len;
         w.slab.t_far <- w.slab.t_far /. len
       end;
@@ -274,7 +274,7 @@ let search_inside c (w : Scratch.t) g t1 t2 =
   let tmin = std_min tmax t1 in
   if tmax -. tmin < acc then 0 (* the container's crossing too is dropped *)
   else begin
-    st.iso_tests <- st.iso_tests + 1;
+    Stats.test st Stats.isosurface;
     let tmin =
       if tmin < acc && r.inv3 = 1. && Float.abs (level c r tmin) < r.maxg *. acc *. 4.0 then begin
         (* the ray starts on the surface: the search starts past it, inside if it goes in *)
@@ -285,7 +285,7 @@ let search_inside c (w : Scratch.t) g t1 t2 =
       else tmin
     in
     let n = roots c w g n itrace tmin tmax in
-    if n > 0 then st.iso_hits <- st.iso_hits + 1;
+    if n > 0 then Stats.hit st Stats.isosurface;
     n
   end
 
@@ -309,7 +309,7 @@ let own (w : Scratch.t) c : Scratch.iso_own =
    count returned *)
 let search c (w : Scratch.t) (o : Vec.t) (d : Vec.t) =
   let st = w.stats and tr = c.iso.trans in
-  st.iso_bound_tests <- st.iso_bound_tests + 1;
+  Stats.test st Stats.isosurface_container;
   let g = Stats.iso_slot st c.iso.key in
   let p = Transform.inv_point tr o and v = Transform.inv_direction tr d in
   let r = w.iso.at and own = own w c in
@@ -318,7 +318,7 @@ let search c (w : Scratch.t) (o : Vec.t) (d : Vec.t) =
   let n =
     if not (container_crossed c w p v) then 0
     else begin
-      st.iso_bound_hits <- st.iso_bound_hits + 1;
+      Stats.hit st Stats.isosurface_container;
       let t1 = if w.slab.t_near < 0. then 0. else w.slab.t_near in
       r.px <- p.x;
       r.py <- p.y;
@@ -448,9 +448,4 @@ let warning s (stats : Stats.t) =
              (f eval_max) (f (sum /. cnt)) (f var))
       else None
 
-let stats_rows (s : Stats.t) =
-  [
-    { Stats.name = "Isosurface"; tests = s.iso_tests; hits = s.iso_hits };
-    { Stats.name = "Isosurface Container"; tests = s.iso_bound_tests; hits = s.iso_bound_hits };
-    { Stats.name = "Isosurface Cache"; tests = s.iso_cache_tests; hits = s.iso_cache_hits };
-  ]
+let traits = { Traits.default with name = "isosurface" }

@@ -94,5 +94,5 @@ val warning : t -> Stats.t -> string option
     what the render found ([stats.iso_found]): the gradient found against max_gradient, or what
     [evaluate] found; [None] when POV-Ray says nothing. *)
 
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is the "Isosurface", "Isosurface Container" and "Isosurface Cache" rows. *)
+val traits : Traits.t
+(** [traits] is its kind's traits: [Traits.default]. *)

@@ -331,7 +331,7 @@ let bound f ox oy oz dx dy dz =
    receives each (the world depth and point) and says whether to look for more. *)
 let march (w : Scratch.t) f (o : Vec.t) (d : Vec.t) emit =
   let stats = w.stats in
-  stats.fractal_tests <- stats.fractal_tests + 1;
+  Stats.test stats Stats.fractal;
   let ray =
     match f.trans with
     | None -> Some (o.x, o.y, o.z, d.x, d.y, d.z, 1.0)
@@ -446,7 +446,7 @@ let march (w : Scratch.t) f (o : Vec.t) (d : Vec.t) emit =
               end
             end
           done;
-          if !found then stats.fractal_hits <- stats.fractal_hits + 1;
+          if !found then Stats.hit stats Stats.fractal;
           !found)
 
 (* ---------------------------------------------------------------------------------------------- *)
@@ -503,4 +503,4 @@ let pov_box f =
   let b = [| Precision.f32 (-.r); Precision.f32 (-.r); Precision.f32 (-.r); Precision.f32 (2.0 *. r); Precision.f32 (2.0 *. r); Precision.f32 (2.0 *. r) |] in
   match f.trans with None -> b | Some m -> Pov_box.mapped m b
 
-let stats_rows (s : Stats.t) = [ { Stats.name = "Fractal"; tests = s.fractal_tests; hits = s.fractal_hits } ]
+let traits = { Traits.default with name = "julia_fractal"; inverse_flag = false; inside_holds_inverse = true }

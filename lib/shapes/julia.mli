@@ -115,5 +115,6 @@ val pov_box : t -> float array
 (** [pov_box f] is Fractal::Compute_BBox: Make_BBox of [−R … R] on each axis, then Recompute_BBox
     through the transform when there is one. *)
 
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is the "Fractal" row. *)
+val traits : Traits.t
+(** [traits] is its kind's traits: [inverse] toggles the fractal's own flag (Fractal::Invert),
+    which its Inside holds. *)

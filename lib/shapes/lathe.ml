@@ -106,7 +106,7 @@ let transform t m =
 
 let crossings (w : Scratch.t) t ~all (o : Vec.t) (dir : Vec.t) =
   let stats = w.stats in
-  stats.lathe_tests <- stats.lathe_tests + 1;
+  Stats.test stats Stats.lathe;
   let p = Transform.inv_point t.tr o and dv = Transform.inv_direction t.tr dir in
   let len = sqrt ((dv.x *. dv.x) +. (dv.y *. dv.y) +. (dv.z *. dv.z)) in
   let s = 1. /. len in
@@ -114,7 +114,7 @@ let crossings (w : Scratch.t) t ~all (o : Vec.t) (dir : Vec.t) =
   let px = p.x and py = p.y and pz = p.z in
   let dylen = dy *. len in
   let near = Curve_hits.near_limit w in
-  stats.lathe_bound_tests <- stats.lathe_bound_tests + 1;
+  Stats.test stats Stats.lathe_bound;
   if (dy >= 0. && py > t.height2) || (dy <= 0. && py < t.height1) || (dx >= 0. && px > t.radius2) || (dx <= 0. && px < -.t.radius2) then 0
   else begin
     let r0 = Float.abs ((px *. dz) -. (pz *. dx)) in
@@ -125,7 +125,7 @@ let crossings (w : Scratch.t) t ~all (o : Vec.t) (dir : Vec.t) =
       let cnt = Bcyl.intersect w t.bcyl px py pz dx dy dz in
       if cnt = 0 then 0
       else begin
-        stats.lathe_bound_hits <- stats.lathe_bound_hits + 1;
+        Stats.hit stats Stats.lathe_bound;
         let m = (dx *. px) +. (dz *. pz) and dy2 = dy *. dy in
         let k = ref 0 and best = ref bound_huge in
         let nseg = Array.length t.segs in
@@ -194,7 +194,7 @@ let crossings (w : Scratch.t) t ~all (o : Vec.t) (dir : Vec.t) =
              done
            done
          with Exit -> ());
-        if !k > 0 then stats.lathe_hits <- stats.lathe_hits + 1;
+        if !k > 0 then Stats.hit stats Stats.lathe;
         !k
       end
     end
@@ -259,8 +259,4 @@ let uv t part (p : Vec.t) =
 let box t = Curve_hits.revolution_box ~radius2:t.radius2 ~height1:t.height1 ~height2:t.height2
 let bounds t = Transform.bounds t.tr (box t)
 
-let stats_rows (s : Stats.t) =
-  [
-    { Stats.name = "Lathe"; tests = s.lathe_tests; hits = s.lathe_hits };
-    { Stats.name = "Lathe Bound"; tests = s.lathe_bound_tests; hits = s.lathe_bound_hits };
-  ]
+let traits = { Traits.default with name = "lathe"; sturm = Sturm_flag }

@@ -62,5 +62,5 @@ val bounds : t -> float array
 val pov_box : t -> float array
 (** [pov_box t] is Lathe::Compute_BBox: Make_BBox of −R2 … R2, height1 … height2, mapped. *)
 
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is "Lathe" and "Lathe Bound". *)
+val traits : Traits.t
+(** [traits] is its kind's traits: [sturm] alone turns Sturm sequences on. *)

@@ -286,7 +286,7 @@ let place mesh = function None -> { mesh; tr = Transform.identity; moved = false
    (times the reciprocal length), and the depth is divided by that length *)
 let depth (w : Scratch.t) m (o : Vec.t) (d : Vec.t) lo =
   let stats = w.stats in
-  stats.mesh_tests <- stats.mesh_tests + 1;
+  Stats.test stats Stats.mesh;
   let k, depth =
     if not m.moved then
       let k = nearest_within w.lim m.mesh w.mesh_stack o d lo w.mesh_depth in
@@ -298,7 +298,7 @@ let depth (w : Scratch.t) m (o : Vec.t) (d : Vec.t) lo =
       (k, w.mesh_depth.(0) /. len)
   in
   if k >= 0 && depth >= lo then begin
-    stats.mesh_hits <- stats.mesh_hits + 1;
+    Stats.hit stats Stats.mesh;
     w.part <- k;
     depth
   end
@@ -306,7 +306,7 @@ let depth (w : Scratch.t) m (o : Vec.t) (d : Vec.t) lo =
 
 let hits (w : Scratch.t) m id (o : Vec.t) (d : Vec.t) lo n =
   let stats = w.stats and lim = w.lim in
-  stats.mesh_tests <- stats.mesh_tests + 1;
+  Stats.test stats Stats.mesh;
   let count = ref n in
   let n0 = n in
   (if not m.moved then iter_hits lim m.mesh w.mesh_stack o d (fun k t -> count := Scratch.push_ray w !count lo t k id o d)
@@ -315,7 +315,7 @@ let hits (w : Scratch.t) m id (o : Vec.t) (d : Vec.t) lo n =
      let len = Vec.length v in
      iter_hits lim m.mesh w.mesh_stack (Transform.inv_point m.tr o) (Vec.scale (1. /. len) v) (fun k t ->
          count := Scratch.push_ray w !count lo (t /. len) k id o d));
-  if !count > n0 then stats.mesh_hits <- stats.mesh_hits + 1;
+  if !count > n0 then Stats.hit stats Stats.mesh;
   !count
 
 (* Mesh::Normal: with a transform, the unnormalised mesh-space normal by the inverse transpose,
@@ -345,5 +345,4 @@ let placed_pov_box m =
   let b = Pov_box.of_min_max (Array.sub (extent m.mesh) 0 3) (Array.sub (extent m.mesh) 3 3) in
   if m.moved then Pov_box.mapped m.tr b else b
 
-let stats_rows (s : Stats.t) =
-  [ { Stats.name = "Mesh"; tests = s.mesh_tests; hits = s.mesh_hits } ]
+let traits = { Traits.default with name = "mesh"; costly = false }

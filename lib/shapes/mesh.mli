@@ -134,5 +134,6 @@ val placed_bounds : placed -> float array
 val placed_pov_box : placed -> float array
 (** [placed_pov_box m] is POV-Ray's box: its single-precision vertices' extent, mapped when moved. *)
 
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is the statistics rows of meshes, as POV-Ray names them. *)
+val traits : Traits.t
+(** [traits] is its kind's traits: tested through its own hierarchy, not after its box (a patch
+    unless it has an inside_vector, which its value tells). *)

@@ -103,9 +103,9 @@ let intersect (w : Scratch.t) v (o : Vec.t) (d : Vec.t) (out : float array) =
       c.(3) <- 4.0 *. ((k2 *. k1) +. (2.0 *. r2 *. pdy2));
       c.(4) <- (k1 *. k1) +. (4.0 *. r2 *. (py2 -. sr2));
       let st = w.stats in
-      st.roots_tested <- st.roots_tested + 1;
+      Stats.test st Stats.roots;
       let n = Polysolv.solve w.quartic c 4 ~sturm:v.sturm ~eps:root_tolerance w.roots in
-      if Polysolv.eliminated w.quartic then st.roots_eliminated <- st.roots_eliminated + 1;
+      if Polysolv.eliminated w.quartic then Stats.hit st Stats.roots;
       (* only the inner part of the torus (the lemon), between the two spheres *)
       for i = n - 1 downto 0 do
         let r = w.roots.(i) in
@@ -178,9 +178,9 @@ let pov_box v =
 
 let counted (w : Scratch.t) v o d out =
   let st = w.stats in
-  st.ovus_tests <- st.ovus_tests + 1;
+  Stats.test st Stats.ovus;
   let n = intersect w v o d out in
-  if n > 0 then st.ovus_hits <- st.ovus_hits + 1;
+  if n > 0 then Stats.hit st Stats.ovus;
   n
 
 let depth (w : Scratch.t) v o d lo =
@@ -228,4 +228,4 @@ let uv v (p : Vec.t) =
     in
     Vec.make theta phi 0.
 
-let stats_rows (s : Stats.t) = [ { Stats.name = "Ovus"; tests = s.ovus_tests; hits = s.ovus_hits } ]
+let traits = { Traits.default with name = "ovus"; sturm = Sturm_bool }

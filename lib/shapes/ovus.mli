@@ -58,5 +58,5 @@ val uv : t -> Vec.t -> Vec.t
 (** [uv v p] is Ovus::CalcUV at the world point [p]: the angles of a sphere about the point
     [top]/2 up the axis, as (u, v, 0). *)
 
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is the "Ovus" row. *)
+val traits : Traits.t
+(** [traits] is its kind's traits: [sturm] takes an optional boolean. *)

@@ -143,9 +143,9 @@ let container_crossings (w : Scratch.t) s (p : Vec.t) (q : Vec.t) span =
       let k = 1.0 /. len in
       let hit = sphere_crossings centre (radius *. radius) p (Vec.make (q.x *. k) (q.y *. k) (q.z *. k)) span in
       let st = w.stats in
-      st.sphere_tests <- st.sphere_tests - 1;
+      Stats.untest st Stats.sphere;
       if hit then begin
-        st.sphere_hits <- st.sphere_hits - 1;
+        Stats.unhit st Stats.sphere;
         span.(0) <- span.(0) /. len;
         span.(1) <- span.(1) /. len
       end;
@@ -273,7 +273,7 @@ let subdivide (w : Scratch.t) wk (p : Vec.t) (q : Vec.t) (uv : float array) =
     decr budget;
     if !budget = 0 then begin
       (* povml's limit: a search that has tested this many pieces stops with what it found *)
-      w.stats.parametric_cut <- w.stats.parametric_cut + 1;
+      Stats.test w.stats Stats.parametric_cut;
       i := 0
     end;
     if !budget <= 0 then decr i
@@ -325,13 +325,13 @@ let subdivide (w : Scratch.t) wk (p : Vec.t) (q : Vec.t) (uv : float array) =
    before the container's far side), its (u, v) left in uv.(0), uv.(1) *)
 let search (w : Scratch.t) s (o : Vec.t) (d : Vec.t) (uv : float array) =
   let st = w.stats in
-  st.parametric_bound_tests <- st.parametric_bound_tests + 1;
+  Stats.test st Stats.parametric_bound;
   let p = Transform.inv_point s.trans o and q = Transform.inv_direction s.trans d in
   let span = [| 0.; 0. |] in
   if not (container_crossings w s p q span) then infinity
   else begin
-    st.parametric_bound_hits <- st.parametric_bound_hits + 1;
-    st.parametric_tests <- st.parametric_tests + 1;
+    Stats.hit st Stats.parametric_bound;
+    Stats.test st Stats.parametric;
     let d2 = span.(1) in
     let d1 = (if span.(0) = d2 then 0. else span.(0)) +. (4. *. s.accuracy) in
     if d1 > d2 then infinity
@@ -340,7 +340,7 @@ let search (w : Scratch.t) s (o : Vec.t) (d : Vec.t) (uv : float array) =
       let wk = { surf = s; fr = frame s; iv = [| 0.; 0. |]; dp; par = { par_x = false; par_y = false }; limits = limits s } in
       subdivide w wk p q uv;
       if dp.best < d2 then begin
-        st.parametric_hits <- st.parametric_hits + 1;
+        Stats.hit st Stats.parametric;
         dp.best
       end
       else infinity
@@ -389,8 +389,4 @@ let pov_box s =
   in
   Pov_box.mapped s.trans b
 
-let stats_rows (s : Stats.t) =
-  [
-    { Stats.name = "Parametric"; tests = s.parametric_tests; hits = s.parametric_hits };
-    { Stats.name = "Parametric Bound"; tests = s.parametric_bound_tests; hits = s.parametric_bound_hits };
-  ]
+let traits = { Traits.default with name = "parametric"; inverse_flag = false; patch = true }

@@ -76,8 +76,9 @@ val pov_box : t -> float array
 (** [pov_box s] is Parametric::Compute_BBox: Make_BBox of the container's box, then
     Recompute_BBox through the transform. *)
 
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is the "Parametric" and "Parametric Bound" rows. *)
+val traits : Traits.t
+(** [traits] is its kind's traits: flat, without an inside, and [inverse] does nothing
+    (Parametric::Invert). *)
 
 val max_pieces : int
 (** [max_pieces] is 20,000: the pieces one search may test before povml stops it with what it

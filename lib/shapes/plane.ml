@@ -9,18 +9,18 @@ let moved normal offset ptr = { pl = make normal offset; ptr; pnormal = Transfor
 
 let depth (w : Scratch.t) p (o : Vec.t) (d : Vec.t) lo =
   let stats = w.stats in
-  stats.plane_tests <- stats.plane_tests + 1;
+  Stats.test stats Stats.plane;
   let ndd = (p.nx *. d.x) +. (p.ny *. d.y) +. (p.nz *. d.z) in
   if Float.abs ndd < epsilon then infinity
   else
     let ndo = (p.nx *. o.x) +. (p.ny *. o.y) +. (p.nz *. o.z) in
     let t = -.(ndo +. p.dist) /. ndd in
-    if t >= w.lim.near && t <= w.lim.far && t >= lo then (stats.plane_hits <- stats.plane_hits + 1; t)
+    if t >= w.lim.near && t <= w.lim.far && t >= lo then (Stats.hit stats Stats.plane; t)
     else infinity
 
 let moved_depth (w : Scratch.t) { pl = p; ptr = t; _ } (o : Vec.t) (d : Vec.t) lo =
   let stats = w.stats and lim = w.lim in
-  stats.plane_tests <- stats.plane_tests + 1;
+  Stats.test stats Stats.plane;
   let vx = (d.x *. t.i00) +. (d.y *. t.i10) +. (d.z *. t.i20) in
   let vy = (d.x *. t.i01) +. (d.y *. t.i11) +. (d.z *. t.i21) in
   let vz = (d.x *. t.i02) +. (d.y *. t.i12) +. (d.z *. t.i22) in
@@ -32,7 +32,7 @@ let moved_depth (w : Scratch.t) { pl = p; ptr = t; _ } (o : Vec.t) (d : Vec.t) l
     let pz = (o.x *. t.i02) +. (o.y *. t.i12) +. (o.z *. t.i22) +. t.i32 in
     let ndo = (p.nx *. px) +. (p.ny *. py) +. (p.nz *. pz) in
     let t = -.(ndo +. p.dist) /. ndd in
-    if t >= lim.near && t <= lim.far && t >= lo then (stats.plane_hits <- stats.plane_hits + 1; t)
+    if t >= lim.near && t <= lim.far && t >= lo then (Stats.hit stats Stats.plane; t)
     else infinity
 
 let inside pl (p : Vec.t) = (p.x *. pl.nx) +. (p.y *. pl.ny) +. (p.z *. pl.nz) +. pl.dist < epsilon
@@ -47,5 +47,4 @@ let moved_magnitude { pl; ptr; _ } =
   let q = Transform.point ptr (Vec.make (-.pl.dist *. pl.nx) (-.pl.dist *. pl.ny) (-.pl.dist *. pl.nz)) in
   Array.fold_left (fun m x -> Float.max m (Float.abs x)) 0. [| q.x; q.y; q.z |]
 
-let stats_rows (s : Stats.t) =
-  [ { Stats.name = "Plane"; tests = s.plane_tests; hits = s.plane_hits } ]
+let traits = { Traits.default with name = "plane"; costly = false; box_test_free = true; inverse_flag = false }

@@ -34,5 +34,6 @@ val magnitude : t -> float
 val moved_magnitude : moved -> float
 (** [moved_magnitude] is the largest coordinate of that point, mapped. *)
 
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is the statistics rows of planes, as POV-Ray names them. *)
+val traits : Traits.t
+(** [traits] is its kind's traits: tested at once, its box test free, and [inverse] turns it over
+    (Plane::Invert) instead of setting the flag. *)

@@ -166,8 +166,8 @@ let general (w : Scratch.t) ~count p px py pz dx dy dz =
   if deg > 1 then begin
     let n = Polysolv.solve_at w.quartic r (at_eqn + !i) deg ~sturm:p.sturm ~eps:root_tolerance r at_roots in
     if count then begin
-      w.stats.roots_tested <- w.stats.roots_tested + 1;
-      if Polysolv.eliminated w.quartic then w.stats.roots_eliminated <- w.stats.roots_eliminated + 1
+      Stats.test w.stats Stats.roots;
+      if Polysolv.eliminated w.quartic then Stats.hit w.stats Stats.roots
     end;
     n
   end
@@ -190,9 +190,9 @@ let solve (w : Scratch.t) ~count p (o : Vec.t) (d : Vec.t) =
   let k = 1.0 /. len in
   let dx = dx *. k and dy = dy *. k and dz = dz *. k in
   let stats = w.stats in
-  if count then stats.poly_tests <- stats.poly_tests + 1;
+  if count then Stats.test stats Stats.poly;
   let cnt = if p.order = 2 then quadratic p.coeffs px py pz dx dy dz r else general w ~count p px py pz dx dy dz in
-  if count && cnt > 0 then stats.poly_hits <- stats.poly_hits + 1;
+  if count && cnt > 0 then Stats.hit stats Stats.poly;
   let near = if w.robust then 0. else depth_tolerance in
   let kept = ref 0 in
   for i = 0 to cnt - 1 do
@@ -372,4 +372,4 @@ let normal p pt =
     Vec.make (g.x *. k) (g.y *. k) (g.z *. k)
   else Vec.make 1. 0. 0.
 
-let stats_rows (s : Stats.t) = [ { Stats.name = "Quartic/Poly"; tests = s.poly_tests; hits = s.poly_hits } ]
+let traits = { Traits.default with name = "poly"; box_test_free = true; sturm = Sturm_bool }

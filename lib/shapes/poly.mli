@@ -71,5 +71,6 @@ val normal : t -> Vec.t -> Vec.t
 (** [normal p pt] is Poly::Normal at the world point [pt]: the gradient by the inverse transpose,
     times the reciprocal of its length; <1, 0, 0> where the gradient vanishes. *)
 
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is the "Quartic/Poly" row. *)
+val traits : Traits.t
+(** [traits] is its kind's traits (poly, cubic, quartic): its box test is free, and [sturm] takes
+    an optional boolean. *)

@@ -105,7 +105,7 @@ let[@inline] in_polygon (pts : float array) tx ty =
 let intersect (stats : Stats.t) (lim : Limits.t) p (o : Vec.t) (d : Vec.t) (out : float array) =
   if p.degenerate then 0
   else begin
-    stats.polygon_tests <- stats.polygon_tests + 1;
+    Stats.test stats Stats.polygon;
     let t = p.tr in
     let px = (o.x *. t.i00) +. (o.y *. t.i10) +. (o.z *. t.i20) +. t.i30 in
     let py = (o.x *. t.i01) +. (o.y *. t.i11) +. (o.z *. t.i21) +. t.i31 in
@@ -124,7 +124,7 @@ let intersect (stats : Stats.t) (lim : Limits.t) p (o : Vec.t) (d : Vec.t) (out 
       let near = Float.min depth_tolerance lim.near in
       if s < near || s > lim.far then 0
       else if in_polygon p.points (px +. (s *. vx)) (py +. (s *. vy)) then begin
-        stats.polygon_hits <- stats.polygon_hits + 1;
+        Stats.hit stats Stats.polygon;
         out.(0) <- s /. len;
         1
       end
@@ -178,4 +178,4 @@ let hits (w : Scratch.t) p id o d lo n =
   let k = intersect w.stats w.lim p o d w.crossings in
   if k > 0 then Scratch.push_ray w n lo w.crossings.(0) (-1) id o d else n
 
-let stats_rows (s : Stats.t) = [ { Stats.name = "Polygon"; tests = s.polygon_tests; hits = s.polygon_hits } ]
+let traits = { Traits.default with name = "polygon"; inverse_flag = false }

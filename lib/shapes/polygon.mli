@@ -58,5 +58,5 @@ val depth : Scratch.t -> t -> Vec.t -> Vec.t -> float -> float
 val hits : Scratch.t -> t -> int -> Vec.t -> Vec.t -> float -> int -> int
 (** [hits w p id o d lo n] pushes the crossing, if any, as a hit of the member [id]. *)
 
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is the "Polygon" row. *)
+val traits : Traits.t
+(** [traits] is its kind's traits: [inverse] does nothing to it (Polygon::Invert). *)

@@ -287,7 +287,7 @@ let crossings (w : Scratch.t) t (o : Vec.t) (d : Vec.t) =
   if t.degenerate then 0
   else begin
     let stats = w.stats in
-    stats.prism_tests <- stats.prism_tests + 1;
+    Stats.test stats Stats.prism;
     let m = t.tr in
     let p = Transform.inv_point m o and dv = Transform.inv_direction m d in
     let len = sqrt ((dv.x *. dv.x) +. (dv.y *. dv.y) +. (dv.z *. dv.z)) in
@@ -295,10 +295,10 @@ let crossings (w : Scratch.t) t (o : Vec.t) (d : Vec.t) =
     let dx = dv.x *. s and dy = dv.y *. s and dz = dv.z *. s in
     let px = p.x and py = p.y and pz = p.z in
     let near = Curve_hits.near_limit w in
-    stats.prism_bound_tests <- stats.prism_bound_tests + 1;
+    Stats.test stats Stats.prism_bound;
     if (dx >= 0. && px > t.x2) || (dx <= 0. && px < t.x1) || (dz >= 0. && pz > t.y2) || (dz <= 0. && pz < t.y1) then 0
     else begin
-      stats.prism_bound_hits <- stats.prism_bound_hits + 1;
+      Stats.hit stats Stats.prism_bound;
       let k = ref 0 in
       let c = w.coeffs and roots = w.roots in
       let nseg = Array.length t.segs in
@@ -337,12 +337,12 @@ let crossings (w : Scratch.t) t (o : Vec.t) (d : Vec.t) =
           if not t.conic then
             Array.iteri
               (fun j (e : segment) ->
-                stats.prism_bound_tests <- stats.prism_bound_tests + 1;
+                Stats.test stats Stats.prism_bound;
                 if not ((dx >= 0. && px > e.x2) || (dx <= 0. && px < e.x1) || (dz >= 0. && pz > e.y2) || (dz <= 0. && pz < e.y1)) then begin
                   let n =
                     match t.spline with
                     | Linear ->
-                        stats.prism_bound_hits <- stats.prism_bound_hits + 1;
+                        Stats.hit stats Stats.prism_bound;
                         let x0 = (e.cx *. dz) -. (e.cy *. dx) in
                         let x1 = (dz *. (e.dx -. px)) -. (dx *. (e.dy -. pz)) in
                         if Float.abs x0 > epsilon then begin
@@ -351,14 +351,14 @@ let crossings (w : Scratch.t) t (o : Vec.t) (d : Vec.t) =
                         end
                         else 0
                     | Quadratic ->
-                        stats.prism_bound_hits <- stats.prism_bound_hits + 1;
+                        Stats.hit stats Stats.prism_bound;
                         c.(0) <- (e.bx *. dz) -. (e.by *. dx);
                         c.(1) <- (e.cx *. dz) -. (e.cy *. dx);
                         c.(2) <- (dz *. (e.dx -. px)) -. (dx *. (e.dy -. pz));
                         Polysolv.solve w.quartic c 2 ~sturm:false ~eps:0. roots
                     | Cubic | Bezier ->
                         if test_rectangle px pz dx dz e.x1 e.y1 e.x2 e.y2 then begin
-                          stats.prism_bound_hits <- stats.prism_bound_hits + 1;
+                          Stats.hit stats Stats.prism_bound;
                           c.(0) <- (e.ax *. dz) -. (e.ay *. dx);
                           c.(1) <- (e.bx *. dz) -. (e.by *. dx);
                           c.(2) <- (e.cx *. dz) -. (e.cy *. dx);
@@ -423,7 +423,7 @@ let crossings (w : Scratch.t) t (o : Vec.t) (d : Vec.t) =
               t.segs
           end
         end;
-        if !k > 0 then stats.prism_hits <- stats.prism_hits + 1;
+        if !k > 0 then Stats.hit stats Stats.prism;
         !k
       end
     end
@@ -473,8 +473,4 @@ let make ~spline ~conic ~height1 ~height2 ~closed ~sturm ~degenerate pts =
       let t = { spline; conic; height1; height2; closed; sturm; degenerate; x1; y1; x2; y2; u1; v1; u2; v2; segs; tr = Transform.identity; pbox = [||] } in
       Ok { t with pbox = pov_box t }
 
-let stats_rows (s : Stats.t) =
-  [
-    { Stats.name = "Prism"; tests = s.prism_tests; hits = s.prism_hits };
-    { Stats.name = "Prism Bound"; tests = s.prism_bound_tests; hits = s.prism_bound_hits };
-  ]
+let traits = { Traits.default with name = "prism"; sturm = Sturm_flag }

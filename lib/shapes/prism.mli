@@ -97,5 +97,5 @@ val pov_box : t -> float array
 (** [pov_box t] is Prism::Compute_BBox: Make_BBox of x1 … x2, height1 … height2, y1 … y2, mapped by
     the transform (Recompute_BBox). *)
 
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is the rows "Prism" and "Prism Bound". *)
+val traits : Traits.t
+(** [traits] is its kind's traits: [sturm] alone turns Sturm sequences on. *)

@@ -210,7 +210,7 @@ let invert q =
 (* Quadric::Intersect, in world space (the direction is unit length), then All_Intersections'
    depth limits *)
 let intersect (stats : Stats.t) (lim : Limits.t) q (o : Vec.t) (d : Vec.t) (out : float array) =
-  stats.quadric_tests <- stats.quadric_tests + 1;
+  Stats.test stats Stats.quadric;
   let xd = d.x and yd = d.y and zd = d.z and xo = o.x and yo = o.y and zo = o.z in
   let a = (xd *. ((q.xx *. xd) +. (q.xy *. yd) +. (q.xz *. zd))) +. (yd *. ((q.yy *. yd) +. (q.yz *. zd))) +. (zd *. q.zz *. zd) in
   let b =
@@ -228,7 +228,7 @@ let intersect (stats : Stats.t) (lim : Limits.t) q (o : Vec.t) (d : Vec.t) (out 
     let disc = (b *. b) -. (a *. c) in
     if disc <= 0.0 then 0
     else begin
-      stats.quadric_hits <- stats.quadric_hits + 1;
+      Stats.hit stats Stats.quadric;
       let s = sqrt disc in
       let t1 = (-.b +. s) /. a and t2 = (-.b -. s) /. a in
       let n = if t1 > lim.near && t1 < lim.far then (out.(0) <- t1; 1) else 0 in
@@ -239,7 +239,7 @@ let intersect (stats : Stats.t) (lim : Limits.t) q (o : Vec.t) (d : Vec.t) (out 
   else begin
     (* no square term along the ray: one root; POV-Ray's second "root" is MAX_DISTANCE itself,
        which its test never keeps *)
-    stats.quadric_hits <- stats.quadric_hits + 1;
+    Stats.hit stats Stats.quadric;
     let t1 = -0.5 *. c /. b in
     if t1 > lim.near && t1 < lim.far then (out.(0) <- t1; 1) else 0
   end
@@ -292,4 +292,4 @@ let hits (w : Scratch.t) q id o d lo n =
   let n = if k > 0 then Scratch.push_ray w n lo w.crossings.(0) (-1) id o d else n in
   if k > 1 then Scratch.push_ray w n lo w.crossings.(1) (-1) id o d else n
 
-let stats_rows (s : Stats.t) = [ { Stats.name = "Quadric"; tests = s.quadric_tests; hits = s.quadric_hits } ]
+let traits = { Traits.default with name = "quadric"; inside_holds_inverse = true }

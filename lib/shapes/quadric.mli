@@ -80,5 +80,6 @@ val hits : Scratch.t -> t -> int -> Vec.t -> Vec.t -> float -> int -> int
 (** [hits w q id o d lo n] pushes the roots at least [lo], in the order found, as hits of the
     member [id] (Quadric::All_Intersections); it is the new count. *)
 
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is the "Quadric" row. *)
+val traits : Traits.t
+(** [traits] is its kind's traits: [inverse] negates its coefficients (and sets the flag), so its
+    own Inside holds the inversion. *)

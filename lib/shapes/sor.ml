@@ -94,14 +94,14 @@ let transform t m =
 
 let crossings (w : Scratch.t) t ~all (o : Vec.t) (dir : Vec.t) =
   let stats = w.stats in
-  stats.sor_tests <- stats.sor_tests + 1;
+  Stats.test stats Stats.sor;
   let p = Transform.inv_point t.tr o and dv = Transform.inv_direction t.tr dir in
   let len = sqrt ((dv.x *. dv.x) +. (dv.y *. dv.y) +. (dv.z *. dv.z)) in
   let s = 1. /. len in
   let dx = dv.x *. s and dy = dv.y *. s and dz = dv.z *. s in
   let px = p.x and py = p.y and pz = p.z in
   let near = Curve_hits.near_limit w in
-  stats.sor_bound_tests <- stats.sor_bound_tests + 1;
+  Stats.test stats Stats.sor_bound;
   if (dy >= 0. && py > t.height2) || (dy <= 0. && py < t.height1) || (dx >= 0. && px > t.radius2) || (dx <= 0. && px < -.t.radius2) then 0
   else begin
     let r0 = (px *. dz) -. (pz *. dx) in
@@ -124,7 +124,7 @@ let crossings (w : Scratch.t) t ~all (o : Vec.t) (dir : Vec.t) =
         plane t.height2 t.cap_radius2 2
       end;
       let cnt = Bcyl.intersect w t.bcyl px py pz dx dy dz in
-      if cnt > 0 || !k > 0 then stats.sor_bound_hits <- stats.sor_bound_hits + 1;
+      if cnt > 0 || !k > 0 then Stats.hit stats Stats.sor_bound;
       let c = w.coeffs and roots = w.roots in
       (try
          for j = 0 to cnt - 1 do
@@ -147,7 +147,7 @@ let crossings (w : Scratch.t) t ~all (o : Vec.t) (dir : Vec.t) =
            done
          done
        with Exit -> ());
-      if !k > 0 then stats.sor_hits <- stats.sor_hits + 1;
+      if !k > 0 then Stats.hit stats Stats.sor;
       !k
     end
   end
@@ -224,8 +224,4 @@ let uv t part (p : Vec.t) =
 let box t = Curve_hits.revolution_box ~radius2:t.radius2 ~height1:t.height1 ~height2:t.height2
 let bounds t = Transform.bounds t.tr (box t)
 
-let stats_rows (s : Stats.t) =
-  [
-    { Stats.name = "Surface of Revolution"; tests = s.sor_tests; hits = s.sor_hits };
-    { Stats.name = "Surface of Rev. Bound"; tests = s.sor_bound_tests; hits = s.sor_bound_hits };
-  ]
+let traits = { Traits.default with name = "sor"; sturm = Sturm_flag }

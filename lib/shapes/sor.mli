@@ -68,5 +68,5 @@ val pov_box : t -> float array
 (** [pov_box t] is Sor::Compute_BBox: Make_BBox of −R2 … R2, height1 … height2, mapped by the
     transform. *)
 
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is "Surface of Revolution" and "Surface of Rev. Bound". *)
+val traits : Traits.t
+(** [traits] is its kind's traits: [sturm] alone turns Sturm sequences on. *)

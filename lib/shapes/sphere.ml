@@ -17,7 +17,7 @@ let ellipsoid sp etr uv_trans = { sp; etr; euv = Option.map (fun u -> uv_frame ~
 let placed ps uv_trans = { ps; puv = uv_frame uv_trans (Vec.make ps.cx ps.cy ps.cz) }
 
 let[@inline] depth_at (stats : Stats.t) (lim : Limits.t) cx cy cz r2 (o : Vec.t) (d : Vec.t) lo =
-  stats.sphere_tests <- stats.sphere_tests + 1;
+  Stats.test stats Stats.sphere;
   let ocx = cx -. o.x and ocy = cy -. o.y and ocz = cz -. o.z in
   let ocs = (ocx *. ocx) +. (ocy *. ocy) +. (ocz *. ocz) in
   let tca = (ocx *. d.x) +. (ocy *. d.y) +. (ocz *. d.z) in
@@ -28,10 +28,10 @@ let[@inline] depth_at (stats : Stats.t) (lim : Limits.t) cx cy cz r2 (o : Vec.t)
     else begin
       let h = sqrt h2 in
       let t1 = tca -. h in
-      if t1 > lim.near && t1 < lim.far && t1 >= lo then (stats.sphere_hits <- stats.sphere_hits + 1; t1)
+      if t1 > lim.near && t1 < lim.far && t1 >= lo then (Stats.hit stats Stats.sphere; t1)
       else
         let t2 = tca +. h in
-        if t2 > lim.near && t2 < lim.far && t2 >= lo then (stats.sphere_hits <- stats.sphere_hits + 1; t2)
+        if t2 > lim.near && t2 < lim.far && t2 >= lo then (Stats.hit stats Stats.sphere; t2)
         else infinity
     end
 
@@ -40,7 +40,7 @@ let depth (w : Scratch.t) s o d lo = depth_at w.stats w.lim s.cx s.cy s.cz s.r2 
 (* Everything stays in unboxed floats. *)
 let ellipsoid_depth (w : Scratch.t) { sp = s; etr = t; _ } (o : Vec.t) (d : Vec.t) lo =
   let stats = w.stats and lim = w.lim in
-  stats.sphere_tests <- stats.sphere_tests + 1;
+  Stats.test stats Stats.sphere;
   let px = (o.x *. t.i00) +. (o.y *. t.i10) +. (o.z *. t.i20) +. t.i30 in
   let py = (o.x *. t.i01) +. (o.y *. t.i11) +. (o.z *. t.i21) +. t.i31 in
   let pz = (o.x *. t.i02) +. (o.y *. t.i12) +. (o.z *. t.i22) +. t.i32 in
@@ -61,16 +61,16 @@ let ellipsoid_depth (w : Scratch.t) { sp = s; etr = t; _ } (o : Vec.t) (d : Vec.
     else begin
       let h = sqrt h2 in
       let t1 = tca -. h in
-      if t1 > lim.near && t1 < lim.far && t1 /. len >= lo then (stats.sphere_hits <- stats.sphere_hits + 1; t1 /. len)
+      if t1 > lim.near && t1 < lim.far && t1 /. len >= lo then (Stats.hit stats Stats.sphere; t1 /. len)
       else
         let t2 = tca +. h in
-        if t2 > lim.near && t2 < lim.far && t2 /. len >= lo then (stats.sphere_hits <- stats.sphere_hits + 1; t2 /. len)
+        if t2 > lim.near && t2 < lim.far && t2 /. len >= lo then (Stats.hit stats Stats.sphere; t2 /. len)
         else infinity
     end
 
 let hits (w : Scratch.t) s id (o : Vec.t) (d : Vec.t) lo n =
   let stats = w.stats and lim = w.lim in
-  stats.sphere_tests <- stats.sphere_tests + 1;
+  Stats.test stats Stats.sphere;
   let ocx = s.cx -. o.x and ocy = s.cy -. o.y and ocz = s.cz -. o.z in
   let ocs = (ocx *. ocx) +. (ocy *. ocy) +. (ocz *. ocz) in
   let tca = (ocx *. d.x) +. (ocy *. d.y) +. (ocz *. d.z) in
@@ -84,12 +84,12 @@ let hits (w : Scratch.t) s id (o : Vec.t) (d : Vec.t) lo n =
       let n0 = n in
       let n = if t1 > lim.near && t1 < lim.far then Scratch.push_ray w n lo t1 (-1) id o d else n in
       let n = if t2 > lim.near && t2 < lim.far then Scratch.push_ray w n lo t2 (-1) id o d else n in
-      if n > n0 then stats.sphere_hits <- stats.sphere_hits + 1;
+      if n > n0 then Stats.hit stats Stats.sphere;
       n
 
 let ellipsoid_hits (w : Scratch.t) { sp = s; etr = t; _ } id (o : Vec.t) (d : Vec.t) lo n =
   let stats = w.stats and lim = w.lim in
-  stats.sphere_tests <- stats.sphere_tests + 1;
+  Stats.test stats Stats.sphere;
   let q = Transform.inv_point t o and v = Transform.inv_direction t d in
   let len = Vec.length v in
   let k = 1. /. len in
@@ -111,7 +111,7 @@ let ellipsoid_hits (w : Scratch.t) { sp = s; etr = t; _ } id (o : Vec.t) (d : Ve
       in
       let n0 = n in
       let n = root (root n (tca -. h)) (tca +. h) in
-      if n > n0 then stats.sphere_hits <- stats.sphere_hits + 1;
+      if n > n0 then Stats.hit stats Stats.sphere;
       n
 
 (* Sphere::Normal: VInverseScaleEq, times the reciprocal of the radius (a division can differ in
@@ -189,5 +189,5 @@ let ellipsoid_uv { sp; euv; _ } p =
   | Some f -> uv_of (Transform.inv_point f.uv_trans p) f.uv_centre
   | None -> uv_of p (Vec.make sp.cx sp.cy sp.cz)
 
-let stats_rows (s : Stats.t) =
-  [ { Stats.name = "Sphere"; tests = s.sphere_tests; hits = s.sphere_hits } ]
+let traits = { Traits.default with name = "sphere"; costly = false; box_test_free = true }
+let ellipsoid_traits = { traits with costly = true }

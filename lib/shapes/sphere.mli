@@ -45,7 +45,8 @@ val hits : Scratch.t -> t -> int -> Vec.t -> Vec.t -> float -> int -> int
     member [id] after the first [n] (Sphere::All_Intersections); it is the new count. *)
 
 val ellipsoid_hits : Scratch.t -> ellipsoid -> int -> Vec.t -> Vec.t -> float -> int -> int
-(** [ellipsoid_hits] is [hits] for an ellipsoid; the hit points are the object-space points mapped back. *)
+(** [ellipsoid_hits] is [hits] for an ellipsoid; the hit points are the object-space points
+    mapped back. *)
 
 val normal : t -> Vec.t -> Vec.t
 (** [normal s p] is (P − C)·(1/radius): Sphere::Normal's VInverseScaleEq multiplies by the
@@ -97,5 +98,10 @@ val ellipsoid_uv : ellipsoid -> Vec.t -> Vec.t
 (** [ellipsoid_uv e p] is those of an ellipsoid, in its UV frame (else [p] and the object-space
     centre as they are, as POV-Ray without a UV_Trans). *)
 
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is the statistics rows of spheres and ellipsoids, as POV-Ray names them. *)
+val traits : Traits.t
+(** [traits] is its kind's traits: a sphere is cheaper to test than its box, and its box test is
+    free. *)
+
+val ellipsoid_traits : Traits.t
+(** [ellipsoid_traits] is the traits of an ellipsoid: a sphere's, but costlier to test than its
+    box. *)

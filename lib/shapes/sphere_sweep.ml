@@ -184,8 +184,8 @@ let bezier_01 ?stats work degree (coef : float array) roots =
         let n = Polysolv.solve work coef degree ~sturm:true ~eps:1e-10 roots in
         (match stats with
         | Some (st : Stats.t) ->
-            st.roots_tested <- st.roots_tested + 1;
-            if Polysolv.eliminated work then st.roots_eliminated <- st.roots_eliminated + 1
+            Stats.test st Stats.roots;
+            if Polysolv.eliminated work then Stats.hit st Stats.roots
         | None -> ());
         n
       end
@@ -234,8 +234,8 @@ let segment_crossings (st : Stats.t) work c i (o : Vec.t) (d : Vec.t) add =
   cap sg.dc1 sg.c1 sg.r1 sg.dr1 kind_end;
   let roots = Array.make 10 0. in
   let solved n =
-    st.roots_tested <- st.roots_tested + 1;
-    if Polysolv.eliminated work then st.roots_eliminated <- st.roots_eliminated + 1;
+    Stats.test st Stats.roots;
+    if Polysolv.eliminated work then Stats.hit st Stats.roots;
     n
   in
   let cc = sg.cc and rc = sg.rc in
@@ -496,9 +496,9 @@ let pov_box c =
 
 let counted (w : Scratch.t) c o d =
   let st = w.stats in
-  st.sphere_sweep_tests <- st.sphere_sweep_tests + 1;
+  Stats.test st Stats.sphere_sweep;
   let h = intersect w c o d in
-  if Array.length h > 0 then st.sphere_sweep_hits <- st.sphere_sweep_hits + 1;
+  if Array.length h > 0 then Stats.hit st Stats.sphere_sweep;
   h
 
 let depth (w : Scratch.t) c o d lo =
@@ -517,4 +517,4 @@ let depth (w : Scratch.t) c o d lo =
 let hits (w : Scratch.t) c id o d lo n =
   Array.fold_left (fun n (t, p, _) -> Scratch.push_ray w n lo t p id o d) n (counted w c o d)
 
-let stats_rows (s : Stats.t) = [ { Stats.name = "Sphere Sweep"; tests = s.sphere_sweep_tests; hits = s.sphere_sweep_hits } ]
+let traits = { Traits.default with name = "sphere_sweep" }

@@ -91,5 +91,5 @@ val hits : Scratch.t -> compiled -> int -> Vec.t -> Vec.t -> float -> int -> int
 (** [hits w c id o d lo n] pushes the hits at least [lo], sorted, with their parts, as hits of
     the member [id]; it is the new count. *)
 
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is the "Sphere Sweep" row. *)
+val traits : Traits.t
+(** [traits] is its kind's traits: [Traits.default]. *)

@@ -268,9 +268,9 @@ let near_limit (w : Scratch.t) = if w.robust then 0. else depth_tolerance
 
 let counted (w : Scratch.t) s ~all o d out =
   let st = w.stats in
-  st.superellipsoid_tests <- st.superellipsoid_tests + 1;
+  Stats.test st Stats.superellipsoid;
   let n = intersect s ~near:(near_limit w) ~all o d out in
-  if n > 0 then st.superellipsoid_hits <- st.superellipsoid_hits + 1;
+  if n > 0 then Stats.hit st Stats.superellipsoid;
   n
 
 (* alone, the shape pushes only the first hit it finds: that is the only depth POV-Ray's search
@@ -290,4 +290,4 @@ let hits (w : Scratch.t) s id o d lo n =
   done;
   !n
 
-let stats_rows (s : Stats.t) = [ { Stats.name = "Superellipsoid"; tests = s.superellipsoid_tests; hits = s.superellipsoid_hits } ]
+let traits = { Traits.default with name = "superellipsoid" }

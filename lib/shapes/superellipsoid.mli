@@ -57,5 +57,5 @@ val hits : Scratch.t -> t -> int -> Vec.t -> Vec.t -> float -> int -> int
 (** [hits w s id o d lo n] pushes every hit at least [lo], in the order found, as hits of the
     member [id] (All_Superellipsoid_Intersections of a CSG member); it is the new count. *)
 
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is the "Superellipsoid" row. *)
+val traits : Traits.t
+(** [traits] is its kind's traits: [Traits.default]. *)

@@ -130,13 +130,14 @@ let box t =
    eliminated"); the raw depths are left in [w.depths]. *)
 let counted_solve (w : Scratch.t) t o d =
   let stats = w.stats in
-  stats.torus_tests <- stats.torus_tests + 1;
+  Stats.test stats Stats.torus;
+  Stats.test stats Stats.torus_bound;
   let n = solve w t o d in
   if n >= 0 then begin
-    stats.torus_bound_hits <- stats.torus_bound_hits + 1;
-    stats.roots_tested <- stats.roots_tested + 1;
-    if eliminated w then stats.roots_eliminated <- stats.roots_eliminated + 1;
-    if n > 0 then stats.torus_hits <- stats.torus_hits + 1
+    Stats.hit stats Stats.torus_bound;
+    Stats.test stats Stats.roots;
+    if eliminated w then Stats.hit stats Stats.roots;
+    if n > 0 then Stats.hit stats Stats.torus
   end;
   n
 
@@ -177,11 +178,7 @@ let hits (w : Scratch.t) t id o d lo n =
 let bounds t = Transform.bounds t.tr (box t)
 let pov_box t = let b = box t in Pov_box.mapped t.tr (Pov_box.of_min_max (Array.sub b 0 3) (Array.sub b 3 3))
 
-let stats_rows (s : Stats.t) =
-  [
-    { Stats.name = "Torus"; tests = s.torus_tests; hits = s.torus_hits };
-    { Stats.name = "Torus Bound"; tests = s.torus_tests; hits = s.torus_bound_hits };
-  ]
+let traits = { Traits.default with name = "torus"; sturm = Sturm_flag }
 
 (* Torus::CalcUV: in torus space, u from the angle about the y axis (1 at −x going round from
    there, decreasing towards +z), v from the angle about the tube's core circle *)

@@ -73,8 +73,8 @@ val pov_box : t -> float array
 (** [pov_box t] is Torus::Compute_BBox: Make_BBox of [box t], then Recompute_BBox through the
     transform every torus has (§15.5, §15.8). *)
 
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is the statistics rows of tori, and their thick-cylinder pre-test, as POV-Ray names them. *)
+val traits : Traits.t
+(** [traits] is its kind's traits: [Traits.default], and [sturm] alone turns Sturm sequences on. *)
 
 val uv : t -> Vec.t -> Vec.t
 (** [uv t p] is Torus::UVCoord at the world point [p], in torus space: u = 1 − (atan2(z, x) + π)/2π,

@@ -126,9 +126,9 @@ let bounds t =
 
 let depth (w : Scratch.t) t o d lo =
   let stats = w.stats in
-  stats.triangle_tests <- stats.triangle_tests + 1;
+  Stats.test stats Stats.triangle;
   let depth = intersect_within w.lim t o d in
-  if depth >= lo && depth < infinity then (stats.triangle_hits <- stats.triangle_hits + 1; depth) else infinity
+  if depth >= lo && depth < infinity then (Stats.hit stats Stats.triangle; depth) else infinity
 
 let hits w t id o d lo n =
   let depth = depth w t o d lo in
@@ -141,5 +141,5 @@ let pov_box t =
   let mn a b c = Float.min a (Float.min b c) -. e and mx a b c = Float.max a (Float.max b c) +. e in
   Pov_box.of_min_max [| mn t.x1 t.x2 t.x3; mn t.y1 t.y2 t.y3; mn t.z1 t.z2 t.z3 |] [| mx t.x1 t.x2 t.x3; mx t.y1 t.y2 t.y3; mx t.z1 t.z2 t.z3 |]
 
-let stats_rows (s : Stats.t) =
-  [ { Stats.name = "Triangle"; tests = s.triangle_tests; hits = s.triangle_hits } ]
+let traits = { Traits.default with name = "triangle"; costly = false; box_test_free = true; patch = true }
+let smooth_traits = { traits with name = "smooth_triangle"; scale_by_matrix = true }

@@ -58,5 +58,10 @@ val flat_normal : t -> Vec.t
 val pov_box : t -> float array
 (** [pov_box t] is POV-Ray's box: the corners' extent widened by EPSILON, in single precision. *)
 
-val stats_rows : Stats.t -> Stats.row list
-(** [stats_rows s] is the statistics rows of triangles and smooth triangles, as POV-Ray names them. *)
+val traits : Traits.t
+(** [traits] is the traits of a flat triangle: tested at once, its box test free, a patch without
+    an inside. *)
+
+val smooth_traits : Traits.t
+(** [smooth_traits] is the traits of a smooth triangle: a flat one's, but the whole scene's scale
+    moves it as a matrix (its Scale renormalises the vertex normals). *)

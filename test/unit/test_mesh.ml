@@ -18,7 +18,7 @@ let mesh_of text =
   match (the_object (scene text)).shape with
   | Mesh { mesh; trans; textures } ->
       (mesh, (match trans with None -> Vec.zero | Some t -> Transform.point t Vec.zero), textures)
-  | Sphere _ | Plane _ | Triangle _ | Smooth_triangle _ | Box _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Prism _ | Lathe _ | Sor _ | Quadric _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Julia _ | Isosurface _ | Parametric _ | Bicubic _ | Csg _ -> Alcotest.fail "expected a mesh"
+  | _ -> Alcotest.fail "expected a mesh"
 
 (* The triangle of Test_triangle, in the plane z = 2 with face normal <0,0,-1>. *)
 let p1 = v (-1.) (-1.) 2.

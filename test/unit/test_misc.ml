@@ -98,7 +98,37 @@ let test_stats () =
   Alcotest.(check int) "shadow rays added" 7 m.shadow_rays;
   Alcotest.(check int) "samples" 2 m.samples;
   Alcotest.(check int) "max_level is the larger" 4 m.max_level;
-  Alcotest.(check int) "inputs unchanged" 3 a.camera_rays
+  Alcotest.(check int) "inputs unchanged" 3 a.camera_rays;
+  Stats.test a Stats.torus;
+  Stats.test b Stats.torus;
+  Stats.hit b Stats.torus;
+  Stats.test b Stats.roots;
+  let m = Stats.merge a b in
+  Alcotest.(check (pair int int)) "a counter's tests and hits added" (2, 1) (Stats.tests m Stats.torus, Stats.hits m Stats.torus);
+  Alcotest.(check int) "the solvers' counter added" 1 (Stats.tests m Stats.roots);
+  Alcotest.(check int) "a counter of a's unchanged" 1 (Stats.tests a Stats.torus)
+
+(* every line of the table has a counter of its own, which the solvers' counters are not *)
+let test_stats_table () =
+  let counted s = List.filter_map (fun (r : Stats.row) -> if r.tests <> 0 || r.hits <> 0 then Some (r.name, r.tests, r.hits) else None) (Stats.rows s) in
+  List.iter
+    (fun (name, k) ->
+      let s = Stats.create () in
+      Stats.test s k;
+      Stats.test s k;
+      Stats.hit s k;
+      Alcotest.(check (list (triple string int int))) name [ (name, 2, 1) ] (counted s))
+    Stats.table;
+  List.iter
+    (fun k ->
+      let s = Stats.create () in
+      Stats.test s k;
+      Stats.hit s k;
+      Alcotest.(check (list (triple string int int))) "a solver's counter is no line" [] (counted s))
+    [ Stats.roots; Stats.isosurface_roots; Stats.parametric_cut ];
+  let names = List.map fst Stats.table in
+  Alcotest.(check int) "names differ" (List.length names) (List.length (List.sort_uniq compare names));
+  Alcotest.(check (list string)) "POV-Ray's first and last lines" [ "Blob"; "Bounding Object" ] [ List.hd names; List.nth names (List.length names - 1) ]
 
 (* ---- Error, Loc ---- *)
 
@@ -156,7 +186,7 @@ let tests_suggest = [ Alcotest.test_case "nearest" `Quick test_suggest ]
 let tests_value = [ Alcotest.test_case "promote and arith" `Quick test_value ]
 let tests_colour = [ Alcotest.test_case "colour and rgb" `Quick test_colour ]
 let tests_defaults = [ Alcotest.test_case "defaults" `Quick test_defaults ]
-let tests_stats = [ Alcotest.test_case "merge" `Quick test_stats ]
+let tests_stats = [ Alcotest.test_case "merge" `Quick test_stats; Alcotest.test_case "the table's lines" `Quick test_stats_table ]
 let tests_error = [ Alcotest.test_case "render" `Quick test_error_render ]
 let tests_image = [ Alcotest.test_case "create/get/set" `Quick test_image ]
 let tests_output = [ Alcotest.test_case "ppm and png" `Quick test_output ]

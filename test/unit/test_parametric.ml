@@ -199,9 +199,9 @@ let test_stats () =
   let s = parse ball in
   ignore (Parametric.depth w s (v 0.1 0.2 (-3.)) (v 0. 0. 1.) 0.);
   ignore (Parametric.depth w s (v 5. 5. (-3.)) (v 0. 0. 1.) 0.);
-  Alcotest.(check (list int)) "bound tests, hits" [ 2; 1 ] [ st.parametric_bound_tests; st.parametric_bound_hits ];
-  Alcotest.(check (list int)) "tests, hits" [ 1; 1 ] [ st.parametric_tests; st.parametric_hits ];
-  Alcotest.(check (list int)) "sphere tests taken back" [ -2; -1 ] [ st.sphere_tests; st.sphere_hits ]
+  Alcotest.(check (list int)) "bound tests, hits" [ 2; 1 ] [ Stats.tests st Stats.parametric_bound; Stats.hits st Stats.parametric_bound ];
+  Alcotest.(check (list int)) "tests, hits" [ 1; 1 ] [ Stats.tests st Stats.parametric; Stats.hits st Stats.parametric ];
+  Alcotest.(check (list int)) "sphere tests taken back" [ -2; -1 ] [ Stats.tests st Stats.sphere; Stats.hits st Stats.sphere ]
 
 let test_patch_warning () =
   let ws = warnings (v37 ^ "intersection { " ^ torus ^ " sphere { 0, 1 } }") in

@@ -188,18 +188,18 @@ let test_inside_and_stats () =
   Alcotest.(check int) "two crossings" 2 n;
   float_eq ~eps:1e-9 "the world depths (the scale undone)" 3. (Float.min (Poly.crossing w 0) (Poly.crossing w 1));
   ignore (Poly.crossings w p (v (-5.) 5. 0.) (v 1. 0. 0.));
-  Alcotest.(check (pair int int)) "Quartic/Poly: 2 tests, 1 succeeded" (2, 1) (w.stats.poly_tests, w.stats.poly_hits);
-  Alcotest.(check int) "both went to the solver" 2 w.stats.roots_tested;
+  Alcotest.(check (pair int int)) "Quartic/Poly: 2 tests, 1 succeeded" (2, 1) (Stats.tests w.stats Stats.poly, Stats.hits w.stats Stats.poly);
+  Alcotest.(check int) "both went to the solver" 2 (Stats.tests w.stats Stats.roots);
   (* a ray leaving the surface: its root at 0 is dropped (eliminated, then below 1e-4) *)
   let n = Poly.crossings w p (v 2. 0. 0.) (v (-1.) 0. 0.) in
   Alcotest.(check int) "one crossing from the surface" 1 n;
   float_eq ~eps:1e-9 "the far side" 4. (Poly.crossing w 0);
-  Alcotest.(check int) "eliminated counted" 1 w.stats.roots_eliminated;
+  Alcotest.(check int) "eliminated counted" 1 (Stats.hits w.stats Stats.roots);
   (* the degree of the polynomial in t may drop: a ray along the axis of x² + y² = 1 (order 2 is
      intersect_quadratic, which finds no root) *)
   let p, w = setup "quartic { <0,0,0,0,0,0,0,0,0,1, 0,0,0,0,0,0,0,0,0,0, 0,0,0,0,0,1,0,0,0,0, 0,0,0,0,-1> }" in
   Alcotest.(check int) "along the cylinder's axis: degree 0, no solve" 0 (Poly.crossings w p (v 0.2 0.1 (-3.)) (v 0. 0. 1.));
-  Alcotest.(check int) "not solved" 0 w.stats.roots_tested;
+  Alcotest.(check int) "not solved" 0 (Stats.tests w.stats Stats.roots);
   Alcotest.(check int) "across it: two" 2 (Poly.crossings w p (v (-3.) 0. 0.) (v 1. 0. 0.))
 
 let test_sturm_high () =

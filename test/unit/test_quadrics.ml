@@ -333,13 +333,13 @@ let test_stats () =
   let ((_, ctx) as s) = setup c1 in
   ignore (hit s (v 0. 0. (-5.)) (v 0. 0. 1.));
   ignore (hit s (v (-5.) 5. 1.) (v 1. 0. 0.));
-  Alcotest.(check int) "tests" 2 ctx.stats.cone_tests;
-  Alcotest.(check int) "hits" 1 ctx.stats.cone_hits;
+  Alcotest.(check int) "tests" 2 (Stats.tests ctx.stats Stats.cone);
+  Alcotest.(check int) "hits" 1 (Stats.hits ctx.stats Stats.cone);
   let ((_, ctx) as s) = setup d1 in
   ignore (hit s (v 1.5 0. (-3.)) (v 0. 0. 1.));
   ignore (hit s (v 0. 0. (-3.)) (v 0. 0. 1.));
-  Alcotest.(check int) "disc tests" 2 ctx.stats.disc_tests;
-  Alcotest.(check int) "disc hits" 1 ctx.stats.disc_hits
+  Alcotest.(check int) "disc tests" 2 (Stats.tests ctx.stats Stats.disc);
+  Alcotest.(check int) "disc hits" 1 (Stats.hits ctx.stats Stats.disc)
 
 let test_own_box () =
   (* four cylinders along y at x = −3, −1, 1, 3 (radius 0.4) share one leaf of the scene's
@@ -353,7 +353,7 @@ let test_own_box () =
   let run o d =
     let ctx = Trace.make_ctx c (Stats.create ()) in
     ignore (Trace.trace ctx ~level:0 ~weight:1. ~interiors:[] ~continued:false o d);
-    (ctx.stats.cone_tests, ctx.stats.cone_hits)
+    (Stats.tests ctx.stats Stats.cone, Stats.hits ctx.stats Stats.cone)
   in
   (* x = 0 lies in the leaf's box between the boxes of the cylinders at −1 and 1 *)
   Alcotest.(check (pair int int)) "through the gap" (0, 0) (run (v 0. 0.5 (-5.)) (v 0. 0. 1.));

@@ -201,12 +201,12 @@ let test_stats () =
   ignore (Shape.depth ctx.Context.shapes obj.Compiled.shape (v (-5.) 0.5 5.) (v 1. 0. 0.) 0.);
   let s = ctx.Context.shapes.stats in
   (* the second ray misses the prism's box: a top-level prism is then not even tested *)
-  Alcotest.(check int) "prism tests" 1 s.prism_tests;
-  Alcotest.(check int) "prism hits" 1 s.prism_hits;
+  Alcotest.(check int) "prism tests" 1 (Stats.tests s Stats.prism);
+  Alcotest.(check int) "prism hits" 1 (Stats.hits s Stats.prism);
   let obj, ctx = setup tube in
   ignore (Shape.depth ctx.Context.shapes obj.Compiled.shape (v (-5.) 1. 0.) (v 1. 0. 0.) 0.);
-  Alcotest.(check int) "lathe tests" 1 ctx.Context.shapes.stats.lathe_tests;
-  Alcotest.(check int) "lathe bound hits" 1 ctx.Context.shapes.stats.lathe_bound_hits
+  Alcotest.(check int) "lathe tests" 1 (Stats.tests ctx.Context.shapes.stats Stats.lathe);
+  Alcotest.(check int) "lathe bound hits" 1 (Stats.hits ctx.Context.shapes.stats Stats.lathe_bound)
 
 let test_dump () =
   let d text = Dump.obj (the_object (scene (v37 ^ text))) in

@@ -71,4 +71,5 @@ let () =
       ("Images (image_map, image_pattern, bump_map)", Test_images.tests);
       ("Decoders against hostile files", Test_decoders.tests);
       ("Superellipsoid, ovus, sphere_sweep", Test_superq.tests);
+      ("Shape kinds (traits)", Test_traits.tests);
     ])
