@@ -44,14 +44,22 @@ let[@inline] recip x = if x = 0. then 1e300 else 1. /. x
    closure is built per call); immutable, so that building it needs no write barrier. *)
 type ray = { sctx : Context.t; sgroup : group; so : Vec.t; sd : Vec.t }
 
+(* what the shape just tested reported of the crossing it found, kept with the new best *)
+let[@inline] keep_report ctx =
+  let w = ctx.shapes in
+  ctx.found.reported <- w.reported;
+  if w.reported then Crossing.blit w.crossing ctx.crossing
+
 (* the test of the object [ob], the best so far in [ctx.found] and [ctx.reach] *)
 let try_obj ctx (ob : obj) (o : Vec.t) (d : Vec.t) =
   let f = ctx.found and r = ctx.reach in
+  ctx.shapes.reported <- false;
   let t = Shape.depth ctx.shapes ob.shape o d r.least in
   if replaces ctx ob t r.depth f.id o d then begin
     r.depth <- t;
     f.id <- Shape.hit_object ctx.shapes ob;
-    f.part <- ctx.shapes.part
+    f.part <- ctx.shapes.part;
+    keep_report ctx
   end
 
 (* the visitor of the bounded object [i] met by the walk *)
@@ -66,7 +74,8 @@ let visit_bounded st i =
     if replaces ctx (Array.unsafe_get g.bounded i) t r.depth f.id o d then begin
       r.depth <- t;
       f.id <- (Array.unsafe_get g.bounded i).id;
-      f.part <- -1
+      f.part <- -1;
+      f.reported <- false
     end
   end
   else begin
@@ -98,11 +107,13 @@ let visit_bounded st i =
 let pov_search ctx (ord : order) (o : Vec.t) (d : Vec.t) =
   let f = ctx.found and r = ctx.reach in
   let test (ob : obj) =
+    ctx.shapes.reported <- false;
     let t = Shape.depth ctx.shapes ob.shape o d r.least in
     if t < r.depth then begin
       r.depth <- t;
       f.id <- Shape.hit_object ctx.shapes ob;
-      f.part <- ctx.shapes.part
+      f.part <- ctx.shapes.part;
+      keep_report ctx
     end
   in
   match ord with
@@ -127,6 +138,7 @@ let search ctx (g : group) (o : Vec.t) (d : Vec.t) lo hi =
   r.depth <- hi;
   f.id <- -1;
   f.part <- -1;
+  f.reported <- false;
   r.least <- lo;
   f.near <- false;
   if ctx.robust then bvh_search ctx g o d hi
@@ -138,6 +150,7 @@ let search ctx (g : group) (o : Vec.t) (d : Vec.t) lo hi =
       r.depth <- hi;
       f.id <- -1;
       f.part <- -1;
+      f.reported <- false;
       pov_search ctx (Lazy.force g.pov) o d
     end
   end;
