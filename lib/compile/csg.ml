@@ -113,6 +113,7 @@ let hits ~all_hits ~inside (w : Scratch.t) (c : csg) o d lo n =
   n
 
 let nearest_kept ~all_hits ~inside (w : Scratch.t) c o d lo =
+  w.report_count <- 0;
   let n = hits ~all_hits ~inside w c o d lo 0 in
   let h = w.hits.room and width = Scratch.hit_width in
   let best = ref infinity and bj = ref (-1) in
@@ -122,7 +123,9 @@ let nearest_kept ~all_hits ~inside (w : Scratch.t) c o d lo =
   done;
   if !bj >= 0 then begin
     w.part <- int_of_float h.((!bj * width) + 1);
-    w.leaf <- int_of_float h.((!bj * width) + 2)
+    w.leaf <- int_of_float h.((!bj * width) + 2);
+    (* the member's report of the hit kept *)
+    w.reported <- Scratch.hit_report w !bj
   end;
   !best
 

@@ -27,7 +27,8 @@ val depth :
   Scratch.t -> Compiled.csg -> Vec.t -> Vec.t -> float -> float
 (** [depth ~all_hits ~inside w c o d lo] is the nearest kept hit, or infinity: the hits are popped
     from the stack, last pushed first, and the first of the smallest depth wins; the member hit is
-    left in [w.leaf], its part in [w.part]. The CSG's single-precision box is tested first
+    left in [w.leaf], its part in [w.part], its report (a julia fractal's, a bicubic patch's, a
+    parametric surface's) in [w.crossing] and [w.reported]. The CSG's single-precision box is tested first
     (Trace::FindIntersection, §15.8): a ray grazing an edge of the box within its rounding misses
     the CSG. The robust mode decides by the geometry alone. *)
 

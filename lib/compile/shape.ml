@@ -228,20 +228,19 @@ let geometric_normal w obj part p =
   | Mesh m -> Mesh.placed_face_normal m part
   | _ -> normal w obj part p
 
-let hit_normal (w : Scratch.t) obj part p =
+let hit_normal (w : Scratch.t) obj part c p =
   match obj.shape with
-  | Julia f -> Julia.hit_normal w f p
-  | Bicubic _ -> Bezier.hit_normal w p
-  | Parametric m -> Parametric.hit_normal w m p
+  | Julia _ | Bicubic _ -> Crossing.normal c
+  | Parametric m -> Parametric.hit_normal m c
   | Sphere _ | Sphere_placed _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _
   | Torus _ | Glyph _ | Polygon _ | Quadric _ | Csg _ | Poly _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Prism _ | Lathe _ | Sor _
   | Isosurface _ ->
       normal w obj part p
 
-let hit_point w obj o depth d =
+let hit_point w obj c o depth d =
   match obj.shape with
   | Poly pl -> Poly.hit_point w pl o d depth
-  | Julia _ -> Julia.point w depth (Vec.madd o depth d)
+  | Julia _ -> Crossing.point c
   | Sphere _ | Sphere_placed _ | Ellipsoid _ | Plane _ | Plane_trans _ | Triangle _ | Smooth_triangle _ | Mesh _ | Box _ | Box_trans _ | Cone _ | Disc _ | Torus _ | Glyph _ | Polygon _ | Quadric _
   | Isosurface _ | Parametric _ | Blob _ | Height_field _ | Superellipsoid _ | Ovus _ | Sphere_sweep _ | Prism _ | Lathe _ | Sor _ | Bicubic _ | Csg _ ->
       Vec.madd o depth d
@@ -255,10 +254,9 @@ let refine obj p =
 (* Every shape's UVCoord in POV-Ray 3.7: spheres, boxes, tori and meshes have their own; every
    other shape (planes, triangles, cones and cylinders, discs, polygons, quadrics, letters) the
    default ObjectBase::UVCoord, the world point's x and y as they are *)
-let uv w obj part (p : Vec.t) =
+let uv obj part c (p : Vec.t) =
   match obj.shape with
-  | Bicubic _ -> Bezier.uv w p
-  | Parametric _ -> Parametric.uv w p
+  | Bicubic _ | Parametric _ -> Crossing.uv c
   | Sphere s -> Sphere.uv s p
   | Sphere_placed s -> Sphere.placed_uv s p
   | Ellipsoid e -> Sphere.ellipsoid_uv e p

@@ -20,7 +20,8 @@ val depth : Scratch.t -> Compiled.shape -> Vec.t -> Vec.t -> float -> float
 (** [depth w shape o d lo] is the nearest depth along the unit direction [d] at which the ray from
     [o] meets [shape] within the shape's own limits and at least [lo] (§2, §14.5), or infinity; the
     part hit (mesh face, box side, cylinder part, letter part) is left in [w.part], the member hit
-    by a CSG in [w.leaf]. *)
+    by a CSG in [w.leaf]; a julia fractal, a bicubic patch or a parametric surface (or a CSG whose
+    member hit is one) leaves its report of the crossing in [w.crossing] and sets [w.reported]. *)
 
 val all_hits : Scratch.t -> Compiled.member -> Vec.t -> Vec.t -> float -> int -> int
 (** [all_hits w m o d lo n] appends to [w.hits], after its first [n], every crossing at depth ≥
@@ -41,23 +42,25 @@ val geometric_normal : Scratch.t -> Compiled.obj -> int -> Vec.t -> Vec.t
 (** [geometric_normal w obj part p] is the flat normal of the surface at [p]: a smooth triangle's or
     face's own plane, else [normal]. The robust mode lifts secondary rays along it. *)
 
-val uv : Scratch.t -> Compiled.obj -> int -> Vec.t -> Vec.t
-(** [uv w obj part p] is the UV coordinates (u, v, 0) of [obj] at its world surface point [p]
+val uv : Compiled.obj -> int -> Crossing.t -> Vec.t -> Vec.t
+(** [uv obj part c p] is the UV coordinates (u, v, 0) of [obj] at its world surface point [p]
     ([part] as [depth] left it: the box side, the mesh face), as POV-Ray 3.7's UVCoord methods
     compute them, in the shape's own space: spheres (in the frame of every modifier they got),
-    boxes, tori, lathes, sors, ovus and meshes (their uv_vectors blended), bicubic patches (the
-    coordinates their crossing reported to [w]); every other shape has POV-Ray's default, the
-    world point's x and y. *)
+    boxes, tori, lathes, sors, ovus and meshes (their uv_vectors blended), bicubic patches and
+    parametric surfaces (the coordinates their crossing reported, [c]); every other shape has
+    POV-Ray's default, the world point's x and y. *)
 
-val hit_normal : Scratch.t -> Compiled.obj -> int -> Vec.t -> Vec.t
-(** [hit_normal w obj part p] is [normal w obj part p] for every shape but the julia fractal, whose
-    normal at a crossing its march reported is the one computed there (Julia.hit_normal). *)
+val hit_normal : Scratch.t -> Compiled.obj -> int -> Crossing.t -> Vec.t -> Vec.t
+(** [hit_normal w obj part c p] is the normal at the hit at [p] whose crossing reported [c]:
+    [normal w obj part p], but for the shapes whose normal comes with the crossing: a julia
+    fractal's and a bicubic patch's is the one reported, a parametric surface's is computed at
+    the (u, v) reported (Parametric.hit_normal). *)
 
-val hit_point : Scratch.t -> Compiled.obj -> Vec.t -> float -> Vec.t -> Vec.t
-(** [hit_point w obj o depth d] is the point POV-Ray shades where the ray from [o] along [d] hits
-    the primitive [obj] at [depth]: [o + depth·d], except for a poly, whose point comes back from
-    its own space ([Poly.hit_point]), and a julia fractal, whose march reports its own point
-    ([Julia.point]). *)
+val hit_point : Scratch.t -> Compiled.obj -> Crossing.t -> Vec.t -> float -> Vec.t -> Vec.t
+(** [hit_point w obj c o depth d] is the point POV-Ray shades where the ray from [o] along [d]
+    hits the primitive [obj] at [depth], its crossing having reported [c]: [o + depth·d], except
+    for a poly, whose point comes back from its own space ([Poly.hit_point]), and a julia
+    fractal, whose march found its own point (the point of [c]). *)
 
 val refine : Compiled.obj -> Vec.t -> Vec.t
 (** [refine obj p] is the hit point [p] put back onto the surface where the shape allows it

@@ -77,9 +77,11 @@ let trace st (o : V.obj) (origin : Vec.t) (dir : Vec.t) =
     else
       let b = !best * width in
       let leaf = sc.objects.(int_of_float h.(b + 2)) and part = int_of_float h.(b + 1) in
-      (* a julia fractal reports the point its march found and the normal there *)
-      let p = Shape.hit_point w leaf origin h.(b) d in
-      let nrm = Shape.hit_normal w leaf part p in
+      (* a julia fractal reports the point its march found and the normal there, a bicubic
+         patch its normal, a parametric surface its (u, v) *)
+      let c = if Scratch.hit_report w !best then w.crossing else Crossing.none in
+      let p = Shape.hit_point w leaf c origin h.(b) d in
+      let nrm = Shape.hit_normal w leaf part c p in
       Some (p, if leaf.inverted then Vec.neg nrm else nrm)
   end
 

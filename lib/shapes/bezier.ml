@@ -313,22 +313,23 @@ let depth (w : Scratch.t) b o d lo =
   let best = w.depths in
   best.(0) <- infinity;
   crossings w b o d (fun t p n u v ->
-      Scratch.report_uv w t p n u v;
       (* POV-Ray takes them off its stack from the top, keeping a strictly nearer one: of equal
          depths the last pushed *)
-      if t >= lo && t <= best.(0) then best.(0) <- t);
+      if t >= lo && t <= best.(0) then begin
+        best.(0) <- t;
+        Crossing.set w.crossing p n u v;
+        w.reported <- true
+      end);
   best.(0)
 
 let hits (w : Scratch.t) b id o d lo n =
   let count = ref n in
   crossings w b o d (fun t p nn u v ->
-      Scratch.report_uv w t p nn u v;
-      if t >= lo then count := Scratch.push_hit w !count t (-1) id p.x p.y p.z);
+      if t >= lo then begin
+        Crossing.set w.crossing p nn u v;
+        count := Scratch.push_reported w !count t id
+      end);
   !count
-
-let hit_normal (w : Scratch.t) p = match Scratch.reported_normal w p with Some n -> n | None -> Vec.make 1. 0. 0.
-
-let uv (w : Scratch.t) (p : Vec.t) = match Scratch.reported_uv w p with Some uv -> uv | None -> Vec.make p.x p.y 0.
 
 let min_max b =
   let huge = 2e10 in

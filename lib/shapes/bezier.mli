@@ -32,10 +32,6 @@ val texture_uv : t -> float -> float -> float * float
 (** [texture_uv b u v] is Compute_Texture_UV: the patch parameters [(u, v)] of a crossing mapped
     into the quadrilateral of the uv_vectors: [(v, u)] with the default ones. *)
 
-val uv : Scratch.t -> Vec.t -> Vec.t
-(** [uv w p] is BicubicPatch::UVCoord at the hit [p]: the texture coordinates (u, v, 0) reported
-    with the crossing (the world point's x and y when none was). *)
-
 val patch_normal : t -> float -> float -> Vec.t
 (** [patch_normal b u v] is bezier_value's normal at (u, v): the unit cross product of the
     tangents, or (1, 0, 0) where they are (nearly) parallel. *)
@@ -46,16 +42,13 @@ val flatness_of : Vec.t array -> float
 
 val depth : Scratch.t -> t -> Vec.t -> Vec.t -> float -> float
 (** [depth w b o d lo] is the nearest crossing at least [lo] along the ray from [o] along the unit
-    [d] (of equal depths the last pushed), or infinity; every crossing is reported
-    (Scratch.report) with its normal; counted ("Bicubic Patch"). *)
+    [d] (of equal depths the last pushed), or infinity; its report left in [w.crossing]: the
+    point, the normal interpolated over the subpatch's triangle, and the texture coordinates
+    (BicubicPatch's Iuv, {!texture_uv}); counted ("Bicubic Patch"). *)
 
 val hits : Scratch.t -> t -> int -> Vec.t -> Vec.t -> float -> int -> int
 (** [hits w b id o d lo n] pushes every crossing at least [lo] as a hit of the member [id], in
-    POV-Ray's order, reporting each; it is the new count. *)
-
-val hit_normal : Scratch.t -> Vec.t -> Vec.t
-(** [hit_normal w p] is the interpolated normal of the crossing reported at the point [p], or
-    (1, 0, 0) when none was. *)
+    POV-Ray's order, each with its report (as [depth]'s); it is the new count. *)
 
 val bounds : t -> float array
 (** [bounds b] is the control points' box, lower then upper corner. *)

@@ -327,8 +327,9 @@ let bound f ox oy oz dx dy dz =
       Some (tca -. h, tca +. h)
     else None
 
-(* The crossings along the ray from [o] along the unit [d], in order: [emit depth px py pz]
-   receives each (the world depth and point) and says whether to look for more. *)
+(* The crossings along the ray from [o] along the unit [d], in order: each is reported in
+   [w.crossing] (its world point and normal), then [emit depth] receives its world depth and says
+   whether to look for more. *)
 let march (w : Scratch.t) f (o : Vec.t) (d : Vec.t) emit =
   let stats = w.stats in
   Stats.test stats Stats.fractal;
@@ -427,15 +428,15 @@ let march (w : Scratch.t) f (o : Vec.t) (d : Vec.t) emit =
                 let p = match f.trans with None -> p | Some m -> Transform.point m p in
                 (* after the first crossing POV-Ray's depth lags behind its point (it goes on from
                    the point past the crossing with the depth of the crossing): the depth orders
-                   the hits, the point (kept in the scratch, Julia.point) is where they are shaded *)
+                   the hits, the point (reported with the crossing) is where they are shaded *)
                 let t = !depth *. len in
                 found := true;
                 (* Normal_Calc on the stack as it is: after a point that escaped, POV-Ray's stack
                    holds what the march's deeper iterations left beyond its escape *)
                 let n = raw_normal f st f.iterations in
                 let n = Transform.normalize (match f.trans with None -> n | Some m -> Transform.normal m n) in
-                Scratch.report w t p n;
-                if not (emit t p.x p.y p.z) then over := true
+                Crossing.set w.crossing p n 0. 0.;
+                if not (emit t) then over := true
                 else begin
                   ix := !nx;
                   iy := !ny;
@@ -456,20 +457,19 @@ let depth (w : Scratch.t) f o d lo =
   let first = w.depths in
   first.(0) <- infinity;
   ignore
-    (march w f o d (fun t _ _ _ ->
+    (march w f o d (fun t ->
          first.(0) <- t;
+         w.reported <- true;
          false));
   if first.(0) >= lo then first.(0) else infinity
 
 let hits (w : Scratch.t) f id o d lo n =
   let count = ref n in
   ignore
-    (march w f o d (fun t px py pz ->
-         if t >= lo then count := Scratch.push_hit w !count t (-1) id px py pz;
+    (march w f o d (fun t ->
+         if t >= lo then count := Scratch.push_reported w !count t id;
          true));
   !count
-
-let point (w : Scratch.t) t (p : Vec.t) = match Scratch.reported_point w t with Some q -> q | None -> p
 
 let local f (p : Vec.t) = match f.trans with None -> p | Some m -> Transform.inv_point m p
 
@@ -489,8 +489,6 @@ let normal_with st f p =
   Transform.normalize n
 
 let normal f p = normal_with (room spare f) f p
-
-let hit_normal (w : Scratch.t) f p = match Scratch.reported_normal w p with Some n -> n | None -> normal f p
 
 let box f =
   let r = f.radius in

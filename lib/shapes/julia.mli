@@ -83,16 +83,15 @@ val raw_normal : t -> float array -> int -> Vec.t
 val depth : Scratch.t -> t -> Vec.t -> Vec.t -> float -> float
 (** [depth w f o d lo] is the first crossing the march finds along the ray from [o] along the unit
     [d] (world depth), as a fractal outside CSG stops at it, or infinity (also when it is below
-    [lo]); counted ("Fractal"). *)
+    [lo]); its report left in [w.crossing] (Real_Pt, the fractal-space point mapped to the
+    world, and the normal POV-Ray computes there: Normal_Calc on the iteration stack as the march
+    left it, where the last Iteration escaped, what deeper iterations left counting); counted
+    ("Fractal"). *)
 
 val hits : Scratch.t -> t -> int -> Vec.t -> Vec.t -> float -> int -> int
 (** [hits w f id o d lo n] pushes every crossing the march finds, at least [lo], as hits of the
-    member [id] at POV-Ray's intersection points (the fractal-space point mapped back); it is the
-    new count. After the first crossing POV-Ray's depths lag behind the points, as they do here. *)
-
-val point : Scratch.t -> float -> Vec.t -> Vec.t
-(** [point w t p] is the point of the crossing at depth [t] a march of this worker reported last
-    (Real_Pt, the fractal-space point mapped to the world), or [p] when there is none. *)
+    member [id] at POV-Ray's intersection points (the fractal-space point mapped back), each with
+    its report (as [depth]'s); it is the new count. After the first crossing POV-Ray's depths lag behind the points, as they do here. *)
 
 val inside : float array -> t -> Vec.t -> bool
 (** [inside stack f p] is Fractal::Inside of the world point [p] ([stack] used as the iteration
@@ -100,13 +99,8 @@ val inside : float array -> t -> Vec.t -> bool
 
 val normal : t -> Vec.t -> Vec.t
 (** [normal f p] is the unit normal at the world point [p]: Iteration there, Normal_Calc over
-    every iteration, MTransNormal, normalised (POV-Ray computes it at the crossing's own point). *)
-
-val hit_normal : Scratch.t -> t -> Vec.t -> Vec.t
-(** [hit_normal w f p] is the normal POV-Ray computed at the crossing whose point is [p], when a
-    march of this worker reported it lately (the stack as the march left it: where the last
-    Iteration escaped, as the function maps' does, what deeper iterations left counts); else
-    [normal f p]. *)
+    every iteration, MTransNormal, normalised (at a crossing POV-Ray's is the one its march
+    reports, which may differ: see [depth]). *)
 
 val bounds : t -> float array
 (** [bounds f] is the box of the bounding sphere's cube mapped by the transform. *)

@@ -347,19 +347,24 @@ let search (w : Scratch.t) s (o : Vec.t) (d : Vec.t) (uv : float array) =
     end
   end
 
-let found w s o d =
+(* the crossing, its report left in [w.crossing] *)
+let found (w : Scratch.t) s o d =
   let uv = [| 0.; 0. |] in
   let t = search w s o d uv in
-  if t < infinity then Scratch.report_uv w t (Vec.madd o t d) Vec.zero uv.(0) uv.(1);
+  if t < infinity then Crossing.set w.crossing (Vec.madd o t d) Vec.zero uv.(0) uv.(1);
   t
 
-let depth w s o d lo =
+let depth (w : Scratch.t) s o d lo =
   let t = found w s o d in
-  if t >= lo then t else infinity
+  if t >= lo then begin
+    w.reported <- true;
+    t
+  end
+  else infinity
 
 let hits w s id o d lo n =
   let t = found w s o d in
-  if t < infinity then Scratch.push_ray w n lo t (-1) id o d else n
+  if t < infinity && t >= lo then Scratch.push_reported w n t id else n
 
 let normal_at s u v =
   let fr = frame s in
@@ -370,8 +375,7 @@ let normal_at s u v =
   let rv = Vec.make (-.fx0 +. run s.fx fr u v1) (-.fy0 +. run s.fy fr u v1) (-.fz0 +. run s.fz fr u v1) in
   Transform.normalize (Transform.normal s.trans (Vec.cross ru rv))
 
-let hit_normal w s p = match Scratch.reported_uv w p with Some uv -> normal_at s uv.x uv.y | None -> Vec.make 1. 0. 0.
-let uv w (p : Vec.t) = match Scratch.reported_uv w p with Some uv -> uv | None -> Vec.make p.x p.y 0.
+let hit_normal s c = normal_at s (Crossing.u c) (Crossing.v c)
 
 let box s =
   match s.container with

@@ -50,24 +50,20 @@ val precompute : t -> depth:int -> x:bool -> y:bool -> z:bool -> t
 
 val depth : Scratch.t -> t -> Vec.t -> Vec.t -> float -> float
 (** [depth w s o d lo] is the surface's crossing along the ray from [o] along the unit [d] when it
-    is at least [lo], else infinity; its (u, v) is reported to [w] ({!Scratch.report_uv}).
+    is at least [lo], else infinity; its report left in [w.crossing]: the point and the (u, v)
+    found (the corner of the piece found, Parametric::UVCoord's), no normal ([hit_normal]).
     Counted ("Parametric", "Parametric Bound"). *)
 
 val hits : Scratch.t -> t -> int -> Vec.t -> Vec.t -> float -> int -> int
 (** [hits w s id o d lo n] pushes that crossing (when it is at least [lo]) as a hit of the member
-    [id]; it is the new count. *)
+    [id], with its report (as [depth]'s); it is the new count. *)
 
 val normal_at : t -> float -> float -> Vec.t
 (** [normal_at s u v] is Parametric::Normal at (u, v): the cross product of the steps of the
     functions by [accuracy] in u and in v, through the transform, normalised. *)
 
-val hit_normal : Scratch.t -> t -> Vec.t -> Vec.t
-(** [hit_normal w s p] is the normal at the crossing whose point is [p], from the (u, v) reported
-    for it; <1, 0, 0> when none was. *)
-
-val uv : Scratch.t -> Vec.t -> Vec.t
-(** [uv w p] is Parametric::UVCoord at the crossing whose point is [p]: its (u, v, 0) (the
-    corner of the piece found), or POV-Ray's default (p.x, p.y, 0) when none was reported. *)
+val hit_normal : t -> Crossing.t -> Vec.t
+(** [hit_normal s c] is the normal at the crossing reported as [c]: [normal_at] its (u, v). *)
 
 val bounds : t -> float array
 (** [bounds s] is the container's box, its corners mapped by the transform. *)

@@ -87,8 +87,10 @@ type t = {
   lathe_quadratic : float array;
   lathe_quadratic_roots : float array;
   fractal_stack : growable;
-  fractal_points : float array;
-  mutable fractal_count : int;
+  crossing : Crossing.t;
+  mutable reported : bool;
+  reports : growable;
+  mutable report_count : int;
   poly_room : float array;
   iso : iso_room;
   iso_hits : float array;
@@ -96,10 +98,7 @@ type t = {
   vertex_normals : vertex_normals;
 }
 
-let hit_width = 6
-
-(* a reported crossing: depth, point, normal, texture (u, v) *)
-let report_width = 9
+let hit_width = 7
 
 (* A cylinder or cone has at most 4 crossings listed (two on the side, the two ends), a disc one,
    a torus 4 depths, a quadric 2, a polygon 1. *)
@@ -133,8 +132,10 @@ let create ~robust stats =
     lathe_quadratic = Array.make 3 0.;
     lathe_quadratic_roots = Array.make 2 0.;
     fractal_stack = { room = Array.make 84 0. };
-    fractal_points = Array.make (report_width * 32) nan;
-    fractal_count = 0;
+    crossing = Crossing.create ();
+    reported = false;
+    reports = { room = Array.make (16 * Crossing.width) 0. };
+    report_count = 0;
     poly_room = Array.make 512 0.;
     iso = iso_room ();
     iso_hits = Array.make 32 0.;
@@ -142,7 +143,7 @@ let create ~robust stats =
     vertex_normals = { fields = [] };
   }
 
-let renew w stats = { w with stats; part = -1; leaf = -1; side_near = 0; side_far = 0; fractal_count = 0; shadow_test = false }
+let renew w stats = { w with stats; part = -1; leaf = -1; side_near = 0; side_far = 0; reported = false; report_count = 0; shadow_test = false }
 
 (* a room whose [cached] is false answers every search as a new one would: the rest of [at] is
    written by a search before it is read, or read only where [cached] holds *)
@@ -167,7 +168,27 @@ let push_hit w n t part id px py pz =
   h.(j + 3) <- px;
   h.(j + 4) <- py;
   h.(j + 5) <- pz;
+  h.(j + 6) <- -1.;
   n + 1
+
+let push_reported w n t id =
+  let c = w.crossing and width = Crossing.width in
+  let r = w.report_count in
+  if (r + 1) * width > Array.length w.reports.room then begin
+    let bigger = Array.make (2 * Array.length w.reports.room) 0. in
+    Array.blit w.reports.room 0 bigger 0 (r * width);
+    w.reports.room <- bigger
+  end;
+  Crossing.store c w.reports.room (r * width);
+  w.report_count <- r + 1;
+  let m = push_hit w n t (-1) id (Crossing.point_x c) (Crossing.point_y c) (Crossing.point_z c) in
+  w.hits.room.((n * hit_width) + 6) <- Float.of_int r;
+  m
+
+let hit_report w j =
+  let r = int_of_float w.hits.room.((j * hit_width) + 6) in
+  if r >= 0 then Crossing.load w.reports.room (r * Crossing.width) w.crossing;
+  r >= 0
 
 let push_ray w n lo t part id (o : Vec.t) (d : Vec.t) =
   if t >= lo then push_hit w n t part id (o.x +. (t *. d.x)) (o.y +. (t *. d.y)) (o.z +. (t *. d.z)) else n
@@ -185,43 +206,6 @@ let nearest_pair w (h : float array) n lo =
   !best
 
 let nearest_crossing w n lo = nearest_pair w w.crossings n lo
-
-let report_uv w t (p : Vec.t) (n : Vec.t) u v =
-  let k = report_width * (w.fractal_count land 31) and r = w.fractal_points in
-  r.(k) <- t;
-  r.(k + 1) <- p.x;
-  r.(k + 2) <- p.y;
-  r.(k + 3) <- p.z;
-  r.(k + 4) <- n.x;
-  r.(k + 5) <- n.y;
-  r.(k + 6) <- n.z;
-  r.(k + 7) <- u;
-  r.(k + 8) <- v;
-  w.fractal_count <- w.fractal_count + 1
-
-let report w t p n = report_uv w t p n 0. 0.
-
-(* the slot of the latest report whose field [at] (0: the depth, 1: the point's x) is [key], or −1 *)
-let slot w at key =
-  let found = ref (-1) and i = ref 0 in
-  while !found < 0 && !i < 32 && !i < w.fractal_count do
-    let k = report_width * ((w.fractal_count - 1 - !i) land 31) in
-    if w.fractal_points.(k + at) = key then found := k;
-    incr i
-  done;
-  !found
-
-let reported_point w t =
-  let k = slot w 0 t and r = w.fractal_points in
-  if k < 0 then None else Some (Vec.make r.(k + 1) r.(k + 2) r.(k + 3))
-
-let reported_normal w (p : Vec.t) =
-  let k = slot w 1 p.x and r = w.fractal_points in
-  if k >= 0 && r.(k + 2) = p.y && r.(k + 3) = p.z then Some (Vec.make r.(k + 4) r.(k + 5) r.(k + 6)) else None
-
-let reported_uv w (p : Vec.t) =
-  let k = slot w 1 p.x and r = w.fractal_points in
-  if k >= 0 && r.(k + 2) = p.y && r.(k + 3) = p.z then Some (Vec.make r.(k + 7) r.(k + 8) 0.) else None
 
 let nearest_depth w n lo =
   let best = ref infinity in

@@ -1,5 +1,6 @@
 (** The scratch space of the intersection routines, one per render worker: what a shape test
-    leaves behind besides its depth (the part hit, the CSG member hit), room for the crossings
+    leaves behind besides its depth (the part hit, the CSG member hit, what a julia fractal, a
+    bicubic patch or a parametric surface found at the crossing), room for the crossings
     of one shape, the hits of a CSG's members, a mesh's traversal and a torus's quartic, and what
     a worker keeps of the shapes it meets (the isosurfaces' state, the smooth height fields'
     vertex normals), which the compiled scene does not hold because it is never written. Named
@@ -110,13 +111,18 @@ type t = {
   fractal_stack : growable;
       (** a julia fractal's iteration stack, 4 floats (x, y, z, w) per iteration; like POV-Ray's
           per-thread stack it keeps what deeper iterations left beyond the last one *)
-  fractal_points : float array;
-      (** the last 32 crossings julia fractals and bicubic patches reported ([report]), 9 floats
-          each (depth, point, normal, texture u and v): POV-Ray shades a fractal at the point its march found,
-          and both with the normal computed at the crossing (the fractal's from the iteration
-          stack as the march left it, the patch's interpolated over its triangle), which neither
-          the depth nor the point alone gives back *)
-  mutable fractal_count : int;  (** how many crossings were written there (modulo 32 is the next slot) *)
+  crossing : Crossing.t;
+      (** what a julia fractal, a bicubic patch or a parametric surface found at the crossing its
+          last [depth] test returned (written by every such test that finds one), or a CSG at the
+          member hit it returned, when [reported] *)
+  mutable reported : bool;
+      (** the last [depth] test left its crossing's report in [crossing]; a nearest search clears
+          it before each test, so that it tells the reporting shapes from the others *)
+  reports : growable;
+      (** the reports of the hits in [hits] that have one, {!Crossing.width} floats each, in the
+          order they were pushed ({!push_reported}) *)
+  mutable report_count : int;
+      (** how many reports [reports] holds; a CSG's search starts it at 0 ([Csg.depth]) *)
   poly_room : float array;  (** a poly's powers of the ray, its polynomial in t, roots and depths *)
   iso : iso_room;
       (** the isosurfaces' per-thread state: the cache, which may carry from block to block, and
@@ -137,7 +143,7 @@ val renew : t -> Stats.t -> t
 (** [renew w stats] is scratch for the worker's next block (or the parser's next trace()),
     counting into [stats]: it shares [w]'s rooms (grown as the earlier blocks needed, and always
     written before they are read), its caches and its isosurfaces' state, and starts as {!create}
-    does (no part or leaf found, no fractal crossing reported, not a shadow test). [w] is not
+    does (no part or leaf found, no crossing reported, not a shadow test). [w] is not
     used afterwards. *)
 
 val forget_iso_cache : t -> unit
@@ -149,12 +155,22 @@ val forget_isosurfaces : t -> unit
     scene whose isosurfaces are numbered anew: the cache and what was kept for each. *)
 
 val hit_width : int
-(** [hit_width] is the number of floats per hit in [hits]: depth, part, the member's id, and the
-    hit point's x, y, z. *)
+(** [hit_width] is the number of floats per hit in [hits]: depth, part, the member's id, the
+    hit point's x, y, z, and the index of its report in [reports] (−1 for none). *)
 
 val push_hit : t -> int -> float -> int -> int -> float -> float -> float -> int
 (** [push_hit w n t part id px py pz] appends, after the first [n] hits of [w.hits], the hit of
-    the member [id] at depth [t] on its [part] at the point (px, py, pz); it is [n + 1]. *)
+    the member [id] at depth [t] on its [part] at the point (px, py, pz), without a report; it is
+    [n + 1]. *)
+
+val push_reported : t -> int -> float -> int -> int
+(** [push_reported w n t id] appends, after the first [n] hits of [w.hits], the hit of the member
+    [id] at depth [t] (no part) whose report is [w.crossing]: at its point, the report kept in
+    [reports]; it is [n + 1]. *)
+
+val hit_report : t -> int -> bool
+(** [hit_report w j] is whether the [j]th hit of [w.hits] has a report, which it then puts in
+    [w.crossing]. *)
 
 val push_ray : t -> int -> float -> float -> int -> int -> Vec.t -> Vec.t -> int
 (** [push_ray w n lo t part id o d] is [push_hit] of the point [o + t·d] when [t ≥ lo], else [n]. *)
@@ -168,23 +184,6 @@ val nearest_crossing : t -> int -> float -> float
 (** [nearest_crossing w n lo] is the nearest of the [n] (depth, part) pairs in [w.crossings] at
     least [lo], its part left in [w.part]; or infinity. POV-Ray takes them from the top of its
     intersection stack, keeping a strictly nearer one, so of equal depths the last found wins. *)
-
-val report : t -> float -> Vec.t -> Vec.t -> unit
-(** [report w t p n] records the crossing at depth [t], point [p], normal [n] in [fractal_points]. *)
-
-val report_uv : t -> float -> Vec.t -> Vec.t -> float -> float -> unit
-(** [report_uv w t p n u v] is [report w t p n] with the crossing's texture coordinates [(u, v)]
-    (a bicubic patch's Iuv). *)
-
-val reported_point : t -> float -> Vec.t option
-(** [reported_point w t] is the point of the latest crossing reported at depth [t], if any. *)
-
-val reported_normal : t -> Vec.t -> Vec.t option
-(** [reported_normal w p] is the normal of the latest crossing reported at the point [p], if any. *)
-
-val reported_uv : t -> Vec.t -> Vec.t option
-(** [reported_uv w p] is the texture coordinates (u, v, 0) of the latest crossing reported at the
-    point [p], if any. *)
 
 val nearest_depth : t -> int -> float -> float
 (** [nearest_depth w n lo] is the nearest of the [n] plain depths in [w.crossings] at least [lo],

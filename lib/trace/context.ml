@@ -1,7 +1,7 @@
 (* A render worker's context: the scene, the statistics, the scratch, the shadow cache, the
    facets cache, crand's stream and the room of POV-Ray's tree walk. *)
 
-type found = { mutable id : int; mutable part : int; mutable near : bool }
+type found = { mutable id : int; mutable part : int; mutable near : bool; mutable reported : bool }
 type reach = { mutable depth : float; mutable least : float; mutable inv_dx : float; mutable inv_dy : float; mutable inv_dz : float }
 
 type t = {
@@ -14,6 +14,7 @@ type t = {
   shadow_cache : int array;
   found : found;
   reach : reach;
+  crossing : Crossing.t;
   walk_limit : float array;
   facets : Normals.facets_cache;
   crand : Pov_rand.t;
@@ -24,7 +25,7 @@ type t = {
 let shadow_cache (scene : Compiled.t) = Array.make (2 * max 1 (Array.length scene.lights)) (-1)
 
 (* what the nearest-hit search starts from *)
-let no_hit () = { id = -1; part = -1; near = false }
+let no_hit () = { id = -1; part = -1; near = false; reported = false }
 let no_reach () = { depth = 0.; least = 0.; inv_dx = 0.; inv_dy = 0.; inv_dz = 0. }
 
 (* the same values written into a worker's records, which its next block reuses *)
@@ -32,6 +33,7 @@ let restart (f : found) (r : reach) =
   f.id <- -1;
   f.part <- -1;
   f.near <- false;
+  f.reported <- false;
   r.depth <- 0.;
   r.least <- 0.;
   r.inv_dx <- 0.;
@@ -49,6 +51,7 @@ let make ?(robust = false) (scene : Compiled.t) stats =
     shadow_cache = shadow_cache scene;
     found = no_hit ();
     reach = no_reach ();
+    crossing = Crossing.create ();
     walk_limit = [| 0. |];
     facets = Normals.facets_cache ();
     crand = Pov_rand.create ();

@@ -4,10 +4,11 @@
     cache and crand's stream (POV-Ray's per-thread data, TraceThreadData). Nothing here is shared
     between workers. *)
 
-type found = { mutable id : int; mutable part : int; mutable near : bool }
+type found = { mutable id : int; mutable part : int; mutable near : bool; mutable reported : bool }
 (** The nearest-hit search's best object so far (−1 for none) and the part of it hit (a mesh face,
-    a box side …), and whether two top-level objects' hits nearly tied on the way. After a
-    search: what it found. *)
+    a box side …), whether two top-level objects' hits nearly tied on the way, and whether the
+    best crossing's shape reported what it found there (kept in [crossing]). After a search:
+    what it found. *)
 
 type reach = {
   mutable depth : float;  (** the best depth so far; after a search, the depth found *)
@@ -29,6 +30,11 @@ type t = {
       (** §4: per light and kind of level, the opaque object that last blocked it, or −1 *)
   found : found;
   reach : reach;
+  crossing : Crossing.t;
+      (** the report of the best crossing so far (a julia fractal's, a bicubic patch's, a
+          parametric surface's: {!Crossing}), copied from the scratch's when the best is
+          replaced by a crossing that has one ([found.reported]); after a search, the found
+          crossing's. The next search writes it again: a hit keeps its own copy ({!Hit}) *)
   walk_limit : float array;  (** the limit of the hierarchy's walk (one float) *)
   facets : Normals.facets_cache;
       (** POV-Ray's facets cache, which a render thread keeps for every facets normal it meets;

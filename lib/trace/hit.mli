@@ -6,16 +6,23 @@ type memo = { mutable seen : (int * Rgb.t) list; on : bool }
 (** The light colour cache of a hit (trace.cpp's lightColorCache): each light's colour after its
     shadow feeler, once tested, by light index; with [on] false no cache at all. *)
 
+type lift = { geometric : Vec.t; error : float }
+(** The robust mode's way off the surface at a hit: the shape's geometric normal there (the side
+    of the surface) and the bound on the error of the hit point ({!Robust.origin}). *)
+
 type t = {
   ray : Ray.t;  (** the ray that met the surface *)
   obj : Compiled.obj;  (** the object hit (a CSG's member, never the CSG) *)
   part : int;  (** the part of it hit (a mesh face, a box side …) *)
   depth : float;  (** how far along the ray *)
+  crossing : Crossing.t;
+      (** what the shape reported of the crossing (a julia fractal's point and normal, a bicubic
+          patch's normal and (u, v), a parametric surface's (u, v)), {!Crossing.none} for the
+          other shapes *)
   level : int;  (** its trace level: the ray's, plus one unless the ray was [Continued] (§7) *)
   point : Vec.t;  (** P, where lights are seen from and secondary rays leave *)
   normal : Vec.t;  (** the shape's normal N, turned toward the ray (§3.1) *)
-  geometric : Vec.t;  (** the robust mode's side of the surface (the shape's geometric normal), else [normal] *)
-  error : float;  (** the robust mode's bound on the error of [point] (0 otherwise) *)
+  lift : lift;  (** the robust mode's way off the surface; unused in POV-Ray's mode ({!origin}) *)
   texture : Compiled.texture;  (** the texture seen: a face's, or the interior texture from inside *)
   memo : memo;
       (** its light colour cache: on for a texture of several layers or entries (they share one
@@ -27,8 +34,9 @@ type t = {
 
 val make : Context.t -> Ray.t -> Compiled.obj -> int -> float -> level:int -> t
 (** [make ctx ray obj part depth ~level] is the hit of [ray] on the part [part] of [obj] at
-    [depth]: the point (refined in the robust mode), the normal turned toward the ray and the
-    texture the ray sees there (§3.1, docs/textures.md). *)
+    [depth], which the last search of [ctx] found ({!Nearest.search}), with the report it kept
+    of the crossing: the point (refined in the robust mode), the normal turned toward the ray
+    and the texture the ray sees there (§3.1, docs/textures.md). *)
 
 val origin : Context.t -> t -> Vec.t -> Vec.t
 (** [origin ctx h dir] is where a ray in direction [dir] leaves the hit: its point, or in the

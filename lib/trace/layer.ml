@@ -15,7 +15,7 @@ let unwarped warps n = List.fold_right (fun ws v -> Normals.unwarp_normal ws ~ke
 let[@inline] shade ctx (h : Hit.t) ~warps ~trans q (s : surface) =
   let sc = ctx.scene in
   let d = h.ray.dir and n = h.normal in
-  let uv = if s.needs_uv then Shape.uv ctx.shapes h.obj h.part h.point else Vec.zero in
+  let uv = if s.needs_uv then Shape.uv h.obj h.part h.crossing h.point else Vec.zero in
   (* normal.cpp: the layer's normal pattern bends N (in the space of the patterned textures around
      it) before its pigment is evaluated, whose slope and aoi patterns see the bent normal; that
      normal made unit shades, reflects and refracts *)

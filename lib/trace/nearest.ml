@@ -40,14 +40,22 @@ let[@inline] fmin (a : float) b = if a < b then a else b
 let[@inline] fmax (a : float) b = if a > b then a else b
 let[@inline] recip x = if x = 0. then 1e300 else 1. /. x
 
+(* what the shape just tested reported of the crossing it found, kept with the new best *)
+let[@inline] keep_report ctx =
+  let w = ctx.shapes in
+  ctx.found.reported <- w.reported;
+  if w.reported then Crossing.blit w.crossing ctx.crossing
+
 (* the test of the object [ob], the best so far in [ctx.found] and [ctx.reach] *)
 let try_obj ctx (ob : obj) (o : Vec.t) (d : Vec.t) =
   let f = ctx.found and r = ctx.reach in
+  ctx.shapes.reported <- false;
   let t = Shape.depth ctx.shapes ob.shape o d r.least in
   if replaces ctx ob t r.depth f.id o d then begin
     r.depth <- t;
     f.id <- Shape.hit_object ctx.shapes ob;
-    f.part <- ctx.shapes.part
+    f.part <- ctx.shapes.part;
+    keep_report ctx
   end
 
 (* the visitor of the bounded object [i] of [g] met by the walk of the ray from [o] along [d] (a
@@ -62,7 +70,8 @@ let visit_bounded ctx (g : group) (o : Vec.t) (d : Vec.t) i =
     if replaces ctx (Array.unsafe_get g.bounded i) t r.depth f.id o d then begin
       r.depth <- t;
       f.id <- (Array.unsafe_get g.bounded i).id;
-      f.part <- -1
+      f.part <- -1;
+      f.reported <- false
     end
   end
   else begin
@@ -94,11 +103,13 @@ let visit_bounded ctx (g : group) (o : Vec.t) (d : Vec.t) i =
 let pov_search ctx (ord : order) (o : Vec.t) (d : Vec.t) =
   let f = ctx.found and r = ctx.reach in
   let test (ob : obj) =
+    ctx.shapes.reported <- false;
     let t = Shape.depth ctx.shapes ob.shape o d r.least in
     if t < r.depth then begin
       r.depth <- t;
       f.id <- Shape.hit_object ctx.shapes ob;
-      f.part <- ctx.shapes.part
+      f.part <- ctx.shapes.part;
+      keep_report ctx
     end
   in
   match ord with
@@ -123,6 +134,7 @@ let search ctx (g : group) (o : Vec.t) (d : Vec.t) lo hi =
   r.depth <- hi;
   f.id <- -1;
   f.part <- -1;
+  f.reported <- false;
   r.least <- lo;
   f.near <- false;
   if ctx.robust then bvh_search ctx g o d hi
@@ -134,6 +146,7 @@ let search ctx (g : group) (o : Vec.t) (d : Vec.t) lo hi =
       r.depth <- hi;
       f.id <- -1;
       f.part <- -1;
+      f.reported <- false;
       pov_search ctx (Lazy.force g.pov) o d
     end
   end;

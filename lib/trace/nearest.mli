@@ -5,7 +5,9 @@
 val search : Context.t -> Compiled.group -> Vec.t -> Vec.t -> float -> float -> int
 (** [search ctx g o d lo hi] is the id of the nearest object of [g] hit along the unit direction
     [d] from [o] at a depth in [lo, hi), or −1 (a CSG reports its member hit). Its depth is left in
-    [ctx.reach.depth] and the part hit in [ctx.found.part]. Of equal depths the one POV-Ray meets
+    [ctx.reach.depth], the part hit in [ctx.found.part], and what its shape reported of the crossing
+    (a julia fractal, a bicubic patch, a parametric surface) in [ctx.crossing] when
+    [ctx.found.reported]. Of equal depths the one POV-Ray meets
     first wins; in the robust mode, of depths within rounding of each other the one written first. *)
 
 val tie_tolerance : Vec.t -> float -> float

@@ -90,7 +90,7 @@ let caustic ctx (obj : obj) part (q : Vec.t) (l : Vec.t) =
       match s.bump with
       | Smooth -> raw
       | Bumpy nm ->
-          let uv = if s.needs_uv then Shape.uv ctx.shapes obj part q else Vec.zero in
+          let uv = if s.needs_uv then Shape.uv obj part ctx.crossing q else Vec.zero in
           let wn = List.fold_left (fun v ws -> Normals.warp_normal ws ~keep_scale:false v) raw warps in
           let pn = Normals.perturb ~facets:ctx.facets sc.noise_generator nm p { Patterns.normal = raw; dir = l; uv } wn in
           List.fold_right (fun ws v -> Normals.unwarp_normal ws ~keep_scale:false v) warps (Normals.layer_normal nm pn)
@@ -107,9 +107,9 @@ let inside_hit ctx (obj : obj) part q l =
    colour at the crossing [q], [t] along the shadow ray [l] from its last origin. *)
 let textured ctx (obj : obj) part (q : Vec.t) (l : Vec.t) t interiors (tex : texture) : Rgb.t =
   let sc = ctx.scene in
-  let hit (s : surface) = if s.needs_uv then { Patterns.no_hit with uv = Shape.uv ctx.shapes obj part q } else Patterns.no_hit in
+  let hit (s : surface) = if s.needs_uv then { Patterns.no_hit with uv = Shape.uv obj part ctx.crossing q } else Patterns.no_hit in
   let caustic = if obj.interior.caustics = 0. then None else Some (caustic ctx obj part q l) in
-  let uv () = Shape.uv ctx.shapes obj part q in
+  let uv () = Shape.uv obj part ctx.crossing q in
   let q' = if obj.uv_mapped then uv () else q in
   match tex with
   | Cutaway ->
@@ -152,8 +152,10 @@ let rec walk ctx (h : Hit.t) ~cache ~light (o : Vec.t) (l : Vec.t) interiors rem
     end
     else
       let part = ctx.found.part in
-      (* the crossing, as the shape gives it (a poly's comes back from its own space) *)
-      let q = Shape.hit_point ctx.shapes obj o t l in
+      (* the crossing, as the shape gives it (a poly's comes back from its own space, a julia
+         fractal's is its march's); what the search kept of it ([ctx.crossing]) is read before
+         the walk goes on *)
+      let q = Shape.hit_point ctx.shapes obj ctx.crossing o t l in
       let tex = if obj.inner_tex = None then Surfaces.at obj part else Surfaces.seen obj part ~inside:(inside_hit ctx obj part q l) in
       let f =
         match tex with
@@ -164,7 +166,7 @@ let rec walk ctx (h : Hit.t) ~cache ~light (o : Vec.t) (l : Vec.t) interiors rem
               match sf.paint with
               | Fixed -> sf.filcol
               | Varying at ->
-                  (at (if sf.needs_uv then { Patterns.no_hit with uv = Shape.uv ctx.shapes obj part q } else Patterns.no_hit) q).filcol
+                  (at (if sf.needs_uv then { Patterns.no_hit with uv = Shape.uv obj part ctx.crossing q } else Patterns.no_hit) q).filcol
             in
             Segment.through Shadow obj interiors t f
         | Plain _ | Layered _ | Blended _ | Uv_mapped _ | Chosen _ | Cutaway -> textured ctx obj part q l t interiors tex

@@ -19,7 +19,7 @@ let rec texture_colour ~(lighted : lighted) ctx (h : Hit.t) tex q warps : Traced
   | Chosen { cwarp; choose; textures; cwarps } ->
       let tq = cwarp q in
       texture_colour ~lighted ctx h textures.(choose tq) tq (warps @ [ cwarps ])
-  | Uv_mapped { uinner; uwarps } -> texture_colour ~lighted ctx h uinner (Shape.uv ctx.shapes h.obj h.part h.point) (warps @ [ uwarps ])
+  | Uv_mapped { uinner; uwarps } -> texture_colour ~lighted ctx h uinner (Shape.uv h.obj h.part h.crossing h.point) (warps @ [ uwarps ])
   | Blended b ->
       let warps = warps @ [ b.nwarps ] in
       let tq = b.warp q in
@@ -54,7 +54,7 @@ let rec texture_colour ~(lighted : lighted) ctx (h : Hit.t) tex q warps : Traced
 let colour ~lighted ctx (h : Hit.t) : Traced.t =
   let sc = ctx.scene in
   (* an object's uv_mapping: every texture is evaluated at the hit's (u, v, 0) *)
-  let q = if h.obj.uv_mapped then Shape.uv ctx.shapes h.obj h.part h.point else h.point in
+  let q = if h.obj.uv_mapped then Shape.uv h.obj h.part h.crossing h.point else h.point in
   match h.texture with
   | Cutaway ->
       (* the textures of the members around the point, weighed *)

@@ -44,7 +44,7 @@ let first_hit b o d =
   if t = infinity then None
   else
     let p = Vec.madd o t d in
-    Some (p, Bezier.hit_normal w p)
+    Some (p, Crossing.normal w.crossing)
 
 let test_trace () =
   let p1 = parse ("bicubic_patch { type 1 flatness 0.05 u_steps 3 v_steps 3 " ^ points ^ " }") in
@@ -120,9 +120,7 @@ let test_big_tree () =
   let at b o d =
     let t = Bezier.depth w b o d 0. in
     if t = infinity then None
-    else
-      let p = Vec.madd o t d in
-      Some (t, Bezier.hit_normal w p, Bezier.uv w p)
+    else Some (t, Crossing.normal w.crossing, Crossing.uv w.crossing)
   in
   let hits = ref 0 in
   for i = 0 to 20 do

@@ -159,7 +159,7 @@ let test_inverted () =
 
 (* A function map: Iteration_HCompl_Func reads y for z, so the polished point's Iteration may
    escape; POV-Ray's normal is then Normal_Calc on the stack as the march left it, which
-   Julia.hit_normal keeps (Julia.normal, iterating afresh, cannot know it). *)
+   the march reports (Julia.normal, iterating afresh, cannot know it). *)
 let test_function_normal () =
   let f = parse "julia_fractal { <0.5, 0.2, 0.1, 0.0> hypercomplex sin max_iteration 5 precision 30 }" in
   let cases =
@@ -173,9 +173,8 @@ let test_function_normal () =
       let w = Scratch.create ~robust:false (Stats.create ()) in
       let t = Julia.depth w f o (Vec.normalize d) 0. in
       Alcotest.(check bool) (Printf.sprintf "case %d: a hit" i) true (t < infinity);
-      let p = Julia.point w t (Vec.madd o t (Vec.normalize d)) in
-      vec_eq ~eps:1e-15 (Printf.sprintf "case %d: the march's point" i) ep p;
-      vec_eq ~eps:1e-12 (Printf.sprintf "case %d: the march's normal" i) en (Julia.hit_normal w f p))
+      vec_eq ~eps:1e-15 (Printf.sprintf "case %d: the march's point" i) ep (Crossing.point w.crossing);
+      vec_eq ~eps:1e-12 (Printf.sprintf "case %d: the march's normal" i) en (Crossing.normal w.crossing))
     cases
 
 (* In CSG every crossing is reported; after the first the depth lags behind the point by the
@@ -193,10 +192,12 @@ let test_later_crossings () =
     Alcotest.(check bool) (Printf.sprintf "crossing %d: in order" k) true (depth k >= depth (k - 1));
     Alcotest.(check bool) (Printf.sprintf "crossing %d: the depth lags" k) true (depth k < along k -. 1e-9)
   done;
-  (* the point and normal reported for each are found again by depth and by point *)
+  (* each is pushed with its report: the point pushed, and the normal computed there *)
   for k = 0 to n - 1 do
-    let p = Julia.point w (depth k) Vec.zero in
-    float_eq ~eps:0. (Printf.sprintf "crossing %d: point by depth" k) h.((k * Scratch.hit_width) + 5) p.z
+    Alcotest.(check bool) (Printf.sprintf "crossing %d: reported" k) true (Scratch.hit_report w k);
+    let p = Crossing.point w.crossing in
+    vec_eq ~eps:0. (Printf.sprintf "crossing %d: its point" k) (v h.((k * Scratch.hit_width) + 3) h.((k * Scratch.hit_width) + 4) h.((k * Scratch.hit_width) + 5)) p;
+    float_eq ~eps:1e-12 (Printf.sprintf "crossing %d: a unit normal" k) 1. (Vec.length (Crossing.normal w.crossing))
   done
 
 let test_box () =

@@ -158,7 +158,7 @@ let test_trace () =
           let p = Vec.madd o t d in
           (* printed with 17 decimals: exact for the terms near 1, within 1e-17 for the small ones *)
           vec_eq ~eps:1e-17 (name ^ ": point") ep p;
-          vec_eq ~eps:1e-17 (name ^ ": normal") en (Parametric.hit_normal w s p))
+          vec_eq ~eps:1e-17 (name ^ ": normal") en (Parametric.hit_normal s w.crossing))
     trace_cases
 
 (* from inside a sphere container the crossing found is behind the ray *)
@@ -174,12 +174,16 @@ let test_uv () =
   let w = Scratch.create ~robust:false (Stats.create ()) in
   let o = v 0.2 0. (-3.) and d = v 0. 0. 1. in
   let t = Parametric.depth w s o d 0. in
-  let p = Vec.madd o t d in
-  let uv = Parametric.uv w p in
+  let uv = Crossing.uv w.crossing in
   (* x(u, v) = 0.2 at the front of the torus's outer side: u near 3π/2, v near 0 (or 2π) *)
   Alcotest.(check bool) "u" true (Float.abs (uv.x -. (1.5 *. Float.pi)) < 0.2);
-  float_eq ~eps:1e-9 "the normal from (u, v)" 0. (Vec.length (Vec.sub (Parametric.normal_at s uv.x uv.y) (Parametric.hit_normal w s p)));
-  vec_eq ~eps:0. "no crossing reported: POV-Ray's default" (v 5. 6. 0.) (Parametric.uv w (v 5. 6. 7.))
+  float_eq ~eps:1e-9 "the normal from (u, v)" 0. (Vec.length (Vec.sub (Parametric.normal_at s uv.x uv.y) (Parametric.hit_normal s w.crossing)));
+  vec_eq ~eps:0. "the point reported" (Vec.madd o t d) (Crossing.point w.crossing);
+  (* in CSG the crossing is pushed with its report *)
+  let w = Scratch.create ~robust:false (Stats.create ()) in
+  Alcotest.(check int) "one hit pushed" 1 (Parametric.hits w s 0 o d 0. 0);
+  Alcotest.(check bool) "with its report" true (Scratch.hit_report w 0);
+  vec_eq ~eps:0. "the same (u, v)" uv (Crossing.uv w.crossing)
 
 let test_box () =
   let s = parse "parametric { function { u } function { v } function { 0 } <0, 0>, <1, 1> contained_by { sphere { <0.1, 0, 0>, 0.3 } } }" in

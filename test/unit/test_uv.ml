@@ -16,9 +16,6 @@ open Helpers
 
 let the_compiled text = (compile ("#version 3.7;\n" ^ text)).objects.(0)
 
-(* scratch space for the shapes whose UV coordinates come with the crossing (bicubic patches) *)
-let scratch = Scratch.create ~robust:false (Stats.create ())
-
 (* the surface point seen along +z through (x, y) from z = −10, its part, and its UV coordinates *)
 let probe text x y =
   let ob = the_compiled text in
@@ -26,7 +23,7 @@ let probe text x y =
   let o = v x y (-10.) and d = v 0. 0. 1. in
   let t = Shape.depth w ob.shape o d 0. in
   if not (t < infinity) then Alcotest.fail "the probe ray misses";
-  Shape.uv w ob w.part (Vec.madd o t d)
+  Shape.uv ob w.part w.crossing (Vec.madd o t d)
 
 let uv_eq ?(eps = 1e-12) msg (u, v') (a : Vec.t) =
   float_eq ~eps (msg ^ ": u") u a.x;
@@ -81,7 +78,7 @@ let test_box () =
   uv_eq ~eps:pov "Z− (POV-Ray)" (0.837507, 0.466667) u;
   (* every side at its centre: the cross of a cube map *)
   let ob = the_compiled "box { <0, 0, 0>, <2, 4, 8> }" in
-  let at side p = Shape.uv scratch ob side p in
+  let at side p = Shape.uv ob side Crossing.none p in
   uv_eq "X− centre" (0.125, 0.5) (at 1 (v 0. 2. 4.));
   uv_eq "X+ centre" (0.625, 0.5) (at 2 (v 2. 2. 4.));
   uv_eq "Y− centre" (0.375, 1. /. 6.) (at 3 (v 1. 0. 4.));
@@ -91,14 +88,14 @@ let test_box () =
   (* a rotated box in its own space: Z− of the unrotated box is seen after rotate y*90 from −x... *)
   let ob = the_compiled "box { <0, 0, 0>, <2, 4, 8> rotate y*90 }" in
   let q = Transform.point (Transform.rotate (v 0. 90. 0.)) (v 1. 2. 0.) in
-  uv_eq ~eps:1e-12 "rotated: its Z− centre" (0.875, 0.5) (Shape.uv scratch ob 5 q)
+  uv_eq ~eps:1e-12 "rotated: its Z− centre" (0.875, 0.5) (Shape.uv ob 5 Crossing.none q)
 
 let test_torus () =
   let ob = the_compiled "torus { 1, 0.25 }" in
   (* on the outer equator at +x: atan2(0, 1.25) = 0: u = 1 − π/2π = 0.5; v = (0 + π)/2π = 0.5 *)
-  uv_eq "outer +x" (0.5, 0.5) (Shape.uv scratch ob (-1) (v 1.25 0. 0.));
+  uv_eq "outer +x" (0.5, 0.5) (Shape.uv ob (-1) Crossing.none (v 1.25 0. 0.));
   (* the top of the tube above +z: atan2(1, 0) = π/2, u = 1 − 3/4; ρ − R = 0, atan2(0.25, 0) = π/2 *)
-  uv_eq ~eps:1e-15 "top over +z" (0.25, 0.75) (Shape.uv scratch ob (-1) (v 0. 0.25 1.));
+  uv_eq ~eps:1e-15 "top over +z" (0.25, 0.75) (Shape.uv ob (-1) Crossing.none (v 0. 0.25 1.));
   (* rotated (POV-Ray: 0.505074, 0.71162) *)
   uv_eq ~eps:pov "rotated (POV-Ray)" (0.505074, 0.71162) (probe "torus { 1, 0.4 rotate <-70, 20, 0> }" 0.9 0.1)
 
@@ -118,19 +115,19 @@ let test_mesh () =
   uv_eq ~eps:pov "swapped (POV-Ray)" (0.420005, 0.465003) (probe swapped 0.1 (-0.2));
   (* at the corners: their own UV coordinates, swap or not *)
   let ob = the_compiled swapped in
-  uv_eq ~eps:1e-15 "corner 1" (0.1, 0.2) (Shape.uv scratch ob 0 (v 1. (-1.) 0.));
-  uv_eq ~eps:1e-15 "corner 2" (0.9, 0.3) (Shape.uv scratch ob 0 (v (-1.) (-1.) 0.));
-  uv_eq ~eps:1e-15 "corner 3" (0.4, 0.8) (Shape.uv scratch ob 0 (v 0. 1. 0.));
+  uv_eq ~eps:1e-15 "corner 1" (0.1, 0.2) (Shape.uv ob 0 Crossing.none (v 1. (-1.) 0.));
+  uv_eq ~eps:1e-15 "corner 2" (0.9, 0.3) (Shape.uv ob 0 Crossing.none (v (-1.) (-1.) 0.));
+  uv_eq ~eps:1e-15 "corner 3" (0.4, 0.8) (Shape.uv ob 0 Crossing.none (v 0. 1. 0.));
   (* the centroid: the mean *)
-  uv_eq ~eps:1e-15 "centroid" ((0.1 +. 0.9 +. 0.4) /. 3., (0.2 +. 0.3 +. 0.8) /. 3.) (Shape.uv scratch ob 0 (v 0. (-1. /. 3.) 0.));
+  uv_eq ~eps:1e-15 "centroid" ((0.1 +. 0.9 +. 0.4) /. 3., (0.2 +. 0.3 +. 0.8) /. 3.) (Shape.uv ob 0 Crossing.none (v 0. (-1. /. 3.) 0.));
   (* a triangle without uv_vectors has (0, 0) at every corner, before and after one with them *)
   let ob =
     the_compiled
       "mesh { triangle { <0,0,0>, <1,0,0>, <0,1,0> } triangle { <2,0,0>, <3,0,0>, <2,1,0> uv_vectors <1,1>, <1,1>, <1,1> } triangle { <4,0,0>, <5,0,0>, <4,1,0> } }"
   in
-  uv_eq "first, none" (0., 0.) (Shape.uv scratch ob 0 (v 0.2 0.2 0.));
-  uv_eq ~eps:1e-15 "second, all (1, 1)" (1., 1.) (Shape.uv scratch ob 1 (v 2.2 0.2 0.));
-  uv_eq "third, none" (0., 0.) (Shape.uv scratch ob 2 (v 4.2 0.2 0.));
+  uv_eq "first, none" (0., 0.) (Shape.uv ob 0 Crossing.none (v 0.2 0.2 0.));
+  uv_eq ~eps:1e-15 "second, all (1, 1)" (1., 1.) (Shape.uv ob 1 Crossing.none (v 2.2 0.2 0.));
+  uv_eq "third, none" (0., 0.) (Shape.uv ob 2 Crossing.none (v 4.2 0.2 0.));
   (* no uv_vectors at all: nothing is stored *)
   match (scene "mesh { triangle { <0,0,0>, <1,0,0>, <0,1,0> } }").objects with
   | [ { shape = Mesh { mesh; _ }; _ } ] ->
@@ -145,15 +142,15 @@ let test_mesh2 () =
   let ob =
     the_compiled ("mesh2 { " ^ square ^ "uv_vectors { 2, <0.5, 0.25>, <1, 2> } face_indices { 2, <0,1,2>, <0,2,3> } uv_indices { 2, <0,0,1>, <1,1,1> } }")
   in
-  uv_eq "uv_indices: corner 1" (0.5, 0.25) (Shape.uv scratch ob 0 (v 0. 0. 0.));
-  uv_eq ~eps:1e-15 "uv_indices: corner 3" (1., 2.) (Shape.uv scratch ob 0 (v 1. 1. 0.));
-  uv_eq ~eps:1e-15 "uv_indices: second face" (1., 2.) (Shape.uv scratch ob 1 (v 0.2 0.5 0.));
+  uv_eq "uv_indices: corner 1" (0.5, 0.25) (Shape.uv ob 0 Crossing.none (v 0. 0. 0.));
+  uv_eq ~eps:1e-15 "uv_indices: corner 3" (1., 2.) (Shape.uv ob 0 Crossing.none (v 1. 1. 0.));
+  uv_eq ~eps:1e-15 "uv_indices: second face" (1., 2.) (Shape.uv ob 1 Crossing.none (v 0.2 0.5 0.));
   (* as many UV vectors as vertices: the face indices *)
   let ob = the_compiled ("mesh2 { " ^ square ^ "uv_vectors { 4, <0,0>, <2,0>, <2,2>, <0,2> } face_indices { 2, <0,1,2>, <0,2,3> } }") in
-  uv_eq ~eps:1e-15 "by the face indices" (1.2, 0.8) (Shape.uv scratch ob 0 (v 0.6 0.4 0.));
+  uv_eq ~eps:1e-15 "by the face indices" (1.2, 0.8) (Shape.uv ob 0 Crossing.none (v 0.6 0.4 0.));
   (* one UV vector: every corner *)
   let ob = the_compiled ("mesh2 { " ^ square ^ "uv_vectors { 1, <0.5, 0.5> } face_indices { 2, <0,1,2>, <0,2,3> } }") in
-  uv_eq ~eps:1e-15 "one for all" (0.5, 0.5) (Shape.uv scratch ob 1 (v 0.2 0.5 0.));
+  uv_eq ~eps:1e-15 "one for all" (0.5, 0.5) (Shape.uv ob 1 Crossing.none (v 0.2 0.5 0.));
   expect_scene_error "neither as many nor uv_indices"
     ("mesh2 { " ^ square ^ "uv_vectors { 2, <0,0>, <1,1> } face_indices { 2, <0,1,2>, <0,2,3> } }")
     ~line:1 ~col:97 ~sub:"without uv_indices";
