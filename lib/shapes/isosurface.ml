@@ -159,7 +159,7 @@ let find_root c (w : Scratch.t) g t1 t2 =
       true
     end
     else begin
-      if not w.shadow_test then begin
+      if not w.shadow_ray then begin
         (* the segment's ends kept for the next search *)
         let room = w.iso in
         room.cached <- true;

@@ -94,7 +94,7 @@ type t = {
   poly_room : float array;
   iso : iso_room;
   iso_hits : float array;
-  mutable shadow_test : bool;
+  mutable shadow_ray : bool;
   vertex_normals : vertex_normals;
 }
 
@@ -139,11 +139,11 @@ let create ~robust stats =
     poly_room = Array.make 512 0.;
     iso = iso_room ();
     iso_hits = Array.make 32 0.;
-    shadow_test = false;
+    shadow_ray = false;
     vertex_normals = { fields = [] };
   }
 
-let renew w stats = { w with stats; part = -1; leaf = -1; side_near = 0; side_far = 0; reported = false; report_count = 0; shadow_test = false }
+let renew w stats = { w with stats; part = -1; leaf = -1; side_near = 0; side_far = 0; reported = false; report_count = 0; shadow_ray = false }
 
 (* a room whose [cached] is false answers every search as a new one would: the rest of [at] is
    written by a search before it is read, or read only where [cached] holds *)

@@ -128,9 +128,10 @@ type t = {
       (** the isosurfaces' per-thread state: the cache, which may carry from block to block, and
           what the worker keeps for each isosurface, which always does *)
   iso_hits : float array;  (** one isosurface's crossings as (depth, side) pairs, 11 at most *)
-  mutable shadow_test : bool;
-      (** the ray being tested is a shadow ray (Ray::IsShadowTestRay): an isosurface does not
-          leave its misses in the cache for it *)
+  mutable shadow_ray : bool;
+      (** the ray the shapes are asked about is a shadow ray (POV-Ray's Ray::IsShadowTestRay),
+          as each query of the tracer's nearest search tells them: an isosurface does not leave
+          its misses in the cache for it *)
   vertex_normals : vertex_normals;  (** the smooth height fields' vertex normals made so far *)
 }
 

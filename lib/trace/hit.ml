@@ -27,10 +27,11 @@ let no_memo = { seen = []; on = false }
 (* POV-Ray's mode: a secondary ray leaves from the hit point itself *)
 let no_lift = { geometric = Vec.zero; error = 0. }
 
-let[@inline] make (ctx : Context.t) (ray : Ray.t) obj part depth ~level =
+let[@inline] make (ctx : Context.t) (ray : Ray.t) (f : Nearest.found) ~level =
+  let obj = ctx.scene.objects.(Nearest.id f) and part = Nearest.part f and depth = Nearest.depth f in
   let o = ray.origin and d = ray.dir in
   (* the hit point P and its normal N, turned toward the ray (§3.1) *)
-  let crossing = if ctx.found.reported then Crossing.copy ctx.crossing else Crossing.none in
+  let crossing = Nearest.crossing f in
   let p = if ctx.robust then Shape.refine obj (Vec.madd o depth d) else Shape.hit_point ctx.shapes obj crossing o depth d in
   let n = Shape.hit_normal ctx.shapes obj part crossing p in
   let dn = Vec.dot n d in

@@ -32,10 +32,9 @@ type t = {
           shaded (POV-Ray's Intersection.PNormal); [normal] at first *)
 }
 
-val make : Context.t -> Ray.t -> Compiled.obj -> int -> float -> level:int -> t
-(** [make ctx ray obj part depth ~level] is the hit of [ray] on the part [part] of [obj] at
-    [depth], which the last search of [ctx] found ({!Nearest.search}), with the report it kept
-    of the crossing: the point (refined in the robust mode), the normal turned toward the ray
+val make : Context.t -> Ray.t -> Nearest.found -> level:int -> t
+(** [make ctx ray f ~level] is the hit of [ray] that the search [f] found ({!Nearest.search}:
+    the object, the part of it and the depth), with the report it kept of the crossing: the point (refined in the robust mode), the normal turned toward the ray
     and the texture the ray sees there (§3.1, docs/textures.md). *)
 
 val origin : Context.t -> t -> Vec.t -> Vec.t

@@ -129,8 +129,15 @@ let bvh_search ctx (g : group) (o : Vec.t) (d : Vec.t) hi =
     Bvh.walk_with g.bvh ctx.stack o.x o.y o.z d.x d.y d.z ctx.walk_limit visit_bounded ctx g o d
   end
 
-let search ctx (g : group) (o : Vec.t) (d : Vec.t) lo hi =
+(* the kind of ray the shapes are asked about: an isosurface keeps no cache for a shadow ray *)
+let[@inline] asked ctx (kind : Ray.kind) =
+  ctx.shapes.shadow_ray <- (match kind with Shadow -> true | Camera | Reflected | Transmitted | Continued -> false)
+
+type found = Context.t
+
+let search ctx (kind : Ray.kind) (g : group) (o : Vec.t) (d : Vec.t) lo hi : found =
   let f = ctx.found and r = ctx.reach in
+  asked ctx kind;
   r.depth <- hi;
   f.id <- -1;
   f.part <- -1;
@@ -150,4 +157,19 @@ let search ctx (g : group) (o : Vec.t) (d : Vec.t) lo hi =
       pov_search ctx (Lazy.force g.pov) o d
     end
   end;
-  f.id
+  ctx
+
+(* what the worker's last search found *)
+let[@inline] hit (w : found) = w.found.id >= 0
+let[@inline] id (w : found) = w.found.id
+let[@inline] part (w : found) = w.found.part
+let[@inline] depth (w : found) = w.reach.depth
+let crossing (w : found) = if w.found.reported then Crossing.copy w.crossing else Crossing.none
+
+let shape_depth ctx (kind : Ray.kind) shape o d lo =
+  asked ctx kind;
+  Shape.depth ctx.shapes shape o d lo
+
+let cached_depth ctx (kind : Ray.kind) shape o d lo hi =
+  asked ctx kind;
+  Shape.cached_depth ctx.shapes shape o d lo hi

@@ -138,11 +138,11 @@ let textured ctx (obj : obj) part (q : Vec.t) (l : Vec.t) t interiors (tex : tex
 let rec walk ctx (h : Hit.t) ~cache ~light (o : Vec.t) (l : Vec.t) interiors remaining (lc : Rgb.t) =
   let sc = ctx.scene in
   let lo = if ctx.robust then 0. else Precision.shadow_tolerance in
-  let i = Nearest.search ctx sc.occluders o l lo remaining in
-  let t = ctx.reach.depth in
-  if i < 0 || t >= remaining -. (if ctx.robust then robust_margin ~shift:ctx.scene.shift h.point light remaining else Precision.shadow_tolerance) then lc
+  let f = Nearest.search ctx Shadow sc.occluders o l lo remaining in
+  let t = Nearest.depth f in
+  if not (Nearest.hit f) || t >= remaining -. (if ctx.robust then robust_margin ~shift:ctx.scene.shift h.point light remaining else Precision.shadow_tolerance) then lc
   else
-    let obj = sc.objects.(i) in
+    let obj = sc.objects.(Nearest.id f) in
     if obj.opaque then begin
       (* the cache holds POV-Ray's Intersection.Csg (the outermost intersection, merge or
          clipped union around the member), else the primitive, and a CSG only when its own
@@ -151,7 +151,7 @@ let rec walk ctx (h : Hit.t) ~cache ~light (o : Vec.t) (l : Vec.t) interiors rem
       Rgb.black
     end
     else
-      let part = ctx.found.part in
+      let part = Nearest.part f in
       (* the crossing, as the shape gives it (a poly's comes back from its own space, a julia
          fractal's is its march's); what the search kept of it ([ctx.crossing]) is read before
          the walk goes on *)
@@ -180,7 +180,7 @@ let rec walk ctx (h : Hit.t) ~cache ~light (o : Vec.t) (l : Vec.t) interiors rem
         let l, remaining = aim light next in
         walk ctx h ~cache:(-1) ~light next l interiors remaining lc
 
-let feeler_ray ctx (h : Hit.t) ~slot (smp : Light.sample) (lc : Rgb.t) : Rgb.t =
+let feeler ctx (h : Hit.t) ~slot (smp : Light.sample) (lc : Rgb.t) : Rgb.t =
   let sc = ctx.scene and p = h.point and l = Light.direction smp and dist = smp.dist in
   ctx.stats.shadow_rays <- ctx.stats.shadow_rays + 1;
   (* a light at an infinite distance (a coordinate beyond the float range) has no direction: a
@@ -210,16 +210,10 @@ let feeler_ray ctx (h : Hit.t) ~slot (smp : Light.sample) (lc : Rgb.t) : Rgb.t =
           cached >= 0
           &&
           let shape = sc.objects.(cached).shape in
-          (if ctx.robust then Shape.depth ctx.shapes shape o l lo < dist -. robust_margin ~shift:ctx.scene.shift p lp dist
-           else Shape.cached_depth ctx.shapes shape p l Precision.min_isect_depth dist < dist)
+          (if ctx.robust then Nearest.shape_depth ctx Shadow shape o l lo < dist -. robust_margin ~shift:ctx.scene.shift p lp dist
+           else Nearest.cached_depth ctx Shadow shape p l Precision.min_isect_depth dist < dist)
           (* a cached CSG shadows only if the member hit is opaque *)
           && ((not (Csg.is_csg shape)) || sc.objects.(ctx.shapes.leaf).opaque)
         in
         if in_cache then Rgb.black else walk ctx h ~cache:slot ~light:lp o l h.ray.interiors dist lc
 
-(* the shapes know the rays they meet here for shadow rays (an isosurface leaves no cache for them) *)
-let feeler ctx h ~slot smp lc =
-  ctx.shapes.shadow_test <- true;
-  let c = feeler_ray ctx h ~slot smp lc in
-  ctx.shapes.shadow_test <- false;
-  c

@@ -76,15 +76,15 @@ let rec trace_ray ctx (ray : Ray.t) : result =
   else
     (* the nearest hit among the objects this kind of ray can meet (§16.6); a ray that meets
        nothing sees the sky *)
-    let i = Nearest.search ctx (if ray.mirrored then sc.mirrored else sc.seen) ray.origin ray.dir ctx.min_depth infinity in
-    if i < 0 then Sky.colour sc ray.dir
+    let f = Nearest.search ctx ray.kind (if ray.mirrored then sc.mirrored else sc.seen) ray.origin ray.dir ctx.min_depth infinity in
+    if not (Nearest.hit f) then Sky.colour sc ray.dir
     else
       (* a continued ray (through an interface of equal indices) does not use up a level *)
       let level = match ray.kind with Continued -> ray.level | Camera | Reflected | Transmitted | Shadow -> ray.level + 1 in
       if level > ctx.stats.max_level then ctx.stats.max_level <- level;
       (* §3.2: the layer loop runs while the remaining translucency (1 at the start) exceeds
          adc_bailout *)
-      if not (1. > sc.adc_bailout) then black else shade ctx (Hit.make ctx ray sc.objects.(i) ctx.found.part ctx.reach.depth ~level)
+      if not (1. > sc.adc_bailout) then black else shade ctx (Hit.make ctx ray f ~level)
 
 (* The colour of the surface at a hit (§6.5): local illumination, plus what the transmitted and
    reflected rays bring back. *)
